@@ -1,0 +1,18 @@
+# SPDX-License-Identifier: MIT
+# One helper adds a GoogleTest file and registers its tests with CTest.
+include(GoogleTest)
+
+# flange_add_gtest(<unit>_test SOURCES <files> LIBS <targets> [TIMEOUT s])
+function(flange_add_gtest name)
+  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_LIBS} flange_warnings GTest::gtest_main)
+  target_compile_definitions(${name} PRIVATE
+    FLANGE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    FLANGE_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 300)
+  endif()
+  gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_BINARY_DIR}
+                       PROPERTIES TIMEOUT ${ARG_TIMEOUT} DISCOVERY_TIMEOUT 60)
+endfunction()

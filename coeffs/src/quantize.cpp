@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: MIT
+#include "quantize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <fmt/format.h>
+#include <limits>
+#include <numbers>
+
+#include "design_error.h"
+
+namespace flange::coeffs {
+
+namespace {
+
+__extension__ using Int128 = __int128;
+
+double largest_magnitude(const std::vector<double>& values) {
+  double largest = 0.0;
+  for (double value : values) largest = std::max(largest, std::abs(value));
+  return largest;
+}
+
+// Smallest number of integer bits I such that every value, rounded with C - 1 - I fractional
+// bits, fits a signed C-bit word. nullopt when all values are zero.
+std::optional<int> integer_bits(const std::vector<double>& values, int coef_bits) {
+  const double largest = largest_magnitude(values);
+  if (largest == 0.0) return std::nullopt;
+  int bits = static_cast<int>(std::ceil(std::log2(largest)));
+  const double word_max = std::ldexp(1.0, coef_bits - 1) - 1.0;
+  while (std::round(std::ldexp(largest, coef_bits - 1 - bits)) > word_max) ++bits;
+  return bits;
+}
+
+std::int64_t round_to_word(double value, int frac_bits) {
+  return std::llround(std::ldexp(value, frac_bits));  // to nearest, ties away from zero
+}
+
+// Float coefficients of the structure, per section: numerator b[0..M], denominator a[0..M].
+struct FloatSections {
+  std::vector<std::vector<double>> b;
+  std::vector<std::vector<double>> a;
+  double leftover_gain = 1.0;
+};
+
+FloatSections float_sections(const FloatDesign& design, Structure structure) {
+  FloatSections sections;
+  if (structure == Structure::kDf1) {
+    sections.b.push_back(design.b);
+    sections.a.push_back(design.a);
+    return sections;
+  }
+  for (const Section& section : design.cascade.sections) {
+    sections.b.emplace_back(section.b.begin(), section.b.end());
+    sections.a.emplace_back(section.a.begin(), section.a.end());
+  }
+  sections.leftover_gain = design.cascade.leftover_gain;
+  return sections;
+}
+
+std::string format_number(double value) { return fmt::format("{:.6g}", value); }
+
+}  // namespace
+
+std::string structure_name(Structure structure) {
+  return structure == Structure::kDf1 ? "df1" : "sos";
+}
+
+QuantizedFilter quantize(const FloatDesign& design, Structure structure,
+                         const HardwareWidths& widths) {
+  const FloatSections sections = float_sections(design, structure);
+  QuantizedFilter filter;
+  filter.structure = structure;
+  filter.widths = widths;
+  filter.section_count = static_cast<int>(sections.b.size());
+  filter.section_order = static_cast<int>(sections.b.front().size()) - 1;
+  filter.leftover_gain = sections.leftover_gain;
+
+  std::vector<double> feedback;
+  for (std::size_t k = 0; k < sections.b.size(); ++k) {
+    feedback.insert(feedback.end(), sections.a[k].begin() + 1, sections.a[k].end());
+  }
+  const int c = widths.coef_bits;
+  const int max_shift = std::max(0, kDspAPortBits - widths.data_bits);
+  const std::optional<int> feedback_int = integer_bits(feedback, c);
+  int fa = feedback_int ? c - 1 - *feedback_int : c - 1;
+  if (fa < 1) {
+    throw DesignRejected(fmt::format(
+        "{} of order {} needs {} integer bits for its largest denominator coefficient ({}); "
+        "{}-bit coefficients leave none for the fraction; use --structure sos or more "
+        "coefficient bits",
+        structure == Structure::kDf1 ? "direct form" : "second-order sections", design.order,
+        *feedback_int, format_number(largest_magnitude(feedback)), c));
+  }
+  // Numerator compensation: scale each section's numerator by A_q(1) / A(1), the rounded
+  // denominator's DC value over the exact one, so that rounding the denominator of a narrow
+  // filter (where A(1) is tiny) does not move the section's DC gain.
+  std::vector<std::vector<double>> numerators = sections.b;
+  for (std::size_t k = 0; k < sections.b.size(); ++k) {
+    double exact_dc = 1.0;
+    double rounded_dc = 1.0;
+    for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
+      exact_dc += sections.a[k][j];
+      rounded_dc -= std::ldexp(static_cast<double>(round_to_word(-sections.a[k][j], fa)), -fa);
+    }
+    if (exact_dc != 0.0 && rounded_dc != 0.0 && std::signbit(exact_dc) == std::signbit(rounded_dc)) {
+      for (double& value : numerators[k]) value *= rounded_dc / exact_dc;
+    }
+  }
+  std::vector<double> feedforward;
+  for (const std::vector<double>& numerator : numerators) {
+    feedforward.insert(feedforward.end(), numerator.begin(), numerator.end());
+  }
+  const std::optional<int> feedforward_int = integer_bits(feedforward, c);
+  const int fb =
+      feedforward_int ? std::min(c - 1 - *feedforward_int, fa + max_shift) : fa + max_shift;
+  // The feedback shift cannot be negative: a numerator larger than the denominator takes the
+  // denominator's format down with it.
+  fa = std::min(fa, fb);
+  filter.coef_frac_bits = fa;
+  filter.b_frac_bits = fb;
+  filter.feedback_shift = fb - fa;
+
+  Int128 worst_any = 0;
+  for (std::size_t k = 0; k < sections.b.size(); ++k) {
+    QuantizedSection quantized;
+    Int128 worst = Int128{1} << (fb - 1);  // the rounding constant
+    for (double value : numerators[k]) {
+      const std::int64_t word = round_to_word(value, fb);
+      filter.words.push_back(word);
+      quantized.b.push_back(std::ldexp(static_cast<double>(word), -fb));
+      worst += static_cast<Int128>(std::llabs(word)) << (widths.data_bits - 1);
+    }
+    quantized.a.push_back(1.0);
+    for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
+      const std::int64_t word = round_to_word(-sections.a[k][j], fa);  // stored negated
+      filter.words.push_back(word);
+      quantized.a.push_back(-std::ldexp(static_cast<double>(word), -fa));
+      worst += static_cast<Int128>(std::llabs(word))
+               << (widths.data_bits - 1 + filter.feedback_shift);
+    }
+    filter.sections.push_back(std::move(quantized));
+    worst_any = std::max(worst_any, worst);
+  }
+  // Two's complement of P bits holds magnitudes up to 2^(P-1) - 1.
+  int needed = 1;
+  while ((Int128{1} << (needed - 1)) <= worst_any) ++needed;
+  filter.acc_bits_needed = needed;
+  if (needed > widths.acc_bits) {
+    throw DesignRejected(fmt::format(
+        "the {}-bit accumulator can overflow: the worst case of {}-bit samples times these "
+        "{}-bit coefficients needs {} bits; use --acc-bits {} or more",
+        widths.acc_bits, widths.data_bits, c, needed, needed));
+  }
+  return filter;
+}
+
+Complex float_response(const FloatDesign& design, double omega) {
+  const Complex w = std::polar(1.0, -omega);  // z^-1
+  Complex value(design.zpk.gain, 0.0);
+  // Each root in product form stays accurate where the expanded polynomials of a narrow
+  // high-order filter lose every digit.
+  for (const Complex& zero : design.zpk.zeros) value *= (1.0 - zero * w);
+  for (const Complex& pole : design.zpk.poles) value /= (1.0 - pole * w);
+  return value;
+}
+
+Complex quantized_response(const QuantizedFilter& filter, double omega) {
+  Complex value(filter.leftover_gain, 0.0);
+  for (const QuantizedSection& section : filter.sections) {
+    value *= eval_z_inverse(section.b, omega) / eval_z_inverse(section.a, omega);
+  }
+  return value;
+}
+
+namespace {
+
+double loss_db(Complex response) { return -20.0 * std::log10(std::abs(response)); }
+
+// Extreme of the loss over [f_lo, f_hi] (Hz) on a dense grid that includes both edges.
+double extreme_loss_db(const QuantizedFilter& filter, double fs_hz, double f_lo, double f_hi,
+                       bool largest) {
+  constexpr int kPoints = 4096;
+  double extreme = largest ? -std::numeric_limits<double>::infinity()
+                           : std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= kPoints; ++i) {
+    const double f = f_lo + (f_hi - f_lo) * i / kPoints;
+    const double loss = loss_db(quantized_response(filter, 2.0 * std::numbers::pi * f / fs_hz));
+    extreme = largest ? std::max(extreme, loss) : std::min(extreme, loss);
+  }
+  return extreme;
+}
+
+std::string structure_phrase(const QuantizedFilter& filter) {
+  return filter.structure == Structure::kDf1
+             ? fmt::format("direct form (order {})", filter.section_order)
+             : fmt::format("{} second-order sections", filter.section_count);
+}
+
+std::string fix_phrase(const QuantizedFilter& filter) {
+  return filter.structure == Structure::kDf1 ? "use --structure sos or more coefficient bits"
+                                             : "use more coefficient bits (--coef-bits)";
+}
+
+}  // namespace
+
+QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filter,
+                          const AcceptanceLimits& limits) {
+  QuantizedAnalysis analysis;
+  for (const QuantizedSection& section : filter.sections) {
+    for (const Complex& pole : polynomial_roots(section.a)) {
+      analysis.poles.push_back(pole);
+      analysis.max_pole_radius = std::max(analysis.max_pole_radius, std::abs(pole));
+      if (std::abs(pole) >= 1.0) ++analysis.poles_outside;
+    }
+  }
+  analysis.stable = analysis.poles_outside == 0;
+  const double float_dc = std::abs(float_response(design, 0.0));
+  const double quantized_dc = std::abs(quantized_response(filter, 0.0));
+  analysis.dc_gain_error_db = 20.0 * std::log10(quantized_dc / float_dc);
+
+  if (!analysis.stable) {
+    analysis.rejection = fmt::format(
+        "{} with {}-bit coefficients puts {} pole{} on or outside the unit circle "
+        "(max |z| = {:.4f}); {}",
+        structure_phrase(filter), filter.widths.coef_bits, analysis.poles_outside,
+        analysis.poles_outside == 1 ? "" : "s", analysis.max_pole_radius, fix_phrase(filter));
+    return analysis;
+  }
+  if (design.spec) {
+    const LowpassSpec& spec = *design.spec;
+    analysis.passband_loss_db = extreme_loss_db(filter, spec.fs_hz, 0.0, spec.fp_hz, true);
+    analysis.stopband_atten_db =
+        extreme_loss_db(filter, spec.fs_hz, spec.fa_hz, spec.fs_hz / 2.0, false);
+    const bool passband_ok = *analysis.passband_loss_db <= spec.ap_db + limits.spec_tolerance_db;
+    const bool stopband_ok =
+        *analysis.stopband_atten_db >= spec.aa_db - limits.spec_tolerance_db;
+    analysis.meets_spec = passband_ok && stopband_ok;
+    if (!passband_ok) {
+      analysis.rejection = fmt::format(
+          "quantised {} misses the spec: passband loss {:.4f} dB over 0-{} Hz exceeds ap = {} dB "
+          "(+{} dB tolerance); {}",
+          structure_phrase(filter), *analysis.passband_loss_db, format_number(spec.fp_hz),
+          format_number(spec.ap_db), format_number(limits.spec_tolerance_db), fix_phrase(filter));
+    } else if (!stopband_ok) {
+      analysis.rejection = fmt::format(
+          "{} misses the spec: stopband attenuation {:.2f} dB over {}-{} Hz is below aa = {} dB; "
+          "{}",
+          filter.structure == Structure::kDf1 ? "the quantised direct form"
+                                              : "the quantised cascade",
+          *analysis.stopband_atten_db, format_number(spec.fa_hz),
+          format_number(spec.fs_hz / 2.0), format_number(spec.aa_db),
+          "raise the order or relax the spec (or add coefficient bits if the float design meets "
+          "it)");
+    }
+    return analysis;
+  }
+  analysis.meets_spec = std::abs(analysis.dc_gain_error_db) <= limits.max_dc_error_db;
+  if (!analysis.meets_spec) {
+    analysis.rejection = fmt::format(
+        "quantised {} has a DC gain error of {:.4f} dB, beyond the {} dB allowed; {}",
+        structure_phrase(filter), analysis.dc_gain_error_db,
+        format_number(limits.max_dc_error_db), fix_phrase(filter));
+  }
+  return analysis;
+}
+
+}  // namespace flange::coeffs

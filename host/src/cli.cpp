@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+#include "cli.h"
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <ostream>
+
+#include "demo_command.h"
+#include "design_command.h"
+
+namespace flange::host {
+
+int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"flange: FPGA IIR filter for wheel-flange wear measurement"};
+  app.name("flange");
+  app.require_subcommand(1);
+  app.fallthrough(false);
+
+  coeffs::DesignOptions design_options;
+  CLI::App* design = coeffs::add_design_command(app, design_options);
+  DemoOptions demo_options;
+  CLI::App* demo = add_demo_command(app, demo_options);
+
+  std::vector<const char*> argv{"flange"};
+  for (const std::string& arg : args) argv.push_back(arg.c_str());
+  try {
+    app.parse(static_cast<int>(argv.size()), argv.data());
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help, out, err);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help, out, err);
+  } catch (const CLI::ParseError& error) {
+    std::string where = "flange";
+    for (const CLI::App* sub : app.get_subcommands()) where += " " + sub->get_name();
+    err << where << ": " << error.what() << "\n";
+    return kExitBadArgument;
+  }
+  try {
+    if (design->parsed()) return coeffs::run_design_command(design_options, args, out, err);
+    if (demo->parsed()) return run_demo_command(demo_options, out, err);
+  } catch (const std::exception& error) {
+    err << "flange: " << error.what() << "\n";
+    return kExitFailure;
+  }
+  return kExitBadArgument;
+}
+
+}  // namespace flange::host
