@@ -38,6 +38,11 @@ double magnitude_db(Complex response) {
   return std::max(-300.0, 20.0 * std::log10(std::abs(response)));
 }
 
+// A figure for display: rounding noise below the printed precision shows as 0, not -0.
+double shown(double value, double precision) {
+  return std::abs(value) < precision / 2.0 ? 0.0 : value;
+}
+
 void write_text(const std::filesystem::path& path, const std::string& text) {
   std::ofstream file(path, std::ios::binary);
   if (!file) throw std::runtime_error("cannot write " + path.string());
@@ -103,6 +108,7 @@ nlohmann::ordered_json filter_json(const DesignRecord& record) {
   quantized["stable"] = analysis.stable;
   quantized["dc_gain_error_db"] = analysis.dc_gain_error_db;
   quantized["passband_loss_db"] = finite_or_null(analysis.passband_loss_db);
+  quantized["passband_peak_db"] = finite_or_null(analysis.passband_peak_db);
   quantized["stopband_atten_db"] = finite_or_null(analysis.stopband_atten_db);
   quantized["meets_spec"] = analysis.meets_spec;
   json["quantized"] = quantized;
@@ -257,11 +263,12 @@ std::string design_report(const DesignRecord& record) {
   text << fmt::format("  poles: max |z| = {:.6f} float, {:.6f} quantised ({} on or outside)\n",
                       float_radius, analysis.max_pole_radius, analysis.poles_outside);
   if (std::isfinite(analysis.dc_gain_error_db)) {
-    text << fmt::format("  DC gain error: {:+.5f} dB\n", analysis.dc_gain_error_db);
+    text << fmt::format("  DC gain error: {:+.5f} dB\n", shown(analysis.dc_gain_error_db, 1e-5));
   }
   if (analysis.passband_loss_db) {
-    text << fmt::format("  passband loss over 0-{:.6g} Hz: {:.4f} dB\n", design.spec->fp_hz,
-                        *analysis.passband_loss_db);
+    text << fmt::format("  passband over 0-{:.6g} Hz: loss up to {:.4f} dB, gain up to {:.4f} dB\n",
+                        design.spec->fp_hz, shown(*analysis.passband_loss_db, 1e-4),
+                        shown(*analysis.passband_peak_db, 1e-4));
   }
   if (analysis.stopband_atten_db) {
     text << fmt::format("  stopband attenuation over {:.6g}-{:.6g} Hz: {:.2f} dB\n",

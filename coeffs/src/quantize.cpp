@@ -231,17 +231,24 @@ QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filt
   if (design.spec) {
     const LowpassSpec& spec = *design.spec;
     analysis.passband_loss_db = extreme_loss_db(filter, spec.fs_hz, 0.0, spec.fp_hz, true);
+    analysis.passband_peak_db = -extreme_loss_db(filter, spec.fs_hz, 0.0, spec.fp_hz, false);
     analysis.stopband_atten_db =
         extreme_loss_db(filter, spec.fs_hz, spec.fa_hz, spec.fs_hz / 2.0, false);
-    const bool passband_ok = *analysis.passband_loss_db <= spec.ap_db + limits.spec_tolerance_db;
+    // The passband may deviate by ap either way: a gain bump from moved poles is as wrong as a
+    // loss, and above 0 dB it eats the headroom of the sample format.
+    const bool passband_ok = *analysis.passband_loss_db <= spec.ap_db + limits.spec_tolerance_db &&
+                             *analysis.passband_peak_db <= spec.ap_db + limits.spec_tolerance_db;
     const bool stopband_ok =
         *analysis.stopband_atten_db >= spec.aa_db - limits.spec_tolerance_db;
     analysis.meets_spec = passband_ok && stopband_ok;
     if (!passband_ok) {
       analysis.rejection = fmt::format(
-          "quantised {} misses the spec: passband loss {:.4f} dB over 0-{} Hz exceeds ap = {} dB "
+          "quantised {} misses the spec: passband {} {:.4f} dB over 0-{} Hz exceeds ap = {} dB "
           "(+{} dB tolerance); {}",
-          structure_phrase(filter), *analysis.passband_loss_db, format_number(spec.fp_hz),
+          structure_phrase(filter),
+          *analysis.passband_loss_db >= *analysis.passband_peak_db ? "loss" : "gain",
+          std::max(*analysis.passband_loss_db, *analysis.passband_peak_db),
+          format_number(spec.fp_hz),
           format_number(spec.ap_db), format_number(limits.spec_tolerance_db), fix_phrase(filter));
     } else if (!stopband_ok) {
       analysis.rejection = fmt::format(

@@ -74,6 +74,7 @@ struct QuantizedAnalysis {
   bool stable = false;
   double dc_gain_error_db = 0.0;               // quantised over float, at DC
   std::optional<double> passband_loss_db;      // largest loss over [0, fp] (spec only)
+  std::optional<double> passband_peak_db;      // largest gain over [0, fp] (spec only)
   std::optional<double> stopband_atten_db;     // smallest attenuation over [fa, fs/2] (spec only)
   bool meets_spec = false;                     // the spec, or the DC limit without one
   std::string rejection;                       // one line naming cause and fix; empty if accepted
