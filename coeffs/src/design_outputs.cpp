@@ -2,6 +2,7 @@
 #include "design_outputs.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -250,6 +251,8 @@ std::string design_report(const DesignRecord& record) {
     text << fmt::format("  spec: fp = {:.6g} Hz (ap = {:.6g} dB), fa = {:.6g} Hz (aa = {:.6g} dB)\n",
                         spec.fp_hz, spec.ap_db, spec.fa_hz, spec.aa_db);
   }
+  text << fmt::format("  float b = [{:.4g}]\n  float a = [{:.4g}]\n", fmt::join(design.b, " "),
+                      fmt::join(design.a, " "));
   text << fmt::format(
       "  structure: {}, {} section(s) of order {}, {} MACs/sample\n", structure_name(q.structure),
       q.section_count, q.section_order, q.words.size());

@@ -251,15 +251,24 @@ QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filt
           format_number(spec.fp_hz),
           format_number(spec.ap_db), format_number(limits.spec_tolerance_db), fix_phrase(filter));
     } else if (!stopband_ok) {
+      // Say whether rounding lost the attenuation or the design never had it.
+      double float_atten = std::numeric_limits<double>::infinity();
+      constexpr int kPoints = 4096;
+      for (int i = 0; i <= kPoints; ++i) {
+        const double f = spec.fa_hz + (spec.fs_hz / 2.0 - spec.fa_hz) * i / kPoints;
+        float_atten = std::min(
+            float_atten, loss_db(float_response(design, 2.0 * std::numbers::pi * f / spec.fs_hz)));
+      }
+      const bool design_misses = float_atten < spec.aa_db - limits.spec_tolerance_db;
       analysis.rejection = fmt::format(
-          "{} misses the spec: stopband attenuation {:.2f} dB over {}-{} Hz is below aa = {} dB; "
-          "{}",
-          filter.structure == Structure::kDf1 ? "the quantised direct form"
-                                              : "the quantised cascade",
-          *analysis.stopband_atten_db, format_number(spec.fa_hz),
+          "quantised {} misses the spec: stopband attenuation {:.2f} dB over {}-{} Hz is below "
+          "aa = {} dB; {}",
+          structure_phrase(filter), *analysis.stopband_atten_db, format_number(spec.fa_hz),
           format_number(spec.fs_hz / 2.0), format_number(spec.aa_db),
-          "raise the order or relax the spec (or add coefficient bits if the float design meets "
-          "it)");
+          design_misses ? fmt::format("the float design itself gives only {:.2f} dB: raise "
+                                      "--order or design from the spec alone",
+                                      float_atten)
+                        : fix_phrase(filter));
     }
     return analysis;
   }

@@ -143,39 +143,42 @@ std::vector<Section> pair_sections_nearest(const Zpk& zpk) {
 
 namespace {
 
+Complex section_response(const Section& section, Complex w) {
+  // b(w) / a(w) with w = z^-1, by Horner.
+  const Complex numerator = section.b[0] + w * (section.b[1] + w * section.b[2]);
+  const Complex denominator = section.a[0] + w * (section.a[1] + w * section.a[2]);
+  return numerator / denominator;
+}
+
 double cumulative_magnitude(const std::vector<Section>& sections, std::size_t count,
                             double omega) {
+  const Complex w = std::polar(1.0, -omega);
   Complex product(1.0, 0.0);
-  for (std::size_t k = 0; k < count; ++k) {
-    const std::vector<double> b(sections[k].b.begin(), sections[k].b.end());
-    const std::vector<double> a(sections[k].a.begin(), sections[k].a.end());
-    product *= eval_z_inverse(b, omega) / eval_z_inverse(a, omega);
-  }
+  for (std::size_t k = 0; k < count; ++k) product *= section_response(sections[k], w);
   return std::abs(product);
 }
 
-}  // namespace
-
-double cumulative_peak_magnitude(const std::vector<Section>& sections, std::size_t count) {
-  // A linear grid catches wide peaks, a logarithmic one the narrow peaks of filters whose
-  // cut-off is a tiny fraction of the sample rate; golden-section search then refines.
-  constexpr int kGridPoints = 2048;
-  std::vector<double> grid;
-  grid.reserve(2 * kGridPoints + 1);
-  for (int i = 0; i <= kGridPoints; ++i) grid.push_back(std::numbers::pi * i / kGridPoints);
-  for (int i = 0; i < kGridPoints; ++i) {
-    grid.push_back(std::numbers::pi * std::pow(10.0, -7.0 + 7.0 * i / kGridPoints));
-  }
-  std::sort(grid.begin(), grid.end());
-  std::size_t best = 0;
-  double best_value = -1.0;
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    const double value = cumulative_magnitude(sections, count, grid[i]);
-    if (value > best_value) {
-      best_value = value;
-      best = i;
+// Frequencies where the peaks are looked for: a linear grid catches wide peaks, a logarithmic
+// one the narrow peaks of filters whose cut-off is a tiny fraction of the sample rate.
+const std::vector<double>& peak_search_grid() {
+  static const std::vector<double> grid = [] {
+    constexpr int kGridPoints = 2048;
+    std::vector<double> points;
+    points.reserve(2 * kGridPoints + 1);
+    for (int i = 0; i <= kGridPoints; ++i) points.push_back(std::numbers::pi * i / kGridPoints);
+    for (int i = 0; i < kGridPoints; ++i) {
+      points.push_back(std::numbers::pi * std::pow(10.0, -7.0 + 7.0 * i / kGridPoints));
     }
-  }
+    std::sort(points.begin(), points.end());
+    return points;
+  }();
+  return grid;
+}
+
+// Golden-section refinement of a grid maximum at index `best` of the first `count` sections.
+double refine_peak(const std::vector<Section>& sections, std::size_t count, std::size_t best,
+                   double best_value) {
+  const std::vector<double>& grid = peak_search_grid();
   double lo = grid[best == 0 ? 0 : best - 1];
   double hi = grid[std::min(best + 1, grid.size() - 1)];
   const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
@@ -191,13 +194,59 @@ double cumulative_peak_magnitude(const std::vector<Section>& sections, std::size
   return std::max(best_value, cumulative_magnitude(sections, count, (lo + hi) / 2.0));
 }
 
+// Running product of the section responses on the grid, one section at a time: the scaling
+// costs O(sections x grid), not O(sections^2 x grid).
+class CumulativeResponse {
+ public:
+  CumulativeResponse() {
+    for (double omega : peak_search_grid()) {
+      unit_delay_.push_back(std::polar(1.0, -omega));
+      product_.emplace_back(1.0, 0.0);
+    }
+  }
+
+  // Peak of the product so far followed by `next` (not yet multiplied in).
+  double peak_with(const std::vector<Section>& sections, std::size_t count) const {
+    const Section& next = sections[count - 1];
+    std::size_t best = 0;
+    double best_value = -1.0;
+    for (std::size_t i = 0; i < product_.size(); ++i) {
+      const double value = std::abs(product_[i] * section_response(next, unit_delay_[i]));
+      if (value > best_value) {
+        best_value = value;
+        best = i;
+      }
+    }
+    return refine_peak(sections, count, best, best_value);
+  }
+
+  void multiply(const Section& section) {
+    for (std::size_t i = 0; i < product_.size(); ++i) {
+      product_[i] *= section_response(section, unit_delay_[i]);
+    }
+  }
+
+ private:
+  std::vector<Complex> unit_delay_;
+  std::vector<Complex> product_;
+};
+
+}  // namespace
+
+double cumulative_peak_magnitude(const std::vector<Section>& sections, std::size_t count) {
+  CumulativeResponse cumulative;
+  for (std::size_t k = 0; k + 1 < count; ++k) cumulative.multiply(sections[k]);
+  return cumulative.peak_with(sections, count);
+}
+
 ScaledCascade scale_cascade_linf(std::vector<Section> sections, double gain) {
   ScaledCascade cascade;
+  CumulativeResponse cumulative;
   double placed = 1.0;  // product of the gains put into the sections so far
   for (std::size_t k = 0; k < sections.size(); ++k) {
     // The sections before k already carry their gains: this is the peak of the scaled cascade
     // so far followed by section k at unit gain.
-    const double peak = cumulative_peak_magnitude(sections, k + 1);
+    const double peak = cumulative.peak_with(sections, k + 1);
     double section_gain = 1.0 / peak;
     if (k + 1 == sections.size()) {
       // The last section carries the rest of the filter's gain unless that overflows.
@@ -207,6 +256,7 @@ ScaledCascade scale_cascade_linf(std::vector<Section> sections, double gain) {
     }
     for (double& coefficient : sections[k].b) coefficient *= section_gain;
     placed *= section_gain;
+    cumulative.multiply(sections[k]);
   }
   cascade.leftover_gain = gain / placed;
   cascade.sections = std::move(sections);
