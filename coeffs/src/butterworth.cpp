@@ -10,7 +10,9 @@ namespace {
 
 // Pre-warped analog frequency of a digital frequency normalised to Nyquist (scipy's `fs = 2`
 // convention: Omega = 2 fs tan(pi w / fs) with fs = 2).
-double prewarp_normalised(double normalised) { return std::tan(std::numbers::pi * normalised / 2.0); }
+double prewarp_normalised(double normalised) {
+  return std::tan(std::numbers::pi * normalised / 2.0);
+}
 
 }  // namespace
 
@@ -21,8 +23,8 @@ int butterworth_min_order(const LowpassSpec& spec) {
   const double pass_power = std::pow(10.0, 0.1 * spec.ap_db);
   // log(lambda / epsilon) / log(Omega_a / Omega_p), with lambda^2 = 10^(aa/10) - 1 and
   // epsilon^2 = 10^(ap/10) - 1.
-  const double order = std::log10((stop_power - 1.0) / (pass_power - 1.0)) /
-                       (2.0 * std::log10(stopband / passband));
+  const double order =
+      std::log10((stop_power - 1.0) / (pass_power - 1.0)) / (2.0 * std::log10(stopband / passband));
   return static_cast<int>(std::ceil(order));
 }
 
@@ -44,8 +46,7 @@ Zpk butterworth_lowpass(int order, double fc_hz, double fs_hz) {
   Zpk zpk;
   Complex denominator_product(1.0, 0.0);
   for (int m = -order + 1; m < order; m += 2) {
-    const Complex prototype =
-        -std::exp(Complex(0.0, std::numbers::pi * m / (2.0 * order)));
+    const Complex prototype = -std::exp(Complex(0.0, std::numbers::pi * m / (2.0 * order)));
     const Complex analog = warped * prototype;
     // Bilinear transform: z = (2 fs + s) / (2 fs - s).
     zpk.poles.push_back((kBilinearTwoFs + analog) / (kBilinearTwoFs - analog));

@@ -31,8 +31,7 @@ CLI::App* add_design_command(CLI::App& app, DesignOptions& options) {
   cmd->add_option("--coef-bits", r.widths.coef_bits, "coefficient width (4 to 32)")
       ->default_val(18);
   cmd->add_option("--data-bits", r.widths.data_bits, "sample width (4 to 24)")->default_val(16);
-  cmd->add_option("--acc-bits", r.widths.acc_bits, "accumulator width (16 to 64)")
-      ->default_val(48);
+  cmd->add_option("--acc-bits", r.widths.acc_bits, "accumulator width (16 to 64)")->default_val(48);
   cmd->add_option("--name", r.name, "name of the filter in reports")->default_val("iir");
   cmd->add_option("--spec-tolerance-db", r.limits.spec_tolerance_db,
                   "slack on ap and aa after rounding (>= 0)")
@@ -40,8 +39,9 @@ CLI::App* add_design_command(CLI::App& app, DesignOptions& options) {
   cmd->add_option("--max-dc-error-db", r.limits.max_dc_error_db,
                   "DC gain error allowed without a spec (> 0)")
       ->default_val(0.1);
-  cmd->add_option("--out", options.out_dir, "folder for filter.json, coeffs.mem, "
-                                            "iir_coeffs_pkg.sv and response.svg");
+  cmd->add_option("--out", options.out_dir,
+                  "folder for filter.json, coeffs.mem, "
+                  "iir_coeffs_pkg.sv and response.svg");
   cmd->add_flag("--no-plot", options.no_plot, "skip the frequency-response plot");
   return cmd;
 }

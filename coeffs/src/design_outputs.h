@@ -36,7 +36,6 @@ void write_response_plot(const DesignRecord& record, const std::filesystem::path
 std::string design_report(const DesignRecord& record);
 
 // Writes all outputs into `out_dir`, creating it. `with_plot` false skips the SVG.
-void write_design(const DesignRecord& record, const std::filesystem::path& out_dir,
-                  bool with_plot);
+void write_design(const DesignRecord& record, const std::filesystem::path& out_dir, bool with_plot);
 
 }  // namespace flange::coeffs

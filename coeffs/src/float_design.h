@@ -14,12 +14,12 @@ namespace flange::coeffs {
 struct FloatDesign {
   double fs_hz = 0.0;
   int order = 0;
-  double fc_hz = 0.0;                // 3 dB cut-off
-  std::optional<LowpassSpec> spec;   // the mask the design must meet, when one was given
+  double fc_hz = 0.0;               // 3 dB cut-off
+  std::optional<LowpassSpec> spec;  // the mask the design must meet, when one was given
   Zpk zpk;
-  std::vector<double> b;             // numerator, b[0] first (z^0)
-  std::vector<double> a;             // denominator, a[0] = 1
-  ScaledCascade cascade;             // second-order sections, L-infinity scaled
+  std::vector<double> b;  // numerator, b[0] first (z^0)
+  std::vector<double> a;  // denominator, a[0] = 1
+  ScaledCascade cascade;  // second-order sections, L-infinity scaled
 };
 
 // Designs the Butterworth low-pass of the given order and cut-off: zpk, b/a and the scaled

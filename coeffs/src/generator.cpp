@@ -116,7 +116,8 @@ FloatDesign design_from_transfer_function(const DesignRequest& request,
     roots.insert(roots.end(), at_origin, Complex(0.0, 0.0));
     return roots;
   };
-  design.zpk.zeros = roots_in_z(std::vector<double>(design.b.begin() + static_cast<std::ptrdiff_t>(lead), design.b.end()));
+  design.zpk.zeros = roots_in_z(
+      std::vector<double>(design.b.begin() + static_cast<std::ptrdiff_t>(lead), design.b.end()));
   design.zpk.poles = roots_in_z(design.a);
   design.zpk.gain = design.b[lead];
   double radius = 0.0;

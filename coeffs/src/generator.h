@@ -13,7 +13,7 @@ namespace flange::coeffs {
 
 struct DesignRequest {
   std::string name = "iir";
-  double fs_hz = 0.0;                // > 0, finite
+  double fs_hz = 0.0;  // > 0, finite
   // Spec (all four, or none): 0 < fp < fa < fs/2, 0 < ap < aa.
   std::optional<double> fp_hz, fa_hz, ap_db, aa_db;
   // Explicit design: order in [1, 32], 0 < fc < fs/2.

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "quantize.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <fmt/format.h>
 #include <limits>
 #include <numbers>
 
@@ -104,7 +105,8 @@ QuantizedFilter quantize(const FloatDesign& design, Structure structure,
       exact_dc += sections.a[k][j];
       rounded_dc -= std::ldexp(static_cast<double>(round_to_word(-sections.a[k][j], fa)), -fa);
     }
-    if (exact_dc != 0.0 && rounded_dc != 0.0 && std::signbit(exact_dc) == std::signbit(rounded_dc)) {
+    if (exact_dc != 0.0 && rounded_dc != 0.0 &&
+        std::signbit(exact_dc) == std::signbit(rounded_dc)) {
       for (double& value : numerators[k]) value *= rounded_dc / exact_dc;
     }
   }
@@ -182,8 +184,8 @@ double loss_db(Complex response) { return -20.0 * std::log10(std::abs(response))
 double extreme_loss_db(const QuantizedFilter& filter, double fs_hz, double f_lo, double f_hi,
                        bool largest) {
   constexpr int kPoints = 4096;
-  double extreme = largest ? -std::numeric_limits<double>::infinity()
-                           : std::numeric_limits<double>::infinity();
+  double extreme =
+      largest ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
   for (int i = 0; i <= kPoints; ++i) {
     const double f = f_lo + (f_hi - f_lo) * i / kPoints;
     const double loss = loss_db(quantized_response(filter, 2.0 * std::numbers::pi * f / fs_hz));
@@ -238,8 +240,7 @@ QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filt
     // loss, and above 0 dB it eats the headroom of the sample format.
     const bool passband_ok = *analysis.passband_loss_db <= spec.ap_db + limits.spec_tolerance_db &&
                              *analysis.passband_peak_db <= spec.ap_db + limits.spec_tolerance_db;
-    const bool stopband_ok =
-        *analysis.stopband_atten_db >= spec.aa_db - limits.spec_tolerance_db;
+    const bool stopband_ok = *analysis.stopband_atten_db >= spec.aa_db - limits.spec_tolerance_db;
     analysis.meets_spec = passband_ok && stopband_ok;
     if (!passband_ok) {
       analysis.rejection = fmt::format(
@@ -248,8 +249,8 @@ QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filt
           structure_phrase(filter),
           *analysis.passband_loss_db >= *analysis.passband_peak_db ? "loss" : "gain",
           std::max(*analysis.passband_loss_db, *analysis.passband_peak_db),
-          format_number(spec.fp_hz),
-          format_number(spec.ap_db), format_number(limits.spec_tolerance_db), fix_phrase(filter));
+          format_number(spec.fp_hz), format_number(spec.ap_db),
+          format_number(limits.spec_tolerance_db), fix_phrase(filter));
     } else if (!stopband_ok) {
       // Say whether rounding lost the attenuation or the design never had it.
       double float_atten = std::numeric_limits<double>::infinity();
@@ -274,10 +275,10 @@ QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filt
   }
   analysis.meets_spec = std::abs(analysis.dc_gain_error_db) <= limits.max_dc_error_db;
   if (!analysis.meets_spec) {
-    analysis.rejection = fmt::format(
-        "quantised {} has a DC gain error of {:.4f} dB, beyond the {} dB allowed; {}",
-        structure_phrase(filter), analysis.dc_gain_error_db,
-        format_number(limits.max_dc_error_db), fix_phrase(filter));
+    analysis.rejection =
+        fmt::format("quantised {} has a DC gain error of {:.4f} dB, beyond the {} dB allowed; {}",
+                    structure_phrase(filter), analysis.dc_gain_error_db,
+                    format_number(limits.max_dc_error_db), fix_phrase(filter));
   }
   return analysis;
 }

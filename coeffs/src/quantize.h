@@ -40,11 +40,11 @@ struct QuantizedFilter {
   Structure structure = Structure::kSos;
   HardwareWidths widths;
   int section_count = 0;
-  int section_order = 0;     // 2 for sos, N for df1
-  int coef_frac_bits = 0;    // Fa: feedback coefficients
-  int b_frac_bits = 0;       // Fb: feed-forward coefficients
-  int feedback_shift = 0;    // Fb - Fa
-  int acc_bits_needed = 0;   // worst case over the sections, sign included
+  int section_order = 0;            // 2 for sos, N for df1
+  int coef_frac_bits = 0;           // Fa: feedback coefficients
+  int b_frac_bits = 0;              // Fb: feed-forward coefficients
+  int feedback_shift = 0;           // Fb - Fa
+  int acc_bits_needed = 0;          // worst case over the sections, sign included
   std::vector<std::int64_t> words;  // ROM order: per section B[0..M], then -A[1..M]
   std::vector<QuantizedSection> sections;
   double leftover_gain = 1.0;  // applied by the host
@@ -72,12 +72,12 @@ struct QuantizedAnalysis {
   double max_pole_radius = 0.0;
   int poles_outside = 0;  // poles with |z| >= 1
   bool stable = false;
-  double dc_gain_error_db = 0.0;               // quantised over float, at DC
-  std::optional<double> passband_loss_db;      // largest loss over [0, fp] (spec only)
-  std::optional<double> passband_peak_db;      // largest gain over [0, fp] (spec only)
-  std::optional<double> stopband_atten_db;     // smallest attenuation over [fa, fs/2] (spec only)
-  bool meets_spec = false;                     // the spec, or the DC limit without one
-  std::string rejection;                       // one line naming cause and fix; empty if accepted
+  double dc_gain_error_db = 0.0;            // quantised over float, at DC
+  std::optional<double> passband_loss_db;   // largest loss over [0, fp] (spec only)
+  std::optional<double> passband_peak_db;   // largest gain over [0, fp] (spec only)
+  std::optional<double> stopband_atten_db;  // smallest attenuation over [fa, fs/2] (spec only)
+  bool meets_spec = false;                  // the spec, or the DC limit without one
+  std::string rejection;                    // one line naming cause and fix; empty if accepted
 };
 
 QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filter,

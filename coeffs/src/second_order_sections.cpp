@@ -150,8 +150,7 @@ Complex section_response(const Section& section, Complex w) {
   return numerator / denominator;
 }
 
-double cumulative_magnitude(const std::vector<Section>& sections, std::size_t count,
-                            double omega) {
+double cumulative_magnitude(const std::vector<Section>& sections, std::size_t count, double omega) {
   const Complex w = std::polar(1.0, -omega);
   Complex product(1.0, 0.0);
   for (std::size_t k = 0; k < count; ++k) product *= section_response(sections[k], w);
@@ -185,7 +184,8 @@ double refine_peak(const std::vector<Section>& sections, std::size_t count, std:
   for (int iteration = 0; iteration < 60 && hi - lo > 1e-15; ++iteration) {
     const double left = hi - ratio * (hi - lo);
     const double right = lo + ratio * (hi - lo);
-    if (cumulative_magnitude(sections, count, left) > cumulative_magnitude(sections, count, right)) {
+    if (cumulative_magnitude(sections, count, left) >
+        cumulative_magnitude(sections, count, right)) {
       hi = right;
     } else {
       lo = left;

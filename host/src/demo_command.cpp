@@ -29,8 +29,8 @@ int run_demo_command(const DemoOptions& options, std::ostream& out, std::ostream
     std::ostringstream messages;
     const int status = run_flange(args, out, messages);
     if (filter.expect_rejected) {
-      out << "  (expected: the thesis's direct form does not survive quantisation; exit "
-          << status << ": " << messages.str().substr(0, messages.str().find('\n')) << ")\n";
+      out << "  (expected: the thesis's direct form does not survive quantisation; exit " << status
+          << ": " << messages.str().substr(0, messages.str().find('\n')) << ")\n";
       if (status != 3) ++failures;
     } else if (status != 0) {
       err << messages.str();

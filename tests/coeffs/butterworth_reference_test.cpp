@@ -71,9 +71,11 @@ void check_design(const nlohmann::json& entry, const FloatDesign& design, const 
     const auto row = sos[k].get<std::vector<double>>();
     const double scale = row[0];
     for (int i = 0; i < 3; ++i) {
-      EXPECT_NEAR(row[static_cast<std::size_t>(i)] / scale, paired[k].b[static_cast<std::size_t>(i)], 1e-9)
+      EXPECT_NEAR(row[static_cast<std::size_t>(i)] / scale,
+                  paired[k].b[static_cast<std::size_t>(i)], 1e-9)
           << what << " section " << k << " b" << i;
-      EXPECT_NEAR(row[static_cast<std::size_t>(3 + i)], paired[k].a[static_cast<std::size_t>(i)], 1e-9)
+      EXPECT_NEAR(row[static_cast<std::size_t>(3 + i)], paired[k].a[static_cast<std::size_t>(i)],
+                  1e-9)
           << what << " section " << k << " a" << i;
     }
   }
@@ -103,8 +105,8 @@ TEST(ButterworthReference, SpecDesignsMatchScipy) {
     const int order = butterworth_min_order(spec);
     const FloatDesign design =
         design_butterworth(order, butterworth_cutoff_hz(spec, order), spec.fs_hz, spec);
-    check_design(entry, design, "spec fs=" + std::to_string(spec.fs_hz) + " order " +
-                                    std::to_string(order));
+    check_design(entry, design,
+                 "spec fs=" + std::to_string(spec.fs_hz) + " order " + std::to_string(order));
   }
 }
 
@@ -112,8 +114,9 @@ TEST(ButterworthReference, OrderAndCutoffDesignsMatchScipy) {
   for (const auto& entry : reference()["from_order_and_cutoff"]) {
     const auto& s = entry["spec"];
     const FloatDesign design = design_butterworth(s["order"], s["fc_hz"], s["fs_hz"], {});
-    check_design(entry, design, "order " + std::to_string(s["order"].get<int>()) + " fc " +
-                                    std::to_string(s["fc_hz"].get<double>()));
+    check_design(entry, design,
+                 "order " + std::to_string(s["order"].get<int>()) + " fc " +
+                     std::to_string(s["fc_hz"].get<double>()));
   }
 }
 

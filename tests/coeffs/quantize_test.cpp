@@ -70,9 +70,10 @@ TEST(Quantize, WordsFitTheCoefficientWidthAndReproduceTheSectionValues) {
     for (int k = 0; k < q.section_count; ++k) {
       const auto& section = q.sections[static_cast<std::size_t>(k)];
       for (int i = 0; i <= m; ++i) {
-        EXPECT_EQ(std::ldexp(static_cast<double>(q.words[static_cast<std::size_t>(k * (2 * m + 1) + i)]),
-                             -q.b_frac_bits),
-                  section.b[static_cast<std::size_t>(i)]);
+        EXPECT_EQ(
+            std::ldexp(static_cast<double>(q.words[static_cast<std::size_t>(k * (2 * m + 1) + i)]),
+                       -q.b_frac_bits),
+            section.b[static_cast<std::size_t>(i)]);
       }
       for (int j = 1; j <= m; ++j) {
         EXPECT_EQ(-std::ldexp(static_cast<double>(
@@ -124,8 +125,8 @@ TEST(Quantize, EverySosOrderFromOneToThirtyTwoQuantisesStably) {
     const DesignRecord record =
         generate_design(order_and_cutoff(order, 10.0, 100.0, Structure::kSos), "test");
     EXPECT_TRUE(record.analysis.stable) << "order " << order;
-    EXPECT_TRUE(record.analysis.rejection.empty()) << "order " << order << ": "
-                                                   << record.analysis.rejection;
+    EXPECT_TRUE(record.analysis.rejection.empty())
+        << "order " << order << ": " << record.analysis.rejection;
     EXPECT_EQ(record.quantized.section_count, (order + 1) / 2);
   }
 }

@@ -109,14 +109,13 @@ TEST(DesignCommand, UnstableDirectFormExitsThreeAndWritesNothing) {
 TEST(DesignCommand, ThesisPrintedVehicleCoefficientsAreRefusedAsUnstable) {
   // Eq. 4.20 as printed: 4 significant digits of a 7th-order direct form.
   const fs::path dir = fresh_dir("eq420");
-  const Outcome outcome = run(with_out(
-      {"design", "--fs", "100", "--tf-b",
-       "2.273e-15,1.591e-14,4.773e-14,7.955e-14,7.955e-14,4.773e-14,1.591e-14,2.273e-15",
-       "--tf-a", "1,-6.927,20.56,-33.92,33.56,-19.93,6.574,-0.9295"},
-      dir));
+  const Outcome outcome = run(
+      with_out({"design", "--fs", "100", "--tf-b",
+                "2.273e-15,1.591e-14,4.773e-14,7.955e-14,7.955e-14,4.773e-14,1.591e-14,2.273e-15",
+                "--tf-a", "1,-6.927,20.56,-33.92,33.56,-19.93,6.574,-0.9295"},
+               dir));
   EXPECT_EQ(outcome.status, 3) << outcome.err;
-  EXPECT_NE(outcome.err.find("unstable before any quantisation"), std::string::npos)
-      << outcome.err;
+  EXPECT_NE(outcome.err.find("unstable before any quantisation"), std::string::npos) << outcome.err;
   EXPECT_FALSE(fs::exists(dir));
 }
 
@@ -134,9 +133,9 @@ TEST(DesignCommand, MissedSpecExitsThree) {
 
 TEST(DesignCommand, SpecDesignWritesEveryOutput) {
   const fs::path dir = fresh_dir("spec");
-  const Outcome outcome = run(with_out({"design", "--fs", "6", "--fp", "0.21128", "--fa",
-                                        "0.975", "--ap", "0.1737", "--aa", "40"},
-                                       dir));
+  const Outcome outcome = run(with_out(
+      {"design", "--fs", "6", "--fp", "0.21128", "--fa", "0.975", "--ap", "0.1737", "--aa", "40"},
+      dir));
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   for (const char* file : {"filter.json", "coeffs.mem", "iir_coeffs_pkg.sv", "response.svg"}) {
     ASSERT_TRUE(fs::exists(dir / file)) << file;
@@ -153,9 +152,9 @@ TEST(DesignCommand, SpecDesignWritesEveryOutput) {
   }
   EXPECT_EQ(json["order"], 4);
   const auto& q = json["quantized"];
-  for (const char* key : {"structure", "coef_bits", "coef_frac_bits", "data_bits", "acc_bits",
-                          "words", "max_pole_radius", "stable", "passband_loss_db",
-                          "stopband_atten_db"}) {
+  for (const char* key :
+       {"structure", "coef_bits", "coef_frac_bits", "data_bits", "acc_bits", "words",
+        "max_pole_radius", "stable", "passband_loss_db", "stopband_atten_db"}) {
     EXPECT_TRUE(q.contains(key)) << key;
   }
   EXPECT_EQ(q["structure"], "sos");
