@@ -5,6 +5,7 @@
 #include <exception>
 #include <ostream>
 
+#include "calibrate_command.h"
 #include "demo_command.h"
 #include "design_command.h"
 
@@ -18,6 +19,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
 
   coeffs::DesignOptions design_options;
   CLI::App* design = coeffs::add_design_command(app, design_options);
+  CalibrateOptions calibrate_options;
+  CLI::App* calibrate = add_calibrate_command(app, calibrate_options);
   DemoOptions demo_options;
   CLI::App* demo = add_demo_command(app, demo_options);
 
@@ -37,6 +40,7 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   }
   try {
     if (design->parsed()) return coeffs::run_design_command(design_options, args, out, err);
+    if (calibrate->parsed()) return run_calibrate_command(calibrate_options, args, out, err);
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// The recording format every command reads: CSV with header t_s,clearance_mm,temp_c,voltage_v
+// (any column order) and an optional run column. Rows are read one at a time, so memory stays
+// flat however long the recording is.
+#pragma once
+
+#include <cstddef>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace flange::host {
+
+// Valid ranges of the recorded quantities.
+inline constexpr double kMinVoltageV = 0.0, kMaxVoltageV = 10.0;  // the sensor's output range
+inline constexpr double kMinTempC = -40.0, kMaxTempC = 200.0;     // type-K range in use
+
+struct RecordingRow {
+  std::size_t line = 0;                // 1-based line in the file
+  double t_s = 0.0;                    // time, increasing within a run
+  std::optional<double> clearance_mm;  // the reference (micrometer or truth); empty when unknown
+  double temp_c = 0.0;                 // thermocouple
+  double voltage_v = 0.0;              // sensor output
+  std::string run;                     // session label ("" without a run column)
+  // Lenient mode only: why the row is bad ("" for a good row). A bad row's numbers are
+  // whatever could be parsed; callers must not use them.
+  std::string problem;
+};
+
+class RecordingReader {
+ public:
+  // Opens `path` and checks its header; throws InputError naming the file and the column.
+  // lenient = false: a bad row throws InputError (file:line: column: value and valid range).
+  // lenient = true: a bad row comes back with `problem` set, and reading goes on.
+  explicit RecordingReader(const std::string& path, bool lenient = false);
+
+  // Next row, or nullopt at the end of the file.
+  std::optional<RecordingRow> next();
+
+  bool has_run_column() const { return run_column_.has_value(); }
+  const std::string& path() const { return path_; }
+  std::size_t rows_read() const { return rows_read_; }
+
+ private:
+  std::string check_row(RecordingRow& row, const std::vector<std::string>& fields);
+
+  std::string path_;
+  bool lenient_;
+  std::ifstream file_;
+  std::size_t line_ = 1;
+  std::size_t rows_read_ = 0;
+  std::size_t column_count_ = 0;
+  std::size_t t_column_ = 0, clearance_column_ = 0, temp_column_ = 0, voltage_column_ = 0;
+  std::optional<std::size_t> run_column_;
+  std::optional<double> last_time_;
+  std::string last_run_;
+};
+
+// Parses a whole field as a finite double; nullopt otherwise.
+std::optional<double> parse_number(const std::string& field);
+
+}  // namespace flange::host
