@@ -39,6 +39,9 @@ CLI::App* add_design_command(CLI::App& app, DesignOptions& options) {
   cmd->add_option("--max-dc-error-db", r.limits.max_dc_error_db,
                   "DC gain error allowed without a spec (> 0)")
       ->default_val(0.1);
+  cmd->add_option("--max-passband-deviation-db", r.limits.max_passband_deviation_db,
+                  "largest |quantised - float| response below fc without a spec (> 0)")
+      ->default_val(0.5);
   cmd->add_option("--out", options.out_dir,
                   "folder for filter.json, coeffs.mem, "
                   "iir_coeffs_pkg.sv and response.svg");
@@ -67,6 +70,10 @@ int run_design_command(const DesignOptions& options, const std::vector<std::stri
     request.structure = options.structure == "df1" ? Structure::kDf1 : Structure::kSos;
     if (!std::isfinite(request.limits.spec_tolerance_db) || request.limits.spec_tolerance_db < 0) {
       throw BadArgument("--spec-tolerance-db: must be a finite number >= 0");
+    }
+    if (!std::isfinite(request.limits.max_passband_deviation_db) ||
+        request.limits.max_passband_deviation_db <= 0) {
+      throw BadArgument("--max-passband-deviation-db: must be a finite number > 0");
     }
     if (!std::isfinite(request.limits.max_dc_error_db) || request.limits.max_dc_error_db <= 0) {
       throw BadArgument("--max-dc-error-db: must be a finite number > 0");

@@ -137,6 +137,24 @@ FloatDesign design_from_transfer_function(const DesignRequest& request,
   return design;
 }
 
+// A cut-off that is a tiny fraction of the sample rate puts the poles so close to z = 1 that
+// double precision cannot hold the design; say so instead of quantising rounding noise.
+void require_representable(const FloatDesign& design) {
+  bool finite = std::isfinite(design.cascade.leftover_gain);
+  for (const Section& section : design.cascade.sections) {
+    for (double value : section.b) finite = finite && std::isfinite(value);
+    for (double value : section.a) finite = finite && std::isfinite(value);
+  }
+  double radius = 0.0;
+  for (const Complex& pole : design.zpk.poles) radius = std::max(radius, std::abs(pole));
+  if (!finite || radius >= 1.0 - 1e-12) {
+    throw DesignRejected(fmt::format(
+        "fc / fs = {:.3g} is too small for a stable design in double precision (poles within "
+        "{:.1g} of z = 1); raise fc or lower fs (decimate before filtering)",
+        design.fc_hz / design.fs_hz, std::max(0.0, 1.0 - radius)));
+  }
+}
+
 }  // namespace
 
 DesignRecord generate_design(const DesignRequest& request, const std::string& generated_by) {
@@ -186,6 +204,7 @@ DesignRecord generate_design(const DesignRequest& request, const std::string& ge
                                        butterworth_cutoff_hz(*spec, std::max(order, kMinOrder)),
                                        request.fs_hz, spec);
   }
+  require_representable(record.design);
   record.quantized = quantize(record.design, request.structure, request.widths);
   record.analysis = analyse(record.design, record.quantized, request.limits);
   return record;

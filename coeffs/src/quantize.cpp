@@ -28,6 +28,9 @@ double largest_magnitude(const std::vector<double>& values) {
 std::optional<int> integer_bits(const std::vector<double>& values, int coef_bits) {
   const double largest = largest_magnitude(values);
   if (largest == 0.0) return std::nullopt;
+  if (!std::isfinite(largest)) {
+    throw DesignRejected("a coefficient is not finite; the float design is degenerate");
+  }
   int bits = static_cast<int>(std::ceil(std::log2(largest)));
   const double word_max = std::ldexp(1.0, coef_bits - 1) - 1.0;
   while (std::round(std::ldexp(largest, coef_bits - 1 - bits)) > word_max) ++bits;
@@ -197,7 +200,8 @@ double extreme_loss_db(const QuantizedFilter& filter, double fs_hz, double f_lo,
 std::string structure_phrase(const QuantizedFilter& filter) {
   return filter.structure == Structure::kDf1
              ? fmt::format("direct form (order {})", filter.section_order)
-             : fmt::format("{} second-order sections", filter.section_count);
+             : fmt::format("{} second-order section{}", filter.section_count,
+                           filter.section_count == 1 ? "" : "s");
 }
 
 std::string fix_phrase(const QuantizedFilter& filter) {
@@ -273,12 +277,30 @@ QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filt
     }
     return analysis;
   }
-  analysis.meets_spec = std::abs(analysis.dc_gain_error_db) <= limits.max_dc_error_db;
-  if (!analysis.meets_spec) {
+  // Without a mask, the quantised response must follow the float one up to the cut-off.
+  double deviation = 0.0;
+  constexpr int kPoints = 4096;
+  for (int i = 0; i <= kPoints; ++i) {
+    const double omega = 2.0 * std::numbers::pi * design.fc_hz / design.fs_hz * i / kPoints;
+    deviation = std::max(deviation, std::abs(loss_db(quantized_response(filter, omega)) -
+                                             loss_db(float_response(design, omega))));
+  }
+  if (!std::isfinite(deviation)) deviation = std::numeric_limits<double>::max();
+  analysis.passband_deviation_db = deviation;
+  const bool dc_ok = std::abs(analysis.dc_gain_error_db) <= limits.max_dc_error_db;
+  const bool shape_ok = deviation <= limits.max_passband_deviation_db;
+  analysis.meets_spec = dc_ok && shape_ok;
+  if (!dc_ok) {
     analysis.rejection =
         fmt::format("quantised {} has a DC gain error of {:.4f} dB, beyond the {} dB allowed; {}",
                     structure_phrase(filter), analysis.dc_gain_error_db,
                     format_number(limits.max_dc_error_db), fix_phrase(filter));
+  } else if (!shape_ok) {
+    analysis.rejection = fmt::format(
+        "quantised {} departs from the float response by {:.3f} dB below fc = {} Hz, beyond the "
+        "{} dB allowed; {}",
+        structure_phrase(filter), deviation, format_number(design.fc_hz),
+        format_number(limits.max_passband_deviation_db), fix_phrase(filter));
   }
   return analysis;
 }

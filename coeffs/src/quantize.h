@@ -65,6 +65,7 @@ Complex quantized_response(const QuantizedFilter& filter, double omega);
 struct AcceptanceLimits {
   double spec_tolerance_db = 0.01;  // slack on ap and aa for the rounding of a spec met exactly
   double max_dc_error_db = 0.1;     // DC gain error allowed when no spec was given
+  double max_passband_deviation_db = 0.5;  // |quantised - float| in dB over [0, fc], no spec
 };
 
 struct QuantizedAnalysis {
@@ -72,12 +73,13 @@ struct QuantizedAnalysis {
   double max_pole_radius = 0.0;
   int poles_outside = 0;  // poles with |z| >= 1
   bool stable = false;
-  double dc_gain_error_db = 0.0;            // quantised over float, at DC
-  std::optional<double> passband_loss_db;   // largest loss over [0, fp] (spec only)
-  std::optional<double> passband_peak_db;   // largest gain over [0, fp] (spec only)
-  std::optional<double> stopband_atten_db;  // smallest attenuation over [fa, fs/2] (spec only)
-  bool meets_spec = false;                  // the spec, or the DC limit without one
-  std::string rejection;                    // one line naming cause and fix; empty if accepted
+  double dc_gain_error_db = 0.0;                // quantised over float, at DC
+  std::optional<double> passband_loss_db;       // largest loss over [0, fp] (spec only)
+  std::optional<double> passband_peak_db;       // largest gain over [0, fp] (spec only)
+  std::optional<double> stopband_atten_db;      // smallest attenuation over [fa, fs/2] (spec only)
+  std::optional<double> passband_deviation_db;  // largest |quantised - float| dB to fc (no spec)
+  bool meets_spec = false;                      // the spec, or the DC limit without one
+  std::string rejection;                        // one line naming cause and fix; empty if accepted
 };
 
 QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filter,

@@ -145,3 +145,24 @@ TEST(Quantize, FewerCoefficientBitsMissTheSpec) {
 
 }  // namespace
 }  // namespace flange::coeffs
+
+namespace flange::coeffs {
+namespace {
+
+TEST(Quantize, WithoutASpecTheResponseMustFollowTheFloatDesign) {
+  DesignRequest request = order_and_cutoff(12, 10.0, 100.0, Structure::kSos);
+  request.widths.coef_bits = 4;
+  const DesignRecord record = generate_design(request, "test");
+  ASSERT_TRUE(record.analysis.passband_deviation_db.has_value());
+  EXPECT_GT(*record.analysis.passband_deviation_db, 0.5);
+  EXPECT_NE(record.analysis.rejection.find("departs from the float response"), std::string::npos)
+      << record.analysis.rejection;
+}
+
+TEST(Quantize, ACutoffTooSmallForDoublePrecisionIsRefused) {
+  EXPECT_THROW(generate_design(order_and_cutoff(4, 0.001, 1e6, Structure::kSos), "test"),
+               DesignRejected);
+}
+
+}  // namespace
+}  // namespace flange::coeffs
