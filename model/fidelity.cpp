@@ -76,4 +76,60 @@ std::string LimitCycle::describe() const {
                      amplitude, minimum, maximum);
 }
 
+namespace {
+
+// sum |h[n]| of b(z) / a(z), a[0] = 1, until the response has decayed.
+double l1_norm(const std::vector<double>& b, const std::vector<double>& a) {
+  const std::size_t order = std::max(b.size(), a.size());
+  std::vector<double> x(order, 0.0), y(order, 0.0);  // newest first
+  double sum = 0.0;
+  double recent = 0.0;  // sum |h| over the last 1000 samples
+  for (std::size_t n = 0; n < 10'000'000; ++n) {
+    std::rotate(x.rbegin(), x.rbegin() + 1, x.rend());
+    std::rotate(y.rbegin(), y.rbegin() + 1, y.rend());
+    x[0] = n == 0 ? 1.0 : 0.0;
+    double h = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) h += b[i] * x[i];
+    for (std::size_t j = 1; j < a.size(); ++j) h -= a[j] * y[j];
+    y[0] = h;
+    sum += std::abs(h);
+    recent += std::abs(h);
+    if (n % 1000 == 999) {
+      if (n > 10 * order && recent < 1e-13 * sum) return sum;
+      recent = 0.0;
+    }
+  }
+  throw std::invalid_argument("limit_cycle_bound_lsb: a section's impulse response does not decay");
+}
+
+}  // namespace
+
+double limit_cycle_bound_lsb(const CoreConfig& config) {
+  const int m = config.section_order;
+  const int terms = config.terms();
+  std::vector<double> inverse_norm, section_norm;
+  for (int k = 0; k < config.num_sections; ++k) {
+    std::vector<double> b, a{1.0};
+    for (int i = 0; i <= m; ++i) {
+      b.push_back(std::ldexp(static_cast<double>(config.rom[static_cast<std::size_t>(k * terms + i)]),
+                             -config.num_frac_bits));
+    }
+    for (int j = 1; j <= m; ++j) {
+      // The ROM holds -a in Q.Fa.
+      a.push_back(-std::ldexp(
+          static_cast<double>(config.rom[static_cast<std::size_t>(k * terms + m + j)]),
+          -config.coef_frac_bits));
+    }
+    inverse_norm.push_back(l1_norm({1.0}, a));
+    section_norm.push_back(l1_norm(b, a));
+  }
+  double bound = 0.0;
+  for (int k = 0; k < config.num_sections; ++k) {
+    double gain = 0.5 * inverse_norm[static_cast<std::size_t>(k)];
+    for (int j = k + 1; j < config.num_sections; ++j) gain *= section_norm[static_cast<std::size_t>(j)];
+    bound += gain;
+  }
+  return bound;
+}
+
 }  // namespace flange::model

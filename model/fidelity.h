@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "filter_json.h"
+
 namespace flange::model {
 
 // 10 log10(sum ref^2 / sum (test - ref)^2) over equal-length sequences; +inf when they agree.
@@ -30,5 +32,12 @@ struct LimitCycle {
 // Examines y[y.size() - tail ..]: tail >= 2 * max_period so that a period is seen twice.
 LimitCycle find_limit_cycle(const std::vector<std::int32_t>& y, std::size_t tail,
                             std::size_t max_period);
+
+// A rigorous bound, in LSB, on the zero-input output of the core once the response to the
+// initial state has died away (any limit cycle or dead band). Each section rounds its output with
+// an error e_k in (-1/2, 1/2] LSB, which reaches the filter output through 1/A_k and the sections
+// after it: |y| <= sum_k 1/2 ||1/A_k||_1 prod_{j>k} ||B_j/A_j||_1, with the quantised words. The
+// l1 norms are summed in double until the impulse responses have decayed below 1e-13.
+double limit_cycle_bound_lsb(const CoreConfig& config);
 
 }  // namespace flange::model
