@@ -2,9 +2,10 @@
 # One helper adds a GoogleTest file and registers its tests with CTest.
 include(GoogleTest)
 
-# flange_add_gtest(<unit>_test SOURCES <files> LIBS <targets> [TIMEOUT s])
+# flange_add_gtest(<unit>_test SOURCES <files> LIBS <targets> [TIMEOUT s] [TEST_PREFIX p])
+# TEST_PREFIX (e.g. "VehicleSos.") tells apart the same tests built for several coefficient sets.
 function(flange_add_gtest name)
-  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TIMEOUT;TEST_PREFIX" "SOURCES;LIBS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} flange_warnings GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
@@ -14,5 +15,6 @@ function(flange_add_gtest name)
     set(ARG_TIMEOUT 300)
   endif()
   gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_BINARY_DIR}
+                       TEST_PREFIX "${ARG_TEST_PREFIX}"
                        PROPERTIES TIMEOUT ${ARG_TIMEOUT} DISCOVERY_TIMEOUT 60)
 endfunction()

@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: MIT
+#include "filter_json.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+namespace flange::model {
+namespace {
+
+using nlohmann::json;
+
+class Reader {
+ public:
+  explicit Reader(const std::filesystem::path& path) : path_(path) {
+    std::ifstream in(path);
+    if (!in) fail_file("cannot open the file");
+    try {
+      root_ = json::parse(in);
+    } catch (const json::parse_error& error) {
+      fail_file(fmt::format("not valid JSON ({})", error.what()));
+    }
+    if (!root_.is_object()) fail_file("the top level is not a JSON object");
+  }
+
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    throw FilterJsonError(fmt::format("{}: field '{}': {}", path_.string(), field, what));
+  }
+  [[noreturn]] void fail_file(const std::string& what) const {
+    throw FilterJsonError(fmt::format("{}: {}", path_.string(), what));
+  }
+
+  const json& object(const json& parent, const std::string& parent_name,
+                     const std::string& key) const {
+    const std::string field = parent_name.empty() ? key : parent_name + "." + key;
+    const auto it = parent.find(key);
+    if (it == parent.end()) fail(field, "missing");
+    return *it;
+  }
+
+  std::int64_t integer(const json& parent, const std::string& parent_name, const std::string& key,
+                       std::int64_t lo, std::int64_t hi) const {
+    const std::string field = parent_name.empty() ? key : parent_name + "." + key;
+    const json& value = object(parent, parent_name, key);
+    if (!value.is_number_integer()) fail(field, "expected an integer");
+    const std::int64_t v = value.get<std::int64_t>();
+    if (v < lo || v > hi) fail(field, fmt::format("{} is outside [{}, {}]", v, lo, hi));
+    return v;
+  }
+
+  double number(const json& value, const std::string& field) const {
+    if (!value.is_number()) fail(field, "expected a number");
+    const double v = value.get<double>();
+    if (!std::isfinite(v)) fail(field, "expected a finite number");
+    return v;
+  }
+
+  std::vector<double> numbers(const json& parent, const std::string& key) const {
+    const json& value = object(parent, "", key);
+    if (!value.is_array() || value.empty()) fail(key, "expected a non-empty array of numbers");
+    std::vector<double> out;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      out.push_back(number(value[i], fmt::format("{}[{}]", key, i)));
+    }
+    return out;
+  }
+
+  const json& root() const { return root_; }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+  json root_;
+};
+
+std::string name_of(const Reader& reader) {
+  const auto it = reader.root().find("name");
+  if (it == reader.root().end()) return "iir";
+  if (!it->is_string()) reader.fail("name", "expected a string");
+  return it->get<std::string>();
+}
+
+}  // namespace
+
+void validate_core_config(const CoreConfig& c) {
+  auto bad = [](const std::string& field, const std::string& what) {
+    throw std::invalid_argument(fmt::format("core config: {}: {}", field, what));
+  };
+  if (c.num_sections < 1) bad("num_sections", "must be >= 1");
+  if (c.section_order < 1) bad("section_order", "must be >= 1");
+  if (c.filter_order < 1 || c.filter_order > c.num_sections * c.section_order) {
+    bad("filter_order", "must lie in [1, num_sections * section_order]");
+  }
+  if (c.sample_width < 2 || c.sample_width > 32) bad("sample_width", "must lie in [2, 32]");
+  if (c.coef_width < 2 || c.coef_width > 32) bad("coef_width", "must lie in [2, 32]");
+  if (c.num_frac_bits < 1) bad("num_frac_bits", "must be >= 1 (rounding constant 2^(Fb-1))");
+  if (c.coef_frac_bits < 0) bad("coef_frac_bits", "must be >= 0");
+  if (c.feedback_shift != c.num_frac_bits - c.coef_frac_bits || c.feedback_shift < 0) {
+    bad("feedback_shift", "must equal num_frac_bits - coef_frac_bits >= 0");
+  }
+  if (c.acc_width > 64 || c.acc_width < c.num_frac_bits + c.sample_width) {
+    bad("acc_width", "must lie in [num_frac_bits + sample_width, 64]");
+  }
+  if (c.sample_width + c.feedback_shift + c.coef_width > c.acc_width) {
+    bad("acc_width", "the product (sample_width + feedback_shift + coef_width) does not fit");
+  }
+  if (static_cast<int>(c.rom.size()) != c.rom_depth()) {
+    bad("rom", fmt::format("holds {} words, expected num_sections * (2 * section_order + 1) = {}",
+                           c.rom.size(), c.rom_depth()));
+  }
+  const std::int64_t hi = (std::int64_t{1} << (c.coef_width - 1)) - 1;
+  for (std::size_t i = 0; i < c.rom.size(); ++i) {
+    if (c.rom[i] < -hi - 1 || c.rom[i] > hi) {
+      bad(fmt::format("rom[{}]", i), fmt::format("{} does not fit {} bits", c.rom[i], c.coef_width));
+    }
+  }
+}
+
+CoreConfig load_core_config(const std::filesystem::path& filter_json) {
+  const Reader reader(filter_json);
+  const json& q = reader.object(reader.root(), "", "quantized");
+  if (!q.is_object()) reader.fail("quantized", "expected an object");
+
+  CoreConfig c;
+  c.name = name_of(reader);
+  const std::string p = "quantized";
+  c.sample_width = static_cast<int>(reader.integer(q, p, "data_bits", 2, 32));
+  c.coef_width = static_cast<int>(reader.integer(q, p, "coef_bits", 2, 32));
+  c.acc_width = static_cast<int>(reader.integer(q, p, "acc_bits", 2, 64));
+  c.num_sections = static_cast<int>(reader.integer(q, p, "sections", 1, 1024));
+  c.section_order = static_cast<int>(reader.integer(q, p, "section_order", 1, 64));
+  c.coef_frac_bits = static_cast<int>(reader.integer(q, p, "coef_frac_bits", 0, 63));
+  c.num_frac_bits = static_cast<int>(reader.integer(q, p, "b_frac_bits", 1, 63));
+  c.feedback_shift = static_cast<int>(reader.integer(q, p, "feedback_shift", 0, 63));
+  c.filter_order = static_cast<int>(reader.integer(reader.root(), "", "order", 1, 1024));
+
+  if (c.feedback_shift != c.num_frac_bits - c.coef_frac_bits) {
+    reader.fail("quantized.feedback_shift", "must equal b_frac_bits - coef_frac_bits");
+  }
+  if (c.acc_width < c.num_frac_bits + c.sample_width) {
+    reader.fail("quantized.acc_bits", "must be at least b_frac_bits + data_bits");
+  }
+  if (c.sample_width + c.feedback_shift + c.coef_width > c.acc_width) {
+    reader.fail("quantized.acc_bits", "data_bits + feedback_shift + coef_bits does not fit");
+  }
+  if (c.filter_order > c.num_sections * c.section_order) {
+    reader.fail("order", "exceeds quantized.sections * quantized.section_order");
+  }
+  const std::int64_t depth = reader.integer(q, p, "rom_depth", 1, 1 << 20);
+  if (depth != c.rom_depth()) {
+    reader.fail("quantized.rom_depth",
+                fmt::format("{} is not sections * (2 * section_order + 1) = {}", depth,
+                            c.rom_depth()));
+  }
+  const json& words = reader.object(q, p, "words");
+  if (!words.is_array() || static_cast<std::int64_t>(words.size()) != depth) {
+    reader.fail("quantized.words", fmt::format("expected an array of {} integers", depth));
+  }
+  const std::int64_t hi = (std::int64_t{1} << (c.coef_width - 1)) - 1;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const std::string field = fmt::format("quantized.words[{}]", i);
+    if (!words[i].is_number_integer()) reader.fail(field, "expected an integer");
+    const std::int64_t w = words[i].get<std::int64_t>();
+    if (w < -hi - 1 || w > hi) {
+      reader.fail(field, fmt::format("{} does not fit {} bits (coef_bits)", w, c.coef_width));
+    }
+    c.rom.push_back(w);
+  }
+  try {
+    validate_core_config(c);
+  } catch (const std::invalid_argument& error) {
+    reader.fail_file(error.what());
+  }
+  return c;
+}
+
+FloatDesign load_float_design(const std::filesystem::path& filter_json) {
+  const Reader reader(filter_json);
+  FloatDesign d;
+  d.name = name_of(reader);
+  d.fs_hz = reader.number(reader.object(reader.root(), "", "fs_hz"), "fs_hz");
+  if (d.fs_hz <= 0.0) reader.fail("fs_hz", "must be > 0");
+  if (const auto it = reader.root().find("fc_hz"); it != reader.root().end() && !it->is_null()) {
+    d.fc_hz = reader.number(*it, "fc_hz");
+    if (*d.fc_hz <= 0.0 || *d.fc_hz >= d.fs_hz / 2) reader.fail("fc_hz", "must lie in (0, fs_hz / 2)");
+  }
+  d.b = reader.numbers(reader.root(), "b");
+  d.a = reader.numbers(reader.root(), "a");
+  if (d.a[0] == 0.0) reader.fail("a[0]", "must not be 0");
+  d.leftover_gain =
+      reader.number(reader.object(reader.root(), "", "leftover_gain"), "leftover_gain");
+
+  const json& sos = reader.object(reader.root(), "", "sos");
+  if (!sos.is_array() || sos.empty()) reader.fail("sos", "expected a non-empty array of rows");
+  for (std::size_t r = 0; r < sos.size(); ++r) {
+    const std::string row_name = fmt::format("sos[{}]", r);
+    if (!sos[r].is_array() || sos[r].size() != 6) {
+      reader.fail(row_name, "expected 6 numbers b0 b1 b2 a0 a1 a2");
+    }
+    std::array<double, 6> row{};
+    for (std::size_t i = 0; i < 6; ++i) {
+      row[i] = reader.number(sos[r][i], fmt::format("{}[{}]", row_name, i));
+    }
+    if (row[3] == 0.0) reader.fail(row_name + "[3]", "a0 must not be 0");
+    d.sos.push_back(row);
+  }
+  return d;
+}
+
+}  // namespace flange::model

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// Reads a coefficient set's filter.json (written by `flange design`) into what the bit-accurate
+// model and the double-precision reference need. Every error is one line naming file and field.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace flange::model {
+
+// A filter.json that cannot be read, is not JSON, or has a missing or out-of-range field.
+class FilterJsonError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The fixed-point side of a set (`quantized.*`, docs/fixed_point.md). Names follow the package
+// parameters of iir_coeffs_pkg.sv.
+struct CoreConfig {
+  std::string name;        // filter name, for reports
+  int filter_order = 0;    // FilterOrder, 1 <= filter_order <= num_sections * section_order
+  int num_sections = 0;    // NumSections (K), >= 1
+  int section_order = 0;   // SectionOrder (M), >= 1
+  int sample_width = 0;    // SampleWidth (D), 2..32
+  int coef_width = 0;      // CoefWidth (C), 2..32
+  int coef_frac_bits = 0;  // CoefFracBits (Fa), >= 0
+  int num_frac_bits = 0;   // NumFracBits (Fb), >= 1
+  int feedback_shift = 0;  // FeedbackShift (s) = Fb - Fa, >= 0
+  int acc_width = 0;       // AccWidth (P), Fb + D <= P <= 64, D + s + C <= P
+  // ROM words in ROM order (per section b[0..M], then -a[1..M]), each a signed C-bit integer.
+  std::vector<std::int64_t> rom;
+
+  int terms() const { return 2 * section_order + 1; }
+  int rom_depth() const { return num_sections * terms(); }
+};
+
+// The float side of the same design: what the quantised core approximates.
+struct FloatDesign {
+  std::string name;
+  double fs_hz = 0.0;                        // > 0
+  std::optional<double> fc_hz;               // 3 dB cut-off, 0 < fc < fs / 2, when recorded
+  std::vector<std::array<double, 6>> sos;    // rows b0 b1 b2 a0 a1 a2, a0 != 0
+  std::vector<double> b, a;                  // whole transfer function, a[0] != 0
+  double leftover_gain = 1.0;                // applied by the host after the core
+};
+
+// Throws FilterJsonError; checks every rule of docs/fixed_point.md that the core relies on.
+CoreConfig load_core_config(const std::filesystem::path& filter_json);
+FloatDesign load_float_design(const std::filesystem::path& filter_json);
+
+// Throws std::invalid_argument (one line naming the field) when `config` breaks the contract.
+void validate_core_config(const CoreConfig& config);
+
+}  // namespace flange::model

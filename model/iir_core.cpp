@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+#include "iir_core.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <stdexcept>
+#include <utility>
+
+#include "iir_mac.h"
+
+namespace flange::model {
+
+IirCore::IirCore(CoreConfig config) : config_(std::move(config)) {
+  validate_core_config(config_);
+  const int m = config_.section_order;
+  latency_ = config_.num_sections * (config_.terms() + kMacLatency) + 1;
+  sample_max_ = static_cast<std::int32_t>((std::int64_t{1} << (config_.sample_width - 1)) - 1);
+  sample_min_ = static_cast<std::int32_t>(-(std::int64_t{1} << (config_.sample_width - 1)));
+  lr_.assign(static_cast<std::size_t>((config_.num_sections + 1) * (m + 1)), 0);
+}
+
+void IirCore::compute(std::int32_t sample, StepResult& result, std::vector<bool>& clipped) {
+  const int m = config_.section_order;
+  const int line = m + 1;
+  const int terms = config_.terms();
+  const auto at = [line](int l, int age) { return static_cast<std::size_t>(l * line + age); };
+
+  // EN: every history line moves one place older; x[n] enters line 0.
+  for (int l = 0; l <= config_.num_sections; ++l) {
+    for (int age = m; age > 0; --age) lr_[at(l, age)] = lr_[at(l, age - 1)];
+  }
+  lr_[0] = sample;
+
+  clipped.assign(static_cast<std::size_t>(config_.num_sections), false);
+  result.saturated = false;
+  std::int32_t y = 0;
+  for (int k = 0; k < config_.num_sections; ++k) {
+    // Rounding constant preloaded, as the DSP48E1 does through its C port.
+    std::uint64_t p = std::uint64_t{1} << (config_.num_frac_bits - 1);
+    for (int i = 0; i < terms; ++i) {
+      const std::int64_t word = config_.rom[static_cast<std::size_t>(k * terms + i)];
+      // b[i] x_k[n-i] from line k; -a[j] (y_k[n-j] << s), j = i - M, from line k + 1.
+      const std::int64_t operand =
+          i <= m ? std::int64_t{lr_[at(k, i)]}
+                 : std::int64_t{lr_[at(k + 1, i - m)]} * (std::int64_t{1} << config_.feedback_shift);
+      p = mac(p, operand, word);
+    }
+    const std::int64_t acc = wrap_to_width(p, config_.acc_width);
+    const std::int64_t shifted = acc >> config_.num_frac_bits;  // arithmetic (C++20)
+    y = static_cast<std::int32_t>(std::clamp<std::int64_t>(shifted, sample_min_, sample_max_));
+    if (y != shifted) {
+      clipped[static_cast<std::size_t>(k)] = true;
+      result.saturated = true;
+    }
+    lr_[at(k + 1, 0)] = y;
+  }
+  result.sample = y;
+}
+
+void IirCore::schedule(const Event& event) {
+  const auto later = [](const Event& a, const Event& b) {
+    return a.cycle != b.cycle ? a.cycle < b.cycle : a.kind < b.kind;
+  };
+  events_.insert(std::upper_bound(events_.begin(), events_.end(), event, later), event);
+}
+
+void IirCore::advance(std::uint64_t cycle) {
+  if (cycle < now_) {
+    throw std::logic_error(fmt::format("IirCore: cycle {} after cycle {}", cycle, now_));
+  }
+  now_ = cycle;
+  while (!events_.empty() && events_.front().cycle <= cycle) {
+    const Event event = events_.front();
+    events_.pop_front();
+    switch (event.kind) {
+      case EventKind::kReset:
+        settled_ = Pins{};
+        any_output_ = false;
+        break;
+      case EventKind::kClear:
+        settled_.overrun = false;
+        settled_.saturation = false;
+        break;
+      case EventKind::kBusyStart:
+        settled_.busy = true;
+        break;
+      case EventKind::kBusyEnd:
+        settled_.busy = false;
+        break;
+      case EventKind::kSaturation:
+        settled_.saturation = true;
+        break;
+      case EventKind::kOverrun:
+        settled_.overrun = true;
+        break;
+      case EventKind::kOutput:
+        settled_.sample = event.value;
+        valid_cycle_ = event.cycle;
+        any_output_ = true;
+        break;
+    }
+  }
+  settled_.sample_valid = any_output_ && valid_cycle_ == cycle;
+}
+
+Pins IirCore::pins(std::uint64_t cycle) {
+  advance(cycle);
+  return settled_;
+}
+
+std::optional<StepResult> IirCore::strobe(std::uint64_t cycle, std::int32_t sample) {
+  if (sample < sample_min_ || sample > sample_max_) {
+    throw std::out_of_range(fmt::format("IirCore: sample {} outside [{}, {}]", sample,
+                                        sample_min_, sample_max_));
+  }
+  advance(cycle);
+  if (reset_cycle_ == cycle) return std::nullopt;  // reset wins
+  if (cycle < ready_cycle_) {
+    schedule({cycle + 1, EventKind::kOverrun, 0});
+    return std::nullopt;
+  }
+  StepResult result;
+  std::vector<bool> clipped;
+  compute(sample, result, clipped);
+  result.accept_cycle = cycle;
+  result.valid_cycle = cycle + static_cast<std::uint64_t>(latency_);
+
+  // Section k writes back at the edge that ends its last MAC-latency cycle.
+  const auto section_cycles = static_cast<std::uint64_t>(config_.terms() + kMacLatency);
+  for (std::size_t k = 0; k < clipped.size(); ++k) {
+    if (clipped[k]) schedule({cycle + 1 + (k + 1) * section_cycles, EventKind::kSaturation, 0});
+  }
+  schedule({cycle + 1, EventKind::kBusyStart, 0});
+  schedule({result.valid_cycle, EventKind::kBusyEnd, 0});
+  schedule({result.valid_cycle, EventKind::kOutput, result.sample});
+  ready_cycle_ = result.valid_cycle;
+  return result;
+}
+
+StepResult IirCore::step(std::int32_t sample) {
+  const std::uint64_t cycle = std::max(ready_cycle_, now_);
+  std::optional<StepResult> result = strobe(cycle, sample);
+  if (!result) throw std::logic_error("IirCore::step: the core refused a sample when ready");
+  return *result;
+}
+
+void IirCore::clear_flags(std::uint64_t cycle) {
+  advance(cycle);
+  schedule({cycle + 1, EventKind::kClear, 0});
+}
+
+void IirCore::reset(std::uint64_t cycle) {
+  advance(cycle);
+  // Everything that would have become visible after this cycle never happens.
+  std::erase_if(events_, [cycle](const Event& e) { return e.cycle > cycle; });
+  schedule({cycle + 1, EventKind::kReset, 0});
+  std::fill(lr_.begin(), lr_.end(), 0);
+  ready_cycle_ = cycle + 1;
+  reset_cycle_ = cycle;
+}
+
+}  // namespace flange::model

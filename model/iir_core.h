@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+// Bit- and cycle-accurate model of rtl/iir_core.sv: the same arithmetic, flags and timing, so
+// that a co-simulation can demand equality of every output word and of the cycle it appears in.
+//
+// Fixed-point contract (docs/fixed_point.md; the same paragraph heads rtl/iir_core.sv).
+// D = SampleWidth, C = CoefWidth, P = AccWidth, Fb = NumFracBits, Fa = CoefFracBits,
+// s = FeedbackShift = Fb - Fa, K = NumSections, M = SectionOrder.
+// - Formats: samples in, out and between sections are Q1.(D-1) (Q1.15 by default). The ROM holds
+//   C-bit words: b as Q(C-Fb).Fb, the negated denominator -a as Q(C-Fa).Fa. Feedback samples enter
+//   the multiplier as y << s (D + s <= 25 bits, the DSP48E1 A port), so every product is
+//   Q.(D-1+Fb) in D+s+C bits, summed in a P-bit two's complement accumulator that wraps like the
+//   DSP48E1 P register (the generator proves that legal samples never make it wrap).
+// - Rounding: round half up. The accumulator starts each section at 2^(Fb-1) and the sum is
+//   shifted arithmetically right by Fb.
+// - Saturation: every section's output is clipped to [-2^(D-1), 2^(D-1) - 1] before it enters the
+//   history and the next section; a clip sets the sticky saturation_o.
+// - ROM order: section 0 first; within a section b[0..M], then -a[1..M]. Load registers: K + 1
+//   lines of M + 1 samples, newest first; line 0 is the input x[n..n-M], line k + 1 the output of
+//   section k (the input of section k + 1). The bus target counter (BTC) walks the ROM and the
+//   matching load registers with one count.
+// - Timing: a section takes 2M + 1 MAC cycles plus 3 cycles of MAC latency. From the cycle in
+//   which sample_valid_i is accepted to the cycle in which sample_valid_o is high:
+//   LatencyCycles = K * (2M + 4) + 1. A new sample is accepted in the cycle sample_valid_o is
+//   high, so CyclesPerSample = LatencyCycles too.
+//
+// Cycle convention: cycle c is the clock period after the c-th rising edge. Inputs given for cycle
+// c are sampled at the edge that ends it; registered outputs change at that edge and are seen in
+// cycle c + 1. Calls must come in non-decreasing cycle order: pins(c) first, then the inputs of
+// cycle c (strobe, clear_flags, reset).
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <vector>
+
+#include "filter_json.h"
+
+namespace flange::model {
+
+// One accepted sample.
+struct StepResult {
+  std::int32_t sample = 0;        // sample_o, in [-2^(D-1), 2^(D-1) - 1]
+  bool saturated = false;         // some section clipped while computing it
+  std::uint64_t accept_cycle = 0; // the cycle sample_valid_i was accepted in
+  std::uint64_t valid_cycle = 0;  // the cycle sample_valid_o is high: accept_cycle + latency
+};
+
+// The outputs of rtl/iir_core.sv in one cycle.
+struct Pins {
+  std::int32_t sample = 0;  // sample_o (holds the last output; 0 after reset)
+  bool sample_valid = false;
+  bool busy = false;
+  bool overrun = false;
+  bool saturation = false;
+  bool operator==(const Pins&) const = default;
+};
+
+class IirCore {
+ public:
+  // Throws std::invalid_argument when `config` breaks docs/fixed_point.md.
+  explicit IirCore(CoreConfig config);
+
+  const CoreConfig& config() const { return config_; }
+  int latency_cycles() const { return latency_; }      // accepted EN -> sample_valid_o
+  int cycles_per_sample() const { return latency_; }   // minimum spacing of accepted EN
+  int macs_per_sample() const { return config_.rom_depth(); }
+  std::int32_t sample_min() const { return sample_min_; }
+  std::int32_t sample_max() const { return sample_max_; }
+
+  // One sample presented at the first cycle the core accepts it (back-to-back streaming).
+  // `sample` must lie in [sample_min(), sample_max()] (std::out_of_range otherwise).
+  StepResult step(std::int32_t sample);
+
+  // sample_valid_i high with `sample` in `cycle`. Returns the result if the core was idle, or
+  // nothing when it was busy: the sample is dropped and overrun_o rises in cycle + 1.
+  std::optional<StepResult> strobe(std::uint64_t cycle, std::int32_t sample);
+
+  // flag_clear_i high in `cycle`: the sticky flags read 0 from cycle + 1, unless a flag event
+  // lands at that same edge (the event wins).
+  void clear_flags(std::uint64_t cycle);
+
+  // rst_ni low in `cycle`: from cycle + 1 every register is 0 (history, flags, sample_o) and a
+  // computation in flight never produces its output. A strobe in the same cycle is ignored.
+  void reset(std::uint64_t cycle);
+
+  // The expected outputs in `cycle`.
+  Pins pins(std::uint64_t cycle);
+
+  // The load registers, (K + 1) lines of (M + 1) samples, newest first, as in the RTL.
+  const std::vector<std::int32_t>& lr() const { return lr_; }
+
+ private:
+  enum class EventKind { kReset, kClear, kBusyStart, kBusyEnd, kSaturation, kOverrun, kOutput };
+  struct Event {
+    std::uint64_t cycle;  // first cycle in which the effect is visible
+    EventKind kind;
+    std::int32_t value;
+  };
+
+  void compute(std::int32_t sample, StepResult& result, std::vector<bool>& clipped);
+  void schedule(const Event& event);
+  void advance(std::uint64_t cycle);
+
+  CoreConfig config_;
+  int latency_;
+  std::int32_t sample_min_, sample_max_;
+  std::vector<std::int32_t> lr_;
+
+  std::uint64_t ready_cycle_ = 0;     // first cycle in which sample_valid_i is accepted
+  std::uint64_t now_ = 0;             // last cycle asked about, or the current input cycle
+  std::optional<std::uint64_t> reset_cycle_;
+  std::deque<Event> events_;          // sorted by cycle, then by kind
+  Pins settled_;
+  std::uint64_t valid_cycle_ = 0;     // the cycle in which settled_.sample was produced
+  bool any_output_ = false;
+};
+
+}  // namespace flange::model

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+#include "cosim_harness.h"
+
+#include <fmt/format.h>
+#include <stdexcept>
+#include <utility>
+
+namespace flange::tb {
+
+std::string describe(const model::Pins& p) {
+  return fmt::format("sample_o={} sample_valid_o={} busy_o={} overrun_o={} saturation_o={}",
+                     p.sample, int{p.sample_valid}, int{p.busy}, int{p.overrun},
+                     int{p.saturation});
+}
+
+CosimHarness::CosimHarness(model::CoreConfig config, std::unique_ptr<Dut> dut_in)
+    : model_(std::move(config)), dut(std::move(dut_in)) {}
+
+model::Pins CosimHarness::dut_pins() {
+  const DutOutputs out = dut->outputs();
+  const int width = model_.config().sample_width;
+  model::Pins p;
+  // sample_o is two's complement in the low `width` bits.
+  const std::uint32_t mask = width >= 32 ? ~0u : (1u << width) - 1u;
+  const std::uint32_t sign = 1u << (width - 1);
+  p.sample = static_cast<std::int32_t>(((out.sample_bits & mask) ^ sign) - sign);
+  p.sample_valid = out.sample_valid;
+  p.busy = out.busy;
+  p.overrun = out.overrun;
+  p.saturation = out.saturation;
+  return p;
+}
+
+CosimReport CosimHarness::run(const Stimulus& stimulus, std::uint64_t tail) {
+  CosimReport report;
+  const int width = model_.config().sample_width;
+  const std::uint32_t mask = width >= 32 ? ~0u : (1u << width) - 1u;
+  const std::uint64_t end = std::max<std::uint64_t>(stimulus.last_cycle(), 1) +
+                            static_cast<std::uint64_t>(model_.latency_cycles()) + 1 + tail;
+  // One EN per cycle: the RTL cannot see two strobes in one cycle, the model must not either.
+  for (std::size_t i = 1; i < stimulus.actions.size(); ++i) {
+    const Action& a = stimulus.actions[i];
+    for (std::size_t j = i; j-- > 0 && stimulus.actions[j].cycle == a.cycle;) {
+      if (a.kind == stimulus.actions[j].kind) {
+        throw std::invalid_argument(
+            fmt::format("cosim stimulus: two actions of one kind in cycle {}", a.cycle));
+      }
+    }
+  }
+  std::size_t next = 0;
+  for (std::uint64_t cycle = 0; cycle <= end; ++cycle) {
+    // Compare what both sides show in this cycle (cycle 0 precedes the first reset edge).
+    if (cycle > 0) {
+      const model::Pins expected = model_.pins(cycle);
+      const model::Pins got = dut_pins();
+      if (!(expected == got)) {
+        if (report.mismatches == 0) {
+          report.first_mismatch =
+              fmt::format("cycle {}: dut {} | model {}", cycle, describe(got), describe(expected));
+        }
+        ++report.mismatches;
+      }
+      if (got.sample_valid) {
+        report.outputs.push_back(got.sample);
+        report.valid_cycles.push_back(cycle);
+      }
+      report.saturation_seen = report.saturation_seen || got.saturation;
+      report.overrun_seen = report.overrun_seen || got.overrun;
+    }
+
+    // This cycle's inputs, to the model and the DUT alike.
+    DutInputs in;
+    if (cycle == 0) {
+      in.rst_n = false;
+      model_.reset(0);
+    }
+    for (; next < stimulus.actions.size() && stimulus.actions[next].cycle <= cycle; ++next) {
+      const Action& action = stimulus.actions[next];
+      if (action.cycle < cycle) continue;  // cycle 0 belongs to the harness reset
+      switch (action.kind) {
+        case Action::Kind::kReset:
+          in.rst_n = false;
+          model_.reset(cycle);
+          break;
+        case Action::Kind::kStrobe: {
+          in.sample_valid = true;
+          in.sample_bits = static_cast<std::uint32_t>(action.sample) & mask;
+          const auto result = model_.strobe(cycle, action.sample);
+          if (result) {
+            ++report.accepted;
+            report.latencies.push_back(result->valid_cycle - result->accept_cycle);
+          } else if (in.rst_n) {
+            ++report.dropped;
+          }
+          break;
+        }
+        case Action::Kind::kClear:
+          in.flag_clear = true;
+          model_.clear_flags(cycle);
+          break;
+      }
+    }
+    dut->clock(in);
+    report.cycles = cycle + 1;
+  }
+  report.rtl_assertion = dut->assertion_failed();
+  return report;
+}
+
+}  // namespace flange::tb

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Regenerates the small SOS coefficient sets that the co-simulation tests build the RTL for
+# (orders 1, 2, 3, 4, 8 and 12; fs = 6 Hz, fc = 0.5 Hz, like the measurement filter).
+#   bash tests/data/coeffs/regenerate.sh [FLANGE]          rewrite tests/data/coeffs/sos_order<N>/
+#   bash tests/data/coeffs/regenerate.sh --check [FLANGE]  regenerate into a temp folder, compare
+# FLANGE defaults to build/flange.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+check=0
+if [ "${1:-}" = "--check" ]; then
+  check=1
+  shift
+fi
+flange="${1:-$here/../../../build/flange}"
+ORDERS=(1 2 3 4 8 12)
+
+out_root="$here"
+if [ "$check" -eq 1 ]; then
+  out_root="$(mktemp -d)"
+  trap 'rm -rf "$out_root"' EXIT
+fi
+
+status=0
+for order in "${ORDERS[@]}"; do
+  name="sos_order$order"
+  args=(--fs 6 --order "$order" --fc 0.5 --structure sos --name "$name" --no-plot)
+  "$flange" design "${args[@]}" --out "$out_root/$name" >/dev/null
+  if [ "$check" -eq 1 ]; then
+    for file in "$here/$name"/* "$out_root/$name"/*; do
+      base="$(basename "$file")"
+      if ! cmp -s "$here/$name/$base" "$out_root/$name/$base"; then
+        echo "regenerate: $name/$base differs from a fresh run of: flange design ${args[*]}" >&2
+        echo "  to update: bash tests/data/coeffs/regenerate.sh" >&2
+        status=1
+      fi
+    done
+  fi
+done
+exit "$status"

@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: MIT
+// The bit-accurate model on hand-computed cases: rounding, saturation, the feedback shift, the
+// history layout, the accumulator wrap, and the cycle-level behaviour of the pins.
+#include "iir_core.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "filter_json.h"
+#include "iir_mac.h"
+
+namespace flange::model {
+namespace {
+
+// One section of order 1, 8-bit samples, 8-bit words: y = round((B0 x + B1 x1 + A1 (y1 << s)) / 2^Fb).
+CoreConfig tiny(std::int64_t b0, std::int64_t b1, std::int64_t a1, int fb, int fa) {
+  CoreConfig c;
+  c.name = "tiny";
+  c.filter_order = 1;
+  c.num_sections = 1;
+  c.section_order = 1;
+  c.sample_width = 8;
+  c.coef_width = 8;
+  c.num_frac_bits = fb;
+  c.coef_frac_bits = fa;
+  c.feedback_shift = fb - fa;
+  c.acc_width = 32;
+  c.rom = {b0, b1, a1};
+  return c;
+}
+
+std::filesystem::path set_json(const std::string& set) {
+  return std::filesystem::path(FLANGE_SOURCE_DIR) / "coeffs" / set / "filter.json";
+}
+
+TEST(IirCoreModel, RoundsHalfUp) {
+  // B0 = 1 with Fb = 2: y = round(x / 4), ties towards +infinity.
+  IirCore core(tiny(1, 0, 0, 2, 2));
+  const std::vector<std::pair<std::int32_t, std::int32_t>> cases = {
+      {2, 1}, {-2, 0}, {6, 2}, {-6, -1}, {1, 0}, {3, 1}, {-1, 0}, {-3, -1}, {127, 32}, {-128, -32}};
+  for (const auto& [x, y] : cases) {
+    EXPECT_EQ(core.step(x).sample, y) << "x = " << x;
+  }
+}
+
+TEST(IirCoreModel, SaturatesBothWaysAndFlags) {
+  // B0 = 8 with Fb = 2: gain 2.
+  IirCore core(tiny(8, 0, 0, 2, 2));
+  StepResult r = core.step(50);
+  EXPECT_EQ(r.sample, 100);
+  EXPECT_FALSE(r.saturated);
+  r = core.step(100);
+  EXPECT_EQ(r.sample, 127);
+  EXPECT_TRUE(r.saturated);
+  r = core.step(-100);
+  EXPECT_EQ(r.sample, -128);
+  EXPECT_TRUE(r.saturated);
+  r = core.step(-64);
+  EXPECT_EQ(r.sample, -128);
+  EXPECT_FALSE(r.saturated) << "-128 is representable: no clip";
+  EXPECT_TRUE(core.pins(r.valid_cycle).saturation) << "the flag is sticky";
+}
+
+TEST(IirCoreModel, FeedbackShiftAndDeadBand) {
+  // y[n] = x[n] + 0.5 y[n-1]: B0 = 16 (Q.4), -a1 = 2 (Q.2), so s = 2 and y enters as y << 2.
+  // An impulse of 64 halves each step until rounding half up holds it at 1 LSB: the dead band
+  // 0.5 / (1 - 0.5) = 1 LSB.
+  IirCore core(tiny(16, 0, 2, 4, 2));
+  const std::vector<std::int32_t> expected = {64, 32, 16, 8, 4, 2, 1, 1, 1, 1};
+  for (std::size_t n = 0; n < expected.size(); ++n) {
+    EXPECT_EQ(core.step(n == 0 ? 64 : 0).sample, expected[n]) << "n = " << n;
+  }
+  // Negative side: -64 halves to -1, then round(-0.5) = 0 ends it.
+  IirCore neg(tiny(16, 0, 2, 4, 2));
+  const std::vector<std::int32_t> expected_neg = {-64, -32, -16, -8, -4, -2, -1, 0, 0};
+  for (std::size_t n = 0; n < expected_neg.size(); ++n) {
+    EXPECT_EQ(neg.step(n == 0 ? -64 : 0).sample, expected_neg[n]) << "n = " << n;
+  }
+}
+
+TEST(IirCoreModel, HistoryLayoutNewestFirst) {
+  // Two sections of order 1; section outputs are exact (B0 = 1.0, no feedback).
+  CoreConfig c = tiny(4, 0, 0, 2, 2);
+  c.num_sections = 2;
+  c.filter_order = 2;
+  c.rom = {4, 0, 0, 8, 0, 0};  // section 0: y = x; section 1: y = 2 x
+  IirCore core(c);
+  core.step(3);
+  core.step(5);
+  // Lines: x[n], x[n-1] | y0[n], y0[n-1] | y1[n], y1[n-1].
+  EXPECT_EQ(core.lr(), (std::vector<std::int32_t>{5, 3, 5, 3, 10, 6}));
+}
+
+TEST(IirCoreModel, AccumulatorWrapsLikeThePRegister) {
+  EXPECT_EQ(wrap_to_width(std::uint64_t{1} << 47, 48), -(std::int64_t{1} << 47));
+  EXPECT_EQ(wrap_to_width((std::uint64_t{1} << 47) - 1, 48), (std::int64_t{1} << 47) - 1);
+  EXPECT_EQ(wrap_to_width(~std::uint64_t{0}, 48), -1);
+  EXPECT_EQ(wrap_to_width(std::uint64_t{1} << 48, 48), 0);
+  EXPECT_EQ(wrap_to_width(0xFFu, 8), -1);
+  EXPECT_EQ(wrap_to_width(0x80u, 8), -128);
+  // P <= P + A * B with a negative product, modulo 2^64, then read back at 48 bits.
+  EXPECT_EQ(wrap_to_width(mac(5, -3, 4), 48), -7);
+  // A sum that leaves 12 bits wraps like a 12-bit register would: 2047 + 1 -> -2048.
+  EXPECT_EQ(wrap_to_width(mac(2047, 1, 1), 12), -2048);
+}
+
+TEST(IirCoreModel, LatencyIsSectionsTimesTermsPlusMacLatency) {
+  const std::vector<std::pair<std::string, int>> sets = {
+      {"measurement_sos", 3 * (5 + 3) + 1},
+      {"measurement_df1", 1 * (11 + 3) + 1},
+      {"vehicle_sos", 4 * (5 + 3) + 1}};
+  for (const auto& [set, cycles] : sets) {
+    const IirCore core(load_core_config(set_json(set)));
+    EXPECT_EQ(core.latency_cycles(), cycles) << set;
+    EXPECT_EQ(core.cycles_per_sample(), cycles) << set;
+  }
+}
+
+TEST(IirCoreModel, StepStreamsBackToBack) {
+  IirCore core(load_core_config(set_json("vehicle_sos")));
+  const StepResult a = core.step(100);
+  const StepResult b = core.step(200);
+  EXPECT_EQ(a.valid_cycle - a.accept_cycle, 33u);
+  EXPECT_EQ(b.accept_cycle, a.valid_cycle) << "a sample is accepted in the valid cycle";
+}
+
+TEST(IirCoreModel, PinsOverOneComputation) {
+  IirCore core(tiny(4, 0, 0, 2, 2));  // latency 1 * (3 + 3) + 1 = 7
+  ASSERT_EQ(core.latency_cycles(), 7);
+  EXPECT_FALSE(core.pins(5).busy);
+  ASSERT_TRUE(core.strobe(5, 9));
+  EXPECT_FALSE(core.pins(5).busy) << "busy rises at the edge that ends the EN cycle";
+  for (std::uint64_t c = 6; c < 12; ++c) {
+    const Pins p = core.pins(c);
+    EXPECT_TRUE(p.busy) << c;
+    EXPECT_FALSE(p.sample_valid) << c;
+    EXPECT_EQ(p.sample, 0) << c;
+  }
+  const Pins done = core.pins(12);
+  EXPECT_FALSE(done.busy);
+  EXPECT_TRUE(done.sample_valid);
+  EXPECT_EQ(done.sample, 9);
+  const Pins after = core.pins(13);
+  EXPECT_FALSE(after.sample_valid);
+  EXPECT_EQ(after.sample, 9) << "sample_o holds the last output";
+}
+
+TEST(IirCoreModel, OverrunDropsTheSample) {
+  IirCore core(tiny(4, 0, 0, 2, 2));
+  ASSERT_TRUE(core.strobe(1, 10));
+  EXPECT_FALSE(core.strobe(2, 99)) << "busy: dropped";
+  EXPECT_FALSE(core.pins(2).overrun);
+  EXPECT_TRUE(core.pins(3).overrun);
+  EXPECT_EQ(core.pins(8).sample, 10);
+  EXPECT_TRUE(core.pins(8).sample_valid);
+  const auto next = core.strobe(8, 20);
+  ASSERT_TRUE(next) << "accepted in the valid cycle";
+  // The dropped 99 never entered the history: the line holds 20 and 10.
+  EXPECT_EQ(core.lr()[0], 20);
+  EXPECT_EQ(core.lr()[1], 10);
+  EXPECT_TRUE(core.pins(20).overrun) << "sticky";
+}
+
+TEST(IirCoreModel, FlagEventBeatsClearInTheSameEdge) {
+  IirCore core(tiny(4, 0, 0, 2, 2));
+  ASSERT_TRUE(core.strobe(1, 10));
+  core.strobe(3, 0);       // overrun, visible from cycle 4
+  core.clear_flags(3);     // clear at the same edge: the event wins
+  EXPECT_TRUE(core.pins(4).overrun);
+  core.clear_flags(4);     // nothing pending: cleared from cycle 5
+  EXPECT_TRUE(core.pins(4).overrun);
+  EXPECT_FALSE(core.pins(5).overrun);
+}
+
+TEST(IirCoreModel, SaturationFlagRisesWhenTheSectionWritesBack) {
+  // Two sections; only section 0 clips (gain 2 then 0.5). Section 0 writes back at
+  // accept + 1 + (3 + 3) cycles, long before the output.
+  CoreConfig c = tiny(8, 0, 0, 2, 2);
+  c.num_sections = 2;
+  c.filter_order = 2;
+  c.rom = {8, 0, 0, 2, 0, 0};
+  IirCore core(c);
+  ASSERT_EQ(core.latency_cycles(), 13);
+  const auto r = core.strobe(10, 100);
+  ASSERT_TRUE(r);
+  EXPECT_TRUE(r->saturated);
+  EXPECT_EQ(r->sample, 64);  // 127 * 0.5 = 63.5, rounded half up
+  EXPECT_FALSE(core.pins(16).saturation);
+  EXPECT_TRUE(core.pins(17).saturation);
+  EXPECT_TRUE(core.pins(23).sample_valid);
+}
+
+TEST(IirCoreModel, ResetCancelsTheComputationInFlight) {
+  IirCore core(tiny(4, 0, 0, 2, 2));
+  ASSERT_TRUE(core.strobe(1, 10));
+  core.reset(7);  // the output would be seen in cycle 8
+  const Pins p = core.pins(8);
+  EXPECT_FALSE(p.sample_valid);
+  EXPECT_FALSE(p.busy);
+  EXPECT_EQ(p.sample, 0);
+  EXPECT_EQ(core.lr()[0], 0) << "history cleared";
+  EXPECT_TRUE(core.strobe(8, 5)) << "ready right after reset";
+
+  IirCore late(tiny(4, 0, 0, 2, 2));
+  ASSERT_TRUE(late.strobe(1, 10));
+  late.reset(8);  // the output is already visible in cycle 8
+  EXPECT_TRUE(late.pins(8).sample_valid);
+  EXPECT_EQ(late.pins(9).sample, 0);
+}
+
+TEST(IirCoreModel, StrobeDuringResetIsIgnored) {
+  IirCore core(tiny(4, 0, 0, 2, 2));
+  core.reset(3);
+  EXPECT_FALSE(core.strobe(3, 10));
+  EXPECT_FALSE(core.pins(4).overrun);
+  EXPECT_FALSE(core.pins(4).busy);
+}
+
+TEST(IirCoreModel, RejectsIllegalInput) {
+  IirCore core(tiny(4, 0, 0, 2, 2));
+  EXPECT_THROW(core.step(128), std::out_of_range);
+  EXPECT_THROW(core.step(-129), std::out_of_range);
+  core.pins(10);
+  EXPECT_THROW(core.pins(9), std::logic_error) << "time runs forwards";
+  CoreConfig bad = tiny(4, 0, 0, 2, 2);
+  bad.rom.pop_back();
+  EXPECT_THROW(IirCore{bad}, std::invalid_argument);
+  bad = tiny(200, 0, 0, 2, 2);  // does not fit 8 bits
+  EXPECT_THROW(IirCore{bad}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace flange::model
