@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "design_outputs.h"
 
+#include "gnuplot_runner.h"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -215,18 +217,7 @@ void write_response_plot(const DesignRecord& record, const std::filesystem::path
             "$response using 1:3 with lines lw 1.5 dt 2 lc rgb '#d62728' title 'quantised'\n";
   script << "unset multiplot\n";
 
-  FILE* gnuplot = popen("gnuplot 2>&1", "w");
-  if (gnuplot == nullptr) {
-    throw std::runtime_error("cannot start gnuplot; install it (bash scripts/setup.sh)");
-  }
-  const std::string text = script.str();
-  std::fwrite(text.data(), 1, text.size(), gnuplot);
-  const int status = pclose(gnuplot);
-  if (status != 0) {
-    throw std::runtime_error(fmt::format(
-        "gnuplot failed (status {}) writing {}; is gnuplot installed? (bash scripts/setup.sh)",
-        status, svg_path.string()));
-  }
+  run_gnuplot(script.str(), svg_path.string());
   // Name the command that made the plot in the SVG's description (an XML comment cannot hold
   // the "--" of the options).
   std::ifstream in(svg_path, std::ios::binary);

@@ -8,6 +8,7 @@
 #include "calibrate_command.h"
 #include "demo_command.h"
 #include "design_command.h"
+#include "run_command.h"
 
 namespace flange::host {
 
@@ -21,6 +22,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* design = coeffs::add_design_command(app, design_options);
   CalibrateOptions calibrate_options;
   CLI::App* calibrate = add_calibrate_command(app, calibrate_options);
+  RunOptions run_options;
+  CLI::App* run = add_run_command(app, run_options);
   DemoOptions demo_options;
   CLI::App* demo = add_demo_command(app, demo_options);
 
@@ -41,6 +44,7 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   try {
     if (design->parsed()) return coeffs::run_design_command(design_options, args, out, err);
     if (calibrate->parsed()) return run_calibrate_command(calibrate_options, args, out, err);
+    if (run->parsed()) return run_run_command(run_options, out, err);
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
