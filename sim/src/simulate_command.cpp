@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -37,6 +38,30 @@ void check_positive_finite(double value, double max, const std::string& name,
         fmt::format("{} = {} is outside its valid range (0, {}] {}", name, value, max, unit));
   }
 }
+
+// Checks a number in (0, max] as the user typed it, so that "six", "nan" and "-1" get the same
+// one-line message with the range.
+CLI::Validator positive_up_to(double max, const std::string& unit) {
+  return CLI::Validator(
+      [max, unit](std::string& text) -> std::string {
+        double value = 0.0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        const bool parsed = error == std::errc() && end == text.data() + text.size();
+        if (parsed && std::isfinite(value) && value > 0.0 && value <= max) return "";
+        return fmt::format("{} is outside its valid range (0, {}] {}", text, max, unit);
+      },
+      fmt::format("(0, {}] {}", max, unit));
+}
+
+// Seeds are whole numbers 0 to 2^64 - 1; strtoull alone would wrap "-1" round to 2^64 - 1.
+const CLI::Validator kSeedRange(
+    [](std::string& text) -> std::string {
+      std::uint64_t value = 0;
+      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+      if (!text.empty() && error == std::errc() && end == text.data() + text.size()) return "";
+      return text + " is not a whole number from 0 to 18446744073709551615";
+    },
+    "0 to 2^64-1");
 
 // The twin file (or the default twin) with the command line's effects added or retuned.
 TwinConfig twin_for(const SimulateOptions& options) {
@@ -114,11 +139,13 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
   cmd->add_option("--effect", options.effects,
                   "switch an effect on: NAME or NAME:key=value[,key=value...] (repeatable); "
                   "names and keys in docs/sensor_twin.md");
-  cmd->add_option("--fs", options.fs_hz, "sample rate in Hz, (0, 100000] (bench 6, loco 100)");
-  cmd->add_option("--duration", options.duration_s,
-                  "record length in s, (0, 31622400] (bench 6600, loco 300)");
-  cmd->add_option("--seed", options.seed, "seed of the twin's random numbers (0 to 2^64-1)")
-      ->required();
+  cmd->add_option("--fs", options.fs_hz, "sample rate in Hz (bench 6, loco 100)")
+      ->check(positive_up_to(kMaxSampleRateHz, "Hz"));
+  cmd->add_option("--duration", options.duration_s, "record length in s (bench 6600, loco 300)")
+      ->check(positive_up_to(kMaxDurationS, "s"));
+  cmd->add_option("--seed", options.seed, "seed of the twin's random numbers")
+      ->required()
+      ->check(kSeedRange);
   cmd->add_option("--out", options.out, "recording to write (CSV)")->required();
   cmd->add_option("--twin", options.twin, "twin file (JSON) to start from");
   cmd->add_option("--save-twin", options.save_twin, "write the twin used to this JSON file");

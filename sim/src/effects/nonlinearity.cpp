@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // nonlinearity: the real characteristic departs from the calibration polynomial in shape, as an
 // integral-nonlinearity error that vanishes at both ends of the output range: an even bow
-// (peak bow_v at mid-scale) and an odd S-curve (peaks +-s_curve_v at 21 % and 79 % of scale).
+// (peak bow_v at mid-scale) and an odd S-curve (-s_curve_v at 21 %, +s_curve_v at 79 % of scale).
 #include <cmath>
 
 #include "effects.h"
@@ -42,7 +42,8 @@ EffectSpec nonlinearity_effect() {
   spec.stage = ChainStage::kSensor;
   spec.params = {
       {"bow_v", 0.05, -1.0, 1.0, "V", "even error, its peak at mid-scale"},
-      {"s_curve_v", 0.03, -1.0, 1.0, "V", "odd error, its peak at 21 % (and minus at 79 %)"},
+      {"s_curve_v", 0.03, -1.0, 1.0, "V",
+       "odd error: -s_curve_v at 21 % of scale, +s_curve_v at 79 %"},
   };
   spec.make = [](const ParamValues& p, const EffectContext& context) {
     return std::make_unique<Nonlinearity>(p, context);
