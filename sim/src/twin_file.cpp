@@ -78,23 +78,26 @@ PolynomialSensorModel nominal_from_json(const json& nominal, const std::string& 
 
 }  // namespace
 
-json twin_to_json(const TwinConfig& config) {
-  json a = json::array();
+nlohmann::ordered_json twin_to_json(const TwinConfig& config) {
+  using OrderedJson = nlohmann::ordered_json;
+  OrderedJson a = OrderedJson::array();
   const Eigen::MatrixXd& coefficients = config.nominal.coefficients();
   for (Eigen::Index i = 0; i < coefficients.rows(); ++i) {
-    json row = json::array();
+    OrderedJson row = OrderedJson::array();
     for (Eigen::Index j = 0; j < coefficients.cols(); ++j) row.push_back(coefficients(i, j));
     a.push_back(row);
   }
-  json effects = json::array();
-  std::vector<const EffectSettings*> ordered;
-  for (const EffectSettings& effect : config.effects) ordered.push_back(&effect);
-  std::sort(ordered.begin(), ordered.end(), [](const EffectSettings* x, const EffectSettings* y) {
-    return catalogue_index(x->name) < catalogue_index(y->name);
-  });
-  for (const EffectSettings* effect : ordered) {
-    json params = json::object();
-    for (const auto& [key, value] : effect->params) params[key] = value;
+  OrderedJson effects = OrderedJson::array();
+  std::vector<const EffectSettings*> in_chain_order;
+  for (const EffectSettings& effect : config.effects) in_chain_order.push_back(&effect);
+  std::sort(in_chain_order.begin(), in_chain_order.end(),
+            [](const EffectSettings* x, const EffectSettings* y) {
+              return catalogue_index(x->name) < catalogue_index(y->name);
+            });
+  for (const EffectSettings* effect : in_chain_order) {
+    OrderedJson params = OrderedJson::object();
+    const EffectSpec& spec = effect_catalogue()[catalogue_index(effect->name)];
+    for (const ParamSpec& param : spec.params) params[param.key] = effect->params.at(param.key);
     effects.push_back({{"name", effect->name}, {"params", params}});
   }
   return {

@@ -13,7 +13,9 @@ namespace flange::sim {
 
 inline constexpr const char* kTwinFormat = "flange-sensor-twin/1";
 
-nlohmann::json twin_to_json(const TwinConfig& config);
+// Fields in a fixed order (format, nominal, noise, effects; parameters as the effect declares
+// them), so that saved files read well and diff cleanly.
+nlohmann::ordered_json twin_to_json(const TwinConfig& config);
 
 // Reads a twin from JSON. Missing sections take their defaults (thesis eq. 3.14, Table 4-1
 // noise, no effects); unknown fields are errors. Throws BadArgument with one line starting
