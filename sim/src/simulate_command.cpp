@@ -54,14 +54,16 @@ CLI::Validator positive_up_to(double max, const std::string& unit) {
 }
 
 // Seeds are whole numbers 0 to 2^64 - 1; strtoull alone would wrap "-1" round to 2^64 - 1.
-const CLI::Validator kSeedRange(
-    [](std::string& text) -> std::string {
-      std::uint64_t value = 0;
-      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-      if (!text.empty() && error == std::errc() && end == text.data() + text.size()) return "";
-      return text + " is not a whole number from 0 to 18446744073709551615";
-    },
-    "0 to 2^64-1");
+CLI::Validator seed_range() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (!text.empty() && error == std::errc() && end == text.data() + text.size()) return "";
+        return text + " is not a whole number from 0 to 18446744073709551615";
+      },
+      "0 to 2^64-1");
+}
 
 // The twin file (or the default twin) with the command line's effects added or retuned.
 TwinConfig twin_for(const SimulateOptions& options) {
@@ -145,7 +147,7 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
       ->check(positive_up_to(kMaxDurationS, "s"));
   cmd->add_option("--seed", options.seed, "seed of the twin's random numbers")
       ->required()
-      ->check(kSeedRange);
+      ->check(seed_range());
   cmd->add_option("--out", options.out, "recording to write (CSV)")->required();
   cmd->add_option("--twin", options.twin, "twin file (JSON) to start from");
   cmd->add_option("--save-twin", options.save_twin, "write the twin used to this JSON file");
