@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
+#include <utility>
 
 #include "cli.h"
 
@@ -152,13 +154,32 @@ TEST(SimulateCommand, SummaryReportsAliasingOfMainsAndTheLateralMode) {
   EXPECT_NE(outcome.out.find("appears at 0.387 Hz"), std::string::npos) << outcome.out;
 }
 
-TEST(SimulateCommand, OutOfRangeClearanceIsCountedInTheSummary) {
-  // Bench positions reach 10 mm; with a strong gain drift the hot sensor hits its top rail.
-  const fs::path out = scratch("clipped.csv");
-  const Outcome outcome = run({"simulate", "--scenario", "bench", "--seed", "1", "--effect",
-                               "temp_gain_drift:gain_per_c=0.01", "--out", out.string()});
-  ASSERT_EQ(outcome.status, 0) << outcome.err;
-  EXPECT_EQ(outcome.out.find("0 samples at 0 V, 0 at 10 V"), std::string::npos) << outcome.out;
+TEST(SimulateCommand, SamplesOnTheRailsAreCountedInTheSummary) {
+  const auto rail_counts = [](const std::vector<std::string>& effect) {
+    const fs::path out = scratch("rails.csv");
+    std::vector<std::string> args = {"simulate", "--scenario", "bench",     "--seed",
+                                     "1",        "--out",      out.string()};
+    args.insert(args.end(), effect.begin(), effect.end());
+    const Outcome outcome = run(args);
+    EXPECT_EQ(outcome.status, 0) << outcome.err;
+    const std::smatch match = [&] {
+      std::smatch m;
+      std::regex_search(outcome.out, m, std::regex(R"(rail: (\d+) samples at 0 V, (\d+) at 10 V)"));
+      return m;
+    }();
+    EXPECT_EQ(match.size(), 3u) << outcome.out;
+    return std::pair<long, long>{std::stol(match[1]), std::stol(match[2])};
+  };
+  EXPECT_EQ(rail_counts({}), (std::pair<long, long>{0, 0}));
+  // A strong positive gain drift drives the hot sensor onto its top rail at large clearances.
+  const auto [low, high] = rail_counts({"--effect", "temp_gain_drift:gain_per_c=0.01"});
+  EXPECT_EQ(low, 0);
+  EXPECT_GT(high, 1000);
+  // A strong negative offset drift drives it onto the bottom rail at small clearances.
+  const auto [low_offset, high_offset] =
+      rail_counts({"--effect", "temp_offset_drift:offset_v_per_c=-0.05"});
+  EXPECT_GT(low_offset, 1000);
+  EXPECT_EQ(high_offset, 0);
 }
 
 struct BadInput {
