@@ -9,6 +9,7 @@
 #include "demo_command.h"
 #include "design_command.h"
 #include "run_command.h"
+#include "simulate_command.h"
 
 namespace flange::host {
 
@@ -26,6 +27,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* run = add_run_command(app, run_options);
   DemoOptions demo_options;
   CLI::App* demo = add_demo_command(app, demo_options);
+  sim::SimulateOptions simulate_options;
+  CLI::App* simulate = sim::add_simulate_command(app, simulate_options);
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
@@ -46,6 +49,7 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (calibrate->parsed()) return run_calibrate_command(calibrate_options, args, out, err);
     if (run->parsed()) return run_run_command(run_options, out, err);
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
+    if (simulate->parsed()) return sim::run_simulate_command(simulate_options, out, err);
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
     return kExitFailure;

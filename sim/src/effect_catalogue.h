@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// Every effect the twin knows, in the order a sample passes them, and the checks that turn a
+// name and key=value pairs into validated settings.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "effect.h"
+
+namespace flange::sim {
+
+// All effects in signal-chain order (docs/sensor_twin.md, "Signal chain").
+const std::vector<EffectSpec>& effect_catalogue();
+
+// Position of `name` in the catalogue, or -1 when there is no such effect.
+int catalogue_index(const std::string& name);
+
+// "vibration, thermal_lag, ...": for error messages and help.
+std::string effect_names();
+
+// An effect switched on, with a value for every one of its parameters.
+struct EffectSettings {
+  std::string name;
+  ParamValues params;
+  bool operator==(const EffectSettings&) const = default;
+};
+
+// Settings for effect `name`: its defaults, replaced by `values`. Throws BadArgument with one
+// line starting with `where` (e.g. "--effect mains_pickup" or "twin.json: effects[2]") when the
+// name or a key is unknown, a value is not finite or outside its range, an integer parameter has
+// a fraction, or the parameters do not go together.
+EffectSettings make_effect_settings(const std::string& name, const ParamValues& values,
+                                    const std::string& where);
+
+// The range of a parameter as printed in messages and docs: "[0, 1] V".
+std::string describe_range(const ParamSpec& param);
+
+// Builds the effect; `twin_seed` is the twin's seed, from which the effect takes its own stream
+// (so switching other effects on or off leaves its random numbers unchanged).
+std::unique_ptr<Effect> make_effect(const EffectSettings& settings, double v_min_v, double v_max_v,
+                                    std::uint64_t twin_seed);
+
+}  // namespace flange::sim

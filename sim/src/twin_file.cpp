@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: MIT
+#include "twin_file.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <stdexcept>
+
+#include "sim_error.h"
+
+namespace flange::sim {
+namespace {
+
+using nlohmann::json;
+
+void reject_unknown_fields(const json& object, const std::set<std::string>& known,
+                           const std::string& where) {
+  for (const auto& item : object.items()) {
+    if (known.count(item.key()) == 0) {
+      std::string names;
+      for (const std::string& name : known) names += (names.empty() ? "" : ", ") + name;
+      throw BadArgument(
+          fmt::format("{}: unknown field '{}'; expected one of: {}", where, item.key(), names));
+    }
+  }
+}
+
+const json& require_object(const json& value, const std::string& where) {
+  if (!value.is_object()) throw BadArgument(fmt::format("{}: expected a JSON object", where));
+  return value;
+}
+
+double require_number(const json& value, const std::string& where) {
+  if (!value.is_number()) throw BadArgument(fmt::format("{}: expected a number", where));
+  return value.get<double>();
+}
+
+PolynomialSensorModel nominal_from_json(const json& nominal, const std::string& where) {
+  require_object(nominal, where);
+  reject_unknown_fields(nominal, {"model", "a", "voltage_range_v"}, where);
+  if (!nominal.contains("a") || !nominal["a"].is_array() || nominal["a"].empty()) {
+    throw BadArgument(
+        fmt::format("{}.a: expected rows of coefficients, a[i][j] multiplying V^i T^j", where));
+  }
+  const json& rows = nominal["a"];
+  const std::size_t columns = rows[0].is_array() ? rows[0].size() : 0;
+  Eigen::MatrixXd a(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(columns));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string row_where = fmt::format("{}.a[{}]", where, i);
+    if (!rows[i].is_array() || rows[i].size() != columns || columns == 0) {
+      throw BadArgument(fmt::format("{}: expected a row of {} numbers (all rows alike)", row_where,
+                                    std::max<std::size_t>(columns, 1)));
+    }
+    for (std::size_t j = 0; j < columns; ++j) {
+      a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+          require_number(rows[i][j], fmt::format("{}[{}]", row_where, j));
+    }
+  }
+  double v_min_v = 0.0;
+  double v_max_v = 10.0;
+  if (nominal.contains("voltage_range_v")) {
+    const json& range = nominal["voltage_range_v"];
+    if (!range.is_array() || range.size() != 2) {
+      throw BadArgument(fmt::format("{}.voltage_range_v: expected [min, max] in volts", where));
+    }
+    v_min_v = require_number(range[0], where + ".voltage_range_v[0]");
+    v_max_v = require_number(range[1], where + ".voltage_range_v[1]");
+  }
+  try {
+    return PolynomialSensorModel(a, v_min_v, v_max_v);
+  } catch (const BadArgument& error) {
+    throw BadArgument(fmt::format("{}: {}", where, error.what()));
+  }
+}
+
+}  // namespace
+
+nlohmann::ordered_json twin_to_json(const TwinConfig& config) {
+  using OrderedJson = nlohmann::ordered_json;
+  OrderedJson a = OrderedJson::array();
+  const Eigen::MatrixXd& coefficients = config.nominal.coefficients();
+  for (Eigen::Index i = 0; i < coefficients.rows(); ++i) {
+    OrderedJson row = OrderedJson::array();
+    for (Eigen::Index j = 0; j < coefficients.cols(); ++j) row.push_back(coefficients(i, j));
+    a.push_back(row);
+  }
+  OrderedJson effects = OrderedJson::array();
+  std::vector<const EffectSettings*> in_chain_order;
+  for (const EffectSettings& effect : config.effects) in_chain_order.push_back(&effect);
+  std::sort(in_chain_order.begin(), in_chain_order.end(),
+            [](const EffectSettings* x, const EffectSettings* y) {
+              return catalogue_index(x->name) < catalogue_index(y->name);
+            });
+  for (const EffectSettings* effect : in_chain_order) {
+    OrderedJson params = OrderedJson::object();
+    const EffectSpec& spec = effect_catalogue()[catalogue_index(effect->name)];
+    for (const ParamSpec& param : spec.params) params[param.key] = effect->params.at(param.key);
+    effects.push_back({{"name", effect->name}, {"params", params}});
+  }
+  return {
+      {"format", kTwinFormat},
+      {"nominal",
+       {{"model", "d_mm = sum over i, j of a[i][j] * V^i * T^j (V in volts, T in degC)"},
+        {"a", a},
+        {"voltage_range_v", {config.nominal.v_min_v(), config.nominal.v_max_v()}}}},
+      {"noise",
+       {{"voltage_std_v", config.noise.voltage_std_v},
+        {"temperature_std_c", config.noise.temperature_std_c}}},
+      {"effects", effects},
+  };
+}
+
+TwinConfig twin_from_json(const json& root, const std::string& where) {
+  require_object(root, where);
+  reject_unknown_fields(root, {"format", "nominal", "noise", "effects"}, where);
+  if (root.contains("format") && root["format"] != kTwinFormat) {
+    throw BadArgument(fmt::format("{}: format: expected \"{}\"", where, kTwinFormat));
+  }
+  TwinConfig config;
+  if (root.contains("nominal"))
+    config.nominal = nominal_from_json(root["nominal"], where + ": nominal");
+  if (root.contains("noise")) {
+    const std::string noise_where = where + ": noise";
+    const json& noise = require_object(root["noise"], noise_where);
+    reject_unknown_fields(noise, {"voltage_std_v", "temperature_std_c"}, noise_where);
+    if (noise.contains("voltage_std_v")) {
+      config.noise.voltage_std_v =
+          require_number(noise["voltage_std_v"], noise_where + ".voltage_std_v");
+    }
+    if (noise.contains("temperature_std_c")) {
+      config.noise.temperature_std_c =
+          require_number(noise["temperature_std_c"], noise_where + ".temperature_std_c");
+    }
+  }
+  if (root.contains("effects")) {
+    const json& effects = root["effects"];
+    if (!effects.is_array())
+      throw BadArgument(fmt::format("{}: effects: expected an array", where));
+    for (std::size_t k = 0; k < effects.size(); ++k) {
+      const std::string effect_where = fmt::format("{}: effects[{}]", where, k);
+      const json& effect = require_object(effects[k], effect_where);
+      reject_unknown_fields(effect, {"name", "params"}, effect_where);
+      if (!effect.contains("name") || !effect["name"].is_string()) {
+        throw BadArgument(fmt::format("{}.name: expected the effect's name", effect_where));
+      }
+      ParamValues values;
+      if (effect.contains("params")) {
+        const json& params = require_object(effect["params"], effect_where + ".params");
+        for (const auto& item : params.items()) {
+          values[item.key()] =
+              require_number(item.value(), fmt::format("{}.params.{}", effect_where, item.key()));
+        }
+      }
+      config.effects.push_back(
+          make_effect_settings(effect["name"].get<std::string>(), values, effect_where));
+    }
+  }
+  try {
+    check_twin_config(config);
+  } catch (const BadArgument& error) {
+    throw BadArgument(fmt::format("{}: {}", where, error.what()));
+  }
+  return config;
+}
+
+TwinConfig load_twin(const std::filesystem::path& path) {
+  const std::string where = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw BadArgument(fmt::format("{}: cannot open the twin file", where));
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& error) {
+    // nlohmann reports a byte offset; people read lines and columns.
+    std::size_t line = 1;
+    std::size_t column = 1;
+    const std::size_t end =
+        std::min<std::size_t>(error.byte == 0 ? 0 : error.byte - 1, text.size());
+    for (std::size_t k = 0; k < end; ++k) {
+      if (text[k] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    throw BadArgument(fmt::format("{}: line {}, column {}: not valid JSON", where, line, column));
+  }
+  return twin_from_json(root, where);
+}
+
+void save_twin(const TwinConfig& config, const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error(fmt::format("{}: cannot write the twin file", path.string()));
+  out << twin_to_json(config).dump(2) << "\n";
+  if (!out)
+    throw std::runtime_error(fmt::format("{}: writing the twin file failed", path.string()));
+}
+
+}  // namespace flange::sim

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+// The twin's parameters as JSON: the nominal polynomial, the noise and the switched-on effects
+// with every parameter (docs/sensor_twin.md, "Twin file").
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "sensor_twin.h"
+
+namespace flange::sim {
+
+inline constexpr const char* kTwinFormat = "flange-sensor-twin/1";
+
+// Fields in a fixed order (format, nominal, noise, effects; parameters as the effect declares
+// them), so that saved files read well and diff cleanly.
+nlohmann::ordered_json twin_to_json(const TwinConfig& config);
+
+// Reads a twin from JSON. Missing sections take their defaults (thesis eq. 3.14, Table 4-1
+// noise, no effects); unknown fields are errors. Throws BadArgument with one line starting
+// with `where` (the file name) and naming the field, e.g. "twin.json: effects[1].params: ...".
+TwinConfig twin_from_json(const nlohmann::json& json, const std::string& where);
+
+// File forms of the above. Reading throws BadArgument for a missing file or invalid JSON
+// (naming line and column); writing throws std::runtime_error when the file cannot be written.
+TwinConfig load_twin(const std::filesystem::path& path);
+void save_twin(const TwinConfig& config, const std::filesystem::path& path);
+
+}  // namespace flange::sim

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+// The twin file: what is saved loads back to the same twin, and bad files are named precisely.
+#include "twin_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "sim_error.h"
+
+namespace flange::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(FLANGE_BINARY_DIR) / "test_twin_file";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+std::string load_error(const std::string& text) {
+  const fs::path path = scratch("bad.json");
+  std::ofstream(path) << text;
+  try {
+    load_twin(path);
+  } catch (const BadArgument& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TwinConfig every_effect_retuned() {
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(4, 2);
+  a << 1.2, -0.004, 0.35, 0.0007, 0.06, 0.0, 0.0008, 1e-7;
+  TwinConfig config;
+  config.nominal = PolynomialSensorModel(a, 0.0, 10.0);
+  config.noise = {0.031, 0.25};
+  // Listed backwards on purpose: the file keeps chain order.
+  config.effects = {
+      make_effect_settings("adc_quantization", {{"bits", 14}}, "t"),
+      make_effect_settings("channel_skew", {{"skew_s", -0.4}}, "t"),
+      make_effect_settings("mains_pickup", {{"mains_hz", 60}, {"phase_deg", 1.0 / 3.0}}, "t"),
+      make_effect_settings("range_compression", {{"onset_c", 45}}, "t"),
+      make_effect_settings("ageing_drift", {{"rate_v_per_day", 0.123456789012345}}, "t"),
+      make_effect_settings("temp_offset_drift", {{"reference_c", 22}}, "t"),
+      make_effect_settings("temp_gain_drift", {{"gain_per_c", -7e-4}}, "t"),
+      make_effect_settings("nonlinearity", {{"bow_v", -0.02}}, "t"),
+      make_effect_settings("thermal_lag", {{"tau_s", 45}}, "t"),
+      make_effect_settings("vibration", {{"rms_mm", 0.02}}, "t"),
+  };
+  return config;
+}
+
+TEST(TwinFile, SaveThenLoadGivesTheSameTwin) {
+  const TwinConfig original = every_effect_retuned();
+  const fs::path path = scratch("round_trip.json");
+  save_twin(original, path);
+  const TwinConfig loaded = load_twin(path);
+
+  EXPECT_EQ(loaded.nominal.coefficients(), original.nominal.coefficients());
+  EXPECT_EQ(loaded.noise, original.noise);
+  ASSERT_EQ(loaded.effects.size(), original.effects.size());
+  for (const EffectSettings& effect : original.effects) {
+    bool found = false;
+    for (const EffectSettings& back : loaded.effects) found = found || back == effect;
+    EXPECT_TRUE(found) << effect.name;
+  }
+  EXPECT_EQ(twin_to_json(loaded).dump(), twin_to_json(original).dump());
+  // Saved in chain order.
+  EXPECT_EQ(twin_to_json(loaded)["effects"][0]["name"], "vibration");
+
+  SensorTwin a(original, 99);
+  SensorTwin b(loaded, 99);
+  for (int n = 0; n < 500; ++n) {
+    const TrueState truth{n / 10.0, 2.0 + 0.015 * n, 20.0 + 0.15 * n};
+    const Reading ra = a.step(truth);
+    const Reading rb = b.step(truth);
+    ASSERT_EQ(ra.voltage_v, rb.voltage_v) << n;
+    ASSERT_EQ(ra.temp_c, rb.temp_c) << n;
+  }
+}
+
+TEST(TwinFile, MissingSectionsTakeTheThesisDefaults) {
+  const TwinConfig config = twin_from_json(nlohmann::json::object(), "empty.json");
+  EXPECT_EQ(config.nominal.coefficients(), PolynomialSensorModel::thesis_eq_3_14().coefficients());
+  EXPECT_EQ(config.noise, NoiseSettings{});
+  EXPECT_TRUE(config.effects.empty());
+}
+
+TEST(TwinFile, BadFilesAreNamedWithTheFieldAndRange) {
+  EXPECT_NE(load_error("{\n  \"noise\": {\"voltage_std_v\": 0.1,}\n}")
+                .find("bad.json: line 2, column 34: not valid JSON"),
+            std::string::npos)
+      << load_error("{\n  \"noise\": {\"voltage_std_v\": 0.1,}\n}");
+  EXPECT_NE(load_error(R"({"efects": []})").find("unknown field 'efects'"), std::string::npos);
+  EXPECT_NE(load_error(R"({"effects": [{"name": "mains_pickup", "params": {"harmonics": 40}}]})")
+                .find("bad.json: effects[0]: harmonics = 40 is outside its valid range [1, 20]"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"effects": [{"name": "hum"}]})").find("unknown effect 'hum'"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"noise": {"voltage_std_v": "loud"}})")
+                .find("bad.json: noise.voltage_std_v: expected a number"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"noise": {"voltage_std_v": -1}})").find("[0, 10] V"), std::string::npos);
+  EXPECT_NE(load_error(R"({"nominal": {"a": [[1, 2], [3]]}})").find("nominal.a[1]"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"nominal": {"a": [[1.16, -0.0036]]}})").find("non-zero V term"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"format": "other/2"})").find("format"), std::string::npos);
+  EXPECT_NE(load_error(R"({"effects": [{"name": "vibration"}, {"name": "vibration"}]})")
+                .find("switched on twice"),
+            std::string::npos);
+  EXPECT_THROW(load_twin(scratch("does_not_exist.json")), BadArgument);
+}
+
+}  // namespace
+}  // namespace flange::sim
