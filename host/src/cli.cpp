@@ -5,6 +5,7 @@
 #include <exception>
 #include <ostream>
 
+#include "cosim_command.h"
 #include "demo_command.h"
 #include "design_command.h"
 
@@ -20,6 +21,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* design = coeffs::add_design_command(app, design_options);
   DemoOptions demo_options;
   CLI::App* demo = add_demo_command(app, demo_options);
+  CosimCommandOptions cosim_options;
+  CLI::App* cosim = add_cosim_command(app, cosim_options);
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
@@ -38,6 +41,7 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   try {
     if (design->parsed()) return coeffs::run_design_command(design_options, args, out, err);
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
+    if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
     return kExitFailure;
