@@ -14,8 +14,7 @@ int main(int argc, char** argv) {
   app.add_option("--coeffs", options.coeffs, "filter.json of the set")->required();
   app.add_option("--samples", options.samples, "number of samples (>= 1)");
   app.add_option("--seed", options.seed, "seed of the random stimuli");
-  app.add_option("--stimulus", options.stimulus,
-                 "random|fullscale|sweep|step|impulse|FILE.csv");
+  app.add_option("--stimulus", options.stimulus, "random|fullscale|sweep|step|impulse|FILE.csv");
   app.add_option("--trace", options.trace, "FST waveform file");
   try {
     app.parse(argc, argv);

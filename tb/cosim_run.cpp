@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "cosim_run.h"
 
-#include <charconv>
 #include <fmt/format.h>
+
+#include <charconv>
 #include <fstream>
 #include <ostream>
 #include <stdexcept>
@@ -16,7 +17,8 @@ namespace {
 std::vector<std::int32_t> read_csv(const std::filesystem::path& path, std::size_t limit,
                                    int sample_width) {
   std::ifstream in(path);
-  if (!in) throw std::invalid_argument(fmt::format("{}: cannot open the stimulus file", path.string()));
+  if (!in)
+    throw std::invalid_argument(fmt::format("{}: cannot open the stimulus file", path.string()));
   std::vector<std::int32_t> samples;
   std::string line;
   std::size_t number = 0;
@@ -31,12 +33,12 @@ std::vector<std::int32_t> read_csv(const std::filesystem::path& path, std::size_
     const auto [ptr, ec] = std::from_chars(field.data(), end, v);
     if (ec != std::errc() || ptr != end) {
       if (number == 1) continue;  // a header line
-      throw std::invalid_argument(fmt::format("{}:{}: '{}' is not an integer sample",
-                                              path.string(), number, field));
+      throw std::invalid_argument(
+          fmt::format("{}:{}: '{}' is not an integer sample", path.string(), number, field));
     }
     if (v < -hi - 1 || v > hi) {
-      throw std::invalid_argument(fmt::format("{}:{}: sample {} is outside [{}, {}]",
-                                              path.string(), number, v, -hi - 1, hi));
+      throw std::invalid_argument(fmt::format("{}:{}: sample {} is outside [{}, {}]", path.string(),
+                                              number, v, -hi - 1, hi));
     }
     samples.push_back(static_cast<std::int32_t>(v));
   }
@@ -90,8 +92,7 @@ int run_cosim(const CosimOptions& options, const DutFactory& make, std::ostream&
     status = 1;
   }
   if (report.outputs.size() != samples.size()) {
-    err << fmt::format("cosim: {} samples in, {} outputs\n", samples.size(),
-                       report.outputs.size());
+    err << fmt::format("cosim: {} samples in, {} outputs\n", samples.size(), report.outputs.size());
     status = 1;
   }
   if (options.trace) err << "cosim: waveform in " << options.trace->string() << "\n";

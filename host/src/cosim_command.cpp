@@ -2,6 +2,7 @@
 #include "cosim_command.h"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -9,7 +10,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <ostream>
 #include <sstream>
@@ -135,8 +135,7 @@ int run_cosim_command(const CosimCommandOptions& options, std::ostream& out, std
   }
   key = fnv1a(key, read_file(package));
   key = fnv1a(key, read_file(rom));
-  const fs::path dir =
-      cache_root() / fmt::format("{}-{:016x}", set_dir.filename().string(), key);
+  const fs::path dir = cache_root() / fmt::format("{}-{:016x}", set_dir.filename().string(), key);
   const fs::path runner = dir / "obj" / "flange_cosim_runner";
 
   if (!fs::exists(runner)) {
@@ -145,9 +144,21 @@ int run_cosim_command(const CosimCommandOptions& options, std::ostream& out, std
     fs::copy_file(rom, dir / "coeffs.mem", fs::copy_options::overwrite_existing);
     err << "cosim: building the Verilated core for " << set_dir.filename().string() << " in "
         << dir.string() << " (once per set)\n";
-    std::vector<std::string> cmd = {FLANGE_VERILATOR_BIN, "--cc", "--exe", "--build", "-j", "2",
-                                    "--Mdir", (dir / "obj").string(), "--top-module", "iir_core",
-                                    "--prefix", "Viir_core", "--trace-fst", "--assert", "-O3",
+    std::vector<std::string> cmd = {FLANGE_VERILATOR_BIN,
+                                    "--cc",
+                                    "--exe",
+                                    "--build",
+                                    "-j",
+                                    "2",
+                                    "--Mdir",
+                                    (dir / "obj").string(),
+                                    "--top-module",
+                                    "iir_core",
+                                    "--prefix",
+                                    "Viir_core",
+                                    "--trace-fst",
+                                    "--assert",
+                                    "-O3",
                                     fmt::format("-GRomFile=\"{}\"", (dir / "coeffs.mem").string()),
                                     package.string()};
     for (const fs::path& f : rtl) cmd.push_back(f.string());
@@ -172,9 +183,15 @@ int run_cosim_command(const CosimCommandOptions& options, std::ostream& out, std
     }
   }
 
-  std::vector<std::string> args = {runner.string(), "--coeffs", fs::absolute(run.coeffs).string(),
-                                   "--samples", std::to_string(run.samples), "--seed",
-                                   std::to_string(run.seed), "--stimulus", run.stimulus};
+  std::vector<std::string> args = {runner.string(),
+                                   "--coeffs",
+                                   fs::absolute(run.coeffs).string(),
+                                   "--samples",
+                                   std::to_string(run.samples),
+                                   "--seed",
+                                   std::to_string(run.seed),
+                                   "--stimulus",
+                                   run.stimulus};
   if (run.trace) {
     if (run.trace->has_parent_path()) fs::create_directories(run.trace->parent_path());
     args.insert(args.end(), {"--trace", fs::absolute(*run.trace).string()});

@@ -39,8 +39,8 @@ std::string last_line(const std::string& text) {
 }
 
 TEST(CosimCommand, CleanRunEndsWithTheSummary) {
-  const FlangeRun r = flange({"cosim", "--coeffs", (kSet / "filter.json").string(), "--samples", "3000",
-                        "--seed", "5", "--stimulus", "fullscale"});
+  const FlangeRun r = flange({"cosim", "--coeffs", (kSet / "filter.json").string(), "--samples",
+                              "3000", "--seed", "5", "--stimulus", "fullscale"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(last_line(r.out),
             "cosim: 3000 samples, 0 mismatches, 25 cycles/sample, 25 cycles latency")
@@ -59,7 +59,8 @@ TEST(CosimCommand, MismatchFailsWithTheFirstOne) {
   j["quantized"]["words"][0] = j["quantized"]["words"][0].get<int>() + 1;
   std::ofstream(dir / "filter.json") << j.dump(1);
 
-  const FlangeRun r = flange({"cosim", "--coeffs", (dir / "filter.json").string(), "--samples", "500"});
+  const FlangeRun r =
+      flange({"cosim", "--coeffs", (dir / "filter.json").string(), "--samples", "500"});
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_NE(r.err.find("first mismatch: cycle"), std::string::npos) << r.err;
   EXPECT_TRUE(std::regex_match(last_line(r.out),
@@ -79,7 +80,8 @@ TEST(CosimCommand, BadInputIsOneLineNamingFileAndField) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   fs::remove(bad);
 
-  const FlangeRun s = flange({"cosim", "--coeffs", (kSet / "filter.json").string(), "--stimulus", "x"});
+  const FlangeRun s =
+      flange({"cosim", "--coeffs", (kSet / "filter.json").string(), "--stimulus", "x"});
   EXPECT_EQ(s.status, 2);
   EXPECT_NE(s.err.find("--stimulus 'x'"), std::string::npos) << s.err;
 }
