@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "fidelity.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fmt/format.h>
 #include <limits>
 #include <stdexcept>
 
@@ -68,9 +69,10 @@ std::string LimitCycle::describe() const {
     return fmt::format("dead band: stuck at {} LSB from sample {}", maximum, settled_after);
   }
   if (period > 1) {
-    return fmt::format("limit cycle: amplitude {} LSB (range [{}, {}]), period {} samples, from "
-                       "sample {}",
-                       amplitude, minimum, maximum, period, settled_after);
+    return fmt::format(
+        "limit cycle: amplitude {} LSB (range [{}, {}]), period {} samples, from "
+        "sample {}",
+        amplitude, minimum, maximum, period, settled_after);
   }
   return fmt::format("no period up to the search limit; amplitude {} LSB (range [{}, {}])",
                      amplitude, minimum, maximum);
@@ -111,14 +113,15 @@ double limit_cycle_bound_lsb(const CoreConfig& config) {
   for (int k = 0; k < config.num_sections; ++k) {
     std::vector<double> b, a{1.0};
     for (int i = 0; i <= m; ++i) {
-      b.push_back(std::ldexp(static_cast<double>(config.rom[static_cast<std::size_t>(k * terms + i)]),
-                             -config.num_frac_bits));
+      b.push_back(
+          std::ldexp(static_cast<double>(config.rom[static_cast<std::size_t>(k * terms + i)]),
+                     -config.num_frac_bits));
     }
     for (int j = 1; j <= m; ++j) {
       // The ROM holds -a in Q.Fa.
-      a.push_back(-std::ldexp(
-          static_cast<double>(config.rom[static_cast<std::size_t>(k * terms + m + j)]),
-          -config.coef_frac_bits));
+      a.push_back(
+          -std::ldexp(static_cast<double>(config.rom[static_cast<std::size_t>(k * terms + m + j)]),
+                      -config.coef_frac_bits));
     }
     inverse_norm.push_back(l1_norm({1.0}, a));
     section_norm.push_back(l1_norm(b, a));
@@ -126,7 +129,8 @@ double limit_cycle_bound_lsb(const CoreConfig& config) {
   double bound = 0.0;
   for (int k = 0; k < config.num_sections; ++k) {
     double gain = 0.5 * inverse_norm[static_cast<std::size_t>(k)];
-    for (int j = k + 1; j < config.num_sections; ++j) gain *= section_norm[static_cast<std::size_t>(j)];
+    for (int j = k + 1; j < config.num_sections; ++j)
+      gain *= section_norm[static_cast<std::size_t>(j)];
     bound += gain;
   }
   return bound;

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "filter_json.h"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -113,7 +114,8 @@ void validate_core_config(const CoreConfig& c) {
   const std::int64_t hi = (std::int64_t{1} << (c.coef_width - 1)) - 1;
   for (std::size_t i = 0; i < c.rom.size(); ++i) {
     if (c.rom[i] < -hi - 1 || c.rom[i] > hi) {
-      bad(fmt::format("rom[{}]", i), fmt::format("{} does not fit {} bits", c.rom[i], c.coef_width));
+      bad(fmt::format("rom[{}]", i),
+          fmt::format("{} does not fit {} bits", c.rom[i], c.coef_width));
     }
   }
 }
@@ -150,9 +152,9 @@ CoreConfig load_core_config(const std::filesystem::path& filter_json) {
   }
   const std::int64_t depth = reader.integer(q, p, "rom_depth", 1, 1 << 20);
   if (depth != c.rom_depth()) {
-    reader.fail("quantized.rom_depth",
-                fmt::format("{} is not sections * (2 * section_order + 1) = {}", depth,
-                            c.rom_depth()));
+    reader.fail(
+        "quantized.rom_depth",
+        fmt::format("{} is not sections * (2 * section_order + 1) = {}", depth, c.rom_depth()));
   }
   const json& words = reader.object(q, p, "words");
   if (!words.is_array() || static_cast<std::int64_t>(words.size()) != depth) {
@@ -184,7 +186,8 @@ FloatDesign load_float_design(const std::filesystem::path& filter_json) {
   if (d.fs_hz <= 0.0) reader.fail("fs_hz", "must be > 0");
   if (const auto it = reader.root().find("fc_hz"); it != reader.root().end() && !it->is_null()) {
     d.fc_hz = reader.number(*it, "fc_hz");
-    if (*d.fc_hz <= 0.0 || *d.fc_hz >= d.fs_hz / 2) reader.fail("fc_hz", "must lie in (0, fs_hz / 2)");
+    if (*d.fc_hz <= 0.0 || *d.fc_hz >= d.fs_hz / 2)
+      reader.fail("fc_hz", "must lie in (0, fs_hz / 2)");
   }
   d.b = reader.numbers(reader.root(), "b");
   d.a = reader.numbers(reader.root(), "a");

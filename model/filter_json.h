@@ -42,11 +42,11 @@ struct CoreConfig {
 // The float side of the same design: what the quantised core approximates.
 struct FloatDesign {
   std::string name;
-  double fs_hz = 0.0;                        // > 0
-  std::optional<double> fc_hz;               // 3 dB cut-off, 0 < fc < fs / 2, when recorded
-  std::vector<std::array<double, 6>> sos;    // rows b0 b1 b2 a0 a1 a2, a0 != 0
-  std::vector<double> b, a;                  // whole transfer function, a[0] != 0
-  double leftover_gain = 1.0;                // applied by the host after the core
+  double fs_hz = 0.0;                      // > 0
+  std::optional<double> fc_hz;             // 3 dB cut-off, 0 < fc < fs / 2, when recorded
+  std::vector<std::array<double, 6>> sos;  // rows b0 b1 b2 a0 a1 a2, a0 != 0
+  std::vector<double> b, a;                // whole transfer function, a[0] != 0
+  double leftover_gain = 1.0;              // applied by the host after the core
 };
 
 // Throws FilterJsonError; checks every rule of docs/fixed_point.md that the core relies on.

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "iir_core.h"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -40,9 +41,9 @@ void IirCore::compute(std::int32_t sample, StepResult& result, std::vector<bool>
     for (int i = 0; i < terms; ++i) {
       const std::int64_t word = config_.rom[static_cast<std::size_t>(k * terms + i)];
       // b[i] x_k[n-i] from line k; -a[j] (y_k[n-j] << s), j = i - M, from line k + 1.
-      const std::int64_t operand =
-          i <= m ? std::int64_t{lr_[at(k, i)]}
-                 : std::int64_t{lr_[at(k + 1, i - m)]} * (std::int64_t{1} << config_.feedback_shift);
+      const std::int64_t operand = i <= m ? std::int64_t{lr_[at(k, i)]}
+                                          : std::int64_t{lr_[at(k + 1, i - m)]} *
+                                                (std::int64_t{1} << config_.feedback_shift);
       p = mac(p, operand, word);
     }
     const std::int64_t acc = wrap_to_width(p, config_.acc_width);
@@ -110,8 +111,8 @@ Pins IirCore::pins(std::uint64_t cycle) {
 
 std::optional<StepResult> IirCore::strobe(std::uint64_t cycle, std::int32_t sample) {
   if (sample < sample_min_ || sample > sample_max_) {
-    throw std::out_of_range(fmt::format("IirCore: sample {} outside [{}, {}]", sample,
-                                        sample_min_, sample_max_));
+    throw std::out_of_range(
+        fmt::format("IirCore: sample {} outside [{}, {}]", sample, sample_min_, sample_max_));
   }
   advance(cycle);
   if (reset_cycle_ == cycle) return std::nullopt;  // reset wins

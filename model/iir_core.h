@@ -40,10 +40,10 @@ namespace flange::model {
 
 // One accepted sample.
 struct StepResult {
-  std::int32_t sample = 0;        // sample_o, in [-2^(D-1), 2^(D-1) - 1]
-  bool saturated = false;         // some section clipped while computing it
-  std::uint64_t accept_cycle = 0; // the cycle sample_valid_i was accepted in
-  std::uint64_t valid_cycle = 0;  // the cycle sample_valid_o is high: accept_cycle + latency
+  std::int32_t sample = 0;         // sample_o, in [-2^(D-1), 2^(D-1) - 1]
+  bool saturated = false;          // some section clipped while computing it
+  std::uint64_t accept_cycle = 0;  // the cycle sample_valid_i was accepted in
+  std::uint64_t valid_cycle = 0;   // the cycle sample_valid_o is high: accept_cycle + latency
 };
 
 // The outputs of rtl/iir_core.sv in one cycle.
@@ -62,8 +62,8 @@ class IirCore {
   explicit IirCore(CoreConfig config);
 
   const CoreConfig& config() const { return config_; }
-  int latency_cycles() const { return latency_; }      // accepted EN -> sample_valid_o
-  int cycles_per_sample() const { return latency_; }   // minimum spacing of accepted EN
+  int latency_cycles() const { return latency_; }     // accepted EN -> sample_valid_o
+  int cycles_per_sample() const { return latency_; }  // minimum spacing of accepted EN
   int macs_per_sample() const { return config_.rom_depth(); }
   std::int32_t sample_min() const { return sample_min_; }
   std::int32_t sample_max() const { return sample_max_; }
@@ -107,12 +107,12 @@ class IirCore {
   std::int32_t sample_min_, sample_max_;
   std::vector<std::int32_t> lr_;
 
-  std::uint64_t ready_cycle_ = 0;     // first cycle in which sample_valid_i is accepted
-  std::uint64_t now_ = 0;             // last cycle asked about, or the current input cycle
+  std::uint64_t ready_cycle_ = 0;  // first cycle in which sample_valid_i is accepted
+  std::uint64_t now_ = 0;          // last cycle asked about, or the current input cycle
   std::optional<std::uint64_t> reset_cycle_;
-  std::deque<Event> events_;          // sorted by cycle, then by kind
+  std::deque<Event> events_;  // sorted by cycle, then by kind
   Pins settled_;
-  std::uint64_t valid_cycle_ = 0;     // the cycle in which settled_.sample was produced
+  std::uint64_t valid_cycle_ = 0;  // the cycle in which settled_.sample was produced
   bool any_output_ = false;
 };
 

@@ -2,6 +2,7 @@
 #include "cosim_harness.h"
 
 #include <fmt/format.h>
+
 #include <stdexcept>
 #include <utility>
 
@@ -9,8 +10,7 @@ namespace flange::tb {
 
 std::string describe(const model::Pins& p) {
   return fmt::format("sample_o={} sample_valid_o={} busy_o={} overrun_o={} saturation_o={}",
-                     p.sample, int{p.sample_valid}, int{p.busy}, int{p.overrun},
-                     int{p.saturation});
+                     p.sample, int{p.sample_valid}, int{p.busy}, int{p.overrun}, int{p.saturation});
 }
 
 CosimHarness::CosimHarness(model::CoreConfig config, std::unique_ptr<Dut> dut_in)

@@ -15,17 +15,17 @@
 namespace flange::tb {
 
 struct CosimReport {
-  std::uint64_t cycles = 0;      // cycles simulated
-  std::uint64_t accepted = 0;    // strobes the model accepted
-  std::uint64_t dropped = 0;     // strobes the model dropped (overrun)
-  std::uint64_t mismatches = 0;  // cycles in which some pin differed
-  std::string first_mismatch;    // one line: cycle, DUT pins, model pins
-  std::vector<std::int32_t> outputs;       // DUT sample_o in each sample_valid_o cycle
-  std::vector<std::uint64_t> valid_cycles; // those cycles
-  std::vector<std::uint64_t> latencies;    // valid cycle - accept cycle, per model result
-  bool saturation_seen = false;  // DUT saturation_o was high in some cycle
-  bool overrun_seen = false;     // DUT overrun_o was high in some cycle
-  bool rtl_assertion = false;    // an RTL assertion fired
+  std::uint64_t cycles = 0;                 // cycles simulated
+  std::uint64_t accepted = 0;               // strobes the model accepted
+  std::uint64_t dropped = 0;                // strobes the model dropped (overrun)
+  std::uint64_t mismatches = 0;             // cycles in which some pin differed
+  std::string first_mismatch;               // one line: cycle, DUT pins, model pins
+  std::vector<std::int32_t> outputs;        // DUT sample_o in each sample_valid_o cycle
+  std::vector<std::uint64_t> valid_cycles;  // those cycles
+  std::vector<std::uint64_t> latencies;     // valid cycle - accept cycle, per model result
+  bool saturation_seen = false;             // DUT saturation_o was high in some cycle
+  bool overrun_seen = false;                // DUT overrun_o was high in some cycle
+  bool rtl_assertion = false;               // an RTL assertion fired
 };
 
 std::string describe(const model::Pins& pins);

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Co-simulation of rtl/iir_core.sv against model/iir_core.h: every output pin (sample_o,
 // sample_valid_o, busy_o, overrun_o, saturation_o) must agree in every cycle. Compiled once and
-// linked into one binary per coefficient set; ctest names carry the set (VehicleSos.IirCoreCosim.*).
-// FLANGE_TRACE=1 in the environment dumps each test's waveform to logs/<set>_<test>.fst under the
-// working directory (the build folder under ctest).
+// linked into one binary per coefficient set; ctest names carry the set
+// (VehicleSos.IirCoreCosim.*). FLANGE_TRACE=1 in the environment dumps each test's waveform to
+// logs/<set>_<test>.fst under the working directory (the build folder under ctest).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fmt/format.h>
 #include <iostream>
 #include <random>
 #include <set>
@@ -110,7 +110,8 @@ class IirCoreCosim : public ::testing::Test {
 };
 
 // How far the core's response is from the float design's is the model's business
-// (tests/model/iir_core_test.cpp); here it is printed for the record, and RTL == model is the check.
+// (tests/model/iir_core_test.cpp); here it is printed for the record, and RTL == model is the
+// check.
 void print_fidelity(const std::string& what, const std::vector<std::int32_t>& outputs,
                     const std::vector<double>& ref) {
   double worst = 0.0;
@@ -119,8 +120,9 @@ void print_fidelity(const std::string& what, const std::vector<std::int32_t>& ou
     worst = std::max(worst, std::abs(outputs[i] - ref[i]));
     peak = std::max(peak, std::abs(ref[i]));
   }
-  std::cout << fmt::format("[{}] {}: float peak {:.1f} LSB, largest core - float error {:.1f} LSB\n",
-                           what, built_coeff_set().name, peak, worst);
+  std::cout << fmt::format(
+      "[{}] {}: float peak {:.1f} LSB, largest core - float error {:.1f} LSB\n", what,
+      built_coeff_set().name, peak, worst);
 }
 
 TEST_F(IirCoreCosim, Impulse) {
@@ -144,9 +146,8 @@ TEST_F(IirCoreCosim, FullScaleSquare) {
   const CosimReport report = stream(x);
 
   const std::vector<double> ref = reference(x);
-  const double peak = *std::max_element(ref.begin(), ref.end(), [](double a, double b) {
-    return std::abs(a) < std::abs(b);
-  });
+  const double peak = *std::max_element(
+      ref.begin(), ref.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
   const double full_scale = std::ldexp(1.0, config_.sample_width - 1);
   std::cout << fmt::format("[square] {}: float peak {:.4f} of full scale, saturation_o {}\n",
                            built_coeff_set().name, std::abs(peak) / full_scale,
@@ -178,19 +179,16 @@ TEST_F(IirCoreCosim, SineSweep) {
   const std::vector<double> ref = reference(x);
   double ref_stop = 0.0;
   for (std::size_t i = n - n / 20; i < n; ++i) ref_stop = std::max(ref_stop, std::abs(ref[i]));
-  std::cout << fmt::format("[sweep] {}: passband peak {:.3f}, stopband peak {:.5f} (float {:.5f})\n",
-                           built_coeff_set().name, pass, stop, ref_stop / full_scale);
+  std::cout << fmt::format(
+      "[sweep] {}: passband peak {:.3f}, stopband peak {:.5f} (float {:.5f})\n",
+      built_coeff_set().name, pass, stop, ref_stop / full_scale);
   // Not a vacuous run: the low end of the sweep reaches the output.
   EXPECT_GT(pass, 0.6) << reproduce();
 }
 
-TEST_F(IirCoreCosim, UniformRandom) {
-  stream(uniform_random(spec_, 5000, 0.5, 1));
-}
+TEST_F(IirCoreCosim, UniformRandom) { stream(uniform_random(spec_, 5000, 0.5, 1)); }
 
-TEST_F(IirCoreCosim, FullScaleRandom) {
-  stream(uniform_random(spec_, 5000, 1.0, 2));
-}
+TEST_F(IirCoreCosim, FullScaleRandom) { stream(uniform_random(spec_, 5000, 1.0, 2)); }
 
 TEST_F(IirCoreCosim, ZeroInputAfterExcitation) {
   // Strong excitation, then a long run of zeros: does the core decay to 0, or settle into a
@@ -240,8 +238,8 @@ TEST_F(IirCoreCosim, StrobeOneCycleAfterAccept) {
   Stimulus s;
   const auto spacing = static_cast<std::uint64_t>(latency_);
   s.add({10, Action::Kind::kStrobe, 1000});
-  s.add({11, Action::Kind::kStrobe, -2000});  // dropped
-  s.add({10 + spacing, Action::Kind::kStrobe, 3000});  // accepted in the valid cycle
+  s.add({11, Action::Kind::kStrobe, -2000});                   // dropped
+  s.add({10 + spacing, Action::Kind::kStrobe, 3000});          // accepted in the valid cycle
   s.add({10 + 2 * spacing - 1, Action::Kind::kStrobe, 4000});  // dropped: one cycle early
   s.add({10 + 2 * spacing, Action::Kind::kStrobe, 5000});
   const CosimReport report = run(s);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The Verilated iir_core of one coefficient set (compiled once per set, FLANGE_COEFF_SET and
-// FLANGE_FILTER_JSON name it). The DUT instance is `dut`, as in every harness of the project.
+// The Verilated iir_core of one coefficient set (compiled once per set, against that set's
+// Verilated model). The DUT instance is `dut`, as in every harness of the project.
 #include "iir_core_dut.h"
 
 #include <Viir_core.h>
@@ -77,11 +77,6 @@ class VerilatedDut final : public Dut {
 };
 
 }  // namespace
-
-const BuiltCoeffSet& built_coeff_set() {
-  static const BuiltCoeffSet set{FLANGE_COEFF_SET, FLANGE_FILTER_JSON};
-  return set;
-}
 
 std::unique_ptr<Dut> make_dut(const std::filesystem::path& fst_path) {
   return std::make_unique<VerilatedDut>(fst_path);

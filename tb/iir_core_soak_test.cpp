@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // One million full-scale random samples through the Verilated core and the model, back to back,
 // every pin compared in every cycle; the run must also stay fast enough for CI (< 120 s).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <fmt/format.h>
 #include <iostream>
 
 #include "cosim_harness.h"
@@ -30,13 +30,14 @@ TEST(IirCoreSoak, MillionRandomSamples) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::cout << fmt::format("[soak] {}: {} samples, {} cycles, {} mismatches, {:.1f} s "
-                           "({:.2f} Mcycles/s)\n",
-                           set.name, report.accepted, report.cycles, report.mismatches, seconds,
-                           static_cast<double>(report.cycles) / seconds / 1e6);
-  const std::string reproduce = fmt::format(
-      "reproduce: ctest --test-dir {} -R '^{}' --output-on-failure", FLANGE_BINARY_DIR,
-      "VehicleSos\\.IirCoreSoak\\.MillionRandomSamples$");
+  std::cout << fmt::format(
+      "[soak] {}: {} samples, {} cycles, {} mismatches, {:.1f} s "
+      "({:.2f} Mcycles/s)\n",
+      set.name, report.accepted, report.cycles, report.mismatches, seconds,
+      static_cast<double>(report.cycles) / seconds / 1e6);
+  const std::string reproduce =
+      fmt::format("reproduce: ctest --test-dir {} -R '^{}' --output-on-failure", FLANGE_BINARY_DIR,
+                  "VehicleSos\\.IirCoreSoak\\.MillionRandomSamples$");
   EXPECT_EQ(report.mismatches, 0u) << report.first_mismatch << "\n" << reproduce;
   EXPECT_FALSE(report.rtl_assertion) << reproduce;
   EXPECT_EQ(report.accepted, kSamples);

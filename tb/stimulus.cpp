@@ -20,8 +20,8 @@ namespace {
 std::int32_t quantise(const SignalSpec& spec, double v) {
   const double scale = std::ldexp(1.0, spec.sample_width - 1);
   const double r = std::round(v * scale);
-  return static_cast<std::int32_t>(std::clamp<double>(r, full_scale_min(spec.sample_width),
-                                                      full_scale_max(spec.sample_width)));
+  return static_cast<std::int32_t>(
+      std::clamp<double>(r, full_scale_min(spec.sample_width), full_scale_max(spec.sample_width)));
 }
 }  // namespace
 
@@ -56,7 +56,8 @@ std::vector<std::int32_t> sine_sweep(const SignalSpec& spec, std::size_t n, doub
   for (std::size_t i = 0; i < n; ++i) {
     const double t = static_cast<double>(i) / spec.fs_hz;
     // Phase of an exponential chirp: 2 pi f0 T / k (e^(k t / T) - 1).
-    const double phase = 2.0 * std::numbers::pi * f0 * duration / k * (std::exp(k * t / duration) - 1.0);
+    const double phase =
+        2.0 * std::numbers::pi * f0 * duration / k * (std::exp(k * t / duration) - 1.0);
     x[i] = quantise(spec, level * std::sin(phase));
   }
   return x;
@@ -74,16 +75,13 @@ std::vector<std::int32_t> uniform_random(const SignalSpec& spec, std::size_t n, 
 }
 
 void Stimulus::add(const Action& action) {
-  const auto pos = std::upper_bound(actions.begin(), actions.end(), action,
-                                    [](const Action& a, const Action& b) {
-                                      return a.cycle < b.cycle;
-                                    });
+  const auto pos =
+      std::upper_bound(actions.begin(), actions.end(), action,
+                       [](const Action& a, const Action& b) { return a.cycle < b.cycle; });
   actions.insert(pos, action);
 }
 
-std::uint64_t Stimulus::last_cycle() const {
-  return actions.empty() ? 0 : actions.back().cycle;
-}
+std::uint64_t Stimulus::last_cycle() const { return actions.empty() ? 0 : actions.back().cycle; }
 
 Stimulus every(const std::vector<std::int32_t>& samples, std::uint64_t spacing,
                std::uint64_t first_cycle) {

@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "calibrate_command.h"
+#include "cosim_command.h"
 #include "demo_command.h"
 #include "design_command.h"
 #include "run_command.h"
@@ -29,6 +30,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* demo = add_demo_command(app, demo_options);
   sim::SimulateOptions simulate_options;
   CLI::App* simulate = sim::add_simulate_command(app, simulate_options);
+  CosimCommandOptions cosim_options;
+  CLI::App* cosim = add_cosim_command(app, cosim_options);
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
@@ -50,6 +53,7 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (run->parsed()) return run_run_command(run_options, out, err);
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
     if (simulate->parsed()) return sim::run_simulate_command(simulate_options, out, err);
+    if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
     return kExitFailure;

@@ -61,11 +61,10 @@ class BadFilterJson : public ::testing::Test {
   void SetUp() override {
     std::ifstream in(set_json("vehicle_sos"));
     good_ = nlohmann::json::parse(in);
-    path_ = std::filesystem::temp_directory_path() /
-            ("flange_bad_" + std::string(::testing::UnitTest::GetInstance()
-                                             ->current_test_info()
-                                             ->name()) +
-             ".json");
+    path_ =
+        std::filesystem::temp_directory_path() /
+        ("flange_bad_" +
+         std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".json");
   }
   void TearDown() override { std::filesystem::remove(path_); }
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // How close the bit-accurate core comes to the float design it was quantised from (SNR, with the
 // thresholds stated per set), and what it does under zero input (limit cycles, dead bands).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fmt/format.h>
 #include <iostream>
 #include <numbers>
 #include <random>
@@ -19,7 +19,7 @@ namespace flange::model {
 namespace {
 
 struct SetCase {
-  std::string folder;     // relative to the source tree
+  std::string folder;        // relative to the source tree
   double min_sine_snr_db;    // passband sine, fc / 4, half scale
   double min_random_snr_db;  // uniform random, half scale
 };
@@ -72,11 +72,12 @@ TEST(IirCoreFidelity, PassbandSineSnr) {
     for (std::size_t i = 0; i < 40000; ++i) {
       x.push_back(static_cast<std::int32_t>(
           std::lround(0.5 * 32768 *
-                    std::sin(2 * std::numbers::pi * f * static_cast<double>(i) / design.fs_hz))));
+                      std::sin(2 * std::numbers::pi * f * static_cast<double>(i) / design.fs_hz))));
     }
     const double snr = core_snr_db(c, x, 15000);
-    std::cout << fmt::format("[snr] {}: passband sine (fc/4, 0.5 FS) {:.1f} dB (threshold {:.0f})\n",
-                             c.folder, snr, c.min_sine_snr_db);
+    std::cout << fmt::format(
+        "[snr] {}: passband sine (fc/4, 0.5 FS) {:.1f} dB (threshold {:.0f})\n", c.folder, snr,
+        c.min_sine_snr_db);
     EXPECT_GE(snr, c.min_sine_snr_db) << c.folder;
   }
 }

@@ -13,7 +13,8 @@
 namespace flange::model {
 namespace {
 
-// One section of order 1, 8-bit samples, 8-bit words: y = round((B0 x + B1 x1 + A1 (y1 << s)) / 2^Fb).
+// One section of order 1, 8-bit samples, 8-bit words: y = round((B0 x + B1 x1 + A1 (y1 << s)) /
+// 2^Fb).
 CoreConfig tiny(std::int64_t b0, std::int64_t b1, std::int64_t a1, int fb, int fa) {
   CoreConfig c;
   c.name = "tiny";
@@ -106,10 +107,9 @@ TEST(IirCoreModel, AccumulatorWrapsLikeThePRegister) {
 }
 
 TEST(IirCoreModel, LatencyIsSectionsTimesTermsPlusMacLatency) {
-  const std::vector<std::pair<std::string, int>> sets = {
-      {"measurement_sos", 3 * (5 + 3) + 1},
-      {"measurement_df1", 1 * (11 + 3) + 1},
-      {"vehicle_sos", 4 * (5 + 3) + 1}};
+  const std::vector<std::pair<std::string, int>> sets = {{"measurement_sos", 3 * (5 + 3) + 1},
+                                                         {"measurement_df1", 1 * (11 + 3) + 1},
+                                                         {"vehicle_sos", 4 * (5 + 3) + 1}};
   for (const auto& [set, cycles] : sets) {
     const IirCore core(load_core_config(set_json(set)));
     EXPECT_EQ(core.latency_cycles(), cycles) << set;
@@ -165,10 +165,10 @@ TEST(IirCoreModel, OverrunDropsTheSample) {
 TEST(IirCoreModel, FlagEventBeatsClearInTheSameEdge) {
   IirCore core(tiny(4, 0, 0, 2, 2));
   ASSERT_TRUE(core.strobe(1, 10));
-  core.strobe(3, 0);       // overrun, visible from cycle 4
-  core.clear_flags(3);     // clear at the same edge: the event wins
+  core.strobe(3, 0);    // overrun, visible from cycle 4
+  core.clear_flags(3);  // clear at the same edge: the event wins
   EXPECT_TRUE(core.pins(4).overrun);
-  core.clear_flags(4);     // nothing pending: cleared from cycle 5
+  core.clear_flags(4);  // nothing pending: cleared from cycle 5
   EXPECT_TRUE(core.pins(4).overrun);
   EXPECT_FALSE(core.pins(5).overrun);
 }

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// The co-simulation runner that `flange cosim` builds once per coefficient set (the RTL package
+// differs per set) and then runs; its options are those of `flange cosim`.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "cosim_run.h"
+#include "iir_core_dut.h"
+
+int main(int argc, char** argv) {
+  flange::tb::CosimOptions options;
+  CLI::App app{"flange cosim runner: Verilated iir_core against the bit-accurate model"};
+  app.add_option("--coeffs", options.coeffs, "filter.json of the set")->required();
+  app.add_option("--samples", options.samples, "number of samples (>= 1)");
+  app.add_option("--seed", options.seed, "seed of the random stimuli");
+  app.add_option("--stimulus", options.stimulus, "random|fullscale|sweep|step|impulse|FILE.csv");
+  app.add_option("--trace", options.trace, "FST waveform file");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return flange::tb::run_cosim(
+        options, [](const std::filesystem::path& fst) { return flange::tb::make_dut(fst); },
+        std::cout, std::cerr);
+  } catch (const std::exception& e) {
+    std::cerr << "flange cosim: " << e.what() << "\n";
+    return 2;
+  }
+}
