@@ -19,71 +19,14 @@
 
 #include "cli.h"
 #include "filter_json.h"
+#include "verilated_runner.h"
 
 extern char** environ;
 
 namespace flange::host {
 namespace fs = std::filesystem;
 
-namespace {
-
-const fs::path kSource = FLANGE_SOURCE_DIR;
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(fmt::format("{}: cannot read", path.string()));
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// FNV-1a, 64 bits: enough to tell builds apart, not a security measure.
-std::uint64_t fnv1a(std::uint64_t h, const std::string& bytes) {
-  for (const unsigned char c : bytes) {
-    h ^= c;
-    h *= 0x100000001b3ull;
-  }
-  return h;
-}
-
-// Runs argv[0] (searched in PATH) with stdout and stderr sent to files; returns the exit status
-// (127 when it could not be started).
-int spawn(const std::vector<std::string>& argv, const fs::path& out_file, const fs::path& err_file,
-          const std::vector<std::string>& extra_env = {}) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                   0644);
-  posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                   0644);
-  std::vector<char*> args;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  std::vector<std::string> env_strings;
-  for (char** e = environ; *e != nullptr; ++e) env_strings.emplace_back(*e);
-  for (const std::string& e : extra_env) env_strings.push_back(e);
-  std::vector<char*> env;
-  for (std::string& e : env_strings) env.push_back(e.data());
-  env.push_back(nullptr);
-
-  pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), env.data());
-  posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) return 127;
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0) return 127;
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-}
-
-fs::path cache_root() {
-  if (const char* dir = std::getenv("FLANGE_COSIM_CACHE"); dir != nullptr && *dir != '\0') {
-    return dir;
-  }
-  return fs::path(FLANGE_BINARY_DIR) / "cosim_cache";
-}
-
-}  // namespace
+namespace {}  // namespace
 
 CLI::App* add_cosim_command(CLI::App& app, CosimCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand(
@@ -124,65 +67,14 @@ int run_cosim_command(const CosimCommandOptions& options, std::ostream& out, std
     return kExitBadArgument;
   }
 
-  // The runner for this set: RTL, package and ROM image, and the runner's own code.
-  const std::vector<fs::path> rtl = {kSource / "rtl/iir_mac.sv", kSource / "rtl/iir_core.sv"};
-  const std::vector<fs::path> runner_sources = {kSource / "tb/cosim_main.cpp",
-                                                kSource / "tb/iir_core_dut.cpp"};
-  const std::vector<fs::path> libs = {FLANGE_TB_LIB, FLANGE_MODEL_LIB};
-  std::uint64_t key = 0xcbf29ce484222325ull;
-  for (const auto* group : {&rtl, &runner_sources, &libs}) {
-    for (const fs::path& f : *group) key = fnv1a(key, read_file(f));
+  fs::path runner;
+  try {
+    runner = ensure_verilated_runner(run.coeffs, err);
+  } catch (const std::runtime_error& e) {
+    err << "flange cosim: " << e.what() << "\n";
+    return kExitFailure;
   }
-  key = fnv1a(key, read_file(package));
-  key = fnv1a(key, read_file(rom));
-  const fs::path dir = cache_root() / fmt::format("{}-{:016x}", set_dir.filename().string(), key);
-  const fs::path runner = dir / "obj" / "flange_cosim_runner";
-
-  if (!fs::exists(runner)) {
-    fs::create_directories(dir);
-    // The ROM image is copied in, so the runner does not depend on where the set lives.
-    fs::copy_file(rom, dir / "coeffs.mem", fs::copy_options::overwrite_existing);
-    err << "cosim: building the Verilated core for " << set_dir.filename().string() << " in "
-        << dir.string() << " (once per set)\n";
-    std::vector<std::string> cmd = {FLANGE_VERILATOR_BIN,
-                                    "--cc",
-                                    "--exe",
-                                    "--build",
-                                    "-j",
-                                    "2",
-                                    "--Mdir",
-                                    (dir / "obj").string(),
-                                    "--top-module",
-                                    "iir_core",
-                                    "--prefix",
-                                    "Viir_core",
-                                    "--trace-fst",
-                                    "--assert",
-                                    "-O3",
-                                    fmt::format("-GRomFile=\"{}\"", (dir / "coeffs.mem").string()),
-                                    package.string()};
-    for (const fs::path& f : rtl) cmd.push_back(f.string());
-    for (const fs::path& f : runner_sources) cmd.push_back(f.string());
-    cmd.insert(cmd.end(),
-               {"-CFLAGS",
-                fmt::format("-std=c++20 -O2 -I{} -I{}", (kSource / "tb").string(),
-                            (kSource / "model").string()),
-                "-LDFLAGS", fmt::format("{} {} -lfmt", libs[0].string(), libs[1].string()), "-o",
-                "flange_cosim_runner"});
-    std::vector<std::string> env;
-    if (std::string(FLANGE_CCACHE).size() > 0 && std::getenv("OBJCACHE") == nullptr) {
-      env.push_back(std::string("OBJCACHE=") + FLANGE_CCACHE);
-    }
-    const fs::path log = dir / "build.log";
-    const int status = spawn(cmd, log, dir / "build.err", env);
-    if (status != 0 || !fs::exists(runner)) {
-      err << "flange cosim: building the runner failed (status " << status << "); see "
-          << log.string() << " and " << (dir / "build.err").string() << "\n";
-      fs::remove(runner);
-      return kExitFailure;
-    }
-  }
-
+  const fs::path dir = runner.parent_path().parent_path();
   std::vector<std::string> args = {runner.string(),
                                    "--coeffs",
                                    fs::absolute(run.coeffs).string(),
@@ -198,9 +90,9 @@ int run_cosim_command(const CosimCommandOptions& options, std::ostream& out, std
   }
   const fs::path run_out = dir / fmt::format("run.{}.out", getpid());
   const fs::path run_err = dir / fmt::format("run.{}.err", getpid());
-  const int status = spawn(args, run_out, run_err);
-  err << read_file(run_err);
-  out << read_file(run_out);
+  const int status = spawn_with_files(args, run_out, run_err);
+  err << read_whole_file(run_err);
+  out << read_whole_file(run_out);
   fs::remove(run_out);
   fs::remove(run_err);
   if (status == 127) {

@@ -7,6 +7,7 @@
 #include "filter_json.h"
 #include "iir_core.h"
 #include "reference_filter.h"
+#include "rtl_engine.h"
 
 namespace flange::host {
 
@@ -56,6 +57,7 @@ std::unique_ptr<FilterEngine> make_filter_engine(const std::string& engine,
                                                  const std::filesystem::path& filter_json) {
   if (engine == "model") return std::make_unique<ModelEngine>(filter_json);
   if (engine == "float") return std::make_unique<FloatEngine>(filter_json);
+  if (engine == "rtl") return make_rtl_engine(filter_json);
   throw std::invalid_argument("--engine " + engine + ": valid engines are model, rtl, float");
 }
 

@@ -18,8 +18,9 @@ CLI::App* add_run_command(CLI::App& app, RunOptions& options) {
       ->required();
   cmd->add_option("--coeffs", options.coeffs, "filter.json from flange design")->required();
   cmd->add_option("--engine", options.engine,
-                  "model: bit-accurate model; float: double-precision design")
-      ->check(CLI::IsMember({"model", "float"}))
+                  "model: bit-accurate model; rtl: Verilated RTL checked by the model; float: "
+                  "double-precision design")
+      ->check(CLI::IsMember({"model", "rtl", "float"}))
       ->default_str("model");
   cmd->add_option("--out", options.out_csv,
                   "output CSV: t_s,clearance_raw_mm,clearance_filt_mm,flange_mm,alarm,flags");
