@@ -31,23 +31,24 @@ std::string read(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-const std::string kMeasurement = std::string(FLANGE_SOURCE_DIR) + "/coeffs/measurement_sos/filter.json";
+const std::string kMeasurement =
+    std::string(FLANGE_SOURCE_DIR) + "/coeffs/measurement_sos/filter.json";
 
 // A 20-minute simulated bench session and its calibration, made once for all tests.
 class RunCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = fresh_test_dir("run_command");
-    const Outcome sim = run({"simulate", "--scenario", "bench", "--duration", "1200", "--seed",
-                             "5", "--out", (dir_ / "bench.csv").string()});
+    const Outcome sim = run({"simulate", "--scenario", "bench", "--duration", "1200", "--seed", "5",
+                             "--out", (dir_ / "bench.csv").string()});
     ASSERT_EQ(sim.status, 0) << sim.err;
     const Outcome cal = run({"calibrate", "--data", (dir_ / "bench.csv").string(), "--out",
                              (dir_ / "model.json").string()});
     ASSERT_EQ(cal.status, 0) << cal.err;
   }
   static std::vector<std::string> run_args(const std::string& input, const std::string& engine) {
-    return {"run", "--input", input, "--calibration", (dir_ / "model.json").string(), "--coeffs",
-            kMeasurement, "--engine", engine};
+    return {"run",      "--input",    input,      "--calibration", (dir_ / "model.json").string(),
+            "--coeffs", kMeasurement, "--engine", engine};
   }
   static std::filesystem::path dir_;
 };
@@ -55,8 +56,8 @@ std::filesystem::path RunCommand::dir_;
 
 TEST_F(RunCommand, FilteringHalvesTheErrorAndWritesEveryRow) {
   std::vector<std::string> args = run_args((dir_ / "bench.csv").string(), "model");
-  args.insert(args.end(), {"--out", (dir_ / "out_model.csv").string(), "--report",
-                           (dir_ / "report").string()});
+  args.insert(args.end(),
+              {"--out", (dir_ / "out_model.csv").string(), "--report", (dir_ / "report").string()});
   const Outcome outcome = run(args);
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("rows read 7201, flagged 0"), std::string::npos) << outcome.out;
@@ -72,8 +73,8 @@ TEST_F(RunCommand, FilteringHalvesTheErrorAndWritesEveryRow) {
   const double before = mae("error before filtering");
   const double after = mae("error after filtering");
   EXPECT_LT(after, 0.6 * before) << outcome.out;
-  for (const char* file : {"index.html", "traces.svg", "error_by_region.svg", "response.svg",
-                           "spectra.svg"}) {
+  for (const char* file :
+       {"index.html", "traces.svg", "error_by_region.svg", "response.svg", "spectra.svg"}) {
     EXPECT_TRUE(std::filesystem::exists(dir_ / "report" / file)) << file;
   }
 }
@@ -135,8 +136,7 @@ TEST_F(RunCommand, BadRowsStopAStrictRunAndAreCountedInALenientOne) {
   lenient.insert(lenient.end(), {"--lenient", "--out", (dir_ / "lenient.csv").string()});
   const Outcome outcome = run(lenient);
   ASSERT_EQ(outcome.status, 0) << outcome.err;
-  EXPECT_NE(outcome.out.find("rows read 7201, flagged 2 (bad 2"), std::string::npos)
-      << outcome.out;
+  EXPECT_NE(outcome.out.find("rows read 7201, flagged 2 (bad 2"), std::string::npos) << outcome.out;
   const std::string csv = read(dir_ / "lenient.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7202);  // every row accounted for
   EXPECT_NE(csv.find(",bad_row\n"), std::string::npos);
