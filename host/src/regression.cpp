@@ -37,20 +37,34 @@ double monomial(double v, double t, const std::pair<int, int>& term) {
   return value;
 }
 
-Eigen::MatrixXd design_matrix(const CalibrationData& data, std::size_t begin, std::size_t end,
-                              const VariableScaling& s,
-                              const std::vector<std::pair<int, int>>& terms) {
-  Eigen::MatrixXd x(static_cast<Eigen::Index>(end - begin),
-                    static_cast<Eigen::Index>(terms.size()));
-  for (std::size_t row = begin; row < end; ++row) {
-    const double v = (data.voltage_v[row] - s.v_center) / s.v_half;
-    const double t = (data.temp_c[row] - s.t_center) / s.t_half;
-    for (std::size_t k = 0; k < terms.size(); ++k) {
-      x(static_cast<Eigen::Index>(row - begin), static_cast<Eigen::Index>(k)) =
-          monomial(v, t, terms[k]);
-    }
+// Cross-validation folds are interleaved blocks of consecutive rows: block b belongs to fold
+// b mod k. A held-out row's close neighbours in time are mostly in its own block, and every fold
+// spans the whole recording, so a regime that occurs only once (a heating cycle) is in every
+// training set.
+constexpr std::size_t kFoldBlockRows = 64;
+
+int fold_of(std::size_t row, int folds) {
+  return static_cast<int>((row / kFoldBlockRows) % static_cast<std::size_t>(folds));
+}
+
+// Rows of `fold` (or all rows for fold < 0) as a design matrix and target vector.
+void fold_design(const CalibrationData& data, int fold, int folds, const VariableScaling& s,
+                 const std::vector<std::pair<int, int>>& terms, Eigen::MatrixXd& x,
+                 Eigen::VectorXd& y) {
+  std::vector<std::size_t> rows;
+  for (std::size_t row = 0; row < data.clearance_mm.size(); ++row) {
+    if (fold < 0 || fold_of(row, folds) == fold) rows.push_back(row);
   }
-  return x;
+  x.resize(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(terms.size()));
+  y.resize(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double v = (data.voltage_v[rows[i]] - s.v_center) / s.v_half;
+    const double t = (data.temp_c[rows[i]] - s.t_center) / s.t_half;
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+      x(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = monomial(v, t, terms[k]);
+    }
+    y(static_cast<Eigen::Index>(i)) = data.clearance_mm[rows[i]];
+  }
 }
 
 // The triangular factor of one block of rows: R (p x p) and Q^T y (p), enough to fit any
@@ -96,11 +110,13 @@ struct Errors {
   std::size_t n = 0;
 };
 
-Errors errors_of(const CalibrationData& data, std::size_t begin, std::size_t end,
-                 const VariableScaling& s, const std::vector<std::pair<int, int>>& terms,
+// Errors of `coefficients` on the rows of `fold` (all rows for fold < 0).
+Errors errors_of(const CalibrationData& data, int fold, int folds, const VariableScaling& s,
+                 const std::vector<std::pair<int, int>>& terms,
                  const Eigen::VectorXd& coefficients) {
   Errors e;
-  for (std::size_t row = begin; row < end; ++row) {
+  for (std::size_t row = 0; row < data.clearance_mm.size(); ++row) {
+    if (fold >= 0 && fold_of(row, folds) != fold) continue;
     const double v = (data.voltage_v[row] - s.v_center) / s.v_half;
     const double t = (data.temp_c[row] - s.t_center) / s.t_half;
     double predicted = 0.0;
@@ -192,20 +208,14 @@ RegressionFit fit_regression(const CalibrationData& data, const RegressionOption
   s.t_center = (*t_lo + *t_hi) / 2.0;
   s.t_half = (*t_hi - *t_lo) / 2.0;
 
-  // One factor per fold (contiguous blocks in time: neighbours of a held-out point are not in
-  // its training set more than at the block edges), then the whole as their stack.
+  // One factor per fold, then the whole as their stack.
   const auto p_all = static_cast<Eigen::Index>(all_terms.size());
   std::vector<BlockFactor> fold_factors;
-  std::vector<std::pair<std::size_t, std::size_t>> fold_rows;
   for (int f = 0; f < folds; ++f) {
-    const std::size_t begin = n * static_cast<std::size_t>(f) / static_cast<std::size_t>(folds);
-    const std::size_t end = n * static_cast<std::size_t>(f + 1) / static_cast<std::size_t>(folds);
-    fold_rows.emplace_back(begin, end);
-    Eigen::VectorXd y(static_cast<Eigen::Index>(end - begin));
-    for (std::size_t row = begin; row < end; ++row) {
-      y(static_cast<Eigen::Index>(row - begin)) = data.clearance_mm[row];
-    }
-    fold_factors.push_back(factor(design_matrix(data, begin, end, s, all_terms), y));
+    Eigen::MatrixXd x;
+    Eigen::VectorXd y;
+    fold_design(data, f, folds, s, all_terms, x, y);
+    fold_factors.push_back(factor(x, y));
   }
   std::vector<const BlockFactor*> every;
   for (const BlockFactor& f : fold_factors) every.push_back(&f);
@@ -235,21 +245,35 @@ RegressionFit fit_regression(const CalibrationData& data, const RegressionOption
       break;  // this and higher orders are not identifiable on this data
     }
     const Eigen::VectorXd coefficients = solve_prefix(whole, p);
-    const Errors in_sample = errors_of(data, 0, n, s, terms, coefficients);
+    const Errors in_sample = errors_of(data, -1, folds, s, terms, coefficients);
     Errors heldout;
+    bool identifiable_in_every_fold = true;
     for (int f = 0; f < folds; ++f) {
       std::vector<const BlockFactor*> training;
       for (int g = 0; g < folds; ++g) {
         if (g != f) training.push_back(&fold_factors[static_cast<std::size_t>(g)]);
       }
       const BlockFactor trained = stack(training, p_all);
+      const Eigen::VectorXd trained_diagonal =
+          trained.r.topLeftCorner(p, p).diagonal().cwiseAbs();
+      if (trained.r.rows() < p || trained_diagonal.minCoeff() <= 1e-10 * trained_diagonal.maxCoeff()) {
+        identifiable_in_every_fold = false;
+        break;
+      }
       const Eigen::VectorXd fold_coefficients = solve_prefix(trained, p);
-      const Errors e =
-          errors_of(data, fold_rows[static_cast<std::size_t>(f)].first,
-                    fold_rows[static_cast<std::size_t>(f)].second, s, terms, fold_coefficients);
+      const Errors e = errors_of(data, f, folds, s, terms, fold_coefficients);
       heldout.sse += e.sse;
       heldout.sae += e.sae;
       heldout.n += e.n;
+    }
+    if (!identifiable_in_every_fold) {
+      if (order == kMinRegressionOrder) {
+        throw InputError(
+            "calibration data: some cross-validation fold cannot identify even the first order "
+            "(too little variation of voltage or temperature outside it); measure over wider "
+            "ranges");
+      }
+      break;
     }
     OrderCandidate candidate;
     candidate.order = order;

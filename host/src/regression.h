@@ -38,7 +38,7 @@ struct FitStatistics {
   double adjusted_r2 = 0.0;  // 1 - (1 - r^2)(N - 1)/(N - p)
   double rmse_mm = 0.0;
   double mae_mm = 0.0;
-  double heldout_mae_mm = 0.0;  // k-fold cross-validation, blocked in time
+  double heldout_mae_mm = 0.0;  // k-fold cross-validation, interleaved blocks of 64 rows
   double heldout_rmse_mm = 0.0;
 };
 

@@ -106,3 +106,22 @@ TEST(Regression, TheThesisRuleRaisesTheOrderUntilRReachesTheThreshold) {
 
 }  // namespace
 }  // namespace flange::host
+
+namespace flange::host {
+namespace {
+
+TEST(Regression, ARegimeSeenOnlyOnceStillCrossValidates) {
+  // The heating happens in the first fifth only; afterwards the temperature stays at 20 C.
+  CalibrationData data = bench_like(20000, 0.05, 7);
+  for (std::size_t k = 4000; k < data.temp_c.size(); ++k) {
+    data.temp_c[k] = 20.0;
+    const double v = data.voltage_v[k];
+    data.clearance_mm[k] = eq_3_14(v, 20.0);
+  }
+  const RegressionFit fit = fit_regression(data, RegressionOptions{});
+  EXPECT_EQ(fit.model.order(), 2) << fit.selection;
+  EXPECT_LT(fit.stats.heldout_mae_mm, 0.1);
+}
+
+}  // namespace
+}  // namespace flange::host
