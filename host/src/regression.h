@@ -75,7 +75,7 @@ struct RegressionFit {
 
 struct RegressionOptions {
   int max_order = 4;                  // [1, 6]
-  int folds = 5;                      // [2, 20], contiguous blocks of the data in order
+  int folds = 5;                      // [2, 20]; interleaved blocks of 64 consecutive rows
   double min_r = 0.975;               // the thesis's acceptance threshold, (0, 1)
   double min_heldout_gain = 0.05;     // relative held-out MAE gain that justifies one more order
   double min_heldout_gain_mm = 1e-4;  // ... and absolute: below a tenth of a micrometre is noise
