@@ -14,29 +14,27 @@ namespace {
 
 constexpr const char* kExpectedHeader = "t_s,clearance_mm,temp_c,voltage_v[,run]";
 
-std::vector<std::string> split_fields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::string field;
-  for (char c : line) {
-    if (c == ',') {
-      fields.push_back(field);
-      field.clear();
-    } else if (c != '\r') {
-      field.push_back(c);
-    }
+// Splits `line` at commas into trimmed views (no allocation once `fields` has grown).
+void split_fields(std::string_view line, std::vector<std::string_view>& fields) {
+  fields.clear();
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    std::string_view field = line.substr(
+        start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+    while (!field.empty() && (field.front() == ' ' || field.front() == '\t'))
+      field.remove_prefix(1);
+    while (!field.empty() && (field.back() == ' ' || field.back() == '\t')) field.remove_suffix(1);
+    fields.push_back(field);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
   }
-  fields.push_back(field);
-  for (std::string& f : fields) {
-    const auto first = f.find_first_not_of(" \t");
-    const auto last = f.find_last_not_of(" \t");
-    f = first == std::string::npos ? "" : f.substr(first, last - first + 1);
-  }
-  return fields;
 }
 
 }  // namespace
 
-std::optional<double> parse_number(const std::string& field) {
+std::optional<double> parse_number(std::string_view field) {
   double value = 0.0;
   const char* begin = field.data();
   const char* end = begin + field.size();
@@ -54,7 +52,9 @@ RecordingReader::RecordingReader(const std::string& path, bool lenient)
     throw InputError(
         fmt::format("{}:1: empty file; expected the header {}", path, kExpectedHeader));
   }
-  const std::vector<std::string> names = split_fields(header);
+  std::vector<std::string_view> name_views;
+  split_fields(header, name_views);
+  const std::vector<std::string> names(name_views.begin(), name_views.end());
   column_count_ = names.size();
   std::optional<std::size_t> t, clearance, temp, voltage;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -88,14 +88,13 @@ RecordingReader::RecordingReader(const std::string& path, bool lenient)
 }
 
 std::optional<RecordingRow> RecordingReader::next() {
-  std::string line;
-  while (std::getline(file_, line)) {
+  while (std::getline(file_, line_buffer_)) {
     ++line_;
-    if (line.empty() || line == "\r") continue;  // blank lines carry no row
+    if (line_buffer_.empty() || line_buffer_ == "\r") continue;  // blank lines carry no row
     RecordingRow row;
     row.line = line_;
-    const std::vector<std::string> fields = split_fields(line);
-    std::string problem = check_row(row, fields);
+    split_fields(line_buffer_, fields_);
+    std::string problem = check_row(row, fields_);
     ++rows_read_;
     if (!problem.empty()) {
       if (!lenient_) throw InputError(fmt::format("{}:{}: {}", path_, line_, problem));
@@ -106,7 +105,8 @@ std::optional<RecordingRow> RecordingReader::next() {
   return std::nullopt;
 }
 
-std::string RecordingReader::check_row(RecordingRow& row, const std::vector<std::string>& fields) {
+std::string RecordingReader::check_row(RecordingRow& row,
+                                       const std::vector<std::string_view>& fields) {
   if (fields.size() != column_count_) {
     return fmt::format("expected {} fields, found {}", column_count_, fields.size());
   }

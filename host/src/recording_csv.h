@@ -8,6 +8,7 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace flange::host {
@@ -43,7 +44,7 @@ class RecordingReader {
   std::size_t rows_read() const { return rows_read_; }
 
  private:
-  std::string check_row(RecordingRow& row, const std::vector<std::string>& fields);
+  std::string check_row(RecordingRow& row, const std::vector<std::string_view>& fields);
 
   std::string path_;
   bool lenient_;
@@ -55,9 +56,11 @@ class RecordingReader {
   std::optional<std::size_t> run_column_;
   std::optional<double> last_time_;
   std::string last_run_;
+  std::string line_buffer_;               // reused: no allocation per row
+  std::vector<std::string_view> fields_;  // views into line_buffer_
 };
 
 // Parses a whole field as a finite double; nullopt otherwise.
-std::optional<double> parse_number(const std::string& field);
+std::optional<double> parse_number(std::string_view field);
 
 }  // namespace flange::host

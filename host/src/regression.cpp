@@ -145,10 +145,13 @@ void require_spread(const std::vector<double>& values, const char* column) {
 
 RegressionModel::RegressionModel(int order, VariableScaling scaling,
                                  Eigen::VectorXd scaled_coefficients)
-    : order_(order), scaling_(scaling), scaled_(std::move(scaled_coefficients)) {}
+    : order_(order),
+      scaling_(scaling),
+      scaled_(std::move(scaled_coefficients)),
+      terms_(regression_terms(order)) {}
 
 double RegressionModel::clearance_mm(double voltage_v, double temp_c) const {
-  const std::vector<std::pair<int, int>> terms = regression_terms(order_);
+  const std::vector<std::pair<int, int>>& terms = terms_;
   const double v = (voltage_v - scaling_.v_center) / scaling_.v_half;
   const double t = (temp_c - scaling_.t_center) / scaling_.t_half;
   double d = 0.0;
@@ -254,9 +257,9 @@ RegressionFit fit_regression(const CalibrationData& data, const RegressionOption
         if (g != f) training.push_back(&fold_factors[static_cast<std::size_t>(g)]);
       }
       const BlockFactor trained = stack(training, p_all);
-      const Eigen::VectorXd trained_diagonal =
-          trained.r.topLeftCorner(p, p).diagonal().cwiseAbs();
-      if (trained.r.rows() < p || trained_diagonal.minCoeff() <= 1e-10 * trained_diagonal.maxCoeff()) {
+      const Eigen::VectorXd trained_diagonal = trained.r.topLeftCorner(p, p).diagonal().cwiseAbs();
+      if (trained.r.rows() < p ||
+          trained_diagonal.minCoeff() <= 1e-10 * trained_diagonal.maxCoeff()) {
         identifiable_in_every_fold = false;
         break;
       }

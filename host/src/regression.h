@@ -57,7 +57,8 @@ class RegressionModel {
  private:
   int order_ = 0;
   VariableScaling scaling_;
-  Eigen::VectorXd scaled_;  // one per regression_terms(order_)
+  Eigen::VectorXd scaled_;                  // one per regression_terms(order_)
+  std::vector<std::pair<int, int>> terms_;  // regression_terms(order_), kept for speed
 };
 
 struct OrderCandidate {

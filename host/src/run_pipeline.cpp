@@ -3,9 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <cmath>
 #include <deque>
 #include <fstream>
+#include <iterator>
 
 #include "calibration.h"
 #include "filter_engine.h"
@@ -79,9 +81,40 @@ int region_index(double clearance_mm, double temp_c) {
   return t * RunTrace::kClearanceBins + c;
 }
 
-std::string format_row(double t, const std::string& raw, double filt, double flange,
-                       const char* alarm, const std::string& flags) {
-  return fmt::format("{:.9g},{},{:.6f},{:.6f},{},{}\n", t, raw, filt, flange, alarm, flags);
+// `value` with six decimals, through an integer count of millionths: several times faster
+// than formatting the double at a fixed precision, and the same digits away from exact ties.
+void append_fixed6(fmt::memory_buffer& buffer, double value) {
+  const long long millionths = std::llround(value * 1e6);
+  const unsigned long long magnitude =
+      static_cast<unsigned long long>(millionths < 0 ? -millionths : millionths);
+  char text[32];
+  char* at = text;
+  if (millionths < 0) *at++ = '-';
+  at = std::to_chars(at, text + sizeof text, magnitude / 1000000).ptr;
+  *at++ = '.';
+  unsigned long long fraction = magnitude % 1000000;
+  for (int digit = 5; digit >= 0; --digit) {
+    at[digit] = static_cast<char>('0' + fraction % 10);
+    fraction /= 10;
+  }
+  buffer.append(text, at + 6);
+}
+
+// One output row; a bad row has no raw clearance.
+void format_row(fmt::memory_buffer& buffer, double t, const double* raw, double filt, double flange,
+                const char* alarm, const std::string& flags) {
+  append_fixed6(buffer, t);
+  buffer.push_back(',');
+  if (raw != nullptr) append_fixed6(buffer, *raw);
+  buffer.push_back(',');
+  append_fixed6(buffer, filt);
+  buffer.push_back(',');
+  append_fixed6(buffer, flange);
+  buffer.push_back(',');
+  buffer.append(std::string_view(alarm));
+  buffer.push_back(',');
+  buffer.append(flags);
+  buffer.push_back('\n');
 }
 
 }  // namespace
@@ -137,9 +170,9 @@ RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
   struct PendingRow {
     RecordingRow row;
     std::string flags;
-    std::string raw_text;
     double raw_mm = 0.0;
   };
+  fmt::memory_buffer out_buffer;
   constexpr std::size_t kBlock = 4096;
   std::vector<PendingRow> pending;
   std::vector<EngineSample> inputs;
@@ -172,8 +205,8 @@ RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
       }
       if (!p.flags.empty()) ++summary.rows_flagged;
       if (out.is_open()) {
-        out << format_row(row.t_s, p.raw_text, filt_mm, alarm.flange_mm, alarm_name(alarm.level),
-                          p.flags);
+        format_row(out_buffer, row.t_s, row.problem.empty() ? &p.raw_mm : nullptr, filt_mm,
+                   alarm.flange_mm, alarm_name(alarm.level), p.flags);
       }
       // Errors against the reference: before filtering sample by sample, after filtering
       // against the reference delay_samples earlier (the filter's lag is not an error).
@@ -211,6 +244,8 @@ RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
     }
     pending.clear();
     inputs.clear();
+    out.write(out_buffer.data(), static_cast<std::streamsize>(out_buffer.size()));
+    out_buffer.clear();
   };
 
   while (std::optional<RecordingRow> row = reader.next()) {
@@ -239,7 +274,6 @@ RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
       previous_run = row->run;
       const Calibration::Estimate estimate = calibration.estimate(row->voltage_v, row->temp_c);
       p.raw_mm = estimate.clearance_mm;
-      p.raw_text = fmt::format("{:.6f}", p.raw_mm);
       if (estimate.outside_calibration) {
         add_flag(p.flags, "outside_calibration");
         ++summary.outside_calibration;
