@@ -68,6 +68,7 @@ CLI::Validator seed_range() {
 // The twin file (or the default twin) with the command line's effects added or retuned.
 TwinConfig twin_for(const SimulateOptions& options) {
   TwinConfig config = options.twin ? load_twin(*options.twin) : TwinConfig{};
+  if (options.calibration) config.nominal = nominal_from_calibration(*options.calibration);
   std::vector<std::string> given;
   for (const std::string& text : options.effects) {
     const EffectArgument argument = parse_effect_argument(text);
@@ -151,6 +152,8 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
   cmd->add_option("--out", options.out, "recording to write (CSV)")->required();
   cmd->add_option("--twin", options.twin, "twin file (JSON) to start from");
   cmd->add_option("--save-twin", options.save_twin, "write the twin used to this JSON file");
+  cmd->add_option("--calibration", options.calibration,
+                  "a calibration (model.json from flange calibrate) as the twin's nominal model");
   return cmd;
 }
 

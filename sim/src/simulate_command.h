@@ -21,6 +21,7 @@ struct SimulateOptions {
   std::filesystem::path out;
   std::optional<std::filesystem::path> twin;       // start from this twin file
   std::optional<std::filesystem::path> save_twin;  // write the twin used, effects included
+  std::optional<std::filesystem::path> calibration;  // model.json as the nominal model
 };
 
 // Registers the subcommand on `app`; the returned pointer tells whether it was chosen.

@@ -8,6 +8,8 @@
 #include <iterator>
 #include <set>
 #include <stdexcept>
+#include <tuple>
+#include <vector>
 
 #include "sim_error.h"
 
@@ -199,6 +201,50 @@ void save_twin(const TwinConfig& config, const std::filesystem::path& path) {
   out << twin_to_json(config).dump(2) << "\n";
   if (!out)
     throw std::runtime_error(fmt::format("{}: writing the twin file failed", path.string()));
+}
+
+PolynomialSensorModel nominal_from_calibration(const std::filesystem::path& path) {
+  const std::string where = path.string();
+  std::ifstream file(path);
+  if (!file) throw BadArgument(where + ": cannot open the calibration");
+  json calibration;
+  try {
+    calibration = json::parse(file);
+  } catch (const json::parse_error& error) {
+    throw BadArgument(fmt::format("{}: not valid JSON ({})", where, error.what()));
+  }
+  if (!calibration.is_object() || calibration.value("kind", "") != "flange-calibration") {
+    throw BadArgument(where + ": field kind must be \"flange-calibration\" (flange calibrate)");
+  }
+  if (!calibration.contains("coefficients") || !calibration["coefficients"].is_array() ||
+      calibration["coefficients"].empty()) {
+    throw BadArgument(where + ": field coefficients must list {v_power, t_power, a}");
+  }
+  int v_max = 0;
+  int t_max = 0;
+  std::vector<std::tuple<int, int, double>> terms;
+  for (std::size_t k = 0; k < calibration["coefficients"].size(); ++k) {
+    const json& term = calibration["coefficients"][k];
+    const std::string term_where = fmt::format("{}: coefficients[{}]", where, k);
+    require_object(term, term_where);
+    const double v_power = require_number(term.value("v_power", json()), term_where + ".v_power");
+    const double t_power = require_number(term.value("t_power", json()), term_where + ".t_power");
+    const double a = require_number(term.value("a", json()), term_where + ".a");
+    if (v_power < 0 || t_power < 0 || v_power > 12 || t_power > 12 ||
+        v_power != static_cast<int>(v_power) || t_power != static_cast<int>(t_power)) {
+      throw BadArgument(term_where + ": v_power and t_power must be whole numbers 0 to 12");
+    }
+    terms.emplace_back(static_cast<int>(v_power), static_cast<int>(t_power), a);
+    v_max = std::max(v_max, static_cast<int>(v_power));
+    t_max = std::max(t_max, static_cast<int>(t_power));
+  }
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(v_max + 1, t_max + 1);
+  for (const auto& [i, j, value] : terms) a(i, j) += value;
+  try {
+    return PolynomialSensorModel(a, 0.0, 10.0);
+  } catch (const BadArgument& error) {
+    throw BadArgument(fmt::format("{}: {}", where, error.what()));
+  }
 }
 
 }  // namespace flange::sim

@@ -25,6 +25,11 @@ TwinConfig twin_from_json(const nlohmann::json& json, const std::string& where);
 // File forms of the above. Reading throws BadArgument for a missing file or invalid JSON
 // (naming line and column); writing throws std::runtime_error when the file cannot be written.
 TwinConfig load_twin(const std::filesystem::path& path);
+
+// The nominal model from a calibration written by `flange calibrate` (model.json: its
+// "coefficients" list of {v_power, t_power, a}), so that the twin inverts what was fitted on a
+// bench. Throws BadArgument naming the file and field.
+PolynomialSensorModel nominal_from_calibration(const std::filesystem::path& path);
 void save_twin(const TwinConfig& config, const std::filesystem::path& path);
 
 }  // namespace flange::sim

@@ -117,3 +117,30 @@ TEST(TwinFile, BadFilesAreNamedWithTheFieldAndRange) {
 
 }  // namespace
 }  // namespace flange::sim
+
+namespace flange::sim {
+namespace {
+
+TEST(TwinFile, ACalibrationServesAsTheNominalModel) {
+  const std::filesystem::path path =
+      std::filesystem::path(FLANGE_BINARY_DIR) / "twin_calibration_test.json";
+  {
+    std::ofstream file(path);
+    // Eq. 3.14 as flange calibrate writes it (other fields of model.json are not needed).
+    file << R"({"kind": "flange-calibration", "coefficients": [
+      {"v_power": 0, "t_power": 0, "a": 1.16}, {"v_power": 0, "t_power": 1, "a": -0.0036},
+      {"v_power": 1, "t_power": 0, "a": 0.3672}, {"v_power": 1, "t_power": 1, "a": 0.0006618},
+      {"v_power": 2, "t_power": 0, "a": 0.05812}]})";
+  }
+  const PolynomialSensorModel model = nominal_from_calibration(path);
+  const PolynomialSensorModel thesis = PolynomialSensorModel::thesis_eq_3_14();
+  ASSERT_EQ(model.coefficients().rows(), thesis.coefficients().rows());
+  ASSERT_EQ(model.coefficients().cols(), thesis.coefficients().cols());
+  EXPECT_TRUE(model.coefficients().isApprox(thesis.coefficients(), 1e-15));
+
+  std::ofstream(path) << R"({"kind": "something else"})";
+  EXPECT_THROW(nominal_from_calibration(path), BadArgument);
+}
+
+}  // namespace
+}  // namespace flange::sim
