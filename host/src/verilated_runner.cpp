@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <spawn.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -69,6 +70,22 @@ int spawn(const std::vector<std::string>& argv, const fs::path& out_file, const 
   return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
+// An exclusive flock(2) held for the object's lifetime; the kernel drops it if the process dies.
+class BuildLock {
+ public:
+  explicit BuildLock(const fs::path& path) : fd_(::open(path.c_str(), O_RDWR | O_CREAT, 0644)) {
+    if (fd_ < 0 || ::flock(fd_, LOCK_EX) != 0) {
+      throw std::runtime_error(fmt::format("{}: cannot lock the runner cache", path.string()));
+    }
+  }
+  BuildLock(const BuildLock&) = delete;
+  BuildLock& operator=(const BuildLock&) = delete;
+  ~BuildLock() { ::close(fd_); }
+
+ private:
+  int fd_;
+};
+
 fs::path cache_root() {
   if (const char* dir = std::getenv("FLANGE_COSIM_CACHE"); dir != nullptr && *dir != '\0') {
     return dir;
@@ -102,8 +119,11 @@ fs::path ensure_verilated_runner(const fs::path& filter_json, std::ostream& log)
   const fs::path dir = cache_root() / fmt::format("{}-{:016x}", set_dir.filename().string(), key);
   const fs::path runner = dir / "obj" / "flange_cosim_runner";
 
+  // Tests and users may ask for the same runner at once: one builds, the others wait on the lock
+  // and find the finished runner (never a half-linked one).
+  fs::create_directories(dir);
+  const BuildLock lock(dir / "build.lock");
   if (!fs::exists(runner)) {
-    fs::create_directories(dir);
     // The ROM image is copied in, so the runner does not depend on where the set lives.
     fs::copy_file(rom, dir / "coeffs.mem", fs::copy_options::overwrite_existing);
     log << "building the Verilated core for " << set_dir.filename().string() << " in "
