@@ -114,8 +114,9 @@ TEST(IirCoreFidelity, ZeroInputTailWithinTheRoundingBound) {
 }
 
 TEST(IirCoreFidelity, LimitCycleBoundOfAFirstOrderSection) {
-  // y = round(0.5 y1): 1/A has l1 norm 2, so the bound is 1 LSB, the dead band seen in
-  // IirCoreModel.FeedbackShiftAndDeadBand.
+  // y_ext = round(0.5 y_ext1) with s = 2: 1/A has l1 norm 2, so the feedback rounding (1/8 LSB)
+  // circulates to at most 1/4 LSB (the dead band of y_ext in
+  // IirCoreModel.ExtendedFeedbackAndDeadBand), plus 1/2 LSB for the output rounding: 0.75 LSB.
   CoreConfig c;
   c.filter_order = 1;
   c.num_sections = 1;
@@ -127,7 +128,7 @@ TEST(IirCoreFidelity, LimitCycleBoundOfAFirstOrderSection) {
   c.feedback_shift = 2;
   c.acc_width = 32;
   c.rom = {16, 0, 2};
-  EXPECT_NEAR(limit_cycle_bound_lsb(c), 1.0, 1e-9);
+  EXPECT_NEAR(limit_cycle_bound_lsb(c), 0.75, 1e-9);
 }
 
 TEST(IirCoreFidelity, FindsPeriodAndDeadBand) {
