@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
 #include <tuple>
 
@@ -263,6 +264,29 @@ TEST(IirCoreModel, StrobeDuringResetIsIgnored) {
   EXPECT_FALSE(core.strobe(3, 10));
   EXPECT_FALSE(core.pins(4).overrun);
   EXPECT_FALSE(core.pins(4).busy);
+}
+
+// The short form of docs/fixed_point.md that heads both the model and the RTL: from the symbol
+// line to the first empty comment line, word for word.
+std::string contract_paragraph(const std::filesystem::path& file) {
+  std::ifstream in(std::filesystem::path(FLANGE_SOURCE_DIR) / file);
+  std::string line, paragraph;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (line.starts_with("// D = SampleWidth")) inside = true;
+    if (inside && line == "//") break;
+    if (inside) paragraph += line + "\n";
+  }
+  return paragraph;
+}
+
+TEST(IirCoreModel, ContractParagraphMatchesTheRtlHeader) {
+  const std::string model = contract_paragraph("model/iir_core.h");
+  const std::string rtl = contract_paragraph("rtl/iir_core.sv");
+  EXPECT_NE(model.find("- Rounding:"), std::string::npos) << model;
+  EXPECT_NE(model.find("- Timing:"), std::string::npos) << model;
+  EXPECT_EQ(model, rtl) << "the fixed-point paragraphs of model/iir_core.h and rtl/iir_core.sv "
+                           "differ; both repeat docs/fixed_point.md";
 }
 
 TEST(IirCoreModel, RejectsIllegalInput) {
