@@ -168,8 +168,8 @@ TEST_F(IirCoreCosim, FullScaleSquare) {
 // second rounding step clips (docs/fixed_point.md). Found with the model: probe each section's
 // peak step gain, then try steps of the amplitudes around the one that puts that peak into the
 // window, and, as the peak moves by about 2^s words per input LSB, steps whose last `lag` samples
-// are a little higher or lower, which moves it by less (lags in steps of about 25 %). Sets whose step response never
-// overshoots (order 1) cannot reach the window: nullopt.
+// are a little higher or lower, which moves it by less (lags in steps of about 25 %). Sets whose
+// step response never overshoots (order 1) cannot reach the window: nullopt.
 std::optional<std::vector<std::int32_t>> find_second_step_clip(const model::CoreConfig& config,
                                                                std::size_t max_samples) {
   const int line = config.section_order + 1;

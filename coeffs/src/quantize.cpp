@@ -125,10 +125,10 @@ QuantizedFilter quantize(const FloatDesign& design, Structure structure,
   fa = std::min(fa, fb);
   if (fa < 1) {
     // The accumulator's rounding constant is 2^(Fa-1) (docs/fixed_point.md).
-    throw DesignRejected(fmt::format(
-        "the numerator needs {} integer bits for its largest coefficient ({}); {}-bit "
-        "coefficients leave none for the fraction; use more coefficient bits",
-        feedforward_int.value_or(0), format_number(largest_magnitude(feedforward)), c));
+    throw DesignRejected(
+        fmt::format("the numerator needs {} integer bits for its largest coefficient ({}); {}-bit "
+                    "coefficients leave none for the fraction; use more coefficient bits",
+                    feedforward_int.value_or(0), format_number(largest_magnitude(feedforward)), c));
   }
   filter.coef_frac_bits = fa;
   filter.b_frac_bits = fb;

@@ -19,9 +19,9 @@ namespace flange::model {
 namespace {
 
 struct SetCase {
-  std::string folder;        // relative to the source tree
-  double min_sine_snr_db;    // passband sine, fc / 4, half scale
-  double min_random_snr_db;  // uniform random, half scale
+  std::string folder;         // relative to the source tree
+  double min_sine_snr_db;     // passband sine, fc / 4, half scale
+  double min_random_snr_db;   // uniform random, half scale
   std::int32_t max_tail_lsb;  // largest |y| once the zero-input tail has settled
 };
 
