@@ -226,7 +226,7 @@ module iir_core #(
     unique case (state_q)
       StIdle: begin
         if (sample_valid_i) begin
-          // EN: the history moves one place older in every line; x[n] enters line 0.
+          // EN: the history moves one place older in every line; x[n] << s enters line 0.
           for (int l = 0; l <= NumSections; l++) begin
             for (int i = SectionOrder; i > 0; i--) begin
               lr_d[lr_bit(l, i) +: ExtWidth] = lr_q[lr_bit(l, i - 1) +: ExtWidth];
