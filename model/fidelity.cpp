@@ -128,7 +128,8 @@ double limit_cycle_bound_lsb(const CoreConfig& config) {
   }
   double bound = 0.0;
   for (int k = 0; k < config.num_sections; ++k) {
-    double gain = 0.5 * inverse_norm[static_cast<std::size_t>(k)];
+    double gain =
+        std::ldexp(0.5, -config.feedback_shift) * inverse_norm[static_cast<std::size_t>(k)] + 0.5;
     for (int j = k + 1; j < config.num_sections; ++j)
       gain *= section_norm[static_cast<std::size_t>(j)];
     bound += gain;

@@ -96,8 +96,8 @@ void validate_core_config(const CoreConfig& c) {
   }
   if (c.sample_width < 2 || c.sample_width > 32) bad("sample_width", "must lie in [2, 32]");
   if (c.coef_width < 2 || c.coef_width > 32) bad("coef_width", "must lie in [2, 32]");
-  if (c.num_frac_bits < 1) bad("num_frac_bits", "must be >= 1 (rounding constant 2^(Fb-1))");
-  if (c.coef_frac_bits < 0) bad("coef_frac_bits", "must be >= 0");
+  if (c.coef_frac_bits < 1) bad("coef_frac_bits", "must be >= 1 (rounding constant 2^(Fa-1))");
+  if (c.num_frac_bits < 1) bad("num_frac_bits", "must be >= 1");
   if (c.feedback_shift != c.num_frac_bits - c.coef_frac_bits || c.feedback_shift < 0) {
     bad("feedback_shift", "must equal num_frac_bits - coef_frac_bits >= 0");
   }
@@ -133,7 +133,7 @@ CoreConfig load_core_config(const std::filesystem::path& filter_json) {
   c.acc_width = static_cast<int>(reader.integer(q, p, "acc_bits", 2, 64));
   c.num_sections = static_cast<int>(reader.integer(q, p, "sections", 1, 1024));
   c.section_order = static_cast<int>(reader.integer(q, p, "section_order", 1, 64));
-  c.coef_frac_bits = static_cast<int>(reader.integer(q, p, "coef_frac_bits", 0, 63));
+  c.coef_frac_bits = static_cast<int>(reader.integer(q, p, "coef_frac_bits", 1, 63));
   c.num_frac_bits = static_cast<int>(reader.integer(q, p, "b_frac_bits", 1, 63));
   c.feedback_shift = static_cast<int>(reader.integer(q, p, "feedback_shift", 0, 63));
   c.filter_order = static_cast<int>(reader.integer(reader.root(), "", "order", 1, 1024));

@@ -28,7 +28,7 @@ struct CoreConfig {
   int section_order = 0;   // SectionOrder (M), >= 1
   int sample_width = 0;    // SampleWidth (D), 2..32
   int coef_width = 0;      // CoefWidth (C), 2..32
-  int coef_frac_bits = 0;  // CoefFracBits (Fa), >= 0
+  int coef_frac_bits = 0;  // CoefFracBits (Fa), >= 1 (rounding constant 2^(Fa-1))
   int num_frac_bits = 0;   // NumFracBits (Fb), >= 1
   int feedback_shift = 0;  // FeedbackShift (s) = Fb - Fa, >= 0
   int acc_width = 0;       // AccWidth (P), Fb + D <= P <= 64, D + s + C <= P

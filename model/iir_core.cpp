@@ -17,7 +17,19 @@ IirCore::IirCore(CoreConfig config) : config_(std::move(config)) {
   latency_ = config_.num_sections * (config_.terms() + kMacLatency) + 1;
   sample_max_ = static_cast<std::int32_t>((std::int64_t{1} << (config_.sample_width - 1)) - 1);
   sample_min_ = static_cast<std::int32_t>(-(std::int64_t{1} << (config_.sample_width - 1)));
+  ext_max_ = (std::int64_t{sample_max_} + 1) * (std::int64_t{1} << config_.feedback_shift) - 1;
+  ext_min_ = std::int64_t{sample_min_} * (std::int64_t{1} << config_.feedback_shift);
   lr_.assign(static_cast<std::size_t>((config_.num_sections + 1) * (m + 1)), 0);
+}
+
+IirCore::Rounded IirCore::round_to_sample(std::int64_t y_ext) const {
+  const int s = config_.feedback_shift;
+  const std::int64_t half = s > 0 ? std::int64_t{1} << (s - 1) : 0;
+  const std::int64_t shifted = (y_ext + half) >> s;  // arithmetic (C++20)
+  Rounded r;
+  r.sample = static_cast<std::int32_t>(std::clamp<std::int64_t>(shifted, sample_min_, sample_max_));
+  r.clipped = r.sample != shifted;
+  return r;
 }
 
 void IirCore::compute(std::int32_t sample, StepResult& result, std::vector<bool>& clipped) {
@@ -26,36 +38,38 @@ void IirCore::compute(std::int32_t sample, StepResult& result, std::vector<bool>
   const int terms = config_.terms();
   const auto at = [line](int l, int age) { return static_cast<std::size_t>(l * line + age); };
 
-  // EN: every history line moves one place older; x[n] enters line 0.
+  // EN: every history line moves one place older; x[n] enters line 0, in the D + s-bit format of
+  // the load registers (s zero LSBs).
   for (int l = 0; l <= config_.num_sections; ++l) {
     for (int age = m; age > 0; --age) lr_[at(l, age)] = lr_[at(l, age - 1)];
   }
-  lr_[0] = sample;
+  lr_[0] = std::int64_t{sample} * (std::int64_t{1} << config_.feedback_shift);
 
   clipped.assign(static_cast<std::size_t>(config_.num_sections), false);
   result.saturated = false;
-  std::int32_t y = 0;
+  Rounded y;
   for (int k = 0; k < config_.num_sections; ++k) {
     // Rounding constant preloaded, as the DSP48E1 does through its C port.
-    std::uint64_t p = std::uint64_t{1} << (config_.num_frac_bits - 1);
+    std::uint64_t p = std::uint64_t{1} << (config_.coef_frac_bits - 1);
     for (int i = 0; i < terms; ++i) {
       const std::int64_t word = config_.rom[static_cast<std::size_t>(k * terms + i)];
-      // b[i] x_k[n-i] from line k; -a[j] (y_k[n-j] << s), j = i - M, from line k + 1.
-      const std::int64_t operand = i <= m ? std::int64_t{lr_[at(k, i)]}
-                                          : std::int64_t{lr_[at(k + 1, i - m)]} *
-                                                (std::int64_t{1} << config_.feedback_shift);
+      // b[i] x_k[n-i], x_k rounded to D bits from line k; -a[j] y_ext_k[n-j], j = i - M, from
+      // line k + 1 as it is.
+      const std::int64_t operand =
+          i <= m ? std::int64_t{round_to_sample(lr_[at(k, i)]).sample} : lr_[at(k + 1, i - m)];
       p = mac(p, operand, word);
     }
     const std::int64_t acc = wrap_to_width(p, config_.acc_width);
-    const std::int64_t shifted = acc >> config_.num_frac_bits;  // arithmetic (C++20)
-    y = static_cast<std::int32_t>(std::clamp<std::int64_t>(shifted, sample_min_, sample_max_));
-    if (y != shifted) {
+    const std::int64_t shifted = acc >> config_.coef_frac_bits;  // arithmetic (C++20)
+    const std::int64_t y_ext = std::clamp(shifted, ext_min_, ext_max_);
+    y = round_to_sample(y_ext);
+    if (y_ext != shifted || y.clipped) {
       clipped[static_cast<std::size_t>(k)] = true;
       result.saturated = true;
     }
-    lr_[at(k + 1, 0)] = y;
+    lr_[at(k + 1, 0)] = y_ext;
   }
-  result.sample = y;
+  result.sample = y.sample;
 }
 
 void IirCore::schedule(const Event& event) {

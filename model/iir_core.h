@@ -6,18 +6,22 @@
 // D = SampleWidth, C = CoefWidth, P = AccWidth, Fb = NumFracBits, Fa = CoefFracBits,
 // s = FeedbackShift = Fb - Fa, K = NumSections, M = SectionOrder.
 // - Formats: samples in, out and between sections are Q1.(D-1) (Q1.15 by default). The ROM holds
-//   C-bit words: b as Q(C-Fb).Fb, the negated denominator -a as Q(C-Fa).Fa. Feedback samples enter
-//   the multiplier as y << s (D + s <= 25 bits, the DSP48E1 A port), so every product is
-//   Q.(D-1+Fb) in D+s+C bits, summed in a P-bit two's complement accumulator that wraps like the
-//   DSP48E1 P register (the generator proves that legal samples never make it wrap).
-// - Rounding: round half up. The accumulator starts each section at 2^(Fb-1) and the sum is
-//   shifted arithmetically right by Fb.
-// - Saturation: every section's output is clipped to [-2^(D-1), 2^(D-1) - 1] before it enters the
-//   history and the next section; a clip sets the sticky saturation_o.
+//   C-bit words: b as Q(C-Fb).Fb, the negated denominator -a as Q(C-Fa).Fa. Extended-precision
+//   feedback: each section keeps its own output history y_ext with s more fractional bits,
+//   Q1.(D-1+s) in D + s <= 25 bits (the DSP48E1 A port), and feeds it back as it is. Every product
+//   is then Q.(D-1+Fb) in D+s+C bits, summed in a P-bit two's complement accumulator that wraps
+//   like the DSP48E1 P register (the generator proves that legal samples never make it wrap).
+// - Rounding: round half up, twice. The accumulator starts each section at 2^(Fa-1) and
+//   y_ext = sum >>> Fa (arithmetic). The section's D-bit output y, the next section's input and,
+//   after the last section, sample_o, is rounded from y_ext (not from the accumulator):
+//   y = (y_ext + 2^(s-1)) >>> s for s > 0, y = y_ext for s = 0.
+// - Saturation: y_ext is clipped to [-2^(D-1+s), 2^(D-1+s) - 1] before it enters the history, y to
+//   [-2^(D-1), 2^(D-1) - 1]; either clip sets the sticky saturation_o.
 // - ROM order: section 0 first; within a section b[0..M], then -a[1..M]. Load registers: K + 1
-//   lines of M + 1 samples, newest first; line 0 is the input x[n..n-M], line k + 1 the output of
-//   section k (the input of section k + 1). The bus target counter (BTC) walks the ROM and the
-//   matching load registers with one count.
+//   lines of M + 1 words of D + s bits, newest first; line 0 is the input x[n..n-M] shifted left
+//   by s, line k + 1 is y_ext of section k. Section k multiplies b[i] by line k age i rounded to D
+//   bits as above (exact for line 0) and -a[j] by line k + 1 age j as it is. The bus target
+//   counter (BTC) walks the ROM and the matching load registers with one count.
 // - Timing: a section takes 2M + 1 MAC cycles plus 3 cycles of MAC latency. From the cycle in
 //   which sample_valid_i is accepted to the cycle in which sample_valid_o is high:
 //   LatencyCycles = K * (2M + 4) + 1. A new sample is accepted in the cycle sample_valid_o is
@@ -67,6 +71,17 @@ class IirCore {
   int macs_per_sample() const { return config_.rom_depth(); }
   std::int32_t sample_min() const { return sample_min_; }
   std::int32_t sample_max() const { return sample_max_; }
+  // Range of y_ext, the extended-precision feedback history: [-2^(D-1+s), 2^(D-1+s) - 1].
+  std::int64_t ext_min() const { return ext_min_; }
+  std::int64_t ext_max() const { return ext_max_; }
+
+  // The D-bit sample a section passes on for a history word y_ext: (y_ext + 2^(s-1)) >>> s (y_ext
+  // when s = 0), saturated to [sample_min(), sample_max()].
+  struct Rounded {
+    std::int32_t sample = 0;
+    bool clipped = false;  // the saturation changed the value
+  };
+  Rounded round_to_sample(std::int64_t y_ext) const;
 
   // One sample presented at the first cycle the core accepts it (back-to-back streaming).
   // `sample` must lie in [sample_min(), sample_max()] (std::out_of_range otherwise).
@@ -87,8 +102,9 @@ class IirCore {
   // The expected outputs in `cycle`.
   Pins pins(std::uint64_t cycle);
 
-  // The load registers, (K + 1) lines of (M + 1) samples, newest first, as in the RTL.
-  const std::vector<std::int32_t>& lr() const { return lr_; }
+  // The load registers as in the RTL: (K + 1) lines of (M + 1) words of D + s bits, newest first;
+  // line 0 holds x << s, line k + 1 the y_ext history of section k.
+  const std::vector<std::int64_t>& lr() const { return lr_; }
 
  private:
   enum class EventKind { kReset, kClear, kBusyStart, kBusyEnd, kSaturation, kOverrun, kOutput };
@@ -105,7 +121,8 @@ class IirCore {
   CoreConfig config_;
   int latency_;
   std::int32_t sample_min_, sample_max_;
-  std::vector<std::int32_t> lr_;
+  std::int64_t ext_min_, ext_max_;
+  std::vector<std::int64_t> lr_;
 
   std::uint64_t ready_cycle_ = 0;  // first cycle in which sample_valid_i is accepted
   std::uint64_t now_ = 0;          // last cycle asked about, or the current input cycle

@@ -6,18 +6,22 @@
 // D = SampleWidth, C = CoefWidth, P = AccWidth, Fb = NumFracBits, Fa = CoefFracBits,
 // s = FeedbackShift = Fb - Fa, K = NumSections, M = SectionOrder.
 // - Formats: samples in, out and between sections are Q1.(D-1) (Q1.15 by default). The ROM holds
-//   C-bit words: b as Q(C-Fb).Fb, the negated denominator -a as Q(C-Fa).Fa. Feedback samples enter
-//   the multiplier as y << s (D + s <= 25 bits, the DSP48E1 A port), so every product is
-//   Q.(D-1+Fb) in D+s+C bits, summed in a P-bit two's complement accumulator that wraps like the
-//   DSP48E1 P register (the generator proves that legal samples never make it wrap).
-// - Rounding: round half up. The accumulator starts each section at 2^(Fb-1) and the sum is
-//   shifted arithmetically right by Fb.
-// - Saturation: every section's output is clipped to [-2^(D-1), 2^(D-1) - 1] before it enters the
-//   history and the next section; a clip sets the sticky saturation_o.
+//   C-bit words: b as Q(C-Fb).Fb, the negated denominator -a as Q(C-Fa).Fa. Extended-precision
+//   feedback: each section keeps its own output history y_ext with s more fractional bits,
+//   Q1.(D-1+s) in D + s <= 25 bits (the DSP48E1 A port), and feeds it back as it is. Every product
+//   is then Q.(D-1+Fb) in D+s+C bits, summed in a P-bit two's complement accumulator that wraps
+//   like the DSP48E1 P register (the generator proves that legal samples never make it wrap).
+// - Rounding: round half up, twice. The accumulator starts each section at 2^(Fa-1) and
+//   y_ext = sum >>> Fa (arithmetic). The section's D-bit output y, the next section's input and,
+//   after the last section, sample_o, is rounded from y_ext (not from the accumulator):
+//   y = (y_ext + 2^(s-1)) >>> s for s > 0, y = y_ext for s = 0.
+// - Saturation: y_ext is clipped to [-2^(D-1+s), 2^(D-1+s) - 1] before it enters the history, y to
+//   [-2^(D-1), 2^(D-1) - 1]; either clip sets the sticky saturation_o.
 // - ROM order: section 0 first; within a section b[0..M], then -a[1..M]. Load registers: K + 1
-//   lines of M + 1 samples, newest first; line 0 is the input x[n..n-M], line k + 1 the output of
-//   section k (the input of section k + 1). The bus target counter (BTC) walks the ROM and the
-//   matching load registers with one count.
+//   lines of M + 1 words of D + s bits, newest first; line 0 is the input x[n..n-M] shifted left
+//   by s, line k + 1 is y_ext of section k. Section k multiplies b[i] by line k age i rounded to D
+//   bits as above (exact for line 0) and -a[j] by line k + 1 age j as it is. The bus target
+//   counter (BTC) walks the ROM and the matching load registers with one count.
 // - Timing: a section takes 2M + 1 MAC cycles plus 3 cycles of MAC latency. From the cycle in
 //   which sample_valid_i is accepted to the cycle in which sample_valid_o is high:
 //   LatencyCycles = K * (2M + 4) + 1. A new sample is accepted in the cycle sample_valid_o is
@@ -60,7 +64,8 @@ module iir_core #(
   localparam int Terms         = 2 * SectionOrder + 1;              // MACs per section
   localparam int LrLine        = SectionOrder + 1;                  // samples per history line
   localparam int LrDepth       = (NumSections + 1) * LrLine;
-  localparam int AWidth        = SampleWidth + FeedbackShift;       // multiplier A operand
+  localparam int ExtWidth      = SampleWidth + FeedbackShift;       // y_ext: history word
+  localparam int AWidth        = ExtWidth;                          // multiplier A operand
   localparam int MacLatency    = 3;                                 // iir_mac: A/B, M, P
   localparam int LatencyCycles = NumSections * (Terms + MacLatency) + 1;
   localparam int BtcWidth      = RomDepth > 1 ? $clog2(RomDepth) : 1;
@@ -68,6 +73,10 @@ module iir_core #(
 
   localparam logic signed [SampleWidth-1:0] SAMPLE_MAX = {1'b0, {(SampleWidth - 1){1'b1}}};
   localparam logic signed [SampleWidth-1:0] SAMPLE_MIN = {1'b1, {(SampleWidth - 1){1'b0}}};
+  localparam logic signed [ExtWidth-1:0]    EXT_MAX    = {1'b0, {(ExtWidth - 1){1'b1}}};
+  localparam logic signed [ExtWidth-1:0]    EXT_MIN    = {1'b1, {(ExtWidth - 1){1'b0}}};
+  // 2^(s-1), half an LSB of a sample in y_ext units (0 when s = 0).
+  localparam logic [ExtWidth:0]             ROUND_HALF = ((ExtWidth + 1)'(1) << FeedbackShift) >> 1;
 
   // Elaboration checks: a set that breaks the contract must not build //
   if (RomDepth != NumSections * Terms) begin : g_bad_rom_depth
@@ -79,16 +88,33 @@ module iir_core #(
   if (FeedbackShift != NumFracBits - CoefFracBits || FeedbackShift < 0) begin : g_bad_shift
     $error("iir_core: FeedbackShift must equal NumFracBits - CoefFracBits >= 0");
   end
-  if (NumFracBits < 1 || AccWidth < NumFracBits + SampleWidth) begin : g_bad_acc
-    $error("iir_core: need 1 <= NumFracBits and NumFracBits + SampleWidth <= AccWidth");
+  if (CoefFracBits < 1 || AccWidth < NumFracBits + SampleWidth) begin : g_bad_acc
+    $error("iir_core: need 1 <= CoefFracBits and NumFracBits + SampleWidth <= AccWidth");
   end
   if (AWidth + CoefWidth > AccWidth) begin : g_bad_product
     $error("iir_core: the product (SampleWidth + FeedbackShift + CoefWidth) exceeds AccWidth");
   end
 
-  // Lowest bit of the sample `age` samples old (0 <= age <= M) in load-register line `l`.
+  // Lowest bit of the word `age` samples old (0 <= age <= M) in load-register line `l`.
   function automatic int lr_bit(int l, int age);
-    lr_bit = (l * LrLine + age) * SampleWidth;  // Yosys 0.23 has no `return`
+    lr_bit = (l * LrLine + age) * ExtWidth;  // Yosys 0.23 has no `return`
+  endfunction
+
+  // The D-bit sample for a history word: (y_ext + 2^(s-1)) >>> s, saturated. The sum is one bit
+  // wider than y_ext, so it cannot wrap; its shifted value fits the sample format when its two top
+  // bits agree. Only the positive rail can be reached: y_ext >= 2^(D-1+s) - 2^(s-1).
+  function automatic logic [SampleWidth-1:0] round_to_sample(logic [ExtWidth-1:0] y_ext);
+    logic [ExtWidth:0] sum;
+    sum = {y_ext[ExtWidth-1], y_ext} + ROUND_HALF;
+    if (sum[ExtWidth] == sum[ExtWidth-1]) round_to_sample = sum[ExtWidth-1:FeedbackShift];
+    else round_to_sample = sum[ExtWidth] ? SAMPLE_MIN : SAMPLE_MAX;
+  endfunction
+
+  // Whether round_to_sample(y_ext) saturates.
+  function automatic logic round_clips(logic [ExtWidth-1:0] y_ext);
+    logic [ExtWidth:0] sum;
+    sum = {y_ext[ExtWidth-1], y_ext} + ROUND_HALF;
+    round_clips = sum[ExtWidth] != sum[ExtWidth-1];
   endfunction
 
   typedef enum logic [1:0] {
@@ -101,10 +127,11 @@ module iir_core #(
   logic [BtcWidth-1:0]                   btc_q, btc_d;      // bus target counter
   logic [SecWidth-1:0]                   sec_q, sec_d;      // section being computed
   logic [1:0]                            drain_q, drain_d;  // cycles spent in StDrain
-  // Load registers: one flat vector, because Yosys 0.23 does not parse multi-dimensional packed
-  // arrays; lr_bit() gives the position of a sample. Only constant positions are used: a computed
-  // index would cost a barrel shifter.
-  logic [LrDepth*SampleWidth-1:0]        lr_q, lr_d;
+  // Load registers: one flat vector of D + s-bit words, because Yosys 0.23 does not parse
+  // multi-dimensional packed arrays; lr_bit() gives the position of a word. Only constant positions
+  // are used: a computed index would cost a barrel shifter. Line 0 holds x << s: its s zero LSBs
+  // are constant flip-flops, which synthesis removes.
+  logic [LrDepth*ExtWidth-1:0]           lr_q, lr_d;
   logic signed [SampleWidth-1:0]         out_q, out_d;
   logic                                  valid_q, valid_d;
   logic                                  overrun_q, overrun_d;
@@ -115,22 +142,23 @@ module iir_core #(
   initial $readmemh(RomFile, rom);
 
   // BTC decode: the ROM word's role and the load register it multiplies //
-  logic                          term_first, term_last, term_feedback;
-  logic signed [SampleWidth-1:0] lr_sample;
+  logic                       term_first, term_last, term_feedback;
+  logic signed [ExtWidth-1:0] lr_word;
   always_comb begin
     term_first    = 1'b0;
     term_last     = 1'b0;
     term_feedback = 1'b0;
-    lr_sample     = '0;
+    lr_word       = '0;
     for (int k = 0; k < NumSections; k++) begin
       for (int i = 0; i < Terms; i++) begin
         if (btc_q == BtcWidth'(k * Terms + i)) begin
           term_first    = (i == 0);
           term_last     = (i == Terms - 1);
           term_feedback = (i > SectionOrder);
-          // b[i] multiplies x_k[n-i] (line k); -a[j], j = i - M, multiplies y_k[n-j] (line k + 1).
-          if (i <= SectionOrder) lr_sample = $signed(lr_q[lr_bit(k, i) +: SampleWidth]);
-          else lr_sample = $signed(lr_q[lr_bit(k + 1, i - SectionOrder) +: SampleWidth]);
+          // b[i] multiplies x_k[n-i] (line k, rounded below); -a[j], j = i - M, multiplies
+          // y_ext_k[n-j] (line k + 1).
+          if (i <= SectionOrder) lr_word = $signed(lr_q[lr_bit(k, i) +: ExtWidth]);
+          else lr_word = $signed(lr_q[lr_bit(k + 1, i - SectionOrder) +: ExtWidth]);
         end
       end
     end
@@ -138,21 +166,26 @@ module iir_core #(
 
   // Operands //
   logic                          issue;
+  logic signed [SampleWidth-1:0] lr_sample;
   logic signed [AWidth-1:0]      mac_a;
   logic signed [CoefWidth-1:0]   mac_b;
   logic signed [AccWidth-1:0]    mac_p;
 
-  // The feedback shift gives the numerator s more fractional bits at no DSP cost (A port <= 25).
-  assign mac_a = !issue        ? '0 :
-                 term_feedback ? AWidth'(lr_sample) <<< FeedbackShift :
-                                 AWidth'(lr_sample);
+  // A feed-forward term takes the D-bit sample: the input (x << s rounds back to x exactly) or
+  // the previous section's output, rounded from its y_ext as at its write-back, where a clip was
+  // flagged. A feedback term takes y_ext itself: s more fractional bits at no DSP cost (A port
+  // <= 25 bits).
+  assign lr_sample = $signed(round_to_sample(lr_word));
+  assign mac_a     = !issue        ? '0 :
+                     term_feedback ? lr_word :
+                                     AWidth'(lr_sample);
   assign mac_b = $signed(rom[btc_q]);
 
   iir_mac #(
     .AWidth    (AWidth),
     .BWidth    (CoefWidth),
     .AccWidth  (AccWidth),
-    .PreloadBit(NumFracBits - 1)
+    .PreloadBit(CoefFracBits - 1)
   ) u_mac (
     .clk_i,
     .rst_ni,
@@ -162,16 +195,20 @@ module iir_core #(
     .p_o    (mac_p)
   );
 
-  // Round (preloaded) and saturate //
-  // The sum fits the sample format when every bit above the sample's sign bit equals it.
+  // Round (preloaded) and saturate, twice //
+  // y_ext = P >>> Fa fits D + s bits when every bit of P above its sign bit equals it.
   logic [AccWidth-NumFracBits-SampleWidth:0] acc_top;
-  logic                                      clip;
+  logic                                      clip_ext, clip;
+  logic signed [ExtWidth-1:0]                section_ext;
   logic signed [SampleWidth-1:0]             section_y;
 
-  assign acc_top   = mac_p[AccWidth-1:NumFracBits+SampleWidth-1];
-  assign clip      = !((&acc_top) || !(|acc_top));
-  assign section_y = !clip     ? mac_p[NumFracBits+SampleWidth-1:NumFracBits] :
-                     mac_p[AccWidth-1] ? SAMPLE_MIN : SAMPLE_MAX;
+  assign acc_top         = mac_p[AccWidth-1:NumFracBits+SampleWidth-1];
+  assign clip_ext        = !((&acc_top) || !(|acc_top));
+  assign section_ext     = !clip_ext         ? mac_p[NumFracBits+SampleWidth-1:CoefFracBits] :
+                           mac_p[AccWidth-1] ? EXT_MIN : EXT_MAX;
+  // The D-bit output is rounded from y_ext (double rounding), the same function as the read path.
+  assign section_y       = $signed(round_to_sample(section_ext));
+  assign clip            = clip_ext | round_clips(section_ext);
 
   // FSM //
   logic writeback;
@@ -189,13 +226,13 @@ module iir_core #(
     unique case (state_q)
       StIdle: begin
         if (sample_valid_i) begin
-          // EN: the history moves one place older in every line; x[n] enters line 0.
+          // EN: the history moves one place older in every line; x[n] << s enters line 0.
           for (int l = 0; l <= NumSections; l++) begin
             for (int i = SectionOrder; i > 0; i--) begin
-              lr_d[lr_bit(l, i) +: SampleWidth] = lr_q[lr_bit(l, i - 1) +: SampleWidth];
+              lr_d[lr_bit(l, i) +: ExtWidth] = lr_q[lr_bit(l, i - 1) +: ExtWidth];
             end
           end
-          lr_d[lr_bit(0, 0) +: SampleWidth] = sample_i;
+          lr_d[lr_bit(0, 0) +: ExtWidth] = ExtWidth'(sample_i) <<< FeedbackShift;
           btc_d   = '0;
           sec_d   = '0;
           state_d = StMac;
@@ -213,9 +250,9 @@ module iir_core #(
         if (drain_q == 2'(MacLatency - 1)) begin
           // The last term of the section has reached the accumulator.
           writeback        = 1'b1;
-          // The section's output becomes the newest entry of the next line.
+          // The section's y_ext becomes the newest entry of the next line.
           for (int k = 0; k < NumSections; k++) begin
-            if (sec_q == SecWidth'(k)) lr_d[lr_bit(k + 1, 0) +: SampleWidth] = section_y;
+            if (sec_q == SecWidth'(k)) lr_d[lr_bit(k + 1, 0) +: ExtWidth] = section_ext;
           end
           if (sec_q == SecWidth'(NumSections - 1)) begin
             out_d   = section_y;

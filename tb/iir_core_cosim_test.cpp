@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -160,6 +161,90 @@ TEST_F(IirCoreCosim, FullScaleSquare) {
                           full_scale_max(config_.sample_width)) != report.outputs.end())
         << "no output sits on the positive rail; " << reproduce();
   }
+}
+
+// An input whose response takes some section's y_ext into the 2^(s-1) - 1 words just below its
+// rail: y_ext itself fits D + s bits, but the D-bit output rounded from it does not, so only the
+// second rounding step clips (docs/fixed_point.md). Found with the model: probe each section's
+// peak step gain, then try steps of the amplitudes around the one that puts that peak into the
+// window, and, as the peak moves by about 2^s words per input LSB, steps whose last `lag` samples
+// are a little higher or lower, which moves it by less (lags in steps of about 25 %). Sets whose
+// step response never overshoots (order 1) cannot reach the window: nullopt.
+std::optional<std::vector<std::int32_t>> find_second_step_clip(const model::CoreConfig& config,
+                                                               std::size_t max_samples) {
+  const int line = config.section_order + 1;
+  const auto newest_ext = [line](const model::IirCore& core, int k) {
+    return core.lr()[static_cast<std::size_t>((k + 1) * line)];
+  };
+  // Peak y_ext of every section, and when it comes, for a half-scale step.
+  model::IirCore probe(config);
+  const std::int32_t half = probe.sample_max() / 2 + 1;
+  std::vector<std::int64_t> peak(static_cast<std::size_t>(config.num_sections), 0);
+  std::vector<std::size_t> peak_at(peak.size(), 0);
+  for (std::size_t n = 0; n < max_samples; ++n) {
+    probe.step(half);
+    for (int k = 0; k < config.num_sections; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      if (newest_ext(probe, k) > peak[kk]) {
+        peak[kk] = newest_ext(probe, k);
+        peak_at[kk] = n;
+      }
+    }
+  }
+  // A hit: some step clipped, and no y_ext ever sat on a rail (so the first step never clipped).
+  const auto hits = [&](const std::vector<std::int32_t>& x) {
+    model::IirCore core(config);
+    bool clipped = false;
+    for (const std::int32_t v : x) {
+      clipped = core.step(v).saturated || clipped;
+      for (int j = 0; j < config.num_sections; ++j) {
+        const std::int64_t e = newest_ext(core, j);
+        if (e == core.ext_max() || e == core.ext_min()) return false;
+      }
+    }
+    return clipped;
+  };
+  const double window_middle =
+      static_cast<double>(probe.ext_max()) - std::ldexp(1.0, config.feedback_shift - 2);
+  for (std::size_t k = 0; k < peak.size(); ++k) {
+    const double target = window_middle * half / static_cast<double>(peak[k]);
+    if (target > probe.sample_max()) continue;  // the peak stays below the window
+    const std::size_t n = peak_at[k] + 2;
+    const auto step_of = [&](std::int32_t amplitude, std::size_t lag, std::int32_t delta) {
+      std::vector<std::int32_t> x(n, amplitude);
+      for (std::size_t i = n - std::min(n, lag); i < n; ++i) {
+        x[i] = std::clamp(amplitude + delta, probe.sample_min(), probe.sample_max());
+      }
+      return x;
+    };
+    const auto centre = static_cast<std::int32_t>(std::lround(target));
+    for (std::int32_t d = -16; d <= 16; ++d) {
+      if (centre + d > probe.sample_max()) continue;
+      if (auto x = step_of(centre + d, 0, 0); hits(x)) return x;
+    }
+    for (std::size_t lag = 1; lag <= n; lag = std::max(lag + 1, lag * 5 / 4)) {
+      for (std::int32_t d = -2; d <= 2; ++d) {
+        for (std::int32_t delta = -8; delta <= 8; ++delta) {
+          if (centre + d > probe.sample_max() || delta == 0) continue;
+          if (auto x = step_of(centre + d, lag, delta); hits(x)) return x;
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+TEST_F(IirCoreCosim, SaturationInTheSecondRoundingStep) {
+  if (config_.feedback_shift == 0) GTEST_SKIP() << "s = 0: y = y_ext, one rounding step";
+  const std::optional<std::vector<std::int32_t>> x =
+      find_second_step_clip(config_, 8 * cutoff_period());
+  if (!x) GTEST_SKIP() << "no step response of this set reaches the window below the rail";
+  std::cout << fmt::format("[second-step clip] {}: step of {} LSB ending at {} LSB, {} samples\n",
+                           built_coeff_set().name, x->front(), x->back(), x->size());
+  std::vector<std::int32_t> samples = *x;
+  samples.resize(samples.size() + 3, samples.back());
+  const CosimReport report = stream(samples);
+  EXPECT_TRUE(report.saturation_seen) << reproduce();
 }
 
 TEST_F(IirCoreCosim, SineSweep) {

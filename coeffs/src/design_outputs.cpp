@@ -153,7 +153,8 @@ std::string params_package(const DesignRecord& record) {
   param("CoefWidth", q.widths.coef_bits, "ROM word width");
   param("CoefFracBits", q.coef_frac_bits, "fractional bits of the negated a words");
   param("NumFracBits", q.b_frac_bits, "fractional bits of the b words");
-  param("FeedbackShift", q.feedback_shift, "NumFracBits - CoefFracBits, on the A port");
+  param("FeedbackShift", q.feedback_shift,
+        "NumFracBits - CoefFracBits: extra fraction bits of y_ext");
   param("AccWidth", q.widths.acc_bits, "accumulator width");
   param("RomDepth", static_cast<long long>(q.words.size()), "NumSections * (2 * SectionOrder + 1)");
   text << "endpackage\n";

@@ -123,14 +123,24 @@ QuantizedFilter quantize(const FloatDesign& design, Structure structure,
   // The feedback shift cannot be negative: a numerator larger than the denominator takes the
   // denominator's format down with it.
   fa = std::min(fa, fb);
+  if (fa < 1) {
+    // The accumulator's rounding constant is 2^(Fa-1) (docs/fixed_point.md).
+    throw DesignRejected(
+        fmt::format("the numerator needs {} integer bits for its largest coefficient ({}); {}-bit "
+                    "coefficients leave none for the fraction; use more coefficient bits",
+                    feedforward_int.value_or(0), format_number(largest_magnitude(feedforward)), c));
+  }
   filter.coef_frac_bits = fa;
   filter.b_frac_bits = fb;
   filter.feedback_shift = fb - fa;
 
+  // Accumulator worst case per section (docs/fixed_point.md): the rounding constant 2^(Fa-1),
+  // |B| times the largest sample magnitude 2^(D-1), and |A| times the largest feedback history
+  // magnitude 2^(D-1+s) (y_ext, D + s bits).
   Int128 worst_any = 0;
   for (std::size_t k = 0; k < sections.b.size(); ++k) {
     QuantizedSection quantized;
-    Int128 worst = Int128{1} << (fb - 1);  // the rounding constant
+    Int128 worst = Int128{1} << (fa - 1);  // the rounding constant
     for (double value : numerators[k]) {
       const std::int64_t word = round_to_word(value, fb);
       filter.words.push_back(word);

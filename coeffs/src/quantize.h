@@ -51,8 +51,8 @@ struct QuantizedFilter {
 };
 
 // Picks the fractional bits (docs/fixed_point.md) and rounds every coefficient to nearest.
-// Throws DesignRejected when the direct form needs more integer bits than the word has or the
-// accumulator could overflow.
+// Throws DesignRejected when the direct form's denominator or the numerator needs more integer
+// bits than the word has, or the accumulator could overflow.
 QuantizedFilter quantize(const FloatDesign& design, Structure structure,
                          const HardwareWidths& widths);
 

@@ -120,6 +120,19 @@ TEST(Quantize, HighOrderDirectFormWithoutFractionBitsIsRefused) {
                DesignRejected);
 }
 
+TEST(Quantize, NumeratorWithoutFractionBitsIsRefused) {
+  // A numerator 2^20 times too large leaves no fractional bit in 18-bit words: Fb and with it Fa
+  // would drop below 1, and the accumulator's rounding constant 2^(Fa-1) would not exist.
+  FloatDesign design = design_butterworth(2, 1.0, 6.0, std::nullopt);
+  for (double& b : design.b) b = std::ldexp(b, 20);
+  try {
+    quantize(design, Structure::kDf1, HardwareWidths{});
+    FAIL() << "accepted";
+  } catch (const DesignRejected& e) {
+    EXPECT_NE(std::string(e.what()).find("the numerator needs"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Quantize, EverySosOrderFromOneToThirtyTwoQuantisesStably) {
   for (int order = 1; order <= 32; ++order) {
     const DesignRecord record =

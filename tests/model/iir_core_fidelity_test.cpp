@@ -19,26 +19,28 @@ namespace flange::model {
 namespace {
 
 struct SetCase {
-  std::string folder;        // relative to the source tree
-  double min_sine_snr_db;    // passband sine, fc / 4, half scale
-  double min_random_snr_db;  // uniform random, half scale
+  std::string folder;         // relative to the source tree
+  double min_sine_snr_db;     // passband sine, fc / 4, half scale
+  double min_random_snr_db;   // uniform random, half scale
+  std::int32_t max_tail_lsb;  // largest |y| once the zero-input tail has settled
 };
 
-// Measured figures are in docs/core.md. Every set built from a 6 Hz / 0.5 Hz-class design clears
-// 60 dB (sine) and 50 dB (random). The vehicle filter (fc / fs = 0.0026) does not: with every
-// section's output, and so its feedback state, rounded to 16 bits, each biquad has a dead band of
-// 0.5 / (1 + a1 + a2) ~ 1900 LSB (docs/core.md, "Limit cycles"). Its thresholds only guard
-// against getting worse; the fix belongs to the fixed-point contract.
+// Floors about 1 dB below the figures measured with extended-precision feedback (docs/core.md;
+// the runs are deterministic), and the zero-input tails as measured. The vehicle filter
+// (fc / fs = 0.0026) is the hard case: its 40 dB is the ceiling its 18-bit coefficients set
+// (the quantised words in double arithmetic give 39.9 dB against the float design), and each
+// biquad keeps a dead band of 2^-(s+1) / (1 + a1 + a2) ~ 15 LSB in y_ext (13 LSB at the output
+// here). Fed back at 16 bits, it had 9.7 dB, -3.8 dB and a 5435 LSB dead band.
 const std::vector<SetCase> kSets = {
-    {"coeffs/measurement_sos", 60.0, 50.0},
-    {"coeffs/measurement_df1", 60.0, 50.0},
-    {"coeffs/vehicle_sos", 5.0, -10.0},
-    {"tests/data/coeffs/sos_order1", 60.0, 50.0},
-    {"tests/data/coeffs/sos_order2", 60.0, 50.0},
-    {"tests/data/coeffs/sos_order3", 60.0, 50.0},
-    {"tests/data/coeffs/sos_order4", 60.0, 50.0},
-    {"tests/data/coeffs/sos_order8", 60.0, 50.0},
-    {"tests/data/coeffs/sos_order12", 60.0, 50.0},
+    {"coeffs/measurement_sos", 87.0, 78.0, 0},
+    {"coeffs/measurement_df1", 68.0, 62.0, 0},
+    {"coeffs/vehicle_sos", 39.0, 32.0, 13},
+    {"tests/data/coeffs/sos_order1", 89.0, 81.0, 0},
+    {"tests/data/coeffs/sos_order2", 89.0, 80.0, 0},
+    {"tests/data/coeffs/sos_order3", 88.0, 78.0, 0},
+    {"tests/data/coeffs/sos_order4", 85.0, 76.0, 0},
+    {"tests/data/coeffs/sos_order8", 86.0, 76.0, 0},
+    {"tests/data/coeffs/sos_order12", 81.0, 71.0, 1},
 };
 
 std::filesystem::path json_of(const SetCase& c) {
@@ -64,22 +66,38 @@ double core_snr_db(const SetCase& c, const std::vector<std::int32_t>& x, std::si
   return snr_db(r, t);
 }
 
+// A passband sine, fc / 4, at `level` of full scale, 40000 samples.
+std::vector<std::int32_t> passband_sine(const FloatDesign& design, double level) {
+  const double f = design.fc_hz.value() / 4;
+  std::vector<std::int32_t> x;
+  for (std::size_t i = 0; i < 40000; ++i) {
+    x.push_back(static_cast<std::int32_t>(
+        std::lround(level * 32768 *
+                    std::sin(2 * std::numbers::pi * f * static_cast<double>(i) / design.fs_hz))));
+  }
+  return x;
+}
+
 TEST(IirCoreFidelity, PassbandSineSnr) {
   for (const SetCase& c : kSets) {
     const FloatDesign design = load_float_design(json_of(c));
-    const double f = design.fc_hz.value() / 4;
-    std::vector<std::int32_t> x;
-    for (std::size_t i = 0; i < 40000; ++i) {
-      x.push_back(static_cast<std::int32_t>(
-          std::lround(0.5 * 32768 *
-                      std::sin(2 * std::numbers::pi * f * static_cast<double>(i) / design.fs_hz))));
-    }
-    const double snr = core_snr_db(c, x, 15000);
+    const double snr = core_snr_db(c, passband_sine(design, 0.5), 15000);
     std::cout << fmt::format(
         "[snr] {}: passband sine (fc/4, 0.5 FS) {:.1f} dB (threshold {:.0f})\n", c.folder, snr,
         c.min_sine_snr_db);
     EXPECT_GE(snr, c.min_sine_snr_db) << c.folder;
   }
+}
+
+TEST(IirCoreFidelity, MeasurementSosSineAtMinusOneDbfs) {
+  // The aim set for the measurement filter: at least 80 dB SNR for a -1 dBFS passband sine.
+  const SetCase& c = kSets.front();
+  ASSERT_EQ(c.folder, "coeffs/measurement_sos");
+  const double level = std::pow(10.0, -1.0 / 20.0);
+  const double snr = core_snr_db(c, passband_sine(load_float_design(json_of(c)), level), 15000);
+  std::cout << fmt::format("[snr] {}: passband sine (fc/4, -1 dBFS) {:.1f} dB (threshold 80)\n",
+                           c.folder, snr);
+  EXPECT_GE(snr, 80.0);
 }
 
 TEST(IirCoreFidelity, UniformRandomSnr) {
@@ -110,12 +128,14 @@ TEST(IirCoreFidelity, ZeroInputTailWithinTheRoundingBound) {
                              lc.describe(), bound);
     EXPECT_NE(lc.period, 0u) << c.folder << ": not settled";
     EXPECT_LE(lc.amplitude, bound) << c.folder;
+    EXPECT_LE(lc.amplitude, c.max_tail_lsb) << c.folder;
   }
 }
 
 TEST(IirCoreFidelity, LimitCycleBoundOfAFirstOrderSection) {
-  // y = round(0.5 y1): 1/A has l1 norm 2, so the bound is 1 LSB, the dead band seen in
-  // IirCoreModel.FeedbackShiftAndDeadBand.
+  // y_ext = round(0.5 y_ext1) with s = 2: 1/A has l1 norm 2, so the feedback rounding (1/8 LSB)
+  // circulates to at most 1/4 LSB (the dead band of y_ext in
+  // IirCoreModel.ExtendedFeedbackAndDeadBand), plus 1/2 LSB for the output rounding: 0.75 LSB.
   CoreConfig c;
   c.filter_order = 1;
   c.num_sections = 1;
@@ -127,7 +147,7 @@ TEST(IirCoreFidelity, LimitCycleBoundOfAFirstOrderSection) {
   c.feedback_shift = 2;
   c.acc_width = 32;
   c.rom = {16, 0, 2};
-  EXPECT_NEAR(limit_cycle_bound_lsb(c), 1.0, 1e-9);
+  EXPECT_NEAR(limit_cycle_bound_lsb(c), 0.75, 1e-9);
 }
 
 TEST(IirCoreFidelity, FindsPeriodAndDeadBand) {

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
-// The bit-accurate model on hand-computed cases: rounding, saturation, the feedback shift, the
-// history layout, the accumulator wrap, and the cycle-level behaviour of the pins.
+// The bit-accurate model on hand-computed cases: rounding (twice), saturation (both steps), the
+// extended-precision feedback, the history layout, the accumulator wrap, and the cycle-level
+// behaviour of the pins.
 #include "iir_core.h"
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
+#include <tuple>
 
 #include "filter_json.h"
 #include "iir_mac.h"
@@ -13,8 +16,8 @@
 namespace flange::model {
 namespace {
 
-// One section of order 1, 8-bit samples, 8-bit words: y = round((B0 x + B1 x1 + A1 (y1 << s)) /
-// 2^Fb).
+// One section of order 1, 8-bit samples, 8-bit words, s = Fb - Fa:
+// y_ext = (B0 x + B1 x1 + A1 y_ext1 + 2^(Fa-1)) >>> Fa, y = (y_ext + 2^(s-1)) >>> s.
 CoreConfig tiny(std::int64_t b0, std::int64_t b1, std::int64_t a1, int fb, int fa) {
   CoreConfig c;
   c.name = "tiny";
@@ -36,7 +39,7 @@ std::filesystem::path set_json(const std::string& set) {
 }
 
 TEST(IirCoreModel, RoundsHalfUp) {
-  // B0 = 1 with Fb = 2: y = round(x / 4), ties towards +infinity.
+  // B0 = 1 with Fb = Fa = 2 (s = 0, one rounding): y = round(x / 4), ties towards +infinity.
   IirCore core(tiny(1, 0, 0, 2, 2));
   const std::vector<std::pair<std::int32_t, std::int32_t>> cases = {
       {2, 1}, {-2, 0}, {6, 2}, {-6, -1}, {1, 0}, {3, 1}, {-1, 0}, {-3, -1}, {127, 32}, {-128, -32}};
@@ -63,34 +66,80 @@ TEST(IirCoreModel, SaturatesBothWaysAndFlags) {
   EXPECT_TRUE(core.pins(r.valid_cycle).saturation) << "the flag is sticky";
 }
 
-TEST(IirCoreModel, FeedbackShiftAndDeadBand) {
-  // y[n] = x[n] + 0.5 y[n-1]: B0 = 16 (Q.4), -a1 = 2 (Q.2), so s = 2 and y enters as y << 2.
-  // An impulse of 64 halves each step until rounding half up holds it at 1 LSB: the dead band
-  // 0.5 / (1 - 0.5) = 1 LSB.
+TEST(IirCoreModel, ExtendedFeedbackAndDeadBand) {
+  // y[n] = x[n] + 0.5 y[n-1]: B0 = 16 (Q.4), -a1 = 2 (Q.2), so s = 2: y_ext has 2 more fractional
+  // bits (quarter LSB) and is fed back as it is. An impulse of 64 halves each step until rounding
+  // half up holds y_ext at 1 (the dead band 0.5 / (1 - 0.5) = 1 LSB of y_ext, a quarter of an
+  // output LSB), which the output rounds to 0. (Fed back at 8 bits, y would stick at 1 LSB.)
   IirCore core(tiny(16, 0, 2, 4, 2));
-  const std::vector<std::int32_t> expected = {64, 32, 16, 8, 4, 2, 1, 1, 1, 1};
+  const std::vector<std::int64_t> ext = {256, 128, 64, 32, 16, 8, 4, 2, 1, 1};
+  const std::vector<std::int32_t> expected = {64, 32, 16, 8, 4, 2, 1, 1, 0, 0};
   for (std::size_t n = 0; n < expected.size(); ++n) {
     EXPECT_EQ(core.step(n == 0 ? 64 : 0).sample, expected[n]) << "n = " << n;
+    EXPECT_EQ(core.lr()[2], ext[n]) << "y_ext, n = " << n;  // line 1, age 0
   }
-  // Negative side: -64 halves to -1, then round(-0.5) = 0 ends it.
+  // Negative side: y_ext halves to -1, then round(-0.5) = 0 ends it.
   IirCore neg(tiny(16, 0, 2, 4, 2));
-  const std::vector<std::int32_t> expected_neg = {-64, -32, -16, -8, -4, -2, -1, 0, 0};
+  const std::vector<std::int64_t> ext_neg = {-256, -128, -64, -32, -16, -8, -4, -2, -1, 0, 0};
+  const std::vector<std::int32_t> expected_neg = {-64, -32, -16, -8, -4, -2, -1, 0, 0, 0, 0};
   for (std::size_t n = 0; n < expected_neg.size(); ++n) {
     EXPECT_EQ(neg.step(n == 0 ? -64 : 0).sample, expected_neg[n]) << "n = " << n;
+    EXPECT_EQ(neg.lr()[2], ext_neg[n]) << "y_ext, n = " << n;
   }
 }
 
+TEST(IirCoreModel, OutputIsRoundedFromTheExtendedValue) {
+  // Double rounding: y = round(round(v to Fa) to Fb), not round(v to Fb). B0 = 7 (7/16) with
+  // s = 2: x = 1 gives v = 0.4375 LSB; y_ext = (7 + 2) >>> 2 = 2 (0.5 LSB), y = (2 + 2) >>> 2 = 1,
+  // where rounding v directly would give 0. They differ only for a fraction of v in
+  // [1/2 - 2^-(s+1), 1/2).
+  IirCore core(tiny(7, 0, 0, 4, 2));
+  StepResult r = core.step(1);
+  EXPECT_EQ(core.lr()[2], 2);
+  EXPECT_EQ(r.sample, 1);
+  r = core.step(-1);  // v = -0.4375: y_ext = (-7 + 2) >>> 2 = -2, y = (-2 + 2) >>> 2 = 0
+  EXPECT_EQ(core.lr()[2], -2);
+  EXPECT_EQ(r.sample, 0);
+  r = core.step(3);  // v = 1.3125: y_ext = 23 >>> 2 = 5, y = 7 >>> 2 = 1
+  EXPECT_EQ(core.lr()[2], 5);
+  EXPECT_EQ(r.sample, 1);
+}
+
+TEST(IirCoreModel, SaturatesInEitherRoundingStep) {
+  // B0 = 16 (1.0), B1 = 1 (1/16) with s = 2: y_ext has 10 bits, [-512, 511].
+  const auto run = [](std::int32_t x1, std::int32_t x) {
+    IirCore core(tiny(16, 1, 0, 4, 2));
+    core.step(x1);
+    const StepResult r = core.step(x);
+    return std::make_tuple(core.lr()[2], r.sample, r.saturated);
+  };
+  // 16 * 127 + 5 = 2037: y_ext = 2039 >>> 2 = 509, y = 511 >>> 2 = 127: no clip.
+  EXPECT_EQ(run(5, 127), std::make_tuple(std::int64_t{509}, 127, false));
+  // 16 * 127 + 8 = 2040: y_ext = 510 fits 10 bits, but y = 512 >>> 2 = 128 does not fit 8: the
+  // second step clips to 127 and flags it, while the history keeps 510.
+  EXPECT_EQ(run(8, 127), std::make_tuple(std::int64_t{510}, 127, true));
+  // 16 * 127 + 127 = 2159: y_ext = 540 clips to 511 (and y to 127).
+  EXPECT_EQ(run(127, 127), std::make_tuple(std::int64_t{511}, 127, true));
+  // -2048 - 128 = -2176: y_ext = -544 clips to -512, which rounds to -128 without a clip.
+  EXPECT_EQ(run(-128, -128), std::make_tuple(std::int64_t{-512}, -128, true));
+  // -2048 - 8 = -2056: y_ext = floor(-2054 / 4) = -514 clips to -512.
+  EXPECT_EQ(run(-8, -128), std::make_tuple(std::int64_t{-512}, -128, true));
+  // -2048 + 0 = -2048: y_ext = floor(-2046 / 4) = -512 exactly: no clip anywhere.
+  EXPECT_EQ(run(0, -128), std::make_tuple(std::int64_t{-512}, -128, false));
+}
+
 TEST(IirCoreModel, HistoryLayoutNewestFirst) {
-  // Two sections of order 1; section outputs are exact (B0 = 1.0, no feedback).
-  CoreConfig c = tiny(4, 0, 0, 2, 2);
+  // Two sections of order 1 with s = 1 (Fb = 3, Fa = 2); section outputs are exact (no feedback).
+  CoreConfig c = tiny(8, 0, 0, 3, 2);
   c.num_sections = 2;
   c.filter_order = 2;
-  c.rom = {4, 0, 0, 8, 0, 0};  // section 0: y = x; section 1: y = 2 x
+  c.rom = {8, 0, 0, 16, 0, 0};  // section 0: y = x; section 1: y = 2 x
   IirCore core(c);
-  core.step(3);
-  core.step(5);
-  // Lines: x[n], x[n-1] | y0[n], y0[n-1] | y1[n], y1[n-1].
-  EXPECT_EQ(core.lr(), (std::vector<std::int32_t>{5, 3, 5, 3, 10, 6}));
+  EXPECT_EQ(core.step(3).sample, 6);
+  EXPECT_EQ(core.step(5).sample, 10);
+  // Lines of D + s-bit words: x[n] << s, x[n-1] << s | y0_ext[n], y0_ext[n-1] | y1_ext[n],
+  // y1_ext[n-1]; y_ext is the output with s = 1 more fractional bit.
+  EXPECT_EQ(core.lr(), (std::vector<std::int64_t>{10, 6, 10, 6, 20, 12}));
 }
 
 TEST(IirCoreModel, AccumulatorWrapsLikeThePRegister) {
@@ -217,6 +266,29 @@ TEST(IirCoreModel, StrobeDuringResetIsIgnored) {
   EXPECT_FALSE(core.pins(4).busy);
 }
 
+// The short form of docs/fixed_point.md that heads both the model and the RTL: from the symbol
+// line to the first empty comment line, word for word.
+std::string contract_paragraph(const std::filesystem::path& file) {
+  std::ifstream in(std::filesystem::path(FLANGE_SOURCE_DIR) / file);
+  std::string line, paragraph;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (line.starts_with("// D = SampleWidth")) inside = true;
+    if (inside && line == "//") break;
+    if (inside) paragraph += line + "\n";
+  }
+  return paragraph;
+}
+
+TEST(IirCoreModel, ContractParagraphMatchesTheRtlHeader) {
+  const std::string model = contract_paragraph("model/iir_core.h");
+  const std::string rtl = contract_paragraph("rtl/iir_core.sv");
+  EXPECT_NE(model.find("- Rounding:"), std::string::npos) << model;
+  EXPECT_NE(model.find("- Timing:"), std::string::npos) << model;
+  EXPECT_EQ(model, rtl) << "the fixed-point paragraphs of model/iir_core.h and rtl/iir_core.sv "
+                           "differ; both repeat docs/fixed_point.md";
+}
+
 TEST(IirCoreModel, RejectsIllegalInput) {
   IirCore core(tiny(4, 0, 0, 2, 2));
   EXPECT_THROW(core.step(128), std::out_of_range);
@@ -227,6 +299,8 @@ TEST(IirCoreModel, RejectsIllegalInput) {
   bad.rom.pop_back();
   EXPECT_THROW(IirCore{bad}, std::invalid_argument);
   bad = tiny(200, 0, 0, 2, 2);  // does not fit 8 bits
+  EXPECT_THROW(IirCore{bad}, std::invalid_argument);
+  bad = tiny(4, 0, 0, 2, 0);  // Fa = 0: no rounding constant 2^(Fa-1)
   EXPECT_THROW(IirCore{bad}, std::invalid_argument);
 }
 

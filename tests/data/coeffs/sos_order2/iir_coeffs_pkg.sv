@@ -10,7 +10,7 @@ package iir_coeffs_pkg;
   localparam int CoefWidth = 18;  // ROM word width
   localparam int CoefFracBits = 16;  // fractional bits of the negated a words
   localparam int NumFracBits = 20;  // fractional bits of the b words
-  localparam int FeedbackShift = 4;  // NumFracBits - CoefFracBits, on the A port
+  localparam int FeedbackShift = 4;  // NumFracBits - CoefFracBits: extra fraction bits of y_ext
   localparam int AccWidth = 48;  // accumulator width
   localparam int RomDepth = 5;  // NumSections * (2 * SectionOrder + 1)
 endpackage
