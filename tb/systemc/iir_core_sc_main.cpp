@@ -69,9 +69,9 @@ int run_bench(const BenchOptions& options, const std::string& reproduce) {
   const flange::tb::BuiltCoeffSet& set = flange::tb::built_coeff_set();
   const flange::model::CoreConfig config = flange::model::load_core_config(set.filter_json);
   const flange::model::FloatDesign design = flange::model::load_float_design(set.filter_json);
-  const flange::model::IirCore reference_core(config);
-  const auto cycles_per_sample = static_cast<std::uint64_t>(reference_core.cycles_per_sample());
-  const auto latency = static_cast<std::uint64_t>(reference_core.latency_cycles());
+  const flange::model::IirCore timing_model(config);  // only asked for its timing
+  const auto cycles_per_sample = static_cast<std::uint64_t>(timing_model.cycles_per_sample());
+  const auto latency = static_cast<std::uint64_t>(timing_model.latency_cycles());
 
   const auto true_period_cycles = static_cast<std::uint64_t>(std::llround(kClockHz / design.fs_hz));
   const std::uint64_t period = options.true_period ? true_period_cycles : options.period_cycles;
@@ -170,18 +170,23 @@ int run_bench(const BenchOptions& options, const std::string& reproduce) {
 
   const sc::ScoreboardSummary summary = scoreboard.finish(sc_core::sc_time_stamp());
   const bool rtl_assertion = Verilated::threadContextp()->gotError();
-  bool failed = summary.mismatches > 0 || rtl_assertion || !source.done();
-  if (summary.outputs_checked != schedule.samples.size()) failed = true;
-  if (summary.min_latency_cycles != latency || summary.max_latency_cycles != latency) {
-    failed = true;
-  }
-
+  std::vector<std::string> failures;
   if (!summary.first_mismatch.empty()) {
-    std::cerr << "systemc: first mismatch: " << summary.first_mismatch << "\n";
+    failures.push_back("first mismatch: " + summary.first_mismatch);
   }
-  if (rtl_assertion) std::cerr << "systemc: an RTL assertion fired (see above)\n";
-  if (!source.done()) std::cerr << "systemc: the run ended before every sample was strobed\n";
-  if (failed) std::cerr << "systemc: reproduce with: " << reproduce << "\n";
+  if (rtl_assertion) failures.push_back("an RTL assertion fired (see above)");
+  if (!source.done()) failures.push_back("the run ended before every sample was strobed");
+  if (summary.outputs_checked != schedule.samples.size()) {
+    failures.push_back(
+        fmt::format("{} outputs for {} samples", summary.outputs_checked, schedule.samples.size()));
+  }
+  if (summary.min_latency_cycles != latency || summary.max_latency_cycles != latency) {
+    failures.push_back(fmt::format("latency {}..{} cycles, the model's is {}",
+                                   summary.min_latency_cycles, summary.max_latency_cycles,
+                                   latency));
+  }
+  for (const std::string& failure : failures) std::cerr << "systemc: " << failure << "\n";
+  if (!failures.empty()) std::cerr << "systemc: reproduce with: " << reproduce << "\n";
 
   const std::string latency_text =
       summary.min_latency_cycles == summary.max_latency_cycles
@@ -194,7 +199,7 @@ int run_bench(const BenchOptions& options, const std::string& reproduce) {
       set.name, summary.outputs_checked, summary.mismatches, latency_text, latency,
       format_sim_time(sc_core::sc_time_stamp().to_seconds()), period, true_period_cycles,
       design.fs_hz, compression, wall_s);
-  return failed ? 1 : 0;
+  return failures.empty() ? 0 : 1;
 }
 
 }  // namespace
