@@ -4,82 +4,13 @@
 #include "iir_core_dut.h"
 
 #include <Viir_core.h>
-#include <verilated.h>
-#include <verilated_fst_c.h>
 
-#include <type_traits>
+#include "verilated_dut.h"
 
 namespace flange::tb {
-namespace {
-
-class VerilatedDut final : public Dut {
- public:
-  explicit VerilatedDut(const std::filesystem::path& fst_path)
-      : context_(std::make_unique<VerilatedContext>()) {
-    // An RTL assertion is a test failure, reported by the harness, not a process abort.
-    context_->fatalOnError(false);
-    if (!fst_path.empty()) context_->traceEverOn(true);
-    dut = std::make_unique<Viir_core>(context_.get(), "dut");
-    if (!fst_path.empty()) {
-      std::filesystem::create_directories(fst_path.parent_path());
-      trace_ = std::make_unique<VerilatedFstC>();
-      dut->trace(trace_.get(), 99);
-      trace_->open(fst_path.string().c_str());
-    }
-    dut->clk_i = 0;
-    dut->rst_ni = 0;
-    dut->sample_valid_i = 0;
-    dut->flag_clear_i = 0;
-    dut->eval();
-    dump();
-  }
-
-  ~VerilatedDut() override {
-    if (trace_) trace_->close();
-    dut->final();
-  }
-
-  DutOutputs outputs() override {
-    DutOutputs out;
-    out.sample_bits = static_cast<std::uint32_t>(dut->sample_o);
-    out.sample_valid = dut->sample_valid_o != 0;
-    out.busy = dut->busy_o != 0;
-    out.overrun = dut->overrun_o != 0;
-    out.saturation = dut->saturation_o != 0;
-    return out;
-  }
-
-  void clock(const DutInputs& in) override {
-    dut->rst_ni = in.rst_n ? 1 : 0;
-    dut->sample_i = static_cast<std::remove_reference_t<decltype(dut->sample_i)>>(in.sample_bits);
-    dut->sample_valid_i = in.sample_valid ? 1 : 0;
-    dut->flag_clear_i = in.flag_clear ? 1 : 0;
-    dut->eval();
-    dump();
-    dut->clk_i = 1;
-    dut->eval();
-    dump();
-    dut->clk_i = 0;
-    dut->eval();
-  }
-
-  bool assertion_failed() const override { return context_->gotError(); }
-
- private:
-  void dump() {
-    context_->timeInc(1);
-    if (trace_) trace_->dump(context_->time());
-  }
-
-  std::unique_ptr<VerilatedContext> context_;
-  std::unique_ptr<Viir_core> dut;
-  std::unique_ptr<VerilatedFstC> trace_;
-};
-
-}  // namespace
 
 std::unique_ptr<Dut> make_dut(const std::filesystem::path& fst_path) {
-  return std::make_unique<VerilatedDut>(fst_path);
+  return std::make_unique<VerilatedDut<Viir_core>>(fst_path);
 }
 
 }  // namespace flange::tb

@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: MIT
+// The SystemC bench of the IIR core at its real timing: a 100 MHz sc_clock, a sample source that
+// strobes EN once per sample period (the sensor's, or a compressed one), the Verilated core
+// (`dut`), an output monitor and a scoreboard that checks every output against the bit-accurate
+// model. Built once per coefficient set (tb/systemc/CMakeLists.txt); docs/systemc.md.
+//
+// Prints one line on stdout:
+//   systemc: SET: N samples, M mismatches, latency L cycles, T simulated at 100 MHz, sample
+//   period P cycles (true period Q cycles at FS Hz: time compressed Fx), W s wall
+// and exits 0, 1 on a mismatch or an RTL assertion, 2 on a bad argument.
+#include <Viir_core.h>
+#include <fmt/format.h>
+#include <verilated.h>
+#include <verilated_fst_sc.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <systemc>
+#include <vector>
+
+#include "cosim_run.h"
+#include "iir_core_dut.h"
+#include "output_monitor.h"
+#include "sample_source.h"
+#include "scoreboard.h"
+
+namespace {
+
+namespace sc = flange::tb::sc;
+
+constexpr double kClockHz = 100e6;  // the Basys-3 oscillator
+constexpr double kClockPeriodNs = 1e9 / kClockHz;
+// After the last output is due: a few more cycles, so that an output one or two cycles late is
+// still seen (and reported as late rather than missing).
+constexpr std::uint64_t kTailCycles = 4;
+
+struct BenchOptions {
+  std::size_t samples = 1000;
+  std::uint64_t period_cycles = 1000;  // clock cycles per sample
+  bool true_period = false;            // use round(100 MHz / fs) instead of period_cycles
+  std::string stimulus = "random";
+  std::uint64_t seed = 1;
+  std::filesystem::path trace;  // FST file, empty for none
+  std::string plant_fault = "none";
+  std::uint64_t plant_at = 0;
+};
+
+std::string reproduce_command(int argc, char* argv[]) {
+  std::string command;
+  for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+  return command;
+}
+
+std::string format_sim_time(double seconds) {
+  if (seconds >= 1.0) return fmt::format("{:.3f} s", seconds);
+  if (seconds >= 1e-3) return fmt::format("{:.3f} ms", seconds * 1e3);
+  return fmt::format("{:.3f} us", seconds * 1e6);
+}
+
+int run_bench(const BenchOptions& options, const std::string& reproduce) {
+  const flange::tb::BuiltCoeffSet& set = flange::tb::built_coeff_set();
+  const flange::model::CoreConfig config = flange::model::load_core_config(set.filter_json);
+  const flange::model::FloatDesign design = flange::model::load_float_design(set.filter_json);
+  const flange::model::IirCore timing_model(config);  // only asked for its timing
+  const auto cycles_per_sample = static_cast<std::uint64_t>(timing_model.cycles_per_sample());
+  const auto latency = static_cast<std::uint64_t>(timing_model.latency_cycles());
+
+  const auto true_period_cycles = static_cast<std::uint64_t>(std::llround(kClockHz / design.fs_hz));
+  const std::uint64_t period = options.true_period ? true_period_cycles : options.period_cycles;
+  if (period < cycles_per_sample) {
+    throw std::invalid_argument(
+        fmt::format("--period-cycles: must be at least the core's {} cycles per sample, got {}",
+                    cycles_per_sample, period));
+  }
+  const double compression = static_cast<double>(true_period_cycles) / static_cast<double>(period);
+
+  flange::tb::CosimOptions stimulus_options;
+  stimulus_options.coeffs = set.filter_json;
+  stimulus_options.samples = options.samples;
+  stimulus_options.seed = options.seed;
+  stimulus_options.stimulus = options.stimulus;
+  sc::SampleSchedule schedule;
+  schedule.samples = flange::tb::cosim_samples(stimulus_options, config, design);
+  schedule.sample_width = config.sample_width;
+  schedule.period_cycles = period;
+
+  sc::PlantedFault fault;
+  if (options.plant_fault == "value") fault.kind = sc::PlantedFault::Kind::kWrongValue;
+  if (options.plant_fault == "late") fault.kind = sc::PlantedFault::Kind::kOneCycleLate;
+  fault.output_index = options.plant_at;
+
+  // An RTL assertion is counted and reported here, not a process abort.
+  Verilated::threadContextp()->fatalOnError(false);
+  if (!options.trace.empty()) Verilated::traceEverOn(true);
+
+  const sc_core::sc_time clock_period(kClockPeriodNs, sc_core::SC_NS);
+  sc_core::sc_clock clk("clk", clock_period);  // first rising edge at time 0
+  sc_core::sc_signal<bool> rst_n("rst_n", false);
+  sc_core::sc_signal<std::uint32_t> sample_in("sample_in");
+  sc_core::sc_signal<bool> sample_valid_in("sample_valid_in", false);
+  sc_core::sc_signal<bool> flag_clear("flag_clear", false);  // never raised: flags stay sticky
+  sc_core::sc_signal<std::uint32_t> sample_out("sample_out");
+  sc_core::sc_signal<bool> sample_valid_out("sample_valid_out");
+  sc_core::sc_signal<bool> busy("busy");
+  sc_core::sc_signal<bool> overrun("overrun");
+  sc_core::sc_signal<bool> saturation("saturation");
+  // Deep enough for a sample period: the scoreboard empties both every delta cycle.
+  sc_core::sc_fifo<sc::InputRecord> applied("applied", 16);
+  sc_core::sc_fifo<sc::OutputRecord> observed("observed", 16);
+
+  sc::SampleSource source("source", schedule);
+  source.clk(clk);
+  source.rst_n(rst_n);
+  source.sample(sample_in);
+  source.sample_valid(sample_valid_in);
+  source.applied(applied);
+
+  const auto dut = std::make_unique<Viir_core>("dut");
+  dut->clk_i(clk);
+  dut->rst_ni(rst_n);
+  dut->sample_i(sample_in);
+  dut->sample_valid_i(sample_valid_in);
+  dut->flag_clear_i(flag_clear);
+  dut->sample_o(sample_out);
+  dut->sample_valid_o(sample_valid_out);
+  dut->busy_o(busy);
+  dut->overrun_o(overrun);
+  dut->saturation_o(saturation);
+
+  sc::OutputMonitor monitor("monitor", config.sample_width, clock_period, fault);
+  monitor.clk(clk);
+  monitor.sample(sample_out);
+  monitor.sample_valid(sample_valid_out);
+  monitor.busy(busy);
+  monitor.overrun(overrun);
+  monitor.saturation(saturation);
+  monitor.observed(observed);
+
+  sc::Scoreboard scoreboard("scoreboard", config, clock_period);
+  scoreboard.applied(applied);
+  scoreboard.observed(observed);
+
+  sc_core::sc_start(sc_core::SC_ZERO_TIME);  // elaborate: a trace can only open after it
+  std::unique_ptr<VerilatedFstSc> trace;
+  if (!options.trace.empty()) {
+    if (options.trace.has_parent_path()) {
+      std::filesystem::create_directories(options.trace.parent_path());
+    }
+    trace = std::make_unique<VerilatedFstSc>();
+    dut->trace(trace.get(), 99);
+    trace->open(options.trace.string().c_str());
+  }
+
+  const std::uint64_t end_cycle = schedule.last_strobe_cycle() + latency + kTailCycles;
+  const sc_core::sc_time end = clock_period * static_cast<double>(end_cycle);
+  const auto wall_start = std::chrono::steady_clock::now();
+  sc_core::sc_start(end - sc_core::sc_time_stamp());
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  dut->final();
+  if (trace) trace->close();
+
+  const sc::ScoreboardSummary summary = scoreboard.finish(sc_core::sc_time_stamp());
+  const bool rtl_assertion = Verilated::threadContextp()->gotError();
+  std::vector<std::string> failures;
+  if (!summary.first_mismatch.empty()) {
+    failures.push_back("first mismatch: " + summary.first_mismatch);
+  }
+  if (rtl_assertion) failures.push_back("an RTL assertion fired (see above)");
+  if (!source.done()) failures.push_back("the run ended before every sample was strobed");
+  if (summary.outputs_checked != schedule.samples.size()) {
+    failures.push_back(
+        fmt::format("{} outputs for {} samples", summary.outputs_checked, schedule.samples.size()));
+  }
+  if (summary.min_latency_cycles != latency || summary.max_latency_cycles != latency) {
+    failures.push_back(fmt::format("latency {}..{} cycles, the model's is {}",
+                                   summary.min_latency_cycles, summary.max_latency_cycles,
+                                   latency));
+  }
+  for (const std::string& failure : failures) std::cerr << "systemc: " << failure << "\n";
+  if (!failures.empty()) std::cerr << "systemc: reproduce with: " << reproduce << "\n";
+
+  const std::string latency_text =
+      summary.min_latency_cycles == summary.max_latency_cycles
+          ? fmt::format("{}", summary.min_latency_cycles)
+          : fmt::format("{}..{}", summary.min_latency_cycles, summary.max_latency_cycles);
+  std::cout << fmt::format(
+      "systemc: {}: {} samples, {} mismatches, latency {} cycles (model {}), {} simulated at "
+      "100 MHz, sample period {} cycles (true period {} cycles at {:g} Hz: time compressed "
+      "{:.0f}x), {:.2f} s wall\n",
+      set.name, summary.outputs_checked, summary.mismatches, latency_text, latency,
+      format_sim_time(sc_core::sc_time_stamp().to_seconds()), period, true_period_cycles,
+      design.fs_hz, compression, wall_s);
+  return failures.empty() ? 0 : 1;
+}
+
+}  // namespace
+
+int sc_main(int argc, char* argv[]) {
+  BenchOptions options;
+  CLI::App app{
+      "SystemC bench of iir_core at its real timing (100 MHz clock, EN at the sample period), "
+      "every output checked against the bit-accurate model"};
+  app.add_option("--samples", options.samples, "samples to strobe")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100'000'000}));
+  auto* period = app.add_option("--period-cycles", options.period_cycles,
+                                "clock cycles per sample (a compressed sample period); at least "
+                                "the core's cycles per sample")
+                     ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{2'147'483'647}));
+  app.add_flag("--true-period", options.true_period,
+               "strobe at the set's real sample rate: round(100 MHz / fs) cycles per sample")
+      ->excludes(period);
+  app.add_option("--stimulus", options.stimulus,
+                 "random|fullscale|sweep|step|impulse|FILE.csv (as flange cosim)");
+  app.add_option("--seed", options.seed, "seed of the random stimuli");
+  app.add_option("--trace", options.trace, "FST waveform file (logs/ is git-ignored)");
+  app.add_option("--plant-fault", options.plant_fault,
+                 "bench self-test: the monitor reports one output wrong (value) or a cycle late "
+                 "(late); the run must then fail")
+      ->check(CLI::IsMember({"none", "value", "late"}));
+  app.add_option("--plant-at", options.plant_at, "index of the output that gets the fault");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return run_bench(options, reproduce_command(argc, argv));
+  } catch (const flange::model::FilterJsonError& e) {
+    std::cerr << "systemc: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "systemc: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "systemc: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+// Our own main instead of libsystemc's: the kernel prints its banner on stderr when the simulation
+// starts unless SC_COPYRIGHT_MESSAGE=DISABLE, and the bench's output is one summary line.
+int main(int argc, char* argv[]) {
+  setenv("SC_COPYRIGHT_MESSAGE", "DISABLE", /*overwrite=*/0);
+  return sc_core::sc_elab_and_sim(argc, argv);
+}
