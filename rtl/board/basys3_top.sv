@@ -265,6 +265,8 @@ module basys3_top #(
   logic [HeartbeatBit:0] beat_q, beat_d;
 
   clearance_display u_clearance (
+    .clk_i,
+    .rst_ni  (rst_n),
     .word_i  (out_q),
     .digits_o(clearance_digits),
     .dp_o    (clearance_dp)
