@@ -127,6 +127,10 @@ TEST(Basys3TopDisplay, ExpectedTextOfTheEnds) {
   EXPECT_EQ(expected_display(-32768), "-2.00");
   EXPECT_EQ(expected_display(32767), "14.00");
   EXPECT_EQ(expected_display(-29000), "-1.08");
+  // Ties: 25 w = 512 (mod 1024), i.e. w = 512 (mod 1024): x.xx5 mm exactly, rounded up.
+  EXPECT_EQ(expected_display(512), " 6.13");     // 6.125 mm
+  EXPECT_EQ(expected_display(-512), " 5.88");    // 5.875 mm
+  EXPECT_EQ(expected_display(-31232), "-1.62");  // -1.625 mm: half up is towards +infinity
 }
 
 TEST(Basys3TopLink, Crc8IsTheSmbusCrc) {
@@ -302,7 +306,8 @@ TEST_F(Basys3Top, DisplayRoundsHalfUpForEveryWordClass) {
   bench_->run(4);
   std::mt19937 rng(3);
   std::uniform_int_distribution<int> any(-32768, 32767);
-  std::vector<std::int16_t> words = {-32768, -32767, -32000, -1, 0, 1, 32767, 20, -20, 2068};
+  std::vector<std::int16_t> words = {-32768, -32767, -32000, -1,   0,      1,    32767,
+                                     20,     -20,    512,    -512, -31232, 1536, 31232};
   for (int i = 0; i < 20; ++i) words.push_back(static_cast<std::int16_t>(any(rng)));
   std::uint8_t seq = 0;
   for (std::int16_t w : words) {
