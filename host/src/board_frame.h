@@ -13,6 +13,8 @@
 namespace flange::host::board {
 
 inline constexpr std::uint8_t kSync = 0xA5;
+inline constexpr std::uint8_t kCommandSync = 0x5A;      // a command frame instead of a sample
+inline constexpr std::uint16_t kCommandReset = 0x0001;  // restart the session: reset the filter
 inline constexpr std::size_t kRequestBytes = 5;
 inline constexpr std::size_t kReplyBytes = 6;
 
@@ -22,6 +24,7 @@ inline constexpr std::uint8_t kStatusSaturation = 1u << 1;  // the core clipped 
 inline constexpr std::uint8_t kStatusLinkError = 1u << 2;   // bytes discarded since the last reply
 inline constexpr std::uint8_t kStatusBypass = 1u << 3;      // OUT is the unfiltered input (sw[0])
 inline constexpr std::uint8_t kStatusRetransmit = 1u << 4;  // a repeat of the last reply
+inline constexpr std::uint8_t kStatusSessionReset = 1u << 5;  // answers a reset command
 
 inline std::uint8_t crc8(std::span<const std::uint8_t> bytes) {
   std::uint8_t crc = 0;
@@ -41,6 +44,14 @@ inline std::array<std::uint8_t, kRequestBytes> encode_request(std::uint8_t seq,
   std::array<std::uint8_t, kRequestBytes> frame{kSync, seq, static_cast<std::uint8_t>(bits >> 8),
                                                 static_cast<std::uint8_t>(bits & 0xFFu), 0};
   frame[4] = crc8(std::span<const std::uint8_t>(frame).subspan(1, 3));
+  return frame;
+}
+
+// A command frame: CMD_SYNC, SEQ, COMMAND_HI, COMMAND_LO, CRC-8 over the three middle bytes.
+inline std::array<std::uint8_t, kRequestBytes> encode_command(std::uint8_t seq,
+                                                              std::uint16_t command) {
+  auto frame = encode_request(seq, static_cast<std::int16_t>(command));
+  frame[0] = kCommandSync;
   return frame;
 }
 

@@ -39,7 +39,21 @@ class BoardLink {
 
   // The reply to (seq, word), sending again on a timeout; throws when the board stays silent.
   board::Reply exchange(std::uint8_t seq, std::int16_t word, StreamCounts& counts) {
-    const auto request = board::encode_request(seq, word);
+    return exchange_frame(board::encode_request(seq, word), seq, counts);
+  }
+  // Restarts the session: the board resets its filter and forgets the last SEQ.
+  void reset_session(std::uint8_t seq, StreamCounts& counts) {
+    const board::Reply reply =
+        exchange_frame(board::encode_command(seq, board::kCommandReset), seq, counts);
+    if (!(reply.status & board::kStatusSessionReset)) {
+      throw std::runtime_error("the board on " + port_.device() +
+                               " did not confirm the session reset (an older bitstream?)");
+    }
+  }
+
+ private:
+  board::Reply exchange_frame(const std::array<std::uint8_t, board::kRequestBytes>& request,
+                              std::uint8_t seq, StreamCounts& counts) {
     const std::chrono::milliseconds timeout(options_.timeout_ms);
     for (int attempt = 0; attempt <= options_.retries; ++attempt) {
       if (attempt > 0) ++counts.resent;
@@ -116,7 +130,9 @@ int run_stream_command(const StreamOptions& options, std::ostream& out, std::ost
     BoardLink link(port, options);
     const SampleScaling scaling;
     csv << "t_s,clearance_raw_mm,word_in,word_out,clearance_filt_mm,status\n";
-    std::uint8_t seq = 0;
+    // A fresh filter, as `flange run` starts with: the outputs then equal the model's.
+    link.reset_session(0, counts);
+    std::uint8_t seq = 1;
     while (std::optional<RecordingRow> row = reader.next()) {
       const double raw_mm = calibration.estimate(row->voltage_v, row->temp_c).clearance_mm;
       bool clipped = false;

@@ -2,8 +2,10 @@
 // `flange stream`: a recording through the Basys-3 board over its serial port. Each row becomes a
 // clearance (the calibration's regression, as `flange run` does), a Q1.15 word
 // (sample_scaling.h), one request frame; the board's reply carries the filtered word
-// (docs/board.md). Stop-and-wait: a request is sent again (same SEQ) when its reply does not come
-// within the timeout; the board answers a repeated SEQ without filtering it twice.
+// (docs/board.md). The session starts with a reset command: the board's filter starts from zero
+// history, as the model does in `flange run`. Stop-and-wait: a request is sent again (same SEQ)
+// when its reply does not come within the timeout; the board answers a repeated SEQ without
+// filtering it twice.
 #pragma once
 
 #include <CLI/CLI.hpp>

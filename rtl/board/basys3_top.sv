@@ -8,6 +8,8 @@
 // busy is dropped like the core drops an EN while busy (docs/core.md): it never enters the filter,
 // gets no reply, and the next reply's STATUS has the overrun bit. A frame that repeats the last
 // accepted SEQ is a retransmission: its stored reply is sent again and the filter does not run.
+// A command frame (CMD_SYNC 0x5A) with command 0x0001 restarts the session: the core is reset
+// (history, flags), the last SEQ forgotten, and the reply has STATUS bit 5 (session reset).
 //
 // Controls: btnC resets everything; sw[0] = 1 bypasses the filter (the reply is the input sample,
 // the filter history is left alone); sw[1] = 1 shows the link-error count (hex) instead of the
@@ -44,6 +46,8 @@ module basys3_top #(
   localparam int StLinkError  = 2;
   localparam int StBypass     = 3;
   localparam int StRetransmit = 4;
+  localparam int StSessionReset = 5;
+  localparam logic [15:0] CMD_RESET = 16'h0001;
 
   // Reset: a power-on count (registers start at 0 in the FPGA), then the debounced button //
   logic [3:0] por_q, por_d;
@@ -75,7 +79,7 @@ module basys3_top #(
   logic        rx_valid, rx_frame_err;
   logic [7:0]  frame_seq;
   logic [15:0] frame_sample;
-  logic        frame_valid, frame_discard;
+  logic        frame_valid, frame_command, frame_discard;
   logic [7:0]  tx_byte;
   logic        tx_valid, tx_ready;
 
@@ -96,17 +100,23 @@ module basys3_top #(
     .seq_o        (frame_seq),
     .sample_o     (frame_sample),
     .frame_valid_o(frame_valid),
+    .command_o    (frame_command),
     .discard_o    (frame_discard)
   );
 
   // The filter //
   logic signed [15:0] core_out;
   logic               core_valid, core_busy, core_overrun, core_saturation;
-  logic               core_strobe, core_clear;
+  logic               core_strobe, core_clear, core_reset;
+  logic               core_rst_n_q;
+
+  // The core's reset from a flip-flop: a reset decoded from a frame straight into the core's
+  // synchronous resets costs about 250 LUTs (Yosys cannot use the plain FDRE reset pin then).
+  always_ff @(posedge clk_i) core_rst_n_q <= rst_n && !core_reset;
 
   iir_core #(.RomFile(RomFile)) u_core (
     .clk_i,
-    .rst_ni        (rst_n),
+    .rst_ni        (core_rst_n_q),
     .sample_i      (frame_sample),
     .sample_valid_i(core_strobe),
     .sample_o      (core_out),
@@ -131,6 +141,7 @@ module basys3_top #(
   logic [2:0]  sticky_q, sticky_d;    // LEDs: overrun, saturation, link error since reset
   logic [15:0] err_count_q, err_count_d;
   logic        send, send_q, retransmit_q, retransmit_d;
+  logic        session_reset_q, session_reset_d;  // the reply being formed answers a reset
   logic        enc_busy;
   logic        overrun_event, link_err_event;
 
@@ -145,16 +156,31 @@ module basys3_top #(
     status_d     = status_q;
     bypass_d     = bypass_q;
     retransmit_d = retransmit_q;
+    session_reset_d = session_reset_q;
     overrun_d    = overrun_q || overrun_event;
     link_err_d   = link_err_q || link_err_event;
     sticky_d     = sticky_q;
     err_count_d  = err_count_q + {15'd0, link_err_event && err_count_q != 16'hffff};
     core_strobe  = 1'b0;
     core_clear   = 1'b0;
+    core_reset   = 1'b0;
     send         = 1'b0;
     unique case (state_q)
       StIdle: begin
-        if (frame_valid) begin
+        if (frame_valid && frame_command) begin
+          // Unknown commands are ignored (no reply): only a reset is defined.
+          if (frame_sample == CMD_RESET) begin
+            core_reset      = 1'b1;  // the core is idle with zero history from the next cycle
+            seq_d           = frame_seq;
+            have_seq_d      = 1'b0;  // the next sample frame is new whatever its SEQ
+            out_d           = '0;
+            bypass_d        = 1'b0;
+            retransmit_d    = 1'b0;
+            session_reset_d = 1'b1;
+            state_d         = StReply;
+          end
+        end else if (frame_valid) begin
+          session_reset_d = 1'b0;
           if (have_seq_q && frame_seq == seq_q) begin
             retransmit_d = 1'b1;  // the reply of this SEQ went missing: send it again
             state_d      = StReply;
@@ -190,6 +216,7 @@ module basys3_top #(
           status_d[StSaturation] = core_saturation;
           status_d[StLinkError]  = link_err_q || link_err_event;
           status_d[StBypass]     = bypass_q;
+          status_d[StSessionReset] = session_reset_q;
           overrun_d              = 1'b0;
           link_err_d             = 1'b0;
           core_clear             = 1'b1;  // a core flag event at this edge survives the clear
@@ -212,6 +239,7 @@ module basys3_top #(
       status_q     <= '0;
       bypass_q     <= 1'b0;
       retransmit_q <= 1'b0;
+      session_reset_q <= 1'b0;
       overrun_q    <= 1'b0;
       link_err_q   <= 1'b0;
       sticky_q     <= '0;
@@ -224,6 +252,7 @@ module basys3_top #(
       status_q     <= status_d;
       bypass_q     <= bypass_d;
       retransmit_q <= retransmit_d;
+      session_reset_q <= session_reset_d;
       overrun_q    <= overrun_d;
       link_err_q   <= link_err_d;
       sticky_q     <= sticky_d;

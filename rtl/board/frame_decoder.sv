@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Host -> board frame decoder: a sliding window over the last five received bytes, accepted when
 // it reads SYNC, SEQ, SAMPLE_HI, SAMPLE_LO, CRC-8(SEQ, SAMPLE_HI, SAMPLE_LO) (docs/board.md).
+// A command frame has CMD_SYNC in place of SYNC and a 16-bit command in place of the sample.
 //
 // The window is checked after every byte, so the decoder resynchronises on the first intact
 // frame after a lost, extra or corrupted byte. An accepted frame empties the window (its bytes
@@ -16,10 +17,12 @@ module frame_decoder (
   output logic [7:0]  seq_o,         // valid with frame_valid_o
   output logic [15:0] sample_o,      // valid with frame_valid_o
   output logic        frame_valid_o, // one cycle per accepted frame
+  output logic        command_o,     // with frame_valid_o: a command frame (sample_o: the command)
   output logic        discard_o      // one cycle per discarded byte
 );
 
-  localparam logic [7:0] SYNC = 8'hA5;
+  localparam logic [7:0] SYNC     = 8'hA5;
+  localparam logic [7:0] CMD_SYNC = 8'h5A;
   localparam int FrameBytes = 5;
 
   // window_q[39:32] is the oldest byte, window_q[7:0] the newest.
@@ -35,8 +38,8 @@ module frame_decoder (
     .crc_o (crc)
   );
 
-  assign match = fresh_q && fill_q == 3'(FrameBytes) && window_q[39:32] == SYNC &&
-                 window_q[7:0] == crc;
+  assign match = fresh_q && fill_q == 3'(FrameBytes) &&
+                 (window_q[39:32] == SYNC || window_q[39:32] == CMD_SYNC) && window_q[7:0] == crc;
 
   always_comb begin
     window_d  = window_q;
@@ -70,6 +73,7 @@ module frame_decoder (
   assign seq_o         = window_q[31:24];
   assign sample_o      = window_q[23:8];
   assign frame_valid_o = match;
+  assign command_o     = window_q[39:32] == CMD_SYNC;
   assign discard_o     = discard_q;
 
 `ifndef SYNTHESIS

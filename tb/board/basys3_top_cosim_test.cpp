@@ -332,6 +332,29 @@ TEST_F(Basys3Top, CentreButtonResetsFilterFlagsAndDisplay) {
   for (int n = 20; n < 30; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(9.0));
 }
 
+TEST_F(Basys3Top, SessionResetCommandRestartsTheFilter) {
+  for (int n = 0; n < 30; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(9.5));
+  // The reset command with the SEQ of the last sample: a command, never a retransmission.
+  const auto cmd = frame::encode_command(29, frame::kCommandReset);
+  const std::vector<frame::Reply> got = exchange({cmd.begin(), cmd.end()});
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].seq, 29);
+  EXPECT_EQ(got[0].sample, 0);
+  EXPECT_EQ(got[0].status, frame::kStatusSessionReset);
+  expect_display_shows(0);
+  // A fresh model from here; SEQ 29 again is a new sample after the reset.
+  model_ = std::make_unique<model::IirCore>(
+      model::load_core_config(FLANGE_SOURCE_DIR "/coeffs/measurement_sos/filter.json"));
+  for (int n = 29; n < 40; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(7.0));
+  // An unknown command, or a reset with a bad CRC, is not answered and changes nothing.
+  auto unknown = frame::encode_command(40, 0x1234);
+  EXPECT_TRUE(exchange({unknown.begin(), unknown.end()}).empty());
+  auto damaged = frame::encode_command(41, frame::kCommandReset);
+  damaged[3] ^= 0x01;
+  EXPECT_TRUE(exchange({damaged.begin(), damaged.end()}).empty());
+  expect_filtered(42, clearance_word(7.0), frame::kStatusLinkError);
+}
+
 TEST_F(Basys3Top, HeartbeatBlinks) {
   int toggles = 0;
   bool last = bench_->leds() & kLedHeartbeat;

@@ -192,6 +192,17 @@ TEST_F(BoardStream, RecordingThroughThePtyMatchesTheModel) {
   EXPECT_FALSE(board.assertion_failed());
 }
 
+TEST_F(BoardStream, SecondSessionStartsFromAFreshFilter) {
+  // Without the session reset the second run would continue the first run's filter history
+  // (and its first SEQ could be taken for a retransmission).
+  Pty pty;
+  PtyBoard board(pty);
+  ASSERT_EQ(run(args(pty, "first.csv")).status, 0);
+  const Outcome r = run(args(pty, "second.csv"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(expect_matches_model("second.csv"), 361u);
+}
+
 TEST_F(BoardStream, NoisyCableIsRecoveredBitExact) {
   Pty pty;
   // Flip a bit in one request, drop a byte of another: both get no reply, the host resends.
