@@ -19,6 +19,10 @@ module uart_rx #(
   localparam logic [CntWidth-1:0] FULL_BIT = CntWidth'(ClksPerBit - 1);
   localparam logic [CntWidth-1:0] HALF_BIT = CntWidth'(ClksPerBit / 2 - 1);
 
+  if (ClksPerBit < 4) begin : g_bad_clks_per_bit
+    $error("uart_rx: ClksPerBit must be at least 4");
+  end
+
   typedef enum logic [1:0] {StIdle, StStart, StData, StStop} state_e;
 
   // Two flip-flops against metastability (the line is asynchronous to clk_i).
