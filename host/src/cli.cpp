@@ -11,6 +11,8 @@
 #include "design_command.h"
 #include "run_command.h"
 #include "simulate_command.h"
+#include "stream_command.h"
+#include "synth_command.h"
 
 namespace flange::host {
 
@@ -32,6 +34,10 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* simulate = sim::add_simulate_command(app, simulate_options);
   CosimCommandOptions cosim_options;
   CLI::App* cosim = add_cosim_command(app, cosim_options);
+  SynthOptions synth_options;
+  CLI::App* synth = add_synth_command(app, synth_options);
+  StreamOptions stream_options;
+  CLI::App* stream = add_stream_command(app, stream_options);
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
@@ -54,6 +60,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
     if (simulate->parsed()) return sim::run_simulate_command(simulate_options, out, err);
     if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
+    if (synth->parsed()) return run_synth_command(synth_options, out, err);
+    if (stream->parsed()) return run_stream_command(stream_options, out, err);
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
     return kExitFailure;

@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: MIT
+#include "synth_command.h"
+
+#include <fmt/format.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "cli.h"
+
+namespace flange::host {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The board sources, in dependency order (rtl/board/, docs/board.md).
+const char* const kBoardSources[] = {
+    "crc8.sv",          "uart_rx.sv",         "uart_tx.sv",
+    "frame_decoder.sv", "frame_encoder.sv",   "clearance_display.sv",
+    "seven_seg.sv",     "button_debounce.sv", "basys3_top.sv"};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+struct YosysRun {
+  Utilisation utilisation;
+  std::string script_path;
+  double seconds = 0;
+};
+
+// One Yosys run: read, synth_xilinx, stat, then ltp on a copy without sequential cells.
+YosysRun run_yosys(const SynthOptions& options, const fs::path& root, const fs::path& set,
+                   const std::string& top, const fs::path& work, std::ostream& err) {
+  const fs::path rtl = root / "rtl";
+  std::string sources = (rtl / "iir_mac.sv").string() + " " + (rtl / "iir_core.sv").string();
+  if (top != "iir_core") {
+    for (const char* file : kBoardSources) sources += " " + (rtl / "board" / file).string();
+  }
+  const fs::path stat_path = work / (top + "_stat.txt");
+  const fs::path ltp_path = work / (top + "_ltp.txt");
+  const fs::path log_path = work / (top + "_yosys.log");
+  const fs::path script = work / (top + ".ys");
+  {
+    std::ofstream ys(script);
+    ys << "read_verilog -sv " << (set / "iir_coeffs_pkg.sv").string() << "\n"
+       << "read_verilog -sv -defer " << sources << "\n"
+       << "chparam -set RomFile \"" << (set / "coeffs.mem").string() << "\" " << top << "\n"
+       << "synth_xilinx -family xc7 -top " << top << " -flatten\n"
+       << "tee -o " << stat_path.string()
+       << " stat -tech xilinx\n"
+       // Logic depth: cut the netlist at every register (flip-flops, the DSP48E1 with its
+       // internal registers, block RAM); ltp then counts the cells on the longest path.
+       << "delete t:FDRE t:FDSE t:FDCE t:FDPE t:DSP48E1 t:RAMB36E1 t:RAMB18E1\n"
+       << "tee -o " << ltp_path.string() << " ltp -noff\n";
+  }
+  const std::string command = fmt::format("{} -q -l {} -s {} > /dev/null 2>&1", options.yosys,
+                                          log_path.string(), script.string());
+  const auto start = std::chrono::steady_clock::now();
+  const int status = std::system(command.c_str());
+  YosysRun run;
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.script_path = script.string();
+  if (status != 0) {
+    err << "flange synth: yosys failed for " << top << "; see " << log_path.string()
+        << " (reproduce: " << options.yosys << " -s " << script.string() << ")\n";
+    throw std::runtime_error("yosys failed");
+  }
+  run.utilisation = parse_utilisation(read_text(stat_path), read_text(ltp_path));
+  return run;
+}
+
+std::string percent(double used, int capacity) {
+  return fmt::format("{:.2f} %", 100.0 * used / capacity);
+}
+
+}  // namespace
+
+Utilisation parse_utilisation(const std::string& stat_text, const std::string& ltp_text) {
+  Utilisation u;
+  static const std::regex cell_line(R"(^\s+([A-Z][A-Z0-9_]*)\s+(\d+)\s*$)");
+  static const std::regex lcs_line(R"(Estimated number of LCs:\s+(\d+))");
+  std::istringstream lines(stat_text);
+  std::string line;
+  std::smatch m;
+  while (std::getline(lines, line)) {
+    if (std::regex_match(line, m, cell_line)) {
+      u.cells[m[1]] += std::stoi(m[2]);
+    } else if (std::regex_search(line, m, lcs_line)) {
+      u.estimated_lcs = std::stoi(m[1]);
+    }
+  }
+  auto count = [&](const char* cell) {
+    auto it = u.cells.find(cell);
+    return it == u.cells.end() ? 0 : it->second;
+  };
+  for (const char* lut : {"LUT1", "LUT2", "LUT3", "LUT4", "LUT5", "LUT6"}) u.luts += count(lut);
+  for (const char* ff : {"FDRE", "FDSE", "FDCE", "FDPE"}) u.ffs += count(ff);
+  u.inverters = count("INV");
+  u.carry4 = count("CARRY4");
+  u.dsp48e1 = count("DSP48E1");
+  u.bram36 = count("RAMB36E1") + count("RAMB18E1") / 2.0;
+  for (const char* io : {"IBUF", "OBUF", "IOBUF", "OBUFT"}) u.ios += count(io);
+  static const std::regex ltp_line(R"(length=(\d+))");
+  if (std::regex_search(ltp_text, m, ltp_line)) u.logic_depth = std::stoi(m[1]);
+  return u;
+}
+
+std::string check_utilisation(const Utilisation& core, const Utilisation& top,
+                              double max_core_lut_percent, const DeviceCapacity& device) {
+  std::string failures;
+  if (core.dsp48e1 != 1) {
+    failures += fmt::format(
+        "the core's multiply-accumulate maps to {} DSP48E1, expected exactly 1\n", core.dsp48e1);
+  }
+  if (top.dsp48e1 != 1) {
+    failures += fmt::format(
+        "the board top uses {} DSP48E1, expected exactly 1 (the core's multiply-accumulate)\n",
+        top.dsp48e1);
+  }
+  const double core_percent = 100.0 * core.estimated_lcs / device.luts;
+  if (core.estimated_lcs <= 0 || core_percent > max_core_lut_percent) {
+    failures += fmt::format(
+        "the core occupies {} LUT6 sites ({} LUT cells), {:.2f} % of the device, above {:.2f} %\n",
+        core.estimated_lcs, core.luts, core_percent, max_core_lut_percent);
+  }
+  return failures;
+}
+
+CLI::App* add_synth_command(CLI::App& app, SynthOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "synth", "Yosys synthesis for the XC7A35T: core and Basys-3 top, utilisation and depth");
+  cmd->add_option("--coeffs", options.coeffs,
+                  "coefficient set folder (iir_coeffs_pkg.sv, coeffs.mem)")
+      ->default_val(options.coeffs);
+  cmd->add_option("--source-dir", options.source_dir,
+                  "repository root holding rtl/ (default: the one this flange was built from)");
+  cmd->add_option("--out", options.out, "Markdown report to write")->default_val(options.out);
+  cmd->add_option("--yosys", options.yosys, "Yosys executable")->default_val(options.yosys);
+  cmd->add_option("--max-core-lut-percent", options.max_core_lut_percent,
+                  "fail when the core uses more of the device's LUTs (0-100)")
+      ->default_val(options.max_core_lut_percent)
+      ->check(CLI::Range(0.0, 100.0));
+  return cmd;
+}
+
+int run_synth_command(const SynthOptions& options, std::ostream& out, std::ostream& err) {
+  const fs::path root =
+      options.source_dir.empty() ? fs::path(FLANGE_SOURCE_DIR) : fs::path(options.source_dir);
+  // A relative --coeffs is looked up from the working folder, then from the repository root.
+  fs::path set = fs::absolute(options.coeffs);
+  if (!fs::exists(set) && fs::path(options.coeffs).is_relative()) set = root / options.coeffs;
+  for (const fs::path& f :
+       {root / "rtl" / "iir_core.sv", set / "iir_coeffs_pkg.sv", set / "coeffs.mem"}) {
+    if (!fs::exists(f)) {
+      err << "flange synth: " << f.string() << " is missing\n";
+      return kExitBadArgument;
+    }
+  }
+  const fs::path work = fs::temp_directory_path() /
+                        fmt::format("flange_synth_{}_{}", set.filename().string(), ::getpid());
+  fs::create_directories(work);
+  YosysRun core, top;
+  try {
+    core = run_yosys(options, root, set, "iir_core", work, err);
+    top = run_yosys(options, root, set, "basys3_top", work, err);
+  } catch (const std::runtime_error&) {
+    return kExitFailure;
+  }
+  const DeviceCapacity device;
+  const std::string failures =
+      check_utilisation(core.utilisation, top.utilisation, options.max_core_lut_percent, device);
+
+  const std::string set_name = set.filename().string();
+  std::ostringstream md;
+  md << "<!-- generated by: flange synth --coeffs coeffs/" << set_name << " --out "
+     << "docs/synthesis.md (Yosys synth_xilinx -family xc7); do not edit -->\n"
+     << "# Synthesis (Yosys, XC7A35T)\n\n"
+     << "Coefficient set: `" << set_name << "`. Yosys `synth_xilinx -family xc7 -flatten`, then "
+     << "`stat -tech xilinx`; percentages of the XC7A35T-1CPG236C (" << device.luts << " LUTs, "
+     << device.ffs << " flip-flops, " << device.dsps << " DSP48E1, " << device.bram36 << " BRAM36, "
+     << device.ios << " user I/O). Regenerate with `build/flange synth --coeffs "
+     << "coeffs/" << set_name << " --out docs/synthesis.md`.\n\n"
+     << "| resource | `iir_core` | share | `basys3_top` | share |\n|---|---|---|---|---|\n";
+  const Utilisation& c = core.utilisation;
+  const Utilisation& t = top.utilisation;
+  md << fmt::format("| LUT6 sites (Yosys estimated LCs) | {} | {} | {} | {} |\n", c.estimated_lcs,
+                    percent(c.estimated_lcs, device.luts), t.estimated_lcs,
+                    percent(t.estimated_lcs, device.luts))
+     << fmt::format("| LUT cells (LUT1-LUT6) | {} | {} | {} | {} |\n", c.luts,
+                    percent(c.luts, device.luts), t.luts, percent(t.luts, device.luts))
+     << fmt::format("| INV cells | {} | | {} | |\n", c.inverters, t.inverters)
+     << fmt::format("| FF (FDRE/FDSE/FDCE/FDPE) | {} | {} | {} | {} |\n", c.ffs,
+                    percent(c.ffs, device.ffs), t.ffs, percent(t.ffs, device.ffs))
+     << fmt::format("| CARRY4 | {} | | {} | |\n", c.carry4, t.carry4)
+     << fmt::format("| DSP48E1 | {} | {} | {} | {} |\n", c.dsp48e1, percent(c.dsp48e1, device.dsps),
+                    t.dsp48e1, percent(t.dsp48e1, device.dsps))
+     << fmt::format("| BRAM36 | {} | {} | {} | {} |\n", c.bram36, percent(c.bram36, device.bram36),
+                    t.bram36, percent(t.bram36, device.bram36))
+     << fmt::format("| IO (IBUF/OBUF) | {} | {} | {} | {} |\n", c.ios, percent(c.ios, device.ios),
+                    t.ios, percent(t.ios, device.ios))
+     << fmt::format("| logic depth (`ltp`, cells) | {} | | {} | |\n\n", c.logic_depth,
+                    t.logic_depth);
+  md << "LUTs: the XC7A35T's 20,800 LUTs are LUT6 sites, each of which can hold two smaller LUTs "
+        "with shared inputs; the share is occupied sites (Yosys's `Estimated number of LCs`) over "
+        "20,800. The raw LUT cell count is the upper bound, shown beside it. INV cells are counted "
+        "apart: Vivado folds them into the logic they drive.\n\n"
+        "The core's IO row counts its ports as if it were a top level (it is not one on the "
+        "board). Logic depth: `ltp -noff` after deleting every flip-flop, DSP48E1 and block RAM "
+        "cell, i.e. the longest chain of LUT, CARRY4, MUXF7/F8 and I/O buffer cells between "
+        "registers or pins. It is an estimate only: Yosys has no timing model and there is no "
+        "place and route here (use the Vivado script, docs/board.md, for real timing).\n\n"
+     << "All cells (`stat -tech xilinx`):\n\n| cell | `iir_core` | `basys3_top` |\n|---|---|---|\n";
+  std::map<std::string, std::pair<int, int>> all;
+  for (const auto& [cell, n] : c.cells) all[cell].first = n;
+  for (const auto& [cell, n] : t.cells) all[cell].second = n;
+  for (const auto& [cell, n] : all)
+    md << "| " << cell << " | " << n.first << " | " << n.second << " |\n";
+  md << "\nChecks (the `FlangeSynth.*` CTest test): each multiply-accumulate maps to exactly one "
+     << "DSP48E1 (core and top: 1); the core occupies at most " << options.max_core_lut_percent
+     << " % of the LUT6 sites: " << (failures.empty() ? "**pass**" : "**FAIL**") << ".\n";
+  {
+    fs::path out_path(options.out);
+    if (out_path.has_parent_path()) fs::create_directories(out_path.parent_path());
+    std::ofstream file(out_path);
+    if (!file) {
+      err << "flange synth: cannot write " << options.out << "\n";
+      return kExitFailure;
+    }
+    file << md.str();
+  }
+  out << fmt::format(
+      "synth: {}: core LUT {} ({}), FF {}, DSP48E1 {}; top LUT {} ({}), FF {}, DSP48E1 {}, IO {}; "
+      "depth {}/{} cells; {:.1f} s; report {}\n",
+      set_name, c.luts, percent(c.luts, device.luts), c.ffs, c.dsp48e1, t.luts,
+      percent(t.luts, device.luts), t.ffs, t.dsp48e1, t.ios, c.logic_depth, t.logic_depth,
+      core.seconds + top.seconds, options.out);
+  fs::remove_all(work);
+  if (!failures.empty()) {
+    err << "flange synth: " << failures << "(reproduce: flange synth --coeffs " << options.coeffs
+        << ")\n";
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace flange::host

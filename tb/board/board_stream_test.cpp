@@ -1,0 +1,248 @@
+// SPDX-License-Identifier: MIT
+// `flange stream` end to end against the Verilated Basys-3 top attached to a pseudo-terminal: the
+// command opens the pty's slave with the same termios code it uses for /dev/ttyUSB1, and a thread
+// moves bytes between the pty's master and the board's RX/TX pins (bit by bit in the simulation).
+// Every filtered word that comes back must equal model::IirCore::step on the word sent.
+// Reproduce: build/tb/board_stream_test --gtest_filter='BoardStream.<Name>'
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "board_bench.h"
+#include "cli.h"
+#include "filter_json.h"
+#include "iir_core.h"
+
+namespace flange::tb::board {
+namespace {
+
+struct Outcome {
+  int status;
+  std::string out, err;
+};
+
+Outcome run(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int status = host::run_flange(args, out, err);
+  return {status, out.str(), err.str()};
+}
+
+// A pseudo-terminal; the slave stays open (raw) for the test's lifetime so that the master never
+// sees a hang-up between the command's open and close.
+class Pty {
+ public:
+  Pty() {
+    master_ = ::posix_openpt(O_RDWR | O_NOCTTY);
+    if (master_ < 0 || ::grantpt(master_) != 0 || ::unlockpt(master_) != 0) {
+      throw std::runtime_error("posix_openpt failed");
+    }
+    slave_name_ = ::ptsname(master_);
+    slave_ = ::open(slave_name_.c_str(), O_RDWR | O_NOCTTY);
+    termios tio{};
+    ::tcgetattr(slave_, &tio);
+    ::cfmakeraw(&tio);
+    ::tcsetattr(slave_, TCSANOW, &tio);
+    ::fcntl(master_, F_SETFL, O_NONBLOCK);
+  }
+  ~Pty() {
+    ::close(slave_);
+    ::close(master_);
+  }
+  int master() const { return master_; }
+  const std::string& slave_name() const { return slave_name_; }
+
+ private:
+  int master_ = -1, slave_ = -1;
+  std::string slave_name_;
+};
+
+// The board behind the pty, in a thread. `mangle` may alter host -> board bytes (the n-th byte
+// overall) to model a noisy cable: return false to drop the byte.
+class PtyBoard {
+ public:
+  using Mangle = std::function<bool(std::uint64_t index, std::uint8_t& byte)>;
+  explicit PtyBoard(const Pty& pty, Mangle mangle = {})
+      : pty_(pty), mangle_(std::move(mangle)), thread_([this] { loop(); }) {}
+  ~PtyBoard() {
+    stop_ = true;
+    thread_.join();
+  }
+  bool assertion_failed() const { return assertion_failed_; }
+
+ private:
+  void loop() {
+    BoardBench bench;
+    std::uint64_t index = 0;
+    while (!stop_) {
+      std::uint8_t buffer[256];
+      const ssize_t n = ::read(pty_.master(), buffer, sizeof buffer);
+      std::vector<std::uint8_t> bytes;
+      for (ssize_t i = 0; i < n; ++i) {
+        std::uint8_t byte = buffer[i];
+        if (!mangle_ || mangle_(index, byte)) bytes.push_back(byte);
+        ++index;
+      }
+      if (!bytes.empty()) bench.send(bytes);
+      bench.run(256);
+      std::vector<std::uint8_t> reply;
+      for (const TxByte& b : bench.received()) reply.push_back(b.value);
+      bench.received().clear();
+      if (!reply.empty()) {
+        std::size_t done = 0;
+        while (done < reply.size() && !stop_) {
+          const ssize_t w = ::write(pty_.master(), reply.data() + done, reply.size() - done);
+          if (w > 0) done += static_cast<std::size_t>(w);
+        }
+      }
+      if (n <= 0 && !bench.sending()) {
+        pollfd pfd{pty_.master(), POLLIN, 0};
+        ::poll(&pfd, 1, 1);
+      }
+    }
+    assertion_failed_ = bench.assertion_failed();
+  }
+
+  const Pty& pty_;
+  Mangle mangle_;
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> assertion_failed_{false};
+  std::thread thread_;
+};
+
+// A short bench recording (simulated, 6 Hz) and its calibration, made once.
+class BoardStream : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // One folder per process: CTest runs the tests of this file in parallel processes.
+    dir_ = std::filesystem::path(FLANGE_BINARY_DIR) / "test_files" /
+           ("board_stream_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+    const Outcome sim = run({"simulate", "--scenario", "bench", "--duration", "60", "--seed", "3",
+                             "--out", (dir_ / "bench.csv").string()});
+    ASSERT_EQ(sim.status, 0) << sim.err;
+    const Outcome cal = run({"calibrate", "--data", (dir_ / "bench.csv").string(), "--out",
+                             (dir_ / "model.json").string()});
+    ASSERT_EQ(cal.status, 0) << cal.err;
+  }
+  static void TearDownTestSuite() {
+    if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir_);
+  }
+  // A generous timeout: under a loaded CI machine the simulated board may take a while to answer.
+  static std::vector<std::string> args(const Pty& pty, const std::string& out,
+                                       const std::string& timeout_ms = "2000") {
+    return {"stream",
+            "--port",
+            pty.slave_name(),
+            "--input",
+            (dir_ / "bench.csv").string(),
+            "--calibration",
+            (dir_ / "model.json").string(),
+            "--out",
+            (dir_ / out).string(),
+            "--timeout-ms",
+            timeout_ms};
+  }
+  // Checks every row of a stream output against the model; returns the number of rows.
+  static std::size_t expect_matches_model(const std::string& out) {
+    model::IirCore core(
+        model::load_core_config(FLANGE_SOURCE_DIR "/coeffs/measurement_sos/filter.json"));
+    std::ifstream in(dir_ / out);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "t_s,clearance_raw_mm,word_in,word_out,clearance_filt_mm,status");
+    std::size_t rows = 0;
+    while (std::getline(in, line)) {
+      std::istringstream fields(line);
+      std::string t, raw, word_in, word_out;
+      std::getline(fields, t, ',');
+      std::getline(fields, raw, ',');
+      std::getline(fields, word_in, ',');
+      std::getline(fields, word_out, ',');
+      const model::StepResult want = core.step(std::stoi(word_in));
+      EXPECT_EQ(std::stoi(word_out), want.sample) << out << " row " << rows;
+      ++rows;
+    }
+    return rows;
+  }
+  static std::filesystem::path dir_;
+};
+std::filesystem::path BoardStream::dir_;
+
+TEST_F(BoardStream, RecordingThroughThePtyMatchesTheModel) {
+  Pty pty;
+  PtyBoard board(pty);
+  const Outcome r = run(args(pty, "clean.csv"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("stream: 361 samples"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" 0 resent"), std::string::npos) << r.out;
+  EXPECT_EQ(expect_matches_model("clean.csv"), 361u);
+  EXPECT_FALSE(board.assertion_failed());
+}
+
+TEST_F(BoardStream, SecondSessionStartsFromAFreshFilter) {
+  // Without the session reset the second run would continue the first run's filter history
+  // (and its first SEQ could be taken for a retransmission).
+  Pty pty;
+  PtyBoard board(pty);
+  ASSERT_EQ(run(args(pty, "first.csv")).status, 0);
+  const Outcome r = run(args(pty, "second.csv"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(expect_matches_model("second.csv"), 361u);
+}
+
+TEST_F(BoardStream, NoisyCableIsRecoveredBitExact) {
+  Pty pty;
+  // Flip a bit in one request, drop a byte of another: both get no reply, the host resends.
+  PtyBoard board(pty, [](std::uint64_t index, std::uint8_t& byte) {
+    if (index == 5 * 40 + 3) byte ^= 0x04;
+    return index != 5 * 100 + 1;
+  });
+  const Outcome r = run(args(pty, "noisy.csv", "400"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Two requests were damaged; a slow (loaded) simulation may cause more resends, never fewer.
+  const std::size_t at = r.out.find(" resent");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::size_t from = r.out.rfind(' ', at - 1);
+  EXPECT_GE(std::stoi(r.out.substr(from + 1, at - from - 1)), 2) << r.out;
+  EXPECT_EQ(expect_matches_model("noisy.csv"), 361u);
+}
+
+TEST_F(BoardStream, SilentBoardGivesAClearErrorAfterTheTimeout) {
+  Pty pty;  // nothing behind it
+  std::vector<std::string> a = args(pty, "silent.csv", "200");
+  a.insert(a.end(), {"--retries", "1"});
+  const auto start = std::chrono::steady_clock::now();
+  const Outcome r = run(a);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("does not answer"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(pty.slave_name()), std::string::npos) << r.err;
+  EXPECT_GE(s, 0.39);
+  EXPECT_LT(s, 5.0);
+}
+
+TEST_F(BoardStream, MissingPortIsReported) {
+  Pty pty;
+  std::vector<std::string> a = args(pty, "missing.csv");
+  a[2] = "/dev/does-not-exist-flange";
+  const Outcome r = run(a);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("cannot open serial port /dev/does-not-exist-flange"), std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace flange::tb::board
