@@ -63,7 +63,10 @@ module iir_core #(
 
   localparam int Terms         = 2 * SectionOrder + 1;              // MACs per section
   localparam int LrLine        = SectionOrder + 1;                  // samples per history line
-  localparam int LrDepth       = (NumSections + 1) * LrLine;
+  localparam int AgeWidth      = $clog2(LrLine);                    // slot within a line
+  localparam int LineWidth     = $clog2(NumSections + 1);           // line number
+  localparam int LrAddrWidth   = LineWidth + AgeWidth;
+  localparam int LrSlots       = 1 << LrAddrWidth;                  // lines padded to 2^AgeWidth
   localparam int ExtWidth      = SampleWidth + FeedbackShift;       // y_ext: history word
   localparam int AWidth        = ExtWidth;                          // multiplier A operand
   localparam int MacLatency    = 3;                                 // iir_mac: A/B, M, P
@@ -95,11 +98,6 @@ module iir_core #(
     $error("iir_core: the product (SampleWidth + FeedbackShift + CoefWidth) exceeds AccWidth");
   end
 
-  // Lowest bit of the word `age` samples old (0 <= age <= M) in load-register line `l`.
-  function automatic int lr_bit(int l, int age);
-    lr_bit = (l * LrLine + age) * ExtWidth;  // Yosys 0.23 has no `return`
-  endfunction
-
   // The D-bit sample for a history word: (y_ext + 2^(s-1)) >>> s, saturated. The sum is one bit
   // wider than y_ext, so it cannot wrap; its shifted value fits the sample format when its two top
   // bits agree. Only the positive rail can be reached: y_ext >= 2^(D-1+s) - 2^(s-1).
@@ -127,11 +125,7 @@ module iir_core #(
   logic [BtcWidth-1:0]                   btc_q, btc_d;      // bus target counter
   logic [SecWidth-1:0]                   sec_q, sec_d;      // section being computed
   logic [1:0]                            drain_q, drain_d;  // cycles spent in StDrain
-  // Load registers: one flat vector of D + s-bit words, because Yosys 0.23 does not parse
-  // multi-dimensional packed arrays; lr_bit() gives the position of a word. Only constant positions
-  // are used: a computed index would cost a barrel shifter. Line 0 holds x << s: its s zero LSBs
-  // are constant flip-flops, which synthesis removes.
-  logic [LrDepth*ExtWidth-1:0]           lr_q, lr_d;
+  logic [AgeWidth-1:0]                   newest_q, newest_d;  // slot of age 0 in every line
   logic signed [SampleWidth-1:0]         out_q, out_d;
   logic                                  valid_q, valid_d;
   logic                                  overrun_q, overrun_d;
@@ -141,14 +135,42 @@ module iir_core #(
   logic [CoefWidth-1:0] rom [RomDepth];
   initial $readmemh(RomFile, rom);
 
+  // Load registers: a circular buffer per line in distributed RAM (LUTRAM, a few LUTs instead of
+  // a wide multiplexer over flip-flops). An EN moves newest_q one slot on, so every word grows one
+  // sample older without moving. Line l, age a lives at {l, (newest - a) mod (M + 1)}. A RAM
+  // cannot be reset: filled_q counts the samples accepted since reset (up to M + 1), and a word
+  // older than that reads as zero, as a cleared register would. (A word of age a in any line
+  // holds a value once more than a samples were accepted: line k + 1's age 0 is read only after
+  // section k wrote it.)
+  logic [ExtWidth-1:0]    lr_ram [LrSlots];
+  logic [AgeWidth:0]      filled_q, filled_d;
+  logic                   lr_we;
+  logic [LrAddrWidth-1:0] lr_waddr, lr_raddr;
+  logic [ExtWidth-1:0]    lr_wdata;
+
+  always_ff @(posedge clk_i) begin
+    if (lr_we) lr_ram[lr_waddr] <= lr_wdata;
+  end
+
+  // The slot of the word `age` samples older than the one in slot `newest`.
+  function automatic logic [AgeWidth-1:0] slot_of(logic [AgeWidth-1:0] newest,
+                                                  logic [AgeWidth:0] age);
+    logic [AgeWidth+1:0] back;
+    back = {2'b0, newest} - {1'b0, age};
+    if (back[AgeWidth+1]) back = back + (AgeWidth + 2)'(LrLine);  // wrapped below slot 0
+    slot_of = back[AgeWidth-1:0];
+  endfunction
+
   // BTC decode: the ROM word's role and the load register it multiplies //
   logic                       term_first, term_last, term_feedback;
-  logic signed [ExtWidth-1:0] lr_word;
+  logic [LineWidth-1:0]       rd_line;
+  logic [AgeWidth:0]          rd_age;  // 0..M
   always_comb begin
     term_first    = 1'b0;
     term_last     = 1'b0;
     term_feedback = 1'b0;
-    lr_word       = '0;
+    rd_line       = '0;
+    rd_age        = '0;
     for (int k = 0; k < NumSections; k++) begin
       for (int i = 0; i < Terms; i++) begin
         if (btc_q == BtcWidth'(k * Terms + i)) begin
@@ -157,12 +179,21 @@ module iir_core #(
           term_feedback = (i > SectionOrder);
           // b[i] multiplies x_k[n-i] (line k, rounded below); -a[j], j = i - M, multiplies
           // y_ext_k[n-j] (line k + 1).
-          if (i <= SectionOrder) lr_word = $signed(lr_q[lr_bit(k, i) +: ExtWidth]);
-          else lr_word = $signed(lr_q[lr_bit(k + 1, i - SectionOrder) +: ExtWidth]);
+          if (i <= SectionOrder) begin
+            rd_line = LineWidth'(k);
+            rd_age  = (AgeWidth + 1)'(i);
+          end else begin
+            rd_line = LineWidth'(k + 1);
+            rd_age  = (AgeWidth + 1)'(i - SectionOrder);
+          end
         end
       end
     end
   end
+
+  logic signed [ExtWidth-1:0] lr_word;
+  assign lr_raddr = {rd_line, slot_of(newest_q, rd_age)};
+  assign lr_word  = (filled_q > rd_age) ? $signed(lr_ram[lr_raddr]) : '0;
 
   // Operands //
   logic                          issue;
@@ -217,7 +248,11 @@ module iir_core #(
     btc_d     = btc_q;
     sec_d     = sec_q;
     drain_d   = drain_q;
-    lr_d      = lr_q;
+    newest_d  = newest_q;
+    filled_d  = filled_q;
+    lr_we     = 1'b0;
+    lr_waddr  = '0;
+    lr_wdata  = '0;
     out_d     = out_q;
     valid_d   = 1'b0;
     issue     = 1'b0;
@@ -226,13 +261,12 @@ module iir_core #(
     unique case (state_q)
       StIdle: begin
         if (sample_valid_i) begin
-          // EN: the history moves one place older in every line; x[n] << s enters line 0.
-          for (int l = 0; l <= NumSections; l++) begin
-            for (int i = SectionOrder; i > 0; i--) begin
-              lr_d[lr_bit(l, i) +: ExtWidth] = lr_q[lr_bit(l, i - 1) +: ExtWidth];
-            end
-          end
-          lr_d[lr_bit(0, 0) +: ExtWidth] = ExtWidth'(sample_i) <<< FeedbackShift;
+          // EN: the history grows one sample older in every line; x[n] << s enters line 0.
+          newest_d = (newest_q == AgeWidth'(SectionOrder)) ? '0 : newest_q + 1'b1;
+          if (filled_q != (AgeWidth + 1)'(LrLine)) filled_d = filled_q + 1'b1;
+          lr_we    = 1'b1;
+          lr_waddr = {LineWidth'(0), newest_d};
+          lr_wdata = ExtWidth'(sample_i) <<< FeedbackShift;
           btc_d   = '0;
           sec_d   = '0;
           state_d = StMac;
@@ -251,9 +285,9 @@ module iir_core #(
           // The last term of the section has reached the accumulator.
           writeback        = 1'b1;
           // The section's y_ext becomes the newest entry of the next line.
-          for (int k = 0; k < NumSections; k++) begin
-            if (sec_q == SecWidth'(k)) lr_d[lr_bit(k + 1, 0) +: ExtWidth] = section_ext;
-          end
+          lr_we    = 1'b1;
+          lr_waddr = {LineWidth'(sec_q) + LineWidth'(1), newest_q};
+          lr_wdata = section_ext;
           if (sec_q == SecWidth'(NumSections - 1)) begin
             out_d   = section_y;
             valid_d = 1'b1;
@@ -280,7 +314,8 @@ module iir_core #(
       btc_q        <= '0;
       sec_q        <= '0;
       drain_q      <= '0;
-      lr_q         <= '0;
+      newest_q     <= '0;
+      filled_q     <= '0;
       out_q        <= '0;
       valid_q      <= 1'b0;
       overrun_q    <= 1'b0;
@@ -290,7 +325,8 @@ module iir_core #(
       btc_q        <= btc_d;
       sec_q        <= sec_d;
       drain_q      <= drain_d;
-      lr_q         <= lr_d;
+      newest_q     <= newest_d;
+      filled_q     <= filled_d;
       out_q        <= out_d;
       valid_q      <= valid_d;
       overrun_q    <= overrun_d;

@@ -109,6 +109,12 @@ Utilisation parse_utilisation(const std::string& stat_text, const std::string& l
   };
   for (const char* lut : {"LUT1", "LUT2", "LUT3", "LUT4", "LUT5", "LUT6"}) u.luts += count(lut);
   for (const char* ff : {"FDRE", "FDSE", "FDCE", "FDPE"}) u.ffs += count(ff);
+  // Distributed RAM primitives and the LUT6 sites each occupies (UG474, SLICEM).
+  static const std::map<std::string, int> lutram_sites = {
+      {"RAM32X1S", 1},  {"RAM64X1S", 1},  {"RAM32X1D", 2},  {"RAM64X1D", 2},
+      {"RAM128X1S", 2}, {"RAM128X1D", 4}, {"RAM256X1S", 4}, {"RAM32M", 4},
+      {"RAM64M", 4},    {"RAM32M16", 8},  {"RAM64M8", 8}};
+  for (const auto& [cell, sites] : lutram_sites) u.lutram_luts += sites * count(cell.c_str());
   u.inverters = count("INV");
   u.carry4 = count("CARRY4");
   u.dsp48e1 = count("DSP48E1");
@@ -131,11 +137,13 @@ std::string check_utilisation(const Utilisation& core, const Utilisation& top,
         "the board top uses {} DSP48E1, expected exactly 1 (the core's multiply-accumulate)\n",
         top.dsp48e1);
   }
-  const double core_percent = 100.0 * core.estimated_lcs / device.luts;
+  const double core_percent = 100.0 * core.lut_sites() / device.luts;
   if (core.estimated_lcs <= 0 || core_percent > max_core_lut_percent) {
     failures += fmt::format(
-        "the core occupies {} LUT6 sites ({} LUT cells), {:.2f} % of the device, above {:.2f} %\n",
-        core.estimated_lcs, core.luts, core_percent, max_core_lut_percent);
+        "the core occupies {} LUT6 sites ({} logic, {} distributed RAM; {} LUT cells), {:.2f} % of "
+        "the device, above {:.2f} %\n",
+        core.lut_sites(), core.estimated_lcs, core.lutram_luts, core.luts, core_percent,
+        max_core_lut_percent);
   }
   return failures;
 }
@@ -197,9 +205,13 @@ int run_synth_command(const SynthOptions& options, std::ostream& out, std::ostre
      << "| resource | `iir_core` | share | `basys3_top` | share |\n|---|---|---|---|---|\n";
   const Utilisation& c = core.utilisation;
   const Utilisation& t = top.utilisation;
-  md << fmt::format("| LUT6 sites (Yosys estimated LCs) | {} | {} | {} | {} |\n", c.estimated_lcs,
-                    percent(c.estimated_lcs, device.luts), t.estimated_lcs,
-                    percent(t.estimated_lcs, device.luts))
+  md << fmt::format("| LUT6 sites (logic + distributed RAM) | {} | {} | {} | {} |\n", c.lut_sites(),
+                    percent(c.lut_sites(), device.luts), t.lut_sites(),
+                    percent(t.lut_sites(), device.luts))
+     << fmt::format("| of which logic (Yosys estimated LCs) | {} | | {} | |\n", c.estimated_lcs,
+                    t.estimated_lcs)
+     << fmt::format("| of which distributed RAM (load registers) | {} | | {} | |\n", c.lutram_luts,
+                    t.lutram_luts)
      << fmt::format("| LUT cells (LUT1-LUT6) | {} | {} | {} | {} |\n", c.luts,
                     percent(c.luts, device.luts), t.luts, percent(t.luts, device.luts))
      << fmt::format("| INV cells | {} | | {} | |\n", c.inverters, t.inverters)
@@ -215,8 +227,10 @@ int run_synth_command(const SynthOptions& options, std::ostream& out, std::ostre
      << fmt::format("| logic depth (`ltp`, cells) | {} | | {} | |\n\n", c.logic_depth,
                     t.logic_depth);
   md << "LUTs: the XC7A35T's 20,800 LUTs are LUT6 sites, each of which can hold two smaller LUTs "
-        "with shared inputs; the share is occupied sites (Yosys's `Estimated number of LCs`) over "
-        "20,800. The raw LUT cell count is the upper bound, shown beside it. INV cells are counted "
+        "with shared inputs; the share is occupied sites over 20,800: Yosys's `Estimated number of "
+        "LCs` for logic plus the sites of the distributed-RAM cells (RAM32M: 4), which Yosys does "
+        "not count as LCs. The raw LUT cell count is the upper bound, shown beside it. INV cells "
+        "are counted "
         "apart: Vivado folds them into the logic they drive.\n\n"
         "The core's IO row counts its ports as if it were a top level (it is not one on the "
         "board). Logic depth: `ltp -noff` after deleting every flip-flop, DSP48E1 and block RAM "

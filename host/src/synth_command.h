@@ -32,7 +32,9 @@ struct Utilisation {
   double bram36 = 0;      // RAMB36E1 + RAMB18E1 / 2
   int ios = 0;            // IBUF, OBUF, IOBUF, OBUFT
   int estimated_lcs = 0;  // Yosys's estimate of occupied LUT6 sites (two small LUTs share one)
-  int logic_depth = 0;    // `ltp` on the netlist without flip-flops, DSPs and BRAMs: cells
+  int lutram_luts = 0;    // LUT6 sites used as distributed RAM (RAM32M: 4, RAM64X1D: 2, ...)
+  int lut_sites() const { return estimated_lcs + lutram_luts; }  // logic plus memory
+  int logic_depth = 0;  // `ltp` on the netlist without flip-flops, DSPs and BRAMs: cells
 };
 
 // Parses the text of `stat -tech xilinx` (cells) and of `ltp` ("length=N").
@@ -49,7 +51,8 @@ struct SynthOptions {
 CLI::App* add_synth_command(CLI::App& app, SynthOptions& options);
 
 // The checks of a synthesis result: "" when they pass, otherwise one line per failure. The LUT
-// share is occupied LUT6 sites (estimated_lcs) over the device's 20,800 LUT6 sites.
+// share is occupied LUT6 sites (lut_sites(): logic and distributed RAM) over the device's 20,800
+// LUT6 sites.
 std::string check_utilisation(const Utilisation& core, const Utilisation& top,
                               double max_core_lut_percent, const DeviceCapacity& device = {});
 

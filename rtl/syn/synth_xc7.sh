@@ -50,8 +50,10 @@ count() { awk -v cell="$1" '$1 == cell { n = $2 } END { print n + 0 }' "$work/st
 luts=0
 for l in LUT1 LUT2 LUT3 LUT4 LUT5 LUT6; do luts=$((luts + $(count $l))); done
 dsp=$(count DSP48E1)
+# Distributed RAM (the load registers): LUT6 sites per cell, which Yosys does not count as LCs.
+lutram=$(( 4 * ($(count RAM32M) + $(count RAM64M)) + 2 * ($(count RAM32X1D) + $(count RAM64X1D)) + $(count RAM32X1S) + $(count RAM64X1S) ))
 lcs=$(awk '/Estimated number of LCs/ { n = $NF } END { print n + 0 }' "$work/stat.txt")
-echo "synth_xc7: $(basename "$set_dir"): DSP48E1 $dsp, LUT $luts, FDRE $(count FDRE), CARRY4 $(count CARRY4), MUXF7 $(count MUXF7), MUXF8 $(count MUXF8), estimated LCs $lcs"
+echo "synth_xc7: $(basename "$set_dir"): DSP48E1 $dsp, LUT $luts, FDRE $(count FDRE), CARRY4 $(count CARRY4), MUXF7 $(count MUXF7), MUXF8 $(count MUXF8), estimated LCs $lcs, LUTRAM sites $lutram"
 
 if [ -n "$expect" ] && [ "$dsp" -ne "$expect" ]; then
   echo "synth_xc7: expected $expect DSP48E1, got $dsp (reproduce: rtl/syn/synth_xc7.sh $set_dir --expect-dsp $expect)" >&2

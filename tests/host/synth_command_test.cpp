@@ -25,6 +25,7 @@ const char* const kStat = R"(
      LUT2                          215
      LUT6                          137
      RAMB18E1                        1
+     RAM32M                          4
      OBUF                           29
 
    Estimated number of LCs:        300
@@ -41,6 +42,8 @@ TEST(SynthCommand, ParsesCellsAndDepth) {
   EXPECT_DOUBLE_EQ(u.bram36, 0.5);
   EXPECT_EQ(u.ios, 48);
   EXPECT_EQ(u.estimated_lcs, 300);
+  EXPECT_EQ(u.lutram_luts, 16);
+  EXPECT_EQ(u.lut_sites(), 316);
   EXPECT_EQ(u.logic_depth, 17);
   EXPECT_EQ(u.cells.at("BUFG"), 1);
 }
@@ -54,6 +57,12 @@ TEST(SynthCommand, ChecksOneDspAndTheLutShare) {
   EXPECT_EQ(check_utilisation(core, top, 1.0), "");
   core.estimated_lcs = 209;
   EXPECT_NE(check_utilisation(core, top, 1.0).find("LUT6 sites"), std::string::npos);
+  core.estimated_lcs = 200;
+  core.lutram_luts = 8;  // distributed RAM counts: 208 sites
+  EXPECT_EQ(check_utilisation(core, top, 1.0), "");
+  core.lutram_luts = 12;
+  EXPECT_NE(check_utilisation(core, top, 1.0).find("12 distributed RAM"), std::string::npos);
+  core.lutram_luts = 0;
   core.estimated_lcs = 100;
   core.dsp48e1 = 2;  // e.g. operands widened before the multiply
   EXPECT_NE(check_utilisation(core, top, 1.0).find("2 DSP48E1"), std::string::npos);
