@@ -46,6 +46,7 @@ struct Diagnosis {
   std::string stage;                 // the stage where the gap first appears
   double heldout_rms_before = 0.0;   // V, nominal twin against the held-out recording
   double heldout_rms_after = 0.0;    // V, with every selected effect
+  double noise_std_v = 0.0;          // V, the twin's white noise the verdict compares with
 };
 
 // Fits on `calibration`, scores on `heldout`; both must share a sample rate and carry the
