@@ -8,6 +8,7 @@
 #include "calibrate_command.h"
 #include "cosim_command.h"
 #include "demo_command.h"
+#include "diagnose_command.h"
 #include "design_command.h"
 #include "run_command.h"
 #include "simulate_command.h"
@@ -32,6 +33,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* simulate = sim::add_simulate_command(app, simulate_options);
   CosimCommandOptions cosim_options;
   CLI::App* cosim = add_cosim_command(app, cosim_options);
+  DiagnoseCommandOptions diagnose_options;
+  CLI::App* diagnose = add_diagnose_command(app, diagnose_options);
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
@@ -54,6 +57,7 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
     if (simulate->parsed()) return sim::run_simulate_command(simulate_options, out, err);
     if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
+    if (diagnose->parsed()) return run_diagnose_command(diagnose_options, out, err);
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
     return kExitFailure;
