@@ -18,8 +18,9 @@ namespace flange::host {
 
 CLI::App* add_diagnose_command(CLI::App& app, DiagnoseCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand(
-      "diagnose", "Where the sim-to-real gap of a recording lies, which effect causes it, and how "
-                  "far it shrinks on held-out data");
+      "diagnose",
+      "Where the sim-to-real gap of a recording lies, which effect causes it, and how "
+      "far it shrinks on held-out data");
   cmd->add_option("--real", options.real, "recording (CSV t_s,clearance_mm,temp_c,voltage_v)");
   CLI::Option* holdout =
       cmd->add_option("--holdout", options.holdout, "a separate held-out recording");
@@ -48,9 +49,10 @@ RecordingSeries read_recording_series(const std::string& path) {
           path, row->line));
     }
     if (!series.t_s.empty() && row->t_s <= series.t_s.back()) {
-      throw InputError(fmt::format("{}:{}: t_s: {} does not increase (a run column's restart "
-                                   "cannot be diagnosed as one series)",
-                                   path, row->line, row->t_s));
+      throw InputError(
+          fmt::format("{}:{}: t_s: {} does not increase (a run column's restart "
+                      "cannot be diagnosed as one series)",
+                      path, row->line, row->t_s));
     }
     series.t_s.push_back(row->t_s);
     series.clearance_mm.push_back(*row->clearance_mm);
@@ -101,7 +103,8 @@ int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& ou
       heldout_name = *options.holdout;
     } else {
       const double fraction = *options.holdout_fraction;
-      const auto held = static_cast<std::size_t>(std::floor(fraction * static_cast<double>(real.size())));
+      const auto held =
+          static_cast<std::size_t>(std::floor(fraction * static_cast<double>(real.size())));
       constexpr std::size_t kMinPart = 256;
       if (held < kMinPart || real.size() - held < kMinPart) {
         throw InputError(fmt::format(

@@ -15,11 +15,11 @@
 namespace flange::host {
 
 struct DiagnoseCommandOptions {
-  std::string real;                       // recording CSV (required for the data layer)
-  std::optional<std::string> holdout;     // a separate held-out recording ...
-  std::optional<double> holdout_fraction; // ... or the last fraction of `real`, [0.05, 0.5]
-  std::optional<std::string> twin;        // twin.json; default: nominal eq. 3.14
-  std::string out;                        // output folder
+  std::string real;                        // recording CSV (required for the data layer)
+  std::optional<std::string> holdout;      // a separate held-out recording ...
+  std::optional<double> holdout_fraction;  // ... or the last fraction of `real`, [0.05, 0.5]
+  std::optional<std::string> twin;         // twin.json; default: nominal eq. 3.14
+  std::string out;                         // output folder
   std::uint64_t seed = 1;
   int bootstrap_rounds = 100;
 };

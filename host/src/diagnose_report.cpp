@@ -26,8 +26,8 @@ nlohmann::ordered_json finding_json(const EffectFinding& f) {
 }
 
 nlohmann::ordered_json test_json(const CorrelationTest& t) {
-  return {{"max_lag", t.max_lag},         {"bound", t.bound},         {"lags_outside", t.lags_outside},
-          {"lags_tested", t.lags_tested}, {"max_abs", t.max_abs},     {"passed", t.passed}};
+  return {{"max_lag", t.max_lag},         {"bound", t.bound},     {"lags_outside", t.lags_outside},
+          {"lags_tested", t.lags_tested}, {"max_abs", t.max_abs}, {"passed", t.passed}};
 }
 
 nlohmann::ordered_json region_json(const RegionCell& c) {
@@ -137,8 +137,8 @@ void plot_time(const std::filesystem::path& dir, const DiagnosisDetail& d) {
 
 void plot_heldout(const std::filesystem::path& dir, const DiagnosisDetail& d) {
   std::string script = svg_header(dir / "heldout.svg", 1000, 450);
-  script += data_block(
-      "ho", decimated({d.heldout_t_s, d.heldout_gap_before_v, d.heldout_gap_after_v}));
+  script +=
+      data_block("ho", decimated({d.heldout_t_s, d.heldout_gap_before_v, d.heldout_gap_after_v}));
   script +=
       "set xlabel 'time (s)'\nset ylabel 'voltage gap on held-out data (V)'\nset key outside "
       "bottom center horizontal\nplot $ho using 1:2 with lines lc rgb '#bbbbbb' title 'before "
@@ -183,18 +183,18 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   for (const InputCoherence& c : d.coherences) {
     coherences[c.input] = {{"in_band", c.in_band}, {"peak", c.peak}, {"peak_hz", c.peak_hz}};
   }
-  j["where"] = {
-      {"stage", g.stage},
-      {"region", d.where_region ? region_json(d.regions[*d.where_region]) : nlohmann::ordered_json()},
-      {"band_hz", d.band_hz ? nlohmann::ordered_json{d.band_hz->first, d.band_hz->second}
-                            : nlohmann::ordered_json()},
-      {"segments", segments},
-      {"coherence", coherences},
-      {"whiteness", test_json(d.whiteness)},
-      {"cross_correlation",
-       {{"temperature", test_json(d.vs_temperature)},
-        {"temperature_rate", test_json(d.vs_temperature_rate)},
-        {"clearance", test_json(d.vs_clearance)}}}};
+  j["where"] = {{"stage", g.stage},
+                {"region", d.where_region ? region_json(d.regions[*d.where_region])
+                                          : nlohmann::ordered_json()},
+                {"band_hz", d.band_hz ? nlohmann::ordered_json{d.band_hz->first, d.band_hz->second}
+                                      : nlohmann::ordered_json()},
+                {"segments", segments},
+                {"coherence", coherences},
+                {"whiteness", test_json(d.whiteness)},
+                {"cross_correlation",
+                 {{"temperature", test_json(d.vs_temperature)},
+                  {"temperature_rate", test_json(d.vs_temperature_rate)},
+                  {"clearance", test_json(d.vs_clearance)}}}};
   nlohmann::ordered_json stages = nlohmann::ordered_json::array();
   for (const StageGap& s : d.stages) {
     stages.push_back({{"name", s.name},
@@ -214,10 +214,11 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   for (const EffectFinding& f : d.partial) partial.push_back(finding_json(f));
   j["partial_effects"] = partial;
   const HowFar& h = d.how_far;
-  j["how_far"] = {{"heldout_rms_before_v", h.rms_before},     {"heldout_rms_after_v", h.rms_after},
-                  {"heldout_max_before_v", h.max_before},     {"heldout_max_after_v", h.max_after},
-                  {"region_rms_before_v", h.region_rms_before}, {"region_rms_after_v", h.region_rms_after},
-                  {"band_rms_before_v", h.band_rms_before},   {"band_rms_after_v", h.band_rms_after}};
+  j["how_far"] = {
+      {"heldout_rms_before_v", h.rms_before},       {"heldout_rms_after_v", h.rms_after},
+      {"heldout_max_before_v", h.max_before},       {"heldout_max_after_v", h.max_after},
+      {"region_rms_before_v", h.region_rms_before}, {"region_rms_after_v", h.region_rms_after},
+      {"band_rms_before_v", h.band_rms_before},     {"band_rms_after_v", h.band_rms_after}};
   nlohmann::ordered_json regions = nlohmann::ordered_json::array();
   for (const RegionCell& c : d.regions) regions.push_back(region_json(c));
   j["regions"] = regions;
@@ -239,19 +240,22 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
     text << fmt::format("; region {:.2f}-{:.2f} mm x {:.1f}-{:.1f} C (bias {:.4f} V, RMS {:.4f} V)",
                         c.clearance_lo, c.clearance_hi, c.temp_lo, c.temp_hi, c.bias_v, c.rms_v);
   }
-  if (d.band_hz) text << fmt::format("; band {:.3f}-{:.3f} Hz", d.band_hz->first, d.band_hz->second);
+  if (d.band_hz)
+    text << fmt::format("; band {:.3f}-{:.3f} Hz", d.band_hz->first, d.band_hz->second);
   text << fmt::format("; {} time segment(s)\n", d.segments.size());
   for (const EffectFinding& f : g.effects.empty() ? d.partial : g.effects) {
     std::string params;
-    for (const auto& [key, value] : f.params) params += fmt::format("{}{}={:.4g}", params.empty() ? "" : ",", key, value);
-    text << fmt::format("  {} {}: {} held-out RMS {:.4f} -> {:.4f} V ({:.1f} %), inclusion {:.2f}{}\n",
-                        g.effects.empty() ? "partial" : "effect", f.name, params,
-                        f.heldout_rms_before, f.heldout_rms_after, f.shrink_pct, f.inclusion,
-                        f.noise_type ? " (noise-type)" : "");
+    for (const auto& [key, value] : f.params)
+      params += fmt::format("{}{}={:.4g}", params.empty() ? "" : ",", key, value);
+    text << fmt::format(
+        "  {} {}: {} held-out RMS {:.4f} -> {:.4f} V ({:.1f} %), inclusion {:.2f}{}\n",
+        g.effects.empty() ? "partial" : "effect", f.name, params, f.heldout_rms_before,
+        f.heldout_rms_after, f.shrink_pct, f.inclusion, f.noise_type ? " (noise-type)" : "");
   }
-  text << fmt::format("  how far: held-out RMS {:.4f} -> {:.4f} V, max {:.4f} -> {:.4f} V; noise {:.4f} V\n",
-                      d.how_far.rms_before, d.how_far.rms_after, d.how_far.max_before,
-                      d.how_far.max_after, d.noise_std_v);
+  text << fmt::format(
+      "  how far: held-out RMS {:.4f} -> {:.4f} V, max {:.4f} -> {:.4f} V; noise {:.4f} V\n",
+      d.how_far.rms_before, d.how_far.rms_after, d.how_far.max_before, d.how_far.max_after,
+      d.noise_std_v);
   return text.str();
 }
 
@@ -274,10 +278,11 @@ void write_diagnosis_report(const std::filesystem::path& dir, const DiagnosisRes
   html << "</ul>\n<h2>The gap at each stage</h2><table><tr><th>stage</th><th>gap RMS</th>"
           "<th>noise floor</th><th>real error</th><th>sim error</th><th>significant</th></tr>\n";
   for (const StageGap& s : d.stages) {
-    html << fmt::format("<tr><td>{}</td><td>{:.4g} {}</td><td>{:.4g}</td><td>{:.4g}</td>"
-                        "<td>{:.4g}</td><td>{}</td></tr>\n",
-                        s.name, s.gap_rms, s.unit, s.noise_floor, s.real_error_rms,
-                        s.sim_error_rms, s.significant ? "yes" : "no");
+    html << fmt::format(
+        "<tr><td>{}</td><td>{:.4g} {}</td><td>{:.4g}</td><td>{:.4g}</td>"
+        "<td>{:.4g}</td><td>{}</td></tr>\n",
+        s.name, s.gap_rms, s.unit, s.noise_floor, s.real_error_rms, s.sim_error_rms,
+        s.significant ? "yes" : "no");
   }
   html << "</table><p>Noise floor: the same gap for the twin with its white noise against the "
           "twin without. Real/sim error: against the reference clearance.</p>\n";

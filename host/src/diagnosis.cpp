@@ -143,8 +143,8 @@ std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<
   const std::vector<double> d_real = clearance_of(model, real.voltage_v, real.temp_c);
   const std::vector<double> d_sim = clearance_of(model, sim_v, real.temp_c);
   const std::vector<double> d_noisy = clearance_of(model, noisy_v, real.temp_c);
-  stages.push_back({"clearance", "mm", rms_of(minus(d_real, d_sim)),
-                    rms_of(minus(d_noisy, d_sim)), rms_of(minus(d_real, real.clearance_mm)),
+  stages.push_back({"clearance", "mm", rms_of(minus(d_real, d_sim)), rms_of(minus(d_noisy, d_sim)),
+                    rms_of(minus(d_real, real.clearance_mm)),
                     rms_of(minus(d_sim, real.clearance_mm)), false,
                     "compensated clearance (the twin's nominal polynomial applied to V, T)"});
 
@@ -165,9 +165,8 @@ std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<
                     fmt::format("largest onset difference of {} real vs {} sim alarm changes",
                                 a_real.size(), a_sim.size())});
   for (StageGap& stage : stages) {
-    stage.significant = stage.name == "alarm_timing"
-                            ? stage.gap_rms > stage.noise_floor + 1.0
-                            : stage.gap_rms > 1.5 * stage.noise_floor;
+    stage.significant = stage.name == "alarm_timing" ? stage.gap_rms > stage.noise_floor + 1.0
+                                                     : stage.gap_rms > 1.5 * stage.noise_floor;
   }
   return stages;
 }
@@ -213,7 +212,8 @@ std::vector<RegionCell> region_cells(const RecordingSeries& s, const std::vector
       cell.rms_v = rms_of(values);
       // Blocks of consecutive in-cell samples keep the gap's slow correlation in the interval.
       std::vector<double> biases, rmss;
-      for (const auto& set : block_resamples(values.size(), rounds, seed + static_cast<unsigned>(k))) {
+      for (const auto& set :
+           block_resamples(values.size(), rounds, seed + static_cast<unsigned>(k))) {
         std::vector<double> drawn;
         for (std::size_t i : set) drawn.push_back(values[i]);
         biases.push_back(mean_of(drawn));
@@ -286,11 +286,14 @@ void locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double
     std::size_t lo = peak, hi = peak;
     while (lo > 1 && p[lo - 1] > 2.0 * detail.noise_psd) --lo;
     while (hi + 1 < p.size() && p[hi + 1] > 2.0 * detail.noise_psd) ++hi;
-    detail.band_hz = std::make_pair(detail.gap_psd.frequency_hz[lo], detail.gap_psd.frequency_hz[hi]);
+    detail.band_hz =
+        std::make_pair(detail.gap_psd.frequency_hz[lo], detail.gap_psd.frequency_hz[hi]);
   }
   const std::vector<double> temp_rate = rate_of(cal.t_s, cal.temp_c);
   const std::vector<std::pair<std::string, const std::vector<double>*>> inputs = {
-      {"temperature", &cal.temp_c}, {"temperature_rate", &temp_rate}, {"clearance", &cal.clearance_mm}};
+      {"temperature", &cal.temp_c},
+      {"temperature_rate", &temp_rate},
+      {"clearance", &cal.clearance_mm}};
   for (const auto& [name, input] : inputs) {
     const Spectrum msc = coherence(gap, *input, fs_hz, segment);
     InputCoherence c{name, 0.0, 0.0, 0.0};
@@ -350,8 +353,7 @@ double sample_rate_hz(const RecordingSeries& series) {
 }
 
 DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
-                                   const RecordingSeries& heldout,
-                                   const DiagnoseOptions& options) {
+                                   const RecordingSeries& heldout, const DiagnoseOptions& options) {
   check_series(calibration, "calibration");
   check_series(heldout, "held-out");
   const double fs_hz = sample_rate_hz(calibration);
@@ -445,8 +447,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
     finding.params = fits[best].settings.params;
     finding.heldout_rms_before = rms_of(current_error);
     finding.heldout_rms_after = rms_of(step.heldout_error[best]);
-    finding.shrink_pct =
-        100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) / finding.heldout_rms_before;
+    finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
+                         finding.heldout_rms_before;
     finding.evidence = fmt::format(
         "fitted on the calibration part (RMS {:.4g} V); on held-out data it lowers the gap's mean "
         "square by {:.3g} V^2 (bootstrap 95 % lower bound {:.3g})",
@@ -540,9 +542,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   diagnosis.heldout_rms_before = rms_of(ho_gap);
   diagnosis.heldout_rms_after = rms_of(current_error);
   const bool has_noise_type =
-      std::any_of(findings.begin(), findings.end(), [](const EffectFinding& f) {
-        return f.noise_type && f.name != "mains_pickup";
-      });
+      std::any_of(findings.begin(), findings.end(),
+                  [](const EffectFinding& f) { return f.noise_type && f.name != "mains_pickup"; });
   const bool gap_exists = diagnosis.heldout_rms_before > kGapRatio * sigma ||
                           !diagnosis.stage.empty() || has_noise_type || !findings.empty();
   const bool left_within_noise = diagnosis.heldout_rms_after <= kExplainedRatio * sigma;
@@ -581,8 +582,9 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
     const RegionCell& cell = detail.regions[*detail.where_region];
     std::vector<double> before, after;
     for (std::size_t i = 0; i < heldout.size(); ++i) {
-      if (heldout.clearance_mm[i] >= cell.clearance_lo && heldout.clearance_mm[i] <= cell.clearance_hi &&
-          heldout.temp_c[i] >= cell.temp_lo && heldout.temp_c[i] <= cell.temp_hi) {
+      if (heldout.clearance_mm[i] >= cell.clearance_lo &&
+          heldout.clearance_mm[i] <= cell.clearance_hi && heldout.temp_c[i] >= cell.temp_lo &&
+          heldout.temp_c[i] <= cell.temp_hi) {
         before.push_back(ho_gap[i]);
         after.push_back(current_error[i]);
       }

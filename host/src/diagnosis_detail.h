@@ -15,10 +15,10 @@ namespace flange::host {
 
 // The gap at one stage of the chain against what the twin's noise alone gives there.
 struct StageGap {
-  std::string name;         // "voltage", "clearance", "filtered_clearance", "alarm_timing"
-  std::string unit;         // "V", "mm" or "s"
-  double gap_rms = 0.0;     // real minus sim (alarm timing: largest onset difference)
-  double noise_floor = 0.0; // the same figure for the noisy twin against the noiseless one
+  std::string name;          // "voltage", "clearance", "filtered_clearance", "alarm_timing"
+  std::string unit;          // "V", "mm" or "s"
+  double gap_rms = 0.0;      // real minus sim (alarm timing: largest onset difference)
+  double noise_floor = 0.0;  // the same figure for the noisy twin against the noiseless one
   double real_error_rms = 0.0, sim_error_rms = 0.0;  // clearance stages: against the reference
   bool significant = false;  // gap_rms > 1.5 x noise_floor (alarm timing: > floor + 1 s)
   std::string note;
@@ -32,7 +32,7 @@ struct RegionCell {
 };
 
 struct InputCoherence {
-  std::string input;  // "temperature", "temperature_rate", "clearance"
+  std::string input;     // "temperature", "temperature_rate", "clearance"
   double in_band = 0.0;  // mean magnitude-squared coherence over the gap's band (or all bins)
   double peak = 0.0;
   double peak_hz = 0.0;
@@ -44,8 +44,8 @@ struct TimeSegment {
 
 struct HowFar {
   double rms_before = 0, rms_after = 0, max_before = 0, max_after = 0;  // held-out, V
-  double region_rms_before = 0, region_rms_after = 0;  // in the where-region cell
-  double band_rms_before = 0, band_rms_after = 0;      // in the where-band (PSD integrated)
+  double region_rms_before = 0, region_rms_after = 0;                   // in the where-region cell
+  double band_rms_before = 0, band_rms_after = 0;  // in the where-band (PSD integrated)
 };
 
 struct DiagnosisDetail {
@@ -59,8 +59,8 @@ struct DiagnosisDetail {
   std::vector<InputCoherence> coherences;
   std::vector<TimeSegment> segments;
   CorrelationTest whiteness, vs_temperature, vs_clearance, vs_temperature_rate;
-  Spectrum gap_psd;           // of the calibration voltage gap
-  double noise_psd = 0.0;     // white-noise level for comparison, V^2/Hz
+  Spectrum gap_psd;                // of the calibration voltage gap
+  double noise_psd = 0.0;          // white-noise level for comparison, V^2/Hz
   std::vector<double> t_s, gap_v;  // the calibration voltage gap over time
   // Held-out traces.
   std::vector<double> heldout_t_s, heldout_gap_before_v, heldout_gap_after_v;
@@ -76,8 +76,7 @@ struct DiagnosisResult {
 
 // diagnose() with the detail kept.
 DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
-                                   const RecordingSeries& heldout,
-                                   const DiagnoseOptions& options);
+                                   const RecordingSeries& heldout, const DiagnoseOptions& options);
 
 // The sample rate of a series from its median step (Hz). Throws InputError for fewer than two
 // samples or a non-increasing time.

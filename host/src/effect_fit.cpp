@@ -79,7 +79,8 @@ std::vector<double> nelder_mead(Objective& objective, std::vector<double> start,
     }
     const auto along = [&](double t) {
       std::vector<double> x(n);
-      for (std::size_t d = 0; d < n; ++d) x[d] = centroid[d] + t * (simplex[worst][d] - centroid[d]);
+      for (std::size_t d = 0; d < n; ++d)
+        x[d] = centroid[d] + t * (simplex[worst][d] - centroid[d]);
       return clamp01(x);
     };
     const std::vector<double> reflected = along(-1.0);
@@ -214,9 +215,9 @@ std::optional<sim::EffectSettings> find_lsb_grid(const std::vector<double>& volt
         }
       }
       if (on_grid) {
-        return sim::make_effect_settings(
-            "adc_quantization", {{"bits", bits}, {"v_min", v_min}, {"v_max", v_max}},
-            "diagnose grid");
+        return sim::make_effect_settings("adc_quantization",
+                                         {{"bits", bits}, {"v_min", v_min}, {"v_max", v_max}},
+                                         "diagnose grid");
       }
     }
   }

@@ -73,8 +73,8 @@ CorrelationTest count_outside(const std::vector<double>& r, std::size_t first, s
     test.max_abs = std::max(test.max_abs, std::abs(r[k]));
     if (std::abs(r[k]) > test.bound) ++test.lags_outside;
   }
-  test.passed = static_cast<double>(test.lags_outside) <=
-                1.0 + 0.01 * static_cast<double>(test.lags_tested);
+  test.passed =
+      static_cast<double>(test.lags_outside) <= 1.0 + 0.01 * static_cast<double>(test.lags_tested);
   return test;
 }
 
@@ -85,7 +85,8 @@ std::vector<double> autocorrelation(const std::vector<double>& x, std::size_t ma
   double norm = 0.0;
   for (double v : c) norm += v * v;
   std::vector<double> r(max_lag + 1);
-  for (std::size_t k = 0; k <= max_lag; ++k) r[k] = correlation_at(c, c, static_cast<long>(k), norm);
+  for (std::size_t k = 0; k <= max_lag; ++k)
+    r[k] = correlation_at(c, c, static_cast<long>(k), norm);
   return r;
 }
 
@@ -98,7 +99,8 @@ std::vector<double> cross_correlation(const std::vector<double>& x, const std::v
   const double norm = std::sqrt(sx * sy);
   std::vector<double> r(2 * max_lag + 1);
   const long m = static_cast<long>(max_lag);
-  for (long k = -m; k <= m; ++k) r[static_cast<std::size_t>(k + m)] = correlation_at(cx, cy, k, norm);
+  for (long k = -m; k <= m; ++k)
+    r[static_cast<std::size_t>(k + m)] = correlation_at(cx, cy, k, norm);
   return r;
 }
 
@@ -131,7 +133,7 @@ Spectrum coherence(const std::vector<double>& x, const std::vector<double>& y, d
   std::vector<double> window(segment);
   for (std::size_t n = 0; n < segment; ++n) {
     window[n] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * static_cast<double>(n) /
-                                      static_cast<double>(segment));
+                                     static_cast<double>(segment));
   }
   Eigen::FFT<double> fft;
   std::vector<double> bx(segment), by(segment);

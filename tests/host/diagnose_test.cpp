@@ -94,17 +94,15 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         Case{"temp_gain_drift", {{"gain_per_c", -0.002}, {"reference_c", 20}}, {"gain_per_c"}},
         Case{"temp_offset_drift", {{"offset_v_per_c", -0.003}}, {"offset_v_per_c"}},
-        Case{"thermal_lag", {{"tau_s", 60}}, {"tau_s"}},
-        Case{"range_compression", {}, {}},
+        Case{"thermal_lag", {{"tau_s", 60}}, {"tau_s"}}, Case{"range_compression", {}, {}},
         Case{"nonlinearity", {{"bow_v", 0.1}, {"s_curve_v", 0.05}}, {"bow_v", "s_curve_v"}},
         Case{"ageing_drift", {{"rate_v_per_day", 0.2}, {"start_age_days", 1.0}}, {}},
         Case{"channel_skew", {{"skew_s", -2.0}}, {"skew_s"}},
         Case{"mains_pickup", {{"amplitude_v", 0.05}}, {"amplitude_v"}},
-        Case{"vibration", {{"rms_mm", 0.1}}, {}},
-        Case{"adc_quantization", {}, {"bits"}}),
-    [](const auto& info) {
+        Case{"vibration", {{"rms_mm", 0.1}}, {}}, Case{"adc_quantization", {}, {"bits"}}),
+    [](const auto& param_info) {
       std::string name;
-      for (char ch : info.param.effect) name += ch == '_' ? 'X' : ch;
+      for (char ch : param_info.param.effect) name += ch == '_' ? 'X' : ch;
       return name;
     });
 
@@ -182,7 +180,8 @@ TEST(DiagnoseCommand, WritesJsonAndReportWithVerdictFirst) {
   EXPECT_EQ(j["where"]["stage"], "voltage");
   EXPECT_EQ(j["stages"].size(), 4u);
   EXPECT_GT(j["effects"][0]["shrink_pct"].get<double>(), 50.0);
-  for (const char* file : {"report.html", "region.svg", "spectrum.svg", "time.svg", "heldout.svg"}) {
+  for (const char* file :
+       {"report.html", "region.svg", "spectrum.svg", "time.svg", "heldout.svg"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / file)) << file;
   }
 }
