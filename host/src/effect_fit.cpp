@@ -36,7 +36,7 @@ std::vector<FreeParam> free_params(const std::string& name) {
 
 // Lattice points per parameter for the starting search: finer in one dimension, where it is
 // cheap and where lags and skews have narrow basins.
-int lattice_points(std::size_t dims) { return dims == 1 ? 41 : dims == 2 ? 9 : 5; }
+int lattice_points(std::size_t dims) { return dims == 1 ? 41 : dims == 2 ? 9 : 7; }
 
 struct Objective {
   std::function<double(const std::vector<double>&)> value;  // of unit-cube coordinates
@@ -124,6 +124,45 @@ std::vector<double> nelder_mead(Objective& objective, std::vector<double> start,
   return simplex[static_cast<std::size_t>(best)];
 }
 
+// ageing_drift is linear in time, gap = r (a0 + t / day): least squares of the gap on [1, t]
+// gives r and r a0 directly (a search over r and a0 crawls along the curved valley r a0 = c).
+// Over a record of hours r itself is poorly determined; their product, the offset, is not.
+EffectFit fit_ageing(const TwinReplay& replay, const std::vector<double>& real_v,
+                     const std::vector<sim::EffectSettings>& modelled) {
+  const std::vector<double> sim_v = replay.voltage(modelled);
+  const std::vector<double>& t = replay.times();
+  const auto n = static_cast<Eigen::Index>(sim_v.size());
+  Eigen::MatrixXd design(n, 2);
+  Eigen::VectorXd gap(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    design(i, 0) = 1.0;
+    design(i, 1) = t[k] / 86400.0;
+    gap(i) = real_v[k] - sim_v[k];
+  }
+  const Eigen::Vector2d beta = design.colPivHouseholderQr().solve(gap);
+  const double offset_v = std::clamp(beta(0), -2.0 * 3650.0, 2.0 * 3650.0);
+  double rate = std::clamp(beta(1), -2.0, 2.0);
+  // The start age must be 0 to 3650 days: the rate takes the offset's sign and is at least
+  // what that range allows.
+  if (rate * offset_v < 0.0 || std::abs(rate) < std::abs(offset_v) / 3650.0) {
+    rate = std::copysign(std::max(std::abs(rate), std::abs(offset_v) / 3650.0), offset_v);
+  }
+  rate = std::clamp(rate, -2.0, 2.0);
+  const double start_days = rate != 0.0 ? std::clamp(offset_v / rate, 0.0, 3650.0) : 0.0;
+  EffectFit fit;
+  fit.settings = sim::make_effect_settings(
+      "ageing_drift", {{"rate_v_per_day", rate}, {"start_age_days", start_days}}, "diagnose fit");
+  std::vector<sim::EffectSettings> with = modelled;
+  with.push_back(fit.settings);
+  const std::vector<double> fitted = replay.voltage(with);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < fitted.size(); ++i) sum += std::pow(real_v[i] - fitted[i], 2);
+  fit.rms_v = std::sqrt(sum / static_cast<double>(fitted.size()));
+  fit.evaluations = 2;
+  return fit;
+}
+
 }  // namespace
 
 bool fitted_by_bias(const std::string& name) {
@@ -139,6 +178,7 @@ std::vector<std::string> fitted_keys(const std::string& name) {
 EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
                      const std::vector<double>& real_v,
                      const std::vector<sim::EffectSettings>& modelled) {
+  if (name == "ageing_drift") return fit_ageing(replay, real_v, modelled);
   const std::vector<FreeParam> params = free_params(name);
   // Mains: the frequency aliases (any mains_hz gives a line at its alias), so it is chosen
   // between the two mains standards rather than fitted continuously.
@@ -187,7 +227,7 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
       if (d == dims) break;
     }
     const std::vector<double> unit =
-        nelder_mead(objective, start, 0.5 / (points - 1), 60 + 40 * static_cast<int>(dims));
+        nelder_mead(objective, start, 0.5 / (points - 1), 100 * static_cast<int>(dims));
     const double value = objective.value(unit);
     if (value < best.rms_v) {
       best.settings = settings_at(unit);
@@ -202,10 +242,12 @@ std::optional<sim::EffectSettings> find_lsb_grid(const std::vector<double>& volt
   if (voltage_v.empty()) return std::nullopt;
   const std::vector<std::pair<double, double>> ranges = {{-10, 10}, {0, 10}, {-5, 5}, {0, 5}};
   constexpr double kTolerance = 1.5e-6;  // the CSV's 0.5 uV rounding plus the grid's own
+  const auto [lowest, highest] = std::minmax_element(voltage_v.begin(), voltage_v.end());
   for (int bits = 4; bits <= 24; ++bits) {
     for (const auto& [v_min, v_max] : ranges) {
       const double lsb = (v_max - v_min) / std::ldexp(1.0, bits);
-      if (lsb < 20e-6) continue;
+      // A range that does not hold every recorded value cannot be the converter's.
+      if (lsb < 20e-6 || *lowest < v_min || *highest > v_max) continue;
       bool on_grid = true;
       for (double v : voltage_v) {
         const double code = (v - v_min) / lsb;

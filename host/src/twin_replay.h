@@ -34,6 +34,7 @@ class TwinReplay {
   const std::vector<double>& nominal_voltage() const { return nominal_v_; }
   // dV/dd of the nominal model at every sample (V/mm): how clearance motion shows in volts.
   const std::vector<double>& sensitivity_v_per_mm() const { return sensitivity_; }
+  const std::vector<double>& times() const { return series_.t_s; }
 
  private:
   const RecordingSeries& series_;
