@@ -182,8 +182,20 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
   const std::vector<FreeParam> params = free_params(name);
   // Mains: the frequency aliases (any mains_hz gives a line at its alias), so it is chosen
   // between the two mains standards rather than fitted continuously.
-  const std::vector<double> mains_choices =
-      name == "mains_pickup" ? std::vector<double>{50.0, 60.0} : std::vector<double>{0.0};
+  // A standard whose fundamental aliases to DC (60 Hz at 6 Hz) is an offset, not a tone, and
+  // is left to the offset effects.
+  std::vector<double> mains_choices{0.0};
+  if (name == "mains_pickup") {
+    const std::vector<double>& t = replay.times();
+    const double fs_hz = static_cast<double>(t.size() - 1) / (t.back() - t.front());
+    mains_choices.clear();
+    for (const double f : {50.0, 60.0}) {
+      if (std::abs(f - fs_hz * std::round(f / fs_hz)) > 0.01 * fs_hz) mains_choices.push_back(f);
+    }
+    if (mains_choices.empty())
+      return {sim::make_effect_settings(name, {}, "diagnose fit"),
+              std::numeric_limits<double>::infinity(), 0};
+  }
   EffectFit best;
   best.rms_v = std::numeric_limits<double>::infinity();
   for (const double mains_hz : mains_choices) {

@@ -82,7 +82,11 @@ TEST_P(DiagnoseRecovers, TopEffectAndParameters) {
                                    << d.heldout_rms_after << " noise " << d.noise_std_v;
   ASSERT_FALSE(d.effects.empty());
   const EffectFinding& top = d.effects.front();
-  EXPECT_EQ(top.name, c.effect);
+  std::string found;
+  for (const EffectFinding& f : d.effects) {
+    found += f.name + " (" + std::to_string(f.heldout_rms_after) + " V) ";
+  }
+  EXPECT_EQ(top.name, c.effect) << found;
   for (const std::string& key : c.checked) {
     EXPECT_NEAR(top.params.at(key), c.truth.at(key), 0.2 * std::abs(c.truth.at(key)))
         << c.effect << "." << key;
@@ -99,7 +103,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"ageing_drift", {{"rate_v_per_day", 0.2}, {"start_age_days", 1.0}}, {}},
         Case{"channel_skew", {{"skew_s", -2.0}}, {"skew_s"}},
         Case{"mains_pickup", {{"amplitude_v", 0.05}}, {"amplitude_v"}},
-        Case{"vibration", {{"rms_mm", 0.1}}, {}}, Case{"adc_quantization", {}, {"bits"}}),
+        Case{"vibration", {{"rms_mm", 0.1}}, {}},
+        Case{"adc_quantization", {{"bits", 12}}, {"bits"}}),
     [](const auto& param_info) {
       std::string name;
       for (char ch : param_info.param.effect) name += ch == '_' ? 'X' : ch;
