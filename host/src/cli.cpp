@@ -8,6 +8,7 @@
 #include "calibrate_command.h"
 #include "cosim_command.h"
 #include "demo_command.h"
+#include "diagnose_command.h"
 #include "design_command.h"
 #include "run_command.h"
 #include "simulate_command.h"
@@ -38,6 +39,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* synth = add_synth_command(app, synth_options);
   StreamOptions stream_options;
   CLI::App* stream = add_stream_command(app, stream_options);
+  DiagnoseCommandOptions diagnose_options;
+  CLI::App* diagnose = add_diagnose_command(app, diagnose_options);
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
@@ -62,6 +65,7 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
     if (synth->parsed()) return run_synth_command(synth_options, out, err);
     if (stream->parsed()) return run_stream_command(stream_options, out, err);
+    if (diagnose->parsed()) return run_diagnose_command(diagnose_options, out, err);
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
     return kExitFailure;

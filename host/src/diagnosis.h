@@ -24,9 +24,9 @@ struct DiagnoseOptions {
   // The twin the recording is compared with; its effects are the ones already modelled.
   // Default: the nominal eq. 3.14 model with the noise level estimated from the data.
   sim::TwinConfig twin;
-  bool estimate_noise = true;   // estimate twin.noise.voltage_std_v from the data
-  int bootstrap_rounds = 100;   // for confidence intervals and effect inclusion frequencies
-  std::uint64_t seed = 1;       // bootstrap resampling
+  bool estimate_noise = true;  // estimate twin.noise.voltage_std_v from the data
+  int bootstrap_rounds = 100;  // for confidence intervals and effect inclusion frequencies
+  std::uint64_t seed = 1;      // bootstrap resampling
 };
 
 struct EffectFinding {
@@ -41,11 +41,12 @@ struct EffectFinding {
 };
 
 struct Diagnosis {
-  std::string status;                // "explained", "unexplained" or "none"
+  std::string status;                  // "explained", "unexplained" or "none"
   std::vector<EffectFinding> effects;  // selected, in selection order (empty unless explained)
-  std::string stage;                 // the stage where the gap first appears
-  double heldout_rms_before = 0.0;   // V, nominal twin against the held-out recording
-  double heldout_rms_after = 0.0;    // V, with every selected effect
+  std::string stage;                   // the stage where the gap first appears
+  double heldout_rms_before = 0.0;     // V, nominal twin against the held-out recording
+  double heldout_rms_after = 0.0;      // V, with every selected effect
+  double noise_std_v = 0.0;            // V, the twin's white noise the verdict compares with
 };
 
 // Fits on `calibration`, scores on `heldout`; both must share a sample rate and carry the

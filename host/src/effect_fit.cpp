@@ -1,0 +1,311 @@
+// SPDX-License-Identifier: MIT
+#include "effect_fit.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "residual_tests.h"
+
+namespace flange::host {
+namespace {
+
+// A fitted parameter and the range searched (inside the catalogue's valid range; narrower
+// where the full range is physically absurd for a bench, e.g. a gain change of 1 per degree).
+struct FreeParam {
+  std::string key;
+  double lo, hi;
+};
+
+std::vector<FreeParam> free_params(const std::string& name) {
+  if (name == "temp_gain_drift") return {{"gain_per_c", -0.01, 0.01}, {"reference_c", -40, 150}};
+  if (name == "temp_offset_drift")
+    return {{"offset_v_per_c", -0.05, 0.05}, {"reference_c", -40, 150}};
+  if (name == "thermal_lag") return {{"tau_s", -1800, 1800}};
+  if (name == "range_compression")
+    return {{"onset_c", -40, 150}, {"knee_drop_v_per_c", 0.0, 0.2}, {"headroom_v", 0.05, 3.0}};
+  if (name == "nonlinearity") return {{"bow_v", -1, 1}, {"s_curve_v", -1, 1}};
+  if (name == "ageing_drift") return {{"rate_v_per_day", -2, 2}, {"start_age_days", 0, 30}};
+  if (name == "channel_skew") return {{"skew_s", -10, 10}};
+  if (name == "mains_pickup")
+    return {{"amplitude_v", 0, 1}, {"phase_deg", -180, 180}, {"harmonic_ratio", 0, 1}};
+  return {};
+}
+
+// Lattice points per parameter for the starting search: finer in one dimension, where it is
+// cheap and where lags and skews have narrow basins.
+int lattice_points(std::size_t dims) { return dims == 1 ? 41 : dims == 2 ? 9 : 7; }
+
+struct Objective {
+  std::function<double(const std::vector<double>&)> value;  // of unit-cube coordinates
+  int evaluations = 0;
+};
+
+// Nelder-Mead on the unit cube (coordinates clamped), from `start`.
+std::vector<double> nelder_mead(Objective& objective, std::vector<double> start, double step,
+                                int max_evaluations) {
+  const std::size_t n = start.size();
+  const auto clamp01 = [](std::vector<double> x) {
+    for (double& v : x) v = std::clamp(v, 0.0, 1.0);
+    return x;
+  };
+  const auto f = [&](const std::vector<double>& x) {
+    ++objective.evaluations;
+    return objective.value(x);
+  };
+  std::vector<std::vector<double>> simplex{clamp01(start)};
+  for (std::size_t d = 0; d < n; ++d) {
+    std::vector<double> x = start;
+    x[d] += x[d] + step <= 1.0 ? step : -step;
+    simplex.push_back(clamp01(x));
+  }
+  std::vector<double> values;
+  for (const auto& x : simplex) values.push_back(f(x));
+  int used = static_cast<int>(simplex.size());
+  while (used < max_evaluations) {
+    std::vector<std::size_t> order(simplex.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return values[a] < values[b]; });
+    const std::size_t best = order.front(), worst = order.back(), second = order[n - 1];
+    if (std::abs(values[worst] - values[best]) <= 1e-10 * (std::abs(values[best]) + 1e-12)) {
+      break;
+    }
+    std::vector<double> centroid(n, 0.0);
+    for (std::size_t i = 0; i < simplex.size(); ++i) {
+      if (i == worst) continue;
+      for (std::size_t d = 0; d < n; ++d) centroid[d] += simplex[i][d] / static_cast<double>(n);
+    }
+    const auto along = [&](double t) {
+      std::vector<double> x(n);
+      for (std::size_t d = 0; d < n; ++d)
+        x[d] = centroid[d] + t * (simplex[worst][d] - centroid[d]);
+      return clamp01(x);
+    };
+    const std::vector<double> reflected = along(-1.0);
+    const double fr = f(reflected);
+    ++used;
+    if (fr < values[best]) {
+      const std::vector<double> expanded = along(-2.0);
+      const double fe = f(expanded);
+      ++used;
+      if (fe < fr) {
+        simplex[worst] = expanded;
+        values[worst] = fe;
+      } else {
+        simplex[worst] = reflected;
+        values[worst] = fr;
+      }
+    } else if (fr < values[second]) {
+      simplex[worst] = reflected;
+      values[worst] = fr;
+    } else {
+      const std::vector<double> contracted = along(fr < values[worst] ? -0.5 : 0.5);
+      const double fc = f(contracted);
+      ++used;
+      if (fc < std::min(fr, values[worst])) {
+        simplex[worst] = contracted;
+        values[worst] = fc;
+      } else {
+        // Shrink towards the best point.
+        for (std::size_t i = 0; i < simplex.size(); ++i) {
+          if (i == best) continue;
+          for (std::size_t d = 0; d < n; ++d) {
+            simplex[i][d] = simplex[best][d] + 0.5 * (simplex[i][d] - simplex[best][d]);
+          }
+          values[i] = f(simplex[i]);
+          ++used;
+        }
+      }
+    }
+  }
+  const auto best = std::min_element(values.begin(), values.end()) - values.begin();
+  return simplex[static_cast<std::size_t>(best)];
+}
+
+// ageing_drift is linear in time, gap = r (a0 + t / day): least squares of the gap on [1, t]
+// gives r and r a0 directly (a search over r and a0 crawls along the curved valley r a0 = c).
+// Over a record of hours r itself is poorly determined; their product, the offset, is not.
+EffectFit fit_ageing(const TwinReplay& replay, const std::vector<double>& real_v,
+                     const std::vector<sim::EffectSettings>& modelled) {
+  const std::vector<double> sim_v = replay.voltage(modelled);
+  const std::vector<double>& t = replay.times();
+  const auto n = static_cast<Eigen::Index>(sim_v.size());
+  Eigen::MatrixXd design(n, 2);
+  Eigen::VectorXd gap(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    design(i, 0) = 1.0;
+    design(i, 1) = t[k] / 86400.0;
+    gap(i) = real_v[k] - sim_v[k];
+  }
+  const Eigen::Vector2d beta = design.colPivHouseholderQr().solve(gap);
+  const double offset_v = std::clamp(beta(0), -2.0 * 3650.0, 2.0 * 3650.0);
+  double rate = std::clamp(beta(1), -2.0, 2.0);
+  // The start age must be 0 to 3650 days: the rate takes the offset's sign and is at least
+  // what that range allows.
+  if (rate * offset_v < 0.0 || std::abs(rate) < std::abs(offset_v) / 3650.0) {
+    rate = std::copysign(std::max(std::abs(rate), std::abs(offset_v) / 3650.0), offset_v);
+  }
+  rate = std::clamp(rate, -2.0, 2.0);
+  const double start_days = rate != 0.0 ? std::clamp(offset_v / rate, 0.0, 3650.0) : 0.0;
+  EffectFit fit;
+  fit.settings = sim::make_effect_settings(
+      "ageing_drift", {{"rate_v_per_day", rate}, {"start_age_days", start_days}}, "diagnose fit");
+  std::vector<sim::EffectSettings> with = modelled;
+  with.push_back(fit.settings);
+  const std::vector<double> fitted = replay.voltage(with);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < fitted.size(); ++i) sum += std::pow(real_v[i] - fitted[i], 2);
+  fit.rms_v = std::sqrt(sum / static_cast<double>(fitted.size()));
+  fit.evaluations = 2;
+  return fit;
+}
+
+}  // namespace
+
+bool fitted_by_bias(const std::string& name) {
+  return name != "vibration" && name != "adc_quantization";
+}
+
+std::vector<std::string> fitted_keys(const std::string& name) {
+  std::vector<std::string> keys;
+  for (const FreeParam& p : free_params(name)) keys.push_back(p.key);
+  return keys;
+}
+
+EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
+                     const std::vector<double>& real_v,
+                     const std::vector<sim::EffectSettings>& modelled) {
+  if (name == "ageing_drift") return fit_ageing(replay, real_v, modelled);
+  const std::vector<FreeParam> params = free_params(name);
+  // Mains: the frequency aliases (any mains_hz gives a line at its alias), so it is chosen
+  // between the two mains standards rather than fitted continuously.
+  // A standard whose fundamental aliases to DC (60 Hz at 6 Hz) is an offset, not a tone, and
+  // is left to the offset effects.
+  std::vector<double> mains_choices{0.0};
+  if (name == "mains_pickup") {
+    const std::vector<double>& t = replay.times();
+    const double fs_hz = static_cast<double>(t.size() - 1) / (t.back() - t.front());
+    mains_choices.clear();
+    for (const double f : {50.0, 60.0}) {
+      if (std::abs(f - fs_hz * std::round(f / fs_hz)) > 0.01 * fs_hz) mains_choices.push_back(f);
+    }
+    if (mains_choices.empty())
+      return {sim::make_effect_settings(name, {}, "diagnose fit"),
+              std::numeric_limits<double>::infinity(), 0};
+  }
+  EffectFit best;
+  best.rms_v = std::numeric_limits<double>::infinity();
+  for (const double mains_hz : mains_choices) {
+    sim::ParamValues fixed;
+    if (name == "mains_pickup") fixed["mains_hz"] = mains_hz;
+    const auto settings_at = [&](const std::vector<double>& unit) {
+      sim::ParamValues values = fixed;
+      for (std::size_t d = 0; d < params.size(); ++d) {
+        values[params[d].key] = params[d].lo + unit[d] * (params[d].hi - params[d].lo);
+      }
+      return sim::make_effect_settings(name, values, "diagnose fit");
+    };
+    Objective objective;
+    objective.value = [&](const std::vector<double>& unit) {
+      std::vector<sim::EffectSettings> effects = modelled;
+      effects.push_back(settings_at(unit));
+      const std::vector<double> sim_v = replay.voltage(effects);
+      double sum = 0.0;
+      for (std::size_t i = 0; i < sim_v.size(); ++i) {
+        sum += (real_v[i] - sim_v[i]) * (real_v[i] - sim_v[i]);
+      }
+      return std::sqrt(sum / static_cast<double>(sim_v.size()));
+    };
+    // Coarse lattice, then Nelder-Mead from its best point.
+    const std::size_t dims = params.size();
+    const int points = lattice_points(dims);
+    std::vector<double> start(dims, 0.5);
+    double start_value = std::numeric_limits<double>::infinity();
+    std::vector<int> index(dims, 0);
+    while (true) {
+      std::vector<double> unit(dims);
+      for (std::size_t d = 0; d < dims; ++d) unit[d] = index[d] / static_cast<double>(points - 1);
+      const double value = objective.value(unit);
+      ++objective.evaluations;
+      if (value < start_value) {
+        start_value = value;
+        start = unit;
+      }
+      std::size_t d = 0;
+      while (d < dims && ++index[d] == points) index[d++] = 0;
+      if (d == dims) break;
+    }
+    const std::vector<double> unit =
+        nelder_mead(objective, start, 0.5 / (points - 1), 100 * static_cast<int>(dims));
+    const double value = objective.value(unit);
+    if (value < best.rms_v) {
+      best.settings = settings_at(unit);
+      best.rms_v = value;
+    }
+    best.evaluations += objective.evaluations + 1;
+  }
+  return best;
+}
+
+std::optional<sim::EffectSettings> find_lsb_grid(const std::vector<double>& voltage_v) {
+  if (voltage_v.empty()) return std::nullopt;
+  const std::vector<std::pair<double, double>> ranges = {{-10, 10}, {0, 10}, {-5, 5}, {0, 5}};
+  constexpr double kTolerance = 1.5e-6;  // the CSV's 0.5 uV rounding plus the grid's own
+  const auto [lowest, highest] = std::minmax_element(voltage_v.begin(), voltage_v.end());
+  for (int bits = 4; bits <= 24; ++bits) {
+    for (const auto& [v_min, v_max] : ranges) {
+      const double lsb = (v_max - v_min) / std::ldexp(1.0, bits);
+      // A range that does not hold every recorded value cannot be the converter's.
+      if (lsb < 20e-6 || *lowest < v_min || *highest > v_max) continue;
+      bool on_grid = true;
+      for (double v : voltage_v) {
+        const double code = (v - v_min) / lsb;
+        if (std::abs(code - std::round(code)) * lsb > kTolerance) {
+          on_grid = false;
+          break;
+        }
+      }
+      if (on_grid) {
+        return sim::make_effect_settings("adc_quantization",
+                                         {{"bits", bits}, {"v_min", v_min}, {"v_max", v_max}},
+                                         "diagnose grid");
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+VibrationSignature vibration_signature(const std::vector<double>& gap_v,
+                                       const std::vector<double>& sensitivity_v_per_mm) {
+  VibrationSignature signature;
+  const std::size_t n = gap_v.size();
+  if (n < 16) return signature;
+  Eigen::MatrixXd design(n - 1, 2);
+  Eigen::VectorXd target(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double d = gap_v[i + 1] - gap_v[i];
+    const double s = 0.5 * (sensitivity_v_per_mm[i] + sensitivity_v_per_mm[i + 1]);
+    design(static_cast<Eigen::Index>(i), 0) = 1.0;
+    design(static_cast<Eigen::Index>(i), 1) = s * s;
+    target(static_cast<Eigen::Index>(i)) = d * d;
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
+  if (qr.rank() < 2) return signature;
+  const Eigen::Vector2d beta = qr.solve(target);
+  const Eigen::VectorXd residual = target - design * beta;
+  const double dof = static_cast<double>(n - 1) - 2.0;
+  const double s2 = residual.squaredNorm() / dof;
+  const Eigen::Matrix2d covariance = s2 * (design.transpose() * design).inverse();
+  signature.slope_t = beta(1) / std::sqrt(covariance(1, 1));
+  signature.rms_mm = std::sqrt(std::max(0.0, beta(1)) / 2.0);
+  signature.voltage_noise_std_v = std::sqrt(std::max(0.0, beta(0)) / 2.0);
+  const double mean_s2 = design.col(1).mean();
+  const double motion_share = beta(1) * mean_s2 / std::max(target.mean(), 1e-30);
+  signature.present = signature.slope_t > 8.0 && motion_share > 0.1;
+  return signature;
+}
+
+}  // namespace flange::host
