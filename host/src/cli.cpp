@@ -9,6 +9,7 @@
 #include "cosim_command.h"
 #include "demo_command.h"
 #include "design_command.h"
+#include "hw_diagnose_command.h"
 #include "run_command.h"
 #include "simulate_command.h"
 
@@ -32,6 +33,13 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* simulate = sim::add_simulate_command(app, simulate_options);
   CosimCommandOptions cosim_options;
   CLI::App* cosim = add_cosim_command(app, cosim_options);
+  // `diagnose`: only the hardware layer (--hw) lives in this branch; the data layer (--real) and
+  // --selftest join the same subcommand.
+  CLI::App* diagnose =
+      app.add_subcommand("diagnose", "Diagnose a sim-to-real gap (--hw: float design vs RTL)");
+  HwDiagnoseOptions hw_diagnose_options;
+  add_hw_diagnose_options(*diagnose, hw_diagnose_options);
+  add_hw_diagnose_shared_options(*diagnose, hw_diagnose_options);
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
@@ -54,6 +62,11 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
     if (simulate->parsed()) return sim::run_simulate_command(simulate_options, out, err);
     if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
+    if (diagnose->parsed()) {
+      if (hw_diagnose_options.hw) return run_hw_diagnosis(hw_diagnose_options, out, err);
+      err << "flange diagnose: give --hw (the float design against the Verilated RTL)\n";
+      return kExitBadArgument;
+    }
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
     return kExitFailure;
