@@ -26,4 +26,12 @@ const std::vector<ThesisFilter>& thesis_filters() {
   return filters;
 }
 
+const PrintedTransferFunction& thesis_eq_4_20_printed() {
+  static const PrintedTransferFunction printed = {
+      "eq. 4.20",
+      {2.273e-15, 1.591e-14, 4.773e-14, 7.955e-14, 7.955e-14, 4.773e-14, 1.591e-14, 2.273e-15},
+      {1, -6.927, 20.56, -33.92, 33.56, -19.93, 6.574, -0.9295}};
+  return printed;
+}
+
 }  // namespace flange::coeffs

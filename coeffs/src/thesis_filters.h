@@ -18,4 +18,14 @@ struct ThesisFilter {
 // Vehicle-dynamics filter (section 4.4.2, eq. 4.20): fs = 100 Hz, 7th order, fc = 0.259 Hz.
 const std::vector<ThesisFilter>& thesis_filters();
 
+// A transfer function b(z^-1) / a(z^-1) as the thesis prints it.
+struct PrintedTransferFunction {
+  std::string equation;  // e.g. "eq. 4.20"
+  std::vector<double> b, a;
+};
+
+// Eq. 4.20 as printed: the vehicle-dynamics filter's 7th-order direct form, 4 significant digits
+// (docs/thesis_filters.md: three of its poles lie outside the unit circle).
+const PrintedTransferFunction& thesis_eq_4_20_printed();
+
 }  // namespace flange::coeffs

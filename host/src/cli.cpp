@@ -8,8 +8,9 @@
 #include "calibrate_command.h"
 #include "cosim_command.h"
 #include "demo_command.h"
-#include "diagnose_command.h"
 #include "design_command.h"
+#include "diagnose_command.h"
+#include "hw_diagnose_command.h"
 #include "run_command.h"
 #include "simulate_command.h"
 #include "stream_command.h"
@@ -41,6 +42,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* stream = add_stream_command(app, stream_options);
   DiagnoseCommandOptions diagnose_options;
   CLI::App* diagnose = add_diagnose_command(app, diagnose_options);
+  HwDiagnoseOptions hw_diagnose_options;  // --hw: the float design against the Verilated RTL
+  add_hw_diagnose_options(*diagnose, hw_diagnose_options);
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
@@ -65,7 +68,15 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
     if (synth->parsed()) return run_synth_command(synth_options, out, err);
     if (stream->parsed()) return run_stream_command(stream_options, out, err);
-    if (diagnose->parsed()) return run_diagnose_command(diagnose_options, out, err);
+    if (diagnose->parsed()) {
+      if (hw_diagnose_options.hw) {
+        // --seed and --out are the data layer's options; the hardware layer reads them too.
+        hw_diagnose_options.seed = diagnose_options.seed;
+        if (!diagnose_options.out.empty()) hw_diagnose_options.out = diagnose_options.out;
+        return run_hw_diagnosis(hw_diagnose_options, out, err);
+      }
+      return run_diagnose_command(diagnose_options, out, err);
+    }
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
     return kExitFailure;

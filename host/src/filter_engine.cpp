@@ -26,7 +26,7 @@ class ModelEngine : public FilterEngine {
     out.resize(in.size());
     for (std::size_t k = 0; k < in.size(); ++k) {
       const model::StepResult result = core_.step(in[k].word);
-      out[k] = {gain_ * result.sample / full_scale_, result.saturated};
+      out[k] = {gain_ * result.sample / full_scale_, result.saturated, result.sample};
     }
   }
 

@@ -19,6 +19,7 @@ struct EngineSample {
 struct EngineOutput {
   double unit = 0.0;       // the output in full-scale units, leftover gain applied
   bool saturated = false;  // the core clipped while computing it
+  std::int32_t word = 0;   // the core's output word (model and rtl engines; 0 for float)
 };
 
 // Engines take blocks so that the RTL engine, which runs the Verilated core in a child process,

@@ -105,7 +105,7 @@ class RtlEngine : public FilterEngine {
       std::memcpy(&value, &reply[k * 5], 4);
       const unsigned flags = reply[k * 5 + 4];
       if ((flags & kMismatch) != 0) ++mismatches_;
-      out[k] = {gain_ * value / full_scale_, (flags & kSaturated) != 0};
+      out[k] = {gain_ * value / full_scale_, (flags & kSaturated) != 0, value};
     }
   }
 
