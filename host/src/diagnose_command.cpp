@@ -84,7 +84,10 @@ RecordingSeries slice(const RecordingSeries& s, std::size_t begin, std::size_t e
 int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& out,
                          std::ostream& err) {
   try {
-    if (options.real.empty()) throw InputError("--real: a recording is required");
+    if (options.real.empty())
+      throw InputError(
+          "--real: a recording is required (or --hw --coeffs DIR/filter.json for the float design "
+          "against the RTL)");
     if (options.out.empty()) throw InputError("--out: an output folder is required");
     if (!options.holdout && !options.holdout_fraction) {
       throw InputError("give --holdout B.csv or --holdout-fraction F (0.05 to 0.5)");
