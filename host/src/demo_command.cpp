@@ -192,12 +192,39 @@ int run_demo_command(const DemoOptions& options, std::ostream& out, std::ostream
     must(1, std::string("the aliasing analysis: ") + error.what());
   }
 
+  out << "\n== 7. The sim-to-real gap: two bench sessions with an effect the twin was not told "
+         "about (the sensor's offset drifts with temperature), diagnosed blind\n";
+  const std::string drift = "temp_offset_drift:offset_v_per_c=-0.002";
+  if (must(step({"simulate", "--scenario", "bench", "--effect", drift, "--seed", "3", "--out",
+                 path("bench_drift_a.csv")},
+                out, err),
+           "simulating the drifting bench session A") &&
+      must(step({"simulate", "--scenario", "bench", "--effect", drift, "--seed", "4", "--out",
+                 path("bench_drift_b.csv")},
+                out, err),
+           "simulating the drifting bench session B")) {
+    must(step({"diagnose", "--real", path("bench_drift_a.csv"), "--holdout",
+               path("bench_drift_b.csv"), "--out", path("diagnosis")},
+              out, err),
+         "diagnosing the drifting bench session");
+  }
+
+  out << "\n== 8. The gap one layer down: the float design against the Verilated RTL\n";
+  must(step({"diagnose", "--hw", "--coeffs", measurement, "--stimulus", "sweep", "--out",
+             path("hw_diagnosis")},
+            out, err),
+       "diagnosing the measurement filter's float-to-RTL gap");
+  must(step({"diagnose", "--hw", "--coeffs", path("vehicle_sos/filter.json"), "--thesis-eq-4-20",
+             "--stimulus", "step"},
+            out, err),
+       "diagnosing the thesis's printed eq. 4.20");
+
   if (failures > 0) {
     err << "flange demo: " << failures << " step(s) failed\n";
     return kExitFailure;
   }
   out << "\ndemo: everything is in " << dir.string() << "/ (reports: bench_report/index.html, "
-      << "loco_report/index.html)\n";
+      << "loco_report/index.html, diagnosis/report.html, hw_diagnosis/hw_diagnosis.html)\n";
   return kExitOk;
 }
 
