@@ -10,6 +10,7 @@
 #include "demo_command.h"
 #include "design_command.h"
 #include "diagnose_command.h"
+#include "diagnose_selftest_command.h"
 #include "hw_diagnose_command.h"
 #include "run_command.h"
 #include "simulate_command.h"
@@ -44,6 +45,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   CLI::App* diagnose = add_diagnose_command(app, diagnose_options);
   HwDiagnoseOptions hw_diagnose_options;  // --hw: the float design against the Verilated RTL
   add_hw_diagnose_options(*diagnose, hw_diagnose_options);
+  SelftestCommandOptions selftest_options;  // --selftest: the blind check of the data layer
+  add_selftest_options(*diagnose, selftest_options);
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
@@ -74,6 +77,13 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
         hw_diagnose_options.seed = diagnose_options.seed;
         if (!diagnose_options.out.empty()) hw_diagnose_options.out = diagnose_options.out;
         return run_hw_diagnosis(hw_diagnose_options, out, err);
+      }
+      if (selftest_options.selftest) {
+        // --seed, --out and --bootstrap are the data layer's options; the self-test reads them.
+        selftest_options.run.seed = diagnose_options.seed;
+        selftest_options.run.bootstrap_rounds = diagnose_options.bootstrap_rounds;
+        if (!diagnose_options.out.empty()) selftest_options.out = diagnose_options.out;
+        return run_selftest_command(selftest_options, out, err);
       }
       return run_diagnose_command(diagnose_options, out, err);
     }

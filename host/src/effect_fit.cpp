@@ -20,9 +20,10 @@ struct FreeParam {
 };
 
 std::vector<FreeParam> free_params(const std::string& name) {
-  if (name == "temp_gain_drift") return {{"gain_per_c", -0.01, 0.01}, {"reference_c", -40, 150}};
-  if (name == "temp_offset_drift")
-    return {{"offset_v_per_c", -0.05, 0.05}, {"reference_c", -40, 150}};
+  // The drifts' reference is the temperature the sensor was calibrated at: a room, 0-40 degC. A
+  // reference far outside it would let a temperature drift pose as a constant offset.
+  if (name == "temp_gain_drift") return {{"gain_per_c", -0.01, 0.01}, {"reference_c", 0, 40}};
+  if (name == "temp_offset_drift") return {{"offset_v_per_c", -0.05, 0.05}, {"reference_c", 0, 40}};
   if (name == "thermal_lag") return {{"tau_s", -1800, 1800}};
   if (name == "range_compression")
     return {{"onset_c", -40, 150}, {"knee_drop_v_per_c", 0.0, 0.2}, {"headroom_v", 0.05, 3.0}};
@@ -124,32 +125,74 @@ std::vector<double> nelder_mead(Objective& objective, std::vector<double> start,
   return simplex[static_cast<std::size_t>(best)];
 }
 
+// The ageing drift's line over the record: offset a = r a0 at t = 0 and rate r, with the
+// catalogue's limits: |r| <= 2 V/day, start age a0 = a / r in [0, 3650] days (so a and r share
+// a sign). Least squares of `gap` on [1, t in days] within those limits: the free optimum if it
+// is allowed, else the best point on the edges of the allowed region (a = 0, a0 = 3650,
+// r = +-2), where a convex problem's constrained optimum lies.
+struct AgeingLine {
+  double offset_v = 0.0, rate_v_per_day = 0.0;
+};
+AgeingLine ageing_line(const std::vector<double>& gap, const std::vector<double>& t_s) {
+  constexpr double kMaxRate = 2.0, kMaxAge = 3650.0, kDay = 86400.0;
+  const double n = static_cast<double>(gap.size());
+  double st = 0, sg = 0, stt = 0, stg = 0, sgg = 0;
+  for (std::size_t i = 0; i < gap.size(); ++i) {
+    const double t = t_s[i] / kDay;
+    st += t;
+    sg += gap[i];
+    stt += t * t;
+    stg += t * gap[i];
+    sgg += gap[i] * gap[i];
+  }
+  // Sum of squares of gap - a - r t, from the sums.
+  const auto sse = [&](double a, double r) {
+    return sgg - 2 * a * sg - 2 * r * stg + n * a * a + 2 * a * r * st + r * r * stt;
+  };
+  const auto allowed = [&](double a, double r) {
+    return std::abs(r) <= kMaxRate && a * r >= 0.0 && std::abs(a) <= kMaxAge * std::abs(r) + 1e-12;
+  };
+  const double denominator = n * stt - st * st;
+  if (denominator > 0.0) {
+    const double r = (n * stg - st * sg) / denominator;
+    const double a = (sg - r * st) / n;
+    if (allowed(a, r)) return {a, r};
+  }
+  std::vector<AgeingLine> edges;
+  edges.push_back({0.0, std::clamp(stt > 0 ? stg / stt : 0.0, -kMaxRate, kMaxRate)});  // a = 0
+  // a = kMaxAge r: gap = r (kMaxAge + t).
+  const double suu = n * kMaxAge * kMaxAge + 2 * kMaxAge * st + stt;
+  const double sug = kMaxAge * sg + stg;
+  const double r_old = std::clamp(sug / suu, -kMaxRate, kMaxRate);
+  edges.push_back({kMaxAge * r_old, r_old});
+  for (const double r : {kMaxRate, -kMaxRate}) {  // r at a limit, a between 0 and kMaxAge r
+    const double a = (sg - r * st) / n;
+    edges.push_back({std::clamp(a, std::min(0.0, kMaxAge * r), std::max(0.0, kMaxAge * r)), r});
+  }
+  return *std::min_element(edges.begin(), edges.end(), [&](const auto& x, const auto& y) {
+    return sse(x.offset_v, x.rate_v_per_day) < sse(y.offset_v, y.rate_v_per_day);
+  });
+}
+
+// Subtracts the ageing drift's best line (ageing_line) from `gap`.
+void remove_line_in_time(std::vector<double>& gap, const std::vector<double>& t_s) {
+  const AgeingLine line = ageing_line(gap, t_s);
+  for (std::size_t i = 0; i < gap.size(); ++i) {
+    gap[i] -= line.offset_v + line.rate_v_per_day * t_s[i] / 86400.0;
+  }
+}
+
 // ageing_drift is linear in time, gap = r (a0 + t / day): least squares of the gap on [1, t]
 // gives r and r a0 directly (a search over r and a0 crawls along the curved valley r a0 = c).
 // Over a record of hours r itself is poorly determined; their product, the offset, is not.
 EffectFit fit_ageing(const TwinReplay& replay, const std::vector<double>& real_v,
                      const std::vector<sim::EffectSettings>& modelled) {
   const std::vector<double> sim_v = replay.voltage(modelled);
-  const std::vector<double>& t = replay.times();
-  const auto n = static_cast<Eigen::Index>(sim_v.size());
-  Eigen::MatrixXd design(n, 2);
-  Eigen::VectorXd gap(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    design(i, 0) = 1.0;
-    design(i, 1) = t[k] / 86400.0;
-    gap(i) = real_v[k] - sim_v[k];
-  }
-  const Eigen::Vector2d beta = design.colPivHouseholderQr().solve(gap);
-  const double offset_v = std::clamp(beta(0), -2.0 * 3650.0, 2.0 * 3650.0);
-  double rate = std::clamp(beta(1), -2.0, 2.0);
-  // The start age must be 0 to 3650 days: the rate takes the offset's sign and is at least
-  // what that range allows.
-  if (rate * offset_v < 0.0 || std::abs(rate) < std::abs(offset_v) / 3650.0) {
-    rate = std::copysign(std::max(std::abs(rate), std::abs(offset_v) / 3650.0), offset_v);
-  }
-  rate = std::clamp(rate, -2.0, 2.0);
-  const double start_days = rate != 0.0 ? std::clamp(offset_v / rate, 0.0, 3650.0) : 0.0;
+  std::vector<double> gap(sim_v.size());
+  for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v[i] - sim_v[i];
+  const AgeingLine line = ageing_line(gap, replay.times());
+  const double rate = line.rate_v_per_day;
+  const double start_days = rate != 0.0 ? std::clamp(line.offset_v / rate, 0.0, 3650.0) : 0.0;
   EffectFit fit;
   fit.settings = sim::make_effect_settings(
       "ageing_drift", {{"rate_v_per_day", rate}, {"start_age_days", start_days}}, "diagnose fit");
@@ -208,16 +251,26 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
       }
       return sim::make_effect_settings(name, values, "diagnose fit");
     };
+    // An ageing drift already modelled is linear in its offset and rate: it is solved by least
+    // squares at every point of the search (profiled out) rather than held, since a
+    // temperature effect and an ageing offset trade against each other along a narrow valley
+    // that one-effect-at-a-time refits crawl along.
+    std::vector<sim::EffectSettings> held;
+    for (const sim::EffectSettings& m : modelled) {
+      if (m.name != "ageing_drift") held.push_back(m);
+    }
+    const bool profile_ageing = held.size() < modelled.size();
     Objective objective;
     objective.value = [&](const std::vector<double>& unit) {
-      std::vector<sim::EffectSettings> effects = modelled;
+      std::vector<sim::EffectSettings> effects = profile_ageing ? held : modelled;
       effects.push_back(settings_at(unit));
       const std::vector<double> sim_v = replay.voltage(effects);
+      std::vector<double> gap(sim_v.size());
+      for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v[i] - sim_v[i];
+      if (profile_ageing) remove_line_in_time(gap, replay.times());
       double sum = 0.0;
-      for (std::size_t i = 0; i < sim_v.size(); ++i) {
-        sum += (real_v[i] - sim_v[i]) * (real_v[i] - sim_v[i]);
-      }
-      return std::sqrt(sum / static_cast<double>(sim_v.size()));
+      for (const double g : gap) sum += g * g;
+      return std::sqrt(sum / static_cast<double>(gap.size()));
     };
     // Coarse lattice, then Nelder-Mead from its best point.
     const std::size_t dims = params.size();

@@ -30,10 +30,12 @@ double max_abs_of(const std::vector<double>& x) {
   return m;
 }
 
-double white_noise_std(const std::vector<double>& x) {
-  if (x.size() < 3) throw std::invalid_argument("white_noise_std: fewer than 3 samples");
-  std::vector<double> d(x.size() - 1);
-  for (std::size_t i = 0; i + 1 < x.size(); ++i) d[i] = x[i + 1] - x[i];
+double white_noise_std(const std::vector<double>& x, std::size_t lag) {
+  if (lag < 1 || x.size() < lag + 2) {
+    throw std::invalid_argument("white_noise_std: fewer than lag + 2 samples");
+  }
+  std::vector<double> d(x.size() - lag);
+  for (std::size_t i = 0; i + lag < x.size(); ++i) d[i] = x[i + lag] - x[i];
   const auto median = [](std::vector<double> v) {
     const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
     std::nth_element(v.begin(), mid, v.end());

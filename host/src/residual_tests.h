@@ -13,10 +13,12 @@ double mean_of(const std::vector<double>& x);
 double rms_of(const std::vector<double>& x);
 double max_abs_of(const std::vector<double>& x);
 
-// The standard deviation of the white part of `x`: 1.4826 * MAD(first differences) / sqrt(2).
+// The standard deviation of the white part of `x`: 1.4826 * MAD(differences at `lag`) / sqrt(2).
 // Differencing removes what moves slowly (drifts, offsets, the effects of temperature); the
-// median ignores the few large jumps of a clearance step. Needs at least 3 samples.
-double white_noise_std(const std::vector<double>& x);
+// median ignores the few large jumps of a clearance step. Lag 2 is unbiased also when
+// neighbouring samples share noise (a channel interpolated between samples). Needs lag + 2
+// samples.
+double white_noise_std(const std::vector<double>& x, std::size_t lag = 1);
 
 // Normalised autocorrelation of x (mean removed) at lags 0..max_lag.
 std::vector<double> autocorrelation(const std::vector<double>& x, std::size_t max_lag);

@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: MIT
+#include "diagnose_selftest_command.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "bench_scenario.h"
+#include "cli.h"
+#include "input_error.h"
+#include "sensor_twin.h"
+
+namespace flange::host {
+namespace {
+
+std::string describe_truth(const SelftestCaseSpec& spec) {
+  if (spec.kind == SelftestKind::kNull) return "(nothing)";
+  if (spec.kind == SelftestKind::kOutside) return spec.outside.describe();
+  std::string text;
+  for (const sim::EffectSettings& e : spec.truth) {
+    std::string params;
+    for (const auto& [key, value] : e.params) {
+      params += fmt::format("{}{}={:.3g}", params.empty() ? "" : ", ", key, value);
+    }
+    text += fmt::format("{}{}({})", text.empty() ? "" : " + ", e.name, params);
+  }
+  return text;
+}
+
+std::string join(const std::vector<std::string>& names) {
+  if (names.empty()) return "-";
+  std::string text;
+  for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text;
+}
+
+const char* yes_no(bool in_library, bool value) {
+  if (!in_library) return "";
+  return value ? "yes" : "no";
+}
+
+bool in_library(const SelftestCaseSpec& spec) {
+  return spec.kind == SelftestKind::kSingle || spec.kind == SelftestKind::kPair;
+}
+
+std::string percent(int part, int whole) {
+  return whole == 0 ? "n/a" : fmt::format("{:.0f} %", 100.0 * part / whole);
+}
+
+// The summary lines, shared by the terminal and selftest.md.
+std::vector<std::string> summary_lines(const SelftestSummary& s) {
+  return {
+      fmt::format("correct top effect: {}/{} in-library cases ({}); aim >= 90 %: {}", s.top_correct,
+                  s.in_library, percent(s.top_correct, s.in_library),
+                  s.top_aim_met ? "met" : "MISSED"),
+      fmt::format("all true effects named: {}/{} ({}); effects named that were not there: {}",
+                  s.all_found, s.in_library, percent(s.all_found, s.in_library), s.spurious),
+      fmt::format("mean held-out shrink, bias-type cases ({}): {:.1f} % of the gap above the "
+                  "noise (aim >= 70 %: {}); {:.1f} % of the gap RMS with the noise left in",
+                  s.bias_type, s.mean_excess_shrink_pct, s.shrink_aim_met ? "met" : "MISSED",
+                  s.mean_shrink_pct),
+      fmt::format("null cases: {} with an effect claimed of {} (aim: none: {}); verdict 'none' "
+                  "in {}",
+                  s.null_claims, s.null_cases, s.null_aim_met ? "met" : "MISSED", s.null_correct),
+      fmt::format("outside the library: {} with an effect claimed of {}; verdict 'unexplained' "
+                  "in {}",
+                  s.outside_claims, s.outside_cases, s.outside_correct),
+  };
+}
+
+nlohmann::json case_json(const SelftestCaseResult& r) {
+  nlohmann::json truth = nlohmann::json::array();
+  for (const sim::EffectSettings& e : r.spec.truth) {
+    truth.push_back({{"name", e.name}, {"params", e.params}});
+  }
+  nlohmann::json j = {
+      {"case", r.spec.index},
+      {"kind", selftest_kind_name(r.spec.kind)},
+      {"truth", truth},
+      {"verdict", r.diagnosis.status},
+      {"claimed", r.score.claimed},
+      {"verdict_correct", r.score.verdict_correct},
+      {"heldout_rms_before", r.diagnosis.heldout_rms_before},
+      {"heldout_rms_after", r.diagnosis.heldout_rms_after},
+      {"noise_std_v_estimated", r.diagnosis.noise_std_v},
+      {"shrink_pct", r.score.shrink_pct},
+      {"excess_shrink_pct", r.score.excess_shrink_pct},
+      {"seconds", r.seconds},
+  };
+  if (r.spec.kind == SelftestKind::kOutside) {
+    j["outside"] = {{"name", r.spec.outside.name},
+                    {"value", r.spec.outside.value},
+                    {"at_fraction", r.spec.outside.at_fraction}};
+  }
+  if (in_library(r.spec)) {
+    j["top_correct"] = r.score.top_correct;
+    j["all_found"] = r.score.all_found;
+    j["spurious"] = r.score.spurious;
+    j["bias_type"] = r.score.bias_type;
+  }
+  nlohmann::json fitted = nlohmann::json::array();
+  for (const EffectFinding& f : r.diagnosis.effects) {
+    fitted.push_back({{"name", f.name}, {"params", f.params}, {"inclusion", f.inclusion}});
+  }
+  j["fitted"] = fitted;
+  nlohmann::json partial = nlohmann::json::array();
+  for (const EffectFinding& f : r.partial) {
+    partial.push_back(
+        {{"name", f.name}, {"params", f.params}, {"heldout_rms_after", f.heldout_rms_after}});
+  }
+  j["partial"] = partial;
+  return j;
+}
+
+}  // namespace
+
+void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
+  diagnose.add_flag("--selftest", options.selftest,
+                    "blind check: simulated bench sessions with random, undisclosed effects");
+  diagnose.add_option("--cases", options.run.cases, "--selftest: number of cases, 1 to 1000")
+      ->default_val(10)
+      ->check(CLI::Range(1, 1000));
+  diagnose
+      .add_option("--case", options.run.only_case,
+                  "--selftest: run only case K of the seed (one row of a table), 1 to 1000")
+      ->check(CLI::Range(1, 1000));
+  diagnose
+      .add_option("--duration", options.run.duration_s,
+                  "--selftest: seconds per bench session, 600 to 6600 (default: the protocol's "
+                  "6600)")
+      ->check(CLI::Range(600.0, 6600.0));
+  diagnose.add_option("--jobs", options.run.jobs, "--selftest: worker threads, 1 to 64")
+      ->check(CLI::Range(1, 64));
+}
+
+int run_selftest_command(const SelftestCommandOptions& options, std::ostream& out,
+                         std::ostream& err) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<SelftestCaseResult> results;
+  try {
+    results = run_selftest(options.run);
+  } catch (const InputError& error) {
+    err << "flange diagnose --selftest: " << error.what() << "\n";
+    return kExitBadArgument;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const SelftestSummary summary = summarise_selftest(results);
+  const double duration =
+      options.run.duration_s > 0 ? options.run.duration_s : sim::BenchProtocol{}.duration_s;
+
+  const std::string header = fmt::format(
+      "flange diagnose --selftest: {} cases, seed {}; each a calibration and a held-out bench "
+      "session of {:g} s at 6 Hz, twin noise {:.4g} V; diagnosed blind",
+      summary.cases, options.run.seed, duration, sim::kThesisRepeatabilityRmsV);
+  out << header << "\n";
+  out << fmt::format("{:>4}  {:<7}  {:<11}  {:<3}  {:<3}  {:>7}  {:>7}  {:<40}  {}\n", "case",
+                     "kind", "verdict", "top", "all", "shrink", "excess", "named", "truth");
+  std::string table =
+      "| case | kind | truth | verdict | named | top | all | shrink % | above-noise shrink % |\n"
+      "|---:|---|---|---|---|---|---|---:|---:|\n";
+  for (const SelftestCaseResult& r : results) {
+    const bool lib = in_library(r.spec);
+    out << fmt::format("{:>4}  {:<7}  {:<11}  {:<3}  {:<3}  {:>6.1f}%  {:>6.1f}%  {:<40}  {}\n",
+                       r.spec.index, selftest_kind_name(r.spec.kind), r.diagnosis.status,
+                       yes_no(lib, r.score.top_correct), yes_no(lib, r.score.all_found),
+                       r.score.shrink_pct, r.score.excess_shrink_pct, join(r.score.claimed),
+                       describe_truth(r.spec));
+    table +=
+        fmt::format("| {} | {} | {} | {} | {} | {} | {} | {:.1f} | {:.1f} |\n", r.spec.index,
+                    selftest_kind_name(r.spec.kind), describe_truth(r.spec), r.diagnosis.status,
+                    join(r.score.claimed), yes_no(lib, r.score.top_correct),
+                    yes_no(lib, r.score.all_found), r.score.shrink_pct, r.score.excess_shrink_pct);
+  }
+  const std::vector<std::string> lines = summary_lines(summary);
+  for (const std::string& line : lines) out << line << "\n";
+  out << fmt::format("aims {} ({:.0f} s)\n", summary.aims_met() ? "met" : "MISSED", seconds);
+
+  if (options.out) {
+    const std::filesystem::path dir(*options.out);
+    std::filesystem::create_directories(dir);
+    if (options.run.only_case > 0) {
+      // One case: its two sessions too, for `flange diagnose --real ... --holdout ...`.
+      const SelftestRecordings rec =
+          make_selftest_recordings(results.front().spec, options.run.duration_s);
+      for (const auto& [name, series] :
+           {std::pair{"calibration", &rec.calibration}, std::pair{"heldout", &rec.heldout}}) {
+        const auto path = dir / fmt::format("case_{}_{}.csv", options.run.only_case, name);
+        std::ofstream csv(path, std::ios::binary);
+        csv << "t_s,clearance_mm,temp_c,voltage_v\n";
+        for (std::size_t i = 0; i < series->size(); ++i) {
+          csv << fmt::format("{:.6f},{:.6f},{:.6f},{:.6f}\n", series->t_s[i],
+                             series->clearance_mm[i], series->temp_c[i], series->voltage_v[i]);
+        }
+        csv.close();
+        if (!csv) {
+          err << "flange diagnose --selftest: " << path.string() << ": cannot write\n";
+          return kExitFailure;
+        }
+        out << "  wrote " << path.string() << "\n";
+      }
+    }
+    nlohmann::json j;
+    j["generated_by"] = fmt::format("flange diagnose --selftest --cases {} --seed {}",
+                                    summary.cases, options.run.seed);
+    j["duration_s"] = duration;
+    j["cases"] = nlohmann::json::array();
+    for (const SelftestCaseResult& r : results) j["cases"].push_back(case_json(r));
+    j["summary"] = {
+        {"in_library", summary.in_library},
+        {"top_correct", summary.top_correct},
+        {"all_found", summary.all_found},
+        {"spurious", summary.spurious},
+        {"bias_type", summary.bias_type},
+        {"mean_shrink_pct", summary.mean_shrink_pct},
+        {"mean_excess_shrink_pct", summary.mean_excess_shrink_pct},
+        {"null_cases", summary.null_cases},
+        {"null_claims", summary.null_claims},
+        {"outside_cases", summary.outside_cases},
+        {"outside_claims", summary.outside_claims},
+        {"aims_met", summary.aims_met()},
+    };
+    std::ofstream json(dir / "selftest.json", std::ios::binary);
+    json << j.dump(2) << "\n";
+    std::ofstream md(dir / "selftest.md", std::ios::binary);
+    md << header << "\n\n" << table << "\n";
+    for (const std::string& line : lines) md << "- " << line << "\n";
+    json.close();
+    md.close();
+    if (!json || !md) {
+      err << "flange diagnose --selftest: " << dir.string() << ": cannot write\n";
+      return kExitFailure;
+    }
+    out << "  wrote " << (dir / "selftest.json").string() << " and "
+        << (dir / "selftest.md").string() << "\n";
+  }
+  return summary.aims_met() ? kExitOk : kExitFailure;
+}
+
+}  // namespace flange::host
