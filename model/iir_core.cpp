@@ -14,7 +14,7 @@ namespace flange::model {
 IirCore::IirCore(CoreConfig config) : config_(std::move(config)) {
   validate_core_config(config_);
   const int m = config_.section_order;
-  latency_ = config_.num_sections * (config_.terms() + kMacLatency) + 1;
+  latency_ = config_.terms() + (config_.num_sections - 1) * section_pitch() + kMacLatency + 1;
   sample_max_ = static_cast<std::int32_t>((std::int64_t{1} << (config_.sample_width - 1)) - 1);
   sample_min_ = static_cast<std::int32_t>(-(std::int64_t{1} << (config_.sample_width - 1)));
   ext_max_ = (std::int64_t{sample_max_} + 1) * (std::int64_t{1} << config_.feedback_shift) - 1;
@@ -140,10 +140,14 @@ std::optional<StepResult> IirCore::strobe(std::uint64_t cycle, std::int32_t samp
   result.accept_cycle = cycle;
   result.valid_cycle = cycle + static_cast<std::uint64_t>(latency_);
 
-  // Section k writes back at the edge that ends its last MAC-latency cycle.
-  const auto section_cycles = static_cast<std::uint64_t>(config_.terms() + kMacLatency);
+  // Section k's last term issues T + kS cycles after EN; it is written back kMacLatency cycles
+  // later, and a clip shows from the cycle after that.
+  const auto terms = static_cast<std::uint64_t>(config_.terms());
+  const auto pitch = static_cast<std::uint64_t>(section_pitch());
   for (std::size_t k = 0; k < clipped.size(); ++k) {
-    if (clipped[k]) schedule({cycle + 1 + (k + 1) * section_cycles, EventKind::kSaturation, 0});
+    if (clipped[k]) {
+      schedule({cycle + terms + k * pitch + kMacLatency + 1, EventKind::kSaturation, 0});
+    }
   }
   schedule({cycle + 1, EventKind::kBusyStart, 0});
   schedule({result.valid_cycle, EventKind::kBusyEnd, 0});

@@ -21,11 +21,16 @@
 //   lines of M + 1 words of D + s bits, newest first; line 0 is the input x[n..n-M] shifted left
 //   by s, line k + 1 is y_ext of section k. Section k multiplies b[i] by line k age i rounded to D
 //   bits as above (exact for line 0) and -a[j] by line k + 1 age j as it is. The bus target
-//   counter (BTC) walks the ROM and the matching load registers with one count.
-// - Timing: a section takes 2M + 1 MAC cycles plus 3 cycles of MAC latency. From the cycle in
-//   which sample_valid_i is accepted to the cycle in which sample_valid_o is high:
-//   LatencyCycles = K * (2M + 4) + 1. A new sample is accepted in the cycle sample_valid_o is
-//   high, so CyclesPerSample = LatencyCycles too.
+//   counter (BTC) counts the terms in issue order and addresses each term's ROM word and load
+//   register with that one count.
+// - Timing: a section issues its T = 2M + 1 terms one per cycle in the order b[1..M], -a[1..M],
+//   b[0]: only b[0] needs the previous section's output, so the next section's first 2M terms
+//   overlap the MAC's 3 cycles of latency, and its b[0] waits, if it must, until the cycle after
+//   that output is written back. With S = max(T, 4), section k's last term issues T + kS cycles
+//   after the accepted EN and is written back 3 cycles later. From the cycle in which
+//   sample_valid_i is accepted to the cycle in which sample_valid_o is high:
+//   LatencyCycles = T + (K - 1) * S + 4, which is MACs + 4 when M >= 2 or K = 1. A new sample is
+//   accepted in the cycle sample_valid_o is high, so CyclesPerSample = LatencyCycles too.
 //
 // Cycle convention: cycle c is the clock period after the c-th rising edge. Inputs given for cycle
 // c are sampled at the edge that ends it; registered outputs change at that edge and are seen in
@@ -33,12 +38,14 @@
 // cycle c (strobe, clear_flags, reset).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <optional>
 #include <vector>
 
 #include "filter_json.h"
+#include "iir_mac.h"
 
 namespace flange::model {
 
@@ -67,6 +74,8 @@ class IirCore {
 
   const CoreConfig& config() const { return config_; }
   int latency_cycles() const { return latency_; }     // accepted EN -> sample_valid_o
+  // S: cycles from one section's last term to the next one's (b[0] waits for the write-back).
+  int section_pitch() const { return std::max(config_.terms(), kMacLatency + 1); }
   int cycles_per_sample() const { return latency_; }  // minimum spacing of accepted EN
   int macs_per_sample() const { return config_.rom_depth(); }
   std::int32_t sample_min() const { return sample_min_; }

@@ -21,11 +21,16 @@
 //   lines of M + 1 words of D + s bits, newest first; line 0 is the input x[n..n-M] shifted left
 //   by s, line k + 1 is y_ext of section k. Section k multiplies b[i] by line k age i rounded to D
 //   bits as above (exact for line 0) and -a[j] by line k + 1 age j as it is. The bus target
-//   counter (BTC) walks the ROM and the matching load registers with one count.
-// - Timing: a section takes 2M + 1 MAC cycles plus 3 cycles of MAC latency. From the cycle in
-//   which sample_valid_i is accepted to the cycle in which sample_valid_o is high:
-//   LatencyCycles = K * (2M + 4) + 1. A new sample is accepted in the cycle sample_valid_o is
-//   high, so CyclesPerSample = LatencyCycles too.
+//   counter (BTC) counts the terms in issue order and addresses each term's ROM word and load
+//   register with that one count.
+// - Timing: a section issues its T = 2M + 1 terms one per cycle in the order b[1..M], -a[1..M],
+//   b[0]: only b[0] needs the previous section's output, so the next section's first 2M terms
+//   overlap the MAC's 3 cycles of latency, and its b[0] waits, if it must, until the cycle after
+//   that output is written back. With S = max(T, 4), section k's last term issues T + kS cycles
+//   after the accepted EN and is written back 3 cycles later. From the cycle in which
+//   sample_valid_i is accepted to the cycle in which sample_valid_o is high:
+//   LatencyCycles = T + (K - 1) * S + 4, which is MACs + 4 when M >= 2 or K = 1. A new sample is
+//   accepted in the cycle sample_valid_o is high, so CyclesPerSample = LatencyCycles too.
 //
 // Flags: sample_valid_i while busy_o is high drops that sample (the history is untouched) and sets
 // the sticky overrun_o. Sticky flags clear on reset or with flag_clear_i; a flag event in the same
@@ -70,9 +75,9 @@ module iir_core #(
   localparam int ExtWidth      = SampleWidth + FeedbackShift;       // y_ext: history word
   localparam int AWidth        = ExtWidth;                          // multiplier A operand
   localparam int MacLatency    = 3;                                 // iir_mac: A/B, M, P
-  localparam int LatencyCycles = NumSections * (Terms + MacLatency) + 1;
+  localparam int SectionPitch  = Terms > MacLatency + 1 ? Terms : MacLatency + 1;  // S
+  localparam int LatencyCycles = Terms + (NumSections - 1) * SectionPitch + MacLatency + 1;
   localparam int BtcWidth      = RomDepth > 1 ? $clog2(RomDepth) : 1;
-  localparam int SecWidth      = NumSections > 1 ? $clog2(NumSections) : 1;
 
   localparam logic signed [SampleWidth-1:0] SAMPLE_MAX = {1'b0, {(SampleWidth - 1){1'b1}}};
   localparam logic signed [SampleWidth-1:0] SAMPLE_MIN = {1'b1, {(SampleWidth - 1){1'b0}}};
@@ -116,15 +121,17 @@ module iir_core #(
   endfunction
 
   typedef enum logic [1:0] {
-    StIdle  = 2'd0,  // wait for EN
-    StMac   = 2'd1,  // issue one term per cycle, BTC counting
-    StDrain = 2'd2   // let the MAC latency pass, then round, saturate and write back
+    StIdle   = 2'd0,  // wait for EN
+    StIssue  = 2'd1,  // issue one term per cycle (BTC counting), or wait for a b[0] operand
+    StFinish = 2'd2   // every term issued: wait for the last section's write-back
   } state_e;
 
   state_e                                state_q, state_d;
   logic [BtcWidth-1:0]                   btc_q, btc_d;      // bus target counter
-  logic [SecWidth-1:0]                   sec_q, sec_d;      // section being computed
-  logic [1:0]                            drain_q, drain_d;  // cycles spent in StDrain
+  // A section's last term, issued MacLatency cycles ago, has reached the accumulator when
+  // wb_pipe_q[MacLatency-1] is high: that cycle rounds, saturates and writes it back.
+  logic [MacLatency-1:0]                 wb_pipe_q, wb_pipe_d;
+  logic [LineWidth-1:0]                  wb_sec_q, wb_sec_d;  // section of the next write-back
   logic [AgeWidth-1:0]                   newest_q, newest_d;  // slot of age 0 in every line
   logic signed [SampleWidth-1:0]         out_q, out_d;
   logic                                  valid_q, valid_d;
@@ -161,30 +168,44 @@ module iir_core #(
     slot_of = back[AgeWidth-1:0];
   endfunction
 
-  // BTC decode: the ROM word's role and the load register it multiplies //
-  logic                       term_first, term_last, term_feedback;
+  // BTC decode: the term's ROM word, its role, and the load register it multiplies //
+  // Issue position p of section k: p < M is b[p+1], M <= p < 2M is -a[p-M+1], p = 2M is b[0].
+  // ROM words stay in ROM order (b[0..M], -a[1..M]); the decoder maps the count to the address,
+  // which synthesis folds into the ROM's LUTs.
+  logic                       term_first, term_last, term_feedback, term_needs_previous;
+  logic [BtcWidth-1:0]        rom_addr;
   logic [LineWidth-1:0]       rd_line;
   logic [AgeWidth:0]          rd_age;  // 0..M
   always_comb begin
-    term_first    = 1'b0;
-    term_last     = 1'b0;
-    term_feedback = 1'b0;
-    rd_line       = '0;
-    rd_age        = '0;
+    term_first          = 1'b0;
+    term_last           = 1'b0;
+    term_feedback       = 1'b0;
+    term_needs_previous = 1'b0;
+    rom_addr            = '0;
+    rd_line             = '0;
+    rd_age              = '0;
     for (int k = 0; k < NumSections; k++) begin
-      for (int i = 0; i < Terms; i++) begin
-        if (btc_q == BtcWidth'(k * Terms + i)) begin
-          term_first    = (i == 0);
-          term_last     = (i == Terms - 1);
-          term_feedback = (i > SectionOrder);
-          // b[i] multiplies x_k[n-i] (line k, rounded below); -a[j], j = i - M, multiplies
-          // y_ext_k[n-j] (line k + 1).
-          if (i <= SectionOrder) begin
-            rd_line = LineWidth'(k);
-            rd_age  = (AgeWidth + 1)'(i);
+      for (int p = 0; p < Terms; p++) begin
+        if (btc_q == BtcWidth'(k * Terms + p)) begin
+          term_first = (p == 0);
+          term_last  = (p == Terms - 1);
+          if (p < SectionOrder) begin
+            // b[p+1] multiplies x_k[n-p-1] (line k, rounded below).
+            rom_addr = BtcWidth'(k * Terms + p + 1);
+            rd_line  = LineWidth'(k);
+            rd_age   = (AgeWidth + 1)'(p + 1);
+          end else if (p < 2 * SectionOrder) begin
+            // -a[j], j = p - M + 1, multiplies y_ext_k[n-j] (line k + 1).
+            term_feedback = 1'b1;
+            rom_addr      = BtcWidth'(k * Terms + p + 1);
+            rd_line       = LineWidth'(k + 1);
+            rd_age        = (AgeWidth + 1)'(p - SectionOrder + 1);
           end else begin
-            rd_line = LineWidth'(k + 1);
-            rd_age  = (AgeWidth + 1)'(i - SectionOrder);
+            // b[0] multiplies x_k[n]: for k > 0 the output section k - 1 is still computing.
+            term_needs_previous = (k > 0);
+            rom_addr            = BtcWidth'(k * Terms);
+            rd_line             = LineWidth'(k);
+            rd_age              = '0;
           end
         end
       end
@@ -210,7 +231,7 @@ module iir_core #(
   assign mac_a     = !issue        ? '0 :
                      term_feedback ? lr_word :
                                      AWidth'(lr_sample);
-  assign mac_b = $signed(rom[btc_q]);
+  assign mac_b = $signed(rom[rom_addr]);
 
   iir_mac #(
     .AWidth    (AWidth),
@@ -242,21 +263,24 @@ module iir_core #(
   assign clip            = clip_ext | round_clips(section_ext);
 
   // FSM //
+  // b[0] of section k > 0 waits while section k - 1's last term is still in the MAC pipeline.
+  logic stall;
   logic writeback;
+  assign stall     = term_needs_previous & (|wb_pipe_q);
+  assign writeback = wb_pipe_q[MacLatency-1];
+
   always_comb begin
     state_d   = state_q;
     btc_d     = btc_q;
-    sec_d     = sec_q;
-    drain_d   = drain_q;
+    wb_sec_d  = wb_sec_q;
     newest_d  = newest_q;
     filled_d  = filled_q;
-    lr_we     = 1'b0;
-    lr_waddr  = '0;
-    lr_wdata  = '0;
     out_d     = out_q;
     valid_d   = 1'b0;
     issue     = 1'b0;
-    writeback = 1'b0;
+    lr_we     = 1'b0;
+    lr_waddr  = '0;
+    lr_wdata  = '0;
 
     unique case (state_q)
       StIdle: begin
@@ -267,42 +291,41 @@ module iir_core #(
           lr_we    = 1'b1;
           lr_waddr = {LineWidth'(0), newest_d};
           lr_wdata = ExtWidth'(sample_i) <<< FeedbackShift;
-          btc_d   = '0;
-          sec_d   = '0;
-          state_d = StMac;
+          btc_d    = '0;
+          wb_sec_d = '0;
+          state_d  = StIssue;
         end
       end
-      StMac: begin
-        issue = 1'b1;
-        btc_d = (btc_q == BtcWidth'(RomDepth - 1)) ? '0 : btc_q + 1'b1;
-        if (term_last) begin
-          drain_d = '0;
-          state_d = StDrain;
-        end
-      end
-      StDrain: begin
-        if (drain_q == 2'(MacLatency - 1)) begin
-          // The last term of the section has reached the accumulator.
-          writeback        = 1'b1;
-          // The section's y_ext becomes the newest entry of the next line.
-          lr_we    = 1'b1;
-          lr_waddr = {LineWidth'(sec_q) + LineWidth'(1), newest_q};
-          lr_wdata = section_ext;
-          if (sec_q == SecWidth'(NumSections - 1)) begin
-            out_d   = section_y;
-            valid_d = 1'b1;
-            state_d = StIdle;
+      StIssue: begin
+        if (!stall) begin
+          issue = 1'b1;
+          if (btc_q == BtcWidth'(RomDepth - 1)) begin
+            btc_d   = '0;
+            state_d = StFinish;
           end else begin
-            sec_d   = sec_q + 1'b1;
-            state_d = StMac;
+            btc_d = btc_q + 1'b1;
           end
-        end else begin
-          drain_d = drain_q + 1'b1;
         end
       end
+      StFinish: ;  // the write-back below ends it
       default: state_d = StIdle;
     endcase
+
+    if (writeback) begin
+      // A section's sum is complete: its y_ext becomes the newest entry of the next line.
+      lr_we    = 1'b1;
+      lr_waddr = {wb_sec_q + LineWidth'(1), newest_q};
+      lr_wdata = section_ext;
+      wb_sec_d = wb_sec_q + 1'b1;
+      if (wb_sec_q == LineWidth'(NumSections - 1)) begin
+        out_d   = section_y;
+        valid_d = 1'b1;
+        state_d = StIdle;
+      end
+    end
   end
+
+  assign wb_pipe_d = {wb_pipe_q[MacLatency-2:0], issue & term_last};
 
   // Sticky flags //
   assign overrun_d    = (overrun_q & ~flag_clear_i) | (sample_valid_i & (state_q != StIdle));
@@ -312,8 +335,8 @@ module iir_core #(
     if (!rst_ni) begin
       state_q      <= StIdle;
       btc_q        <= '0;
-      sec_q        <= '0;
-      drain_q      <= '0;
+      wb_pipe_q    <= '0;
+      wb_sec_q     <= '0;
       newest_q     <= '0;
       filled_q     <= '0;
       out_q        <= '0;
@@ -323,8 +346,8 @@ module iir_core #(
     end else begin
       state_q      <= state_d;
       btc_q        <= btc_d;
-      sec_q        <= sec_d;
-      drain_q      <= drain_d;
+      wb_pipe_q    <= wb_pipe_d;
+      wb_sec_q     <= wb_sec_d;
       newest_q     <= newest_d;
       filled_q     <= filled_d;
       out_q        <= out_d;
@@ -342,18 +365,17 @@ module iir_core #(
 
   // Assertions //
 `ifndef SYNTHESIS
-  // The BTC stays on a ROM word of the current section while terms are issued.
+  // The write-back port is free: an EN is never accepted while a section is being written back.
   always @(posedge clk_i) begin
-    if (rst_ni && state_q == StMac) begin
-      assert (32'(btc_q) >= 32'(sec_q) * Terms && 32'(btc_q) < (32'(sec_q) + 1) * Terms)
-      else $error("iir_core: BTC %0d outside section %0d", btc_q, sec_q);
+    if (rst_ni && writeback) begin
+      assert (state_q != StIdle) else $error("iir_core: write-back while idle");
     end
   end
 
-  // The result is only read once the section's last product has left the MAC pipeline.
+  // b[0] of section k > 0 is never issued before section k - 1 was written back.
   always @(posedge clk_i) begin
-    if (rst_ni && writeback) begin
-      assert (!issue) else $error("iir_core: write-back while terms are still being issued");
+    if (rst_ni && issue && term_needs_previous) begin
+      assert (wb_pipe_q == '0) else $error("iir_core: b[0] issued before its operand exists");
     end
   end
 

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -48,6 +49,10 @@ CosimReport CosimHarness::run(const Stimulus& stimulus, std::uint64_t tail) {
     }
   }
   std::size_t next = 0;
+  // The sample the core is working on (or last finished): its index among the strobes and its
+  // input word, so that a mismatch names it.
+  std::uint64_t strobes = 0;
+  std::optional<std::pair<std::uint64_t, std::int32_t>> current;
   for (std::uint64_t cycle = 0; cycle <= end; ++cycle) {
     // Compare what both sides show in this cycle (cycle 0 precedes the first reset edge).
     if (cycle > 0) {
@@ -55,8 +60,11 @@ CosimReport CosimHarness::run(const Stimulus& stimulus, std::uint64_t tail) {
       const model::Pins got = dut_pins();
       if (!(expected == got)) {
         if (report.mismatches == 0) {
-          report.first_mismatch =
-              fmt::format("cycle {}: dut {} | model {}", cycle, describe(got), describe(expected));
+          const std::string sample =
+              current ? fmt::format("sample {} (input {})", current->first, current->second)
+                      : std::string("before the first sample");
+          report.first_mismatch = fmt::format("cycle {}, {}: dut {} | model {}", cycle, sample,
+                                              describe(got), describe(expected));
         }
         ++report.mismatches;
       }
@@ -86,6 +94,8 @@ CosimReport CosimHarness::run(const Stimulus& stimulus, std::uint64_t tail) {
           in.sample_valid = true;
           in.sample_bits = static_cast<std::uint32_t>(action.sample) & mask;
           const auto result = model_.strobe(cycle, action.sample);
+          if (result) current = {strobes, action.sample};
+          ++strobes;
           if (result) {
             ++report.accepted;
             report.latencies.push_back(result->valid_cycle - result->accept_cycle);

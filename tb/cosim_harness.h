@@ -19,7 +19,7 @@ struct CosimReport {
   std::uint64_t accepted = 0;               // strobes the model accepted
   std::uint64_t dropped = 0;                // strobes the model dropped (overrun)
   std::uint64_t mismatches = 0;             // cycles in which some pin differed
-  std::string first_mismatch;               // one line: cycle, DUT pins, model pins
+  std::string first_mismatch;  // one line: cycle, sample index and input, DUT pins, model pins
   std::vector<std::int32_t> outputs;        // DUT sample_o in each sample_valid_o cycle
   std::vector<std::uint64_t> valid_cycles;  // those cycles
   std::vector<std::uint64_t> latencies;     // valid cycle - accept cycle, per model result
