@@ -2,7 +2,9 @@
 #include "calibrate_command.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <filesystem>
 #include <fstream>
 #include <ostream>
 
@@ -37,6 +39,19 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
 int run_calibrate_command(const CalibrateOptions& options,
                           const std::vector<std::string>& command_line, std::ostream& out,
                           std::ostream& err) {
+  // A model that cannot be written is found out before the database grows or the fit runs.
+  const std::filesystem::path out_path(options.out);
+  const std::filesystem::path folder =
+      out_path.has_parent_path() ? out_path.parent_path() : std::filesystem::path(".");
+  const bool writable =
+      std::filesystem::is_directory(folder) && ::access(folder.c_str(), W_OK) == 0 &&
+      (!std::filesystem::exists(out_path) ||
+       (!std::filesystem::is_directory(out_path) && ::access(out_path.c_str(), W_OK) == 0));
+  if (!writable) {
+    err << "flange calibrate: --out " << options.out
+        << ": cannot write (the folder must exist and be writable)\n";
+    return kExitFailure;
+  }
   try {
     if (options.append) {
       const std::size_t added = append_to_database(options.data, *options.append);
@@ -75,9 +90,12 @@ int run_calibrate_command(const CalibrateOptions& options,
     std::string generated_by = "flange";
     for (const std::string& word : command_line) generated_by += " " + word;
     std::ofstream file(options.out, std::ios::binary);
-    if (!file) throw std::runtime_error("cannot write " + options.out);
     file << calibration_json(calibration, generated_by).dump(1) << "\n";
-    if (!file) throw std::runtime_error("cannot write " + options.out);
+    file.close();
+    if (!file) {
+      err << "flange calibrate: --out " << options.out << ": cannot write\n";
+      return kExitFailure;
+    }
     out << "  wrote " << options.out << "\n";
     return kExitOk;
   } catch (const InputError& error) {

@@ -19,6 +19,24 @@
 
 namespace flange::host {
 
+namespace {
+
+// CLI11 says "Could not convert: --order = 1.5" for a value of the wrong type; say what the option
+// takes too (its help text carries the valid range).
+std::string explain_parse_error(const CLI::App& app, const CLI::ParseError& error) {
+  const std::string what = error.what();
+  const std::string prefix = "Could not convert: ";
+  const std::size_t equals = what.find(" = ");
+  if (what.rfind(prefix, 0) != 0 || equals == std::string::npos) return what;
+  const std::string name = what.substr(prefix.size(), equals - prefix.size());
+  const std::string value = what.substr(equals + 3);
+  const CLI::Option* option = app.get_option_no_throw(name);
+  if (option == nullptr) return what;
+  return name + ": '" + value + "' is not a valid value; expected " + option->get_description();
+}
+
+}  // namespace
+
 int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"flange: FPGA IIR filter for wheel-flange wear measurement"};
   app.name("flange");
@@ -58,8 +76,12 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
     return app.exit(help, out, err);
   } catch (const CLI::ParseError& error) {
     std::string where = "flange";
-    for (const CLI::App* sub : app.get_subcommands()) where += " " + sub->get_name();
-    err << where << ": " << error.what() << "\n";
+    const CLI::App* parsed = &app;
+    for (const CLI::App* sub : app.get_subcommands()) {
+      where += " " + sub->get_name();
+      parsed = sub;
+    }
+    err << where << ": " << explain_parse_error(*parsed, error) << "\n";
     return kExitBadArgument;
   }
   try {

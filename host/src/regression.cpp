@@ -141,6 +141,36 @@ void require_spread(const std::vector<double>& values, const char* column) {
   }
 }
 
+// Voltage and temperature that move together leave the fit free to trade one for the other:
+// exactly collinear data is caught by the rank test below, nearly collinear data (a temperature
+// that follows the voltage to within millikelvin) passes it and gives wild coefficients. The
+// share of the temperature's spread that the voltage does not explain, sqrt(1 - rho^2), must be
+// at least 1 %.
+void require_independent(const std::vector<double>& v, const std::vector<double>& t) {
+  constexpr double kMinIndependentShare = 0.01;
+  const double n = static_cast<double>(v.size());
+  double mv = 0, mt = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    mv += v[i] / n;
+    mt += t[i] / n;
+  }
+  double svv = 0, stt = 0, svt = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    svv += (v[i] - mv) * (v[i] - mv);
+    stt += (t[i] - mt) * (t[i] - mt);
+    svt += (v[i] - mv) * (t[i] - mt);
+  }
+  const double rho = svt / std::sqrt(svv * stt);
+  const double independent = std::sqrt(std::max(0.0, 1.0 - rho * rho));
+  if (independent < kMinIndependentShare) {
+    throw InputError(fmt::format(
+        "calibration data: voltage_v and temp_c move together (correlation {:.6f}; only {:.3g} % "
+        "of the temperature's spread is independent of the voltage, at least {} % is needed), so "
+        "their effects cannot be told apart; measure over independent ranges of both",
+        rho, 100.0 * independent, 100.0 * kMinIndependentShare));
+  }
+}
+
 }  // namespace
 
 RegressionModel::RegressionModel(int order, VariableScaling scaling,
@@ -202,6 +232,7 @@ RegressionFit fit_regression(const CalibrationData& data, const RegressionOption
   require_spread(data.voltage_v, "voltage_v");
   require_spread(data.temp_c, "temp_c");
   require_spread(data.clearance_mm, "clearance_mm");
+  require_independent(data.voltage_v, data.temp_c);
 
   VariableScaling s;
   const auto [v_lo, v_hi] = std::minmax_element(data.voltage_v.begin(), data.voltage_v.end());

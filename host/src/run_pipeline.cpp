@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "fixed_decimals.h"
 #include "calibration.h"
 #include "filter_engine.h"
 #include "filter_json.h"
@@ -79,25 +80,6 @@ int region_index(double clearance_mm, double temp_c) {
       std::clamp(static_cast<int>(std::floor(clearance_mm)), 0, RunTrace::kClearanceBins - 1);
   const int t = std::clamp(static_cast<int>(std::floor(temp_c / 10.0)), 0, RunTrace::kTempBins - 1);
   return t * RunTrace::kClearanceBins + c;
-}
-
-// `value` with six decimals, through an integer count of millionths: several times faster
-// than formatting the double at a fixed precision, and the same digits away from exact ties.
-void append_fixed6(fmt::memory_buffer& buffer, double value) {
-  const long long millionths = std::llround(value * 1e6);
-  const unsigned long long magnitude =
-      static_cast<unsigned long long>(millionths < 0 ? -millionths : millionths);
-  char text[32];
-  char* at = text;
-  if (millionths < 0) *at++ = '-';
-  at = std::to_chars(at, text + sizeof text, magnitude / 1000000).ptr;
-  *at++ = '.';
-  unsigned long long fraction = magnitude % 1000000;
-  for (int digit = 5; digit >= 0; --digit) {
-    at[digit] = static_cast<char>('0' + fraction % 10);
-    fraction /= 10;
-  }
-  buffer.append(text, at + 6);
 }
 
 // One output row; a bad row has no raw clearance.

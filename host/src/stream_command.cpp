@@ -6,17 +6,20 @@
 #include <array>
 #include <chrono>
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
 
 #include "board_frame.h"
 #include "calibration.h"
+#include "fixed_decimals.h"
 #include "cli.h"
 #include "input_error.h"
 #include "recording_csv.h"
 #include "sample_scaling.h"
 #include "serial_port.h"
+#include "thesis_pipeline.h"
 
 namespace flange::host {
 namespace {
@@ -98,8 +101,8 @@ CLI::App* add_stream_command(CLI::App& app, StreamOptions& options) {
       ->required();
   cmd->add_option("--input", options.input, "recording CSV (t_s,clearance_mm,temp_c,voltage_v)")
       ->required();
-  cmd->add_option("--calibration", options.calibration, "model.json from flange calibrate")
-      ->required();
+  cmd->add_option("--calibration", options.calibration,
+                  "model.json from flange calibrate (default: the thesis's eq. 3.14)");
   cmd->add_option("--out", options.out,
                   "output CSV: t_s,clearance_raw_mm,word_in,word_out,clearance_filt_mm,status")
       ->required();
@@ -118,7 +121,20 @@ int run_stream_command(const StreamOptions& options, std::ostream& out, std::ost
   const auto start = std::chrono::steady_clock::now();
   StreamCounts counts;
   try {
-    const Calibration calibration = load_calibration(options.calibration);
+    // Voltage and temperature to clearance: the host's regression stage, as in `flange run`.
+    std::function<double(double, double)> clearance_of = eq_3_14;
+    if (!options.calibration.empty()) {
+      clearance_of = [calibration = load_calibration(options.calibration)](double v, double t) {
+        return calibration.estimate(v, t).clearance_mm;
+      };
+    }
+    // The whole recording is checked before the board sees a sample, so a bad row cannot stop
+    // a session half-way (a first pass, so memory stays flat).
+    {
+      RecordingReader check(options.input);
+      while (check.next()) {
+      }
+    }
     RecordingReader reader(options.input);
     std::ofstream csv(options.out, std::ios::binary);
     if (!csv) {
@@ -134,7 +150,7 @@ int run_stream_command(const StreamOptions& options, std::ostream& out, std::ost
     link.reset_session(0, counts);
     std::uint8_t seq = 1;
     while (std::optional<RecordingRow> row = reader.next()) {
-      const double raw_mm = calibration.estimate(row->voltage_v, row->temp_c).clearance_mm;
+      const double raw_mm = clearance_of(row->voltage_v, row->temp_c);
       bool clipped = false;
       const auto word = static_cast<std::int16_t>(scaling.to_word(raw_mm, clipped));
       counts.clipped_inputs += clipped ? 1 : 0;
@@ -146,8 +162,8 @@ int run_stream_command(const StreamOptions& options, std::ostream& out, std::ost
       counts.bypassed += (reply.status & board::kStatusBypass) ? 1 : 0;
       // The Butterworth designs have no leftover gain (1.0): the word is the clearance.
       const double filt_mm = scaling.unit_to_mm(reply.sample / scaling.full_scale());
-      csv << fmt::format("{},{:.6f},{},{},{:.6f},{}\n", row->t_s, raw_mm, word, reply.sample,
-                         filt_mm, reply.status);
+      csv << fmt::format("{},{},{},{},{},{}\n", row->t_s, fixed6(raw_mm), word, reply.sample,
+                         fixed6(filt_mm), reply.status);
       seq = static_cast<std::uint8_t>(seq + 1);
     }
   } catch (const InputError& error) {

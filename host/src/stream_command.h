@@ -17,7 +17,7 @@ namespace flange::host {
 struct StreamOptions {
   std::string port;         // serial device, e.g. /dev/ttyUSB1
   std::string input;        // recording CSV (t_s, clearance_mm, temp_c, voltage_v)
-  std::string calibration;  // model.json from flange calibrate
+  std::string calibration;  // model.json from flange calibrate; empty: the thesis's eq. 3.14
   std::string out;          // output CSV
   int baud = 115200;        // the board's ClksPerBit: 100 MHz / 868
   int timeout_ms = 500;     // per attempt, 1..60000

@@ -11,16 +11,15 @@ namespace flange::host {
 
 namespace {
 
-// Eq. 3.14 (d mm, V volts, T deg C).
-double eq_3_14(double v, double t) {
-  return 1.16 + 0.3672 * v - 0.0036 * t + 0.05812 * v * v + 0.0006618 * v * t;
-}
-
 // Eq. 4.15 as printed.
 constexpr std::array<double, 6> kB = {0.001076, 0.005379, 0.01076, 0.01076, 0.005379, 0.001076};
 constexpr std::array<double, 6> kA = {1.0, -3.06, 3.997, -2.721, 0.9566, -0.138};
 
 }  // namespace
+
+double eq_3_14(double v, double t) {
+  return 1.16 + 0.3672 * v - 0.0036 * t + 0.05812 * v * v + 0.0006618 * v * t;
+}
 
 ThesisPipelineResult run_thesis_pipeline(const std::string& recording_csv,
                                          std::uint64_t settle_samples) {

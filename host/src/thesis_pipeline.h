@@ -17,6 +17,10 @@ struct ThesisPipelineResult {
   double dc_gain = 0.0;   // sum b / sum a of the printed coefficients
 };
 
+// The thesis's regression, eq. 3.14: clearance in mm from the sensor voltage (V) and the
+// temperature (deg C).
+double eq_3_14(double v, double t);
+
 // Runs the recording (strict reading) through the thesis chain; `settle_samples` at the start
 // are left out of the after-filter errors, as in flange run.
 ThesisPipelineResult run_thesis_pipeline(const std::string& recording_csv,

@@ -190,6 +190,36 @@ TEST_F(BoardStream, RecordingThroughThePtyMatchesTheModel) {
   EXPECT_NE(r.out.find(" 0 resent"), std::string::npos) << r.out;
   EXPECT_EQ(expect_matches_model("clean.csv"), 361u);
   EXPECT_FALSE(board.assertion_failed());
+  // docs/board.md, "Program the board", step 6: `flange run --engine model` on the same input
+  // gives the board's clearance_filt_mm row for row.
+  const Outcome model_run = run({"run", "--input", (dir_ / "bench.csv").string(), "--calibration",
+                                 (dir_ / "model.json").string(), "--coeffs",
+                                 FLANGE_SOURCE_DIR "/coeffs/measurement_sos/filter.json",
+                                 "--engine", "model", "--out", (dir_ / "model_run.csv").string()});
+  ASSERT_EQ(model_run.status, 0) << model_run.err;
+  const auto column = [](const std::filesystem::path& path, const std::string& name) {
+    std::ifstream in(path);
+    std::string line, field;
+    std::getline(in, line);
+    std::size_t index = 0;
+    for (std::istringstream header(line); std::getline(header, field, ','); ++index) {
+      if (field == name) break;
+    }
+    std::vector<std::string> values;
+    while (std::getline(in, line)) {
+      std::istringstream fields(line);
+      for (std::size_t i = 0; i <= index; ++i) std::getline(fields, field, ',');
+      values.push_back(field);
+    }
+    return values;
+  };
+  const std::vector<std::string> board_mm = column(dir_ / "clean.csv", "clearance_filt_mm");
+  const std::vector<std::string> model_mm = column(dir_ / "model_run.csv", "clearance_filt_mm");
+  ASSERT_EQ(board_mm.size(), 361u);
+  ASSERT_EQ(model_mm.size(), 361u);
+  for (std::size_t row = 0; row < board_mm.size(); ++row) {
+    ASSERT_EQ(board_mm[row], model_mm[row]) << "row " << row + 1;
+  }
 }
 
 TEST_F(BoardStream, SecondSessionStartsFromAFreshFilter) {
@@ -232,6 +262,38 @@ TEST_F(BoardStream, SilentBoardGivesAClearErrorAfterTheTimeout) {
   EXPECT_NE(r.err.find(pty.slave_name()), std::string::npos) << r.err;
   EXPECT_GE(s, 0.39);
   EXPECT_LT(s, 5.0);
+}
+
+TEST_F(BoardStream, BadRowIsRefusedBeforeTheBoardSeesASample) {
+  // Row 200 of a copy of the recording has a voltage above the sensor's 10 V.
+  std::ifstream in(dir_ / "bench.csv");
+  std::ofstream bad(dir_ / "bad.csv");
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (n == 200) line = line.substr(0, line.rfind(',')) + ",10.5";
+    bad << line << "\n";
+  }
+  bad.close();
+  Pty pty;
+  PtyBoard board(pty);
+  std::vector<std::string> a = args(pty, "bad_out.csv");
+  a[4] = (dir_ / "bad.csv").string();
+  const Outcome r = run(a);
+  EXPECT_EQ(r.status, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("bad.csv:200:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("voltage_v"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "bad_out.csv"))
+      << "nothing streamed, nothing written";
+}
+
+TEST_F(BoardStream, WithoutACalibrationTheThesisRegressionConverts) {
+  Pty pty;
+  PtyBoard board(pty);
+  std::vector<std::string> a = args(pty, "eq314.csv");
+  a.erase(a.begin() + 5, a.begin() + 7);  // --calibration model.json
+  const Outcome r = run(a);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(expect_matches_model("eq314.csv"), 361u);
 }
 
 TEST_F(BoardStream, MissingPortIsReported) {

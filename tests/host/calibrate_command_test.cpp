@@ -123,6 +123,23 @@ TEST(CalibrateCommand, BadInputExitsTwoAndLeavesTheDatabaseAlone) {
   EXPECT_NE(outcome.err.find("--max-order"), std::string::npos) << outcome.err;
 }
 
+TEST(CalibrateCommand, UnwritableOutputFailsBeforeTheDatabaseGrows) {
+  const auto dir = fresh_test_dir("calibrate_unwritable");
+  const std::string original = "t_s,clearance_mm,temp_c,voltage_v\n" + bench_rows(300, 0.0, "");
+  const auto db = write_file(dir / "db.csv", original);
+  const auto more = write_file(dir / "more.csv",
+                               "t_s,clearance_mm,temp_c,voltage_v\n" + bench_rows(100, 100.0, ""));
+  const Outcome outcome = run({"calibrate", "--data", db.string(), "--append", more.string(),
+                               "--out", (dir / "no_such_folder" / "m.json").string()});
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_EQ(outcome.out, "") << "nothing fitted, nothing printed";
+  EXPECT_NE(outcome.err.find("flange calibrate: --out "), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("cannot write"), std::string::npos) << outcome.err;
+  std::ifstream in(db);
+  const std::string after((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(after, original);
+}
+
 TEST(CalibrateCommand, MalformedModelFileNamesTheField) {
   const auto dir = fresh_test_dir("calibrate_model");
   const auto bad =

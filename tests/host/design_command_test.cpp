@@ -80,6 +80,7 @@ TEST(DesignCommand, EveryBadInputExitsTwoWithOneLineAndNoFiles) {
        "--fp --fa --ap --aa"},
   };
   for (const BadInput& bad : cases) {
+    SCOPED_TRACE(bad.names);
     const fs::path dir = fresh_dir("bad");
     std::vector<std::string> args{"design"};
     args.insert(args.end(), bad.args.begin(), bad.args.end());
@@ -91,6 +92,28 @@ TEST(DesignCommand, EveryBadInputExitsTwoWithOneLineAndNoFiles) {
     EXPECT_NE(outcome.err.find(bad.names), std::string::npos)
         << joined << ": message does not name " << bad.names << ": " << outcome.err;
     EXPECT_FALSE(fs::exists(dir)) << joined;
+  }
+}
+
+TEST(DesignCommand, ValueOfTheWrongTypeNamesTheValidRange) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--fs", "6", "--order", "1.5", "--fc", "1"},
+       "--order: '1.5' is not a valid value; expected "
+       "filter order (1 to 32)"},
+      {{"--fs", "abc", "--order", "5", "--fc", "1"},
+       "--fs: 'abc' is not a valid value; expected "
+       "sample rate in Hz (> 0)"},
+      {{"--fs", "6", "--order", "5", "--fc", "1", "--coef-bits", "x"},
+       "--coef-bits: 'x' is not a valid value; expected coefficient width (4 to 32)"},
+  };
+  for (const auto& [args, message] : cases) {
+    const fs::path dir = fresh_dir("bad_type");
+    std::vector<std::string> full{"design"};
+    full.insert(full.end(), args.begin(), args.end());
+    const Outcome outcome = run(with_out(full, dir));
+    EXPECT_EQ(outcome.status, kExitBadArgument) << outcome.err;
+    EXPECT_NE(outcome.err.find(message), std::string::npos) << outcome.err;
+    EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
   }
 }
 

@@ -87,7 +87,19 @@ TEST(Regression, DegenerateDataIsRefused) {
     fit_regression(collinear, RegressionOptions{});
     FAIL() << "collinear data accepted";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("rank deficient"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("move together"), std::string::npos);
+  }
+  // Nearly collinear: the temperature follows the voltage to within 6 mK.
+  CalibrationData nearly = collinear;
+  for (std::size_t k = 0; k < nearly.temp_c.size(); ++k) {
+    nearly.temp_c[k] += 0.006 * std::sin(0.7 * static_cast<double>(k));
+  }
+  try {
+    fit_regression(nearly, RegressionOptions{});
+    FAIL() << "nearly collinear data accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("at least 1 % is needed"), std::string::npos)
+        << error.what();
   }
 }
 

@@ -2,6 +2,7 @@
 // `flange run` as a user runs it: simulate, calibrate, run through each engine; the output CSV,
 // the summary, the report; bad input with and without --lenient.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <fstream>
 #include <sstream>
@@ -38,13 +39,17 @@ const std::string kMeasurement =
 class RunCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fresh_test_dir("run_command");
+    // One folder per process: CTest runs the tests of this file in parallel processes.
+    dir_ = fresh_test_dir("run_command_" + std::to_string(::getpid()));
     const Outcome sim = run({"simulate", "--scenario", "bench", "--duration", "1200", "--seed", "5",
                              "--out", (dir_ / "bench.csv").string()});
     ASSERT_EQ(sim.status, 0) << sim.err;
     const Outcome cal = run({"calibrate", "--data", (dir_ / "bench.csv").string(), "--out",
                              (dir_ / "model.json").string()});
     ASSERT_EQ(cal.status, 0) << cal.err;
+  }
+  static void TearDownTestSuite() {
+    if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir_);
   }
   static std::vector<std::string> run_args(const std::string& input, const std::string& engine) {
     return {"run",      "--input",    input,      "--calibration", (dir_ / "model.json").string(),
