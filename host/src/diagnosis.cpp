@@ -338,26 +338,20 @@ void check_series(const RecordingSeries& s, const std::string& role) {
   }
 }
 
-// Refits every selected effect (from `first` on) with the others held, `passes` times. A greedy
-// pick is fitted before the effects found after it, so it soaks up part of them (an offset drift
-// takes some of an ageing offset); the joint refit hands that part back. A refit is kept only
-// where it lowers the calibration RMS, since fit_effect searches afresh rather than from the
-// last fit.
-void backfit(std::vector<sim::EffectSettings>& modelled, std::size_t first, int passes,
+// Refits every selected effect (from `first` on) once, with the others held. A greedy pick is
+// fitted before the effects found after it, so it soaks up part of them (an offset drift takes
+// some of an ageing offset); the refit hands that part back. A refit is kept only where it
+// lowers the calibration RMS, since fit_effect searches afresh rather than from the last fit.
+void backfit(std::vector<sim::EffectSettings>& modelled, std::size_t first,
              const TwinReplay& replay, const std::vector<double>& real_v) {
   double rms_now = rms_of(minus(real_v, replay.voltage(modelled)));
-  for (int pass = 0; pass < passes; ++pass) {
-    for (std::size_t j = first; j < modelled.size(); ++j) {
-      std::vector<sim::EffectSettings> others;
-      for (std::size_t k = 0; k < modelled.size(); ++k) {
-        if (k != j) others.push_back(modelled[k]);
-      }
-      const EffectFit refit = fit_effect(modelled[j].name, replay, real_v, others);
-      if (refit.rms_v < rms_now) {
-        others.insert(others.begin() + static_cast<long>(j), refit.settings);
-        modelled = std::move(others);
-        rms_now = refit.rms_v;
-      }
+  for (std::size_t j = first; j < modelled.size(); ++j) {
+    std::vector<sim::EffectSettings> others = modelled;
+    others.erase(others.begin() + static_cast<long>(j));
+    const EffectFit refit = fit_effect(modelled[j].name, replay, real_v, others);
+    if (refit.rms_v < rms_now) {
+      modelled[j] = refit.settings;
+      rms_now = refit.rms_v;
     }
   }
 }
@@ -450,7 +444,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
       with.push_back(fits.back().settings);
       // Each candidate is scored with the effects chosen before it refitted around it.
       if (with.size() > first_selected + 1) {
-        backfit(with, first_selected, 1, cal_replay, calibration.voltage_v);
+        backfit(with, first_selected, cal_replay, calibration.voltage_v);
       }
       candidate_sets.push_back(with);
       step.names.push_back(spec.name);

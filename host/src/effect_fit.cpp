@@ -175,7 +175,7 @@ AgeingLine ageing_line(const std::vector<double>& gap, const std::vector<double>
 }
 
 // Subtracts the ageing drift's best line (ageing_line) from `gap`.
-void remove_line_in_time(std::vector<double>& gap, const std::vector<double>& t_s) {
+void remove_ageing_line(std::vector<double>& gap, const std::vector<double>& t_s) {
   const AgeingLine line = ageing_line(gap, t_s);
   for (std::size_t i = 0; i < gap.size(); ++i) {
     gap[i] -= line.offset_v + line.rate_v_per_day * t_s[i] / 86400.0;
@@ -267,7 +267,7 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
       const std::vector<double> sim_v = replay.voltage(effects);
       std::vector<double> gap(sim_v.size());
       for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v[i] - sim_v[i];
-      if (profile_ageing) remove_line_in_time(gap, replay.times());
+      if (profile_ageing) remove_ageing_line(gap, replay.times());
       double sum = 0.0;
       for (const double g : gap) sum += g * g;
       return std::sqrt(sum / static_cast<double>(gap.size()));
