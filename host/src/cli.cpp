@@ -65,6 +65,12 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   add_hw_diagnose_options(*diagnose, hw_diagnose_options);
   SelftestCommandOptions selftest_options;  // --selftest: the blind check of the data layer
   add_selftest_options(*diagnose, selftest_options);
+  // The three layers of diagnose take different inputs: say so rather than ignore one.
+  for (const char* data_option : {"--real", "--holdout", "--holdout-fraction", "--twin"}) {
+    diagnose->get_option("--selftest")->excludes(data_option);
+    diagnose->get_option("--hw")->excludes(data_option);
+  }
+  diagnose->get_option("--hw")->excludes("--selftest");
 
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());

@@ -144,7 +144,8 @@ TEST(DiagnoseSelftestCommand, SmallBlindSetMeetsTheAims) {
 TEST(DiagnoseSelftestCommand, BadArgumentsGiveStatusTwo) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"diagnose", "--selftest", "--cases", "0"},
-        std::vector<std::string>{"diagnose", "--selftest", "--duration", "10"}}) {
+        std::vector<std::string>{"diagnose", "--selftest", "--duration", "10"},
+        std::vector<std::string>{"diagnose", "--selftest", "--real", "real.csv"}}) {
     std::ostringstream out, err;
     EXPECT_EQ(run_flange(args, out, err), 2) << args.back();
     EXPECT_NE(err.str().find(args[2]), std::string::npos) << err.str();
