@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <random>
 
@@ -434,21 +435,41 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
     Step step;
     std::vector<EffectFit> fits;
     std::vector<std::vector<sim::EffectSettings>> candidate_sets;  // modelled + each candidate
+    // Candidates are independent of each other: each is fitted in its own thread (the replays
+    // are read-only), and the results are taken in catalogue order, so the outcome does not
+    // depend on the threads.
+    struct Candidate {
+      EffectFit fit;
+      std::vector<sim::EffectSettings> with;  // modelled + the candidate, refitted
+      std::vector<double> heldout_error;
+    };
+    std::vector<std::string> names;
     for (const sim::EffectSpec& spec : sim::effect_catalogue()) {
-      if (!fitted_by_bias(spec.name)) continue;
-      bool taken = false;
-      for (const auto& m : modelled) taken = taken || m.name == spec.name;
-      if (taken) continue;
-      fits.push_back(fit_effect(spec.name, cal_replay, calibration.voltage_v, modelled));
-      std::vector<sim::EffectSettings> with = modelled;
-      with.push_back(fits.back().settings);
-      // Each candidate is scored with the effects chosen before it refitted around it.
-      if (with.size() > first_selected + 1) {
-        backfit(with, first_selected, cal_replay, calibration.voltage_v);
-      }
-      candidate_sets.push_back(with);
-      step.names.push_back(spec.name);
-      step.heldout_error.push_back(minus(heldout.voltage_v, ho_replay.voltage(with)));
+      const bool taken = std::any_of(modelled.begin(), modelled.end(),
+                                     [&](const auto& m) { return m.name == spec.name; });
+      if (fitted_by_bias(spec.name) && !taken) names.push_back(spec.name);
+    }
+    std::vector<std::future<Candidate>> pending;
+    for (const std::string& name : names) {
+      pending.push_back(std::async(std::launch::async, [&, name] {
+        Candidate c;
+        c.fit = fit_effect(name, cal_replay, calibration.voltage_v, modelled);
+        c.with = modelled;
+        c.with.push_back(c.fit.settings);
+        // Each candidate is scored with the effects chosen before it refitted around it.
+        if (c.with.size() > first_selected + 1) {
+          backfit(c.with, first_selected, cal_replay, calibration.voltage_v);
+        }
+        c.heldout_error = minus(heldout.voltage_v, ho_replay.voltage(c.with));
+        return c;
+      }));
+    }
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      Candidate c = pending[i].get();
+      fits.push_back(std::move(c.fit));
+      candidate_sets.push_back(std::move(c.with));
+      step.names.push_back(names[i]);
+      step.heldout_error.push_back(std::move(c.heldout_error));
     }
     if (fits.empty()) break;
     const double mse_now = rms_of(current_error) * rms_of(current_error);
