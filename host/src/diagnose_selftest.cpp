@@ -303,7 +303,7 @@ std::vector<SelftestCaseResult> run_selftest(const SelftestOptions& options) {
         SelftestCaseResult& r = results[static_cast<std::size_t>(i)];
         const int index = options.only_case > 0 ? options.only_case : i + 1;
         r.spec = draw_selftest_case(index, options.seed);
-        const SelftestRecordings rec = make_selftest_recordings(r.spec, options.duration_s);
+        SelftestRecordings rec = make_selftest_recordings(r.spec, options.duration_s);
         DiagnoseOptions diagnose_options;  // blind: the default twin, noise estimated
         diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
         diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
@@ -312,6 +312,7 @@ std::vector<SelftestCaseResult> run_selftest(const SelftestOptions& options) {
         r.diagnosis = std::move(detailed.diagnosis);
         r.partial = std::move(detailed.detail.partial);
         r.score = score_selftest_case(r.spec, r.diagnosis, rec.noise_std_v);
+        if (options.only_case > 0) r.recordings = std::move(rec);
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       } catch (...) {
         const std::lock_guard<std::mutex> lock(failure_mutex);

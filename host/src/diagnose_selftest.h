@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,7 +66,8 @@ struct SelftestCaseResult {
   Diagnosis diagnosis;
   std::vector<EffectFinding> partial;  // unexplained: what the candidates did get
   SelftestScore score;
-  double seconds = 0.0;  // recording plus diagnosis
+  double seconds = 0.0;                          // recording plus diagnosis
+  std::optional<SelftestRecordings> recordings;  // kept when a single case runs (--case)
 };
 
 struct SelftestSummary {

@@ -12,6 +12,7 @@
 #include "bench_scenario.h"
 #include "cli.h"
 #include "input_error.h"
+#include "recording_writer.h"
 #include "sensor_twin.h"
 
 namespace flange::host {
@@ -183,18 +184,17 @@ int run_selftest_command(const SelftestCommandOptions& options, std::ostream& ou
   if (options.out) {
     const std::filesystem::path dir(*options.out);
     std::filesystem::create_directories(dir);
-    if (options.run.only_case > 0) {
-      // One case: its two sessions too, for `flange diagnose --real ... --holdout ...`.
-      const SelftestRecordings rec =
-          make_selftest_recordings(results.front().spec, options.run.duration_s);
+    if (results.front().recordings) {
+      // One case (--case): its two sessions too, for `flange diagnose --real ... --holdout ...`.
+      const SelftestRecordings& rec = *results.front().recordings;
       for (const auto& [name, series] :
            {std::pair{"calibration", &rec.calibration}, std::pair{"heldout", &rec.heldout}}) {
         const auto path = dir / fmt::format("case_{}_{}.csv", options.run.only_case, name);
         std::ofstream csv(path, std::ios::binary);
-        csv << "t_s,clearance_mm,temp_c,voltage_v\n";
+        sim::RecordingWriter writer(csv);
         for (std::size_t i = 0; i < series->size(); ++i) {
-          csv << fmt::format("{:.6f},{:.6f},{:.6f},{:.6f}\n", series->t_s[i],
-                             series->clearance_mm[i], series->temp_c[i], series->voltage_v[i]);
+          writer.write({series->t_s[i], series->clearance_mm[i], series->temp_c[i]},
+                       {series->t_s[i], series->temp_c[i], series->voltage_v[i]});
         }
         csv.close();
         if (!csv) {
@@ -205,8 +205,11 @@ int run_selftest_command(const SelftestCommandOptions& options, std::ostream& ou
       }
     }
     nlohmann::json j;
-    j["generated_by"] = fmt::format("flange diagnose --selftest --cases {} --seed {}",
-                                    summary.cases, options.run.seed);
+    j["generated_by"] = options.run.only_case > 0
+                            ? fmt::format("flange diagnose --selftest --case {} --seed {}",
+                                          options.run.only_case, options.run.seed)
+                            : fmt::format("flange diagnose --selftest --cases {} --seed {}",
+                                          summary.cases, options.run.seed);
     j["duration_s"] = duration;
     j["cases"] = nlohmann::json::array();
     for (const SelftestCaseResult& r : results) j["cases"].push_back(case_json(r));

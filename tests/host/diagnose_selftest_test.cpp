@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cli.h"
+#include "diagnose_command.h"
 #include "test_files.h"
 
 namespace flange::host {
@@ -139,6 +140,24 @@ TEST(DiagnoseSelftestCommand, SmallBlindSetMeetsTheAims) {
     }
   }
   EXPECT_TRUE(std::filesystem::exists(dir / "selftest.md"));
+}
+
+TEST(DiagnoseSelftestCommand, OneCaseWritesItsSessionsInTheRecordingFormat) {
+  const auto dir = testing::fresh_test_dir("diagnose_selftest_case");
+  std::ostringstream out, err;
+  // Case 8 is a null case: a short one runs in a second.
+  const int status = run_flange({"diagnose", "--selftest", "--case", "8", "--seed", "1",
+                                 "--duration", "600", "--bootstrap", "20", "--out", dir.string()},
+                                out, err);
+  EXPECT_EQ(status, 0) << out.str() << err.str();
+  const SelftestRecordings expected = make_selftest_recordings(draw_selftest_case(8, 1), 600);
+  for (const auto& [name, series] :
+       {std::pair{"calibration", &expected.calibration}, std::pair{"heldout", &expected.heldout}}) {
+    const RecordingSeries read =
+        read_recording_series((dir / (std::string("case_8_") + name + ".csv")).string());
+    ASSERT_EQ(read.size(), series->size()) << name;
+    EXPECT_NEAR(read.voltage_v.back(), series->voltage_v.back(), 1e-6) << name;
+  }
 }
 
 TEST(DiagnoseSelftestCommand, BadArgumentsGiveStatusTwo) {
