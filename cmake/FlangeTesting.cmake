@@ -8,6 +8,8 @@ function(flange_add_gtest name)
   cmake_parse_arguments(ARG "" "TIMEOUT;TEST_PREFIX" "SOURCES;LIBS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} flange_warnings GTest::gtest_main)
+  # tests/: helpers shared by the test folders (test_files.h).
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
   target_compile_definitions(${name} PRIVATE
     FLANGE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     FLANGE_BINARY_DIR="${PROJECT_BINARY_DIR}")

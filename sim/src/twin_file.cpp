@@ -11,6 +11,8 @@
 #include <tuple>
 #include <vector>
 
+#include "effect_argument.h"
+#include "effect_catalogue.h"
 #include "sim_error.h"
 
 namespace flange::sim {
@@ -245,6 +247,35 @@ PolynomialSensorModel nominal_from_calibration(const std::filesystem::path& path
   } catch (const BadArgument& error) {
     throw BadArgument(fmt::format("{}: {}", where, error.what()));
   }
+}
+
+TwinConfig twin_with_effects(const std::optional<std::filesystem::path>& twin_file,
+                             const std::optional<std::filesystem::path>& calibration,
+                             const std::vector<std::string>& effects) {
+  TwinConfig config = twin_file ? load_twin(*twin_file) : TwinConfig{};
+  if (calibration) config.nominal = nominal_from_calibration(*calibration);
+  std::vector<std::string> given;
+  for (const std::string& text : effects) {
+    const EffectArgument argument = parse_effect_argument(text);
+    const std::string where = "--effect " + argument.name;
+    for (const std::string& name : given) {
+      if (name == argument.name) throw BadArgument(where + ": the effect is given twice");
+    }
+    given.push_back(argument.name);
+    EffectSettings* existing = nullptr;
+    for (EffectSettings& effect : config.effects) {
+      if (effect.name == argument.name) existing = &effect;
+    }
+    if (existing != nullptr) {
+      // On top of a twin file: the given keys retune the effect, the others keep their values.
+      ParamValues values = existing->params;
+      for (const auto& [key, value] : argument.values) values[key] = value;
+      *existing = make_effect_settings(argument.name, values, where);
+    } else {
+      config.effects.push_back(make_effect_settings(argument.name, argument.values, where));
+    }
+  }
+  return config;
 }
 
 }  // namespace flange::sim

@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "sensor_twin.h"
 
@@ -31,5 +33,12 @@ TwinConfig load_twin(const std::filesystem::path& path);
 // bench. Throws BadArgument naming the file and field.
 PolynomialSensorModel nominal_from_calibration(const std::filesystem::path& path);
 void save_twin(const TwinConfig& config, const std::filesystem::path& path);
+
+// The twin file (or the default twin), with the nominal model of a calibration if given, and the
+// command line's effects (NAME or NAME:key=value,...) added or, when the file has them, retuned:
+// the given keys change, the others keep their values. Throws BadArgument naming the effect.
+TwinConfig twin_with_effects(const std::optional<std::filesystem::path>& twin_file,
+                             const std::optional<std::filesystem::path>& calibration,
+                             const std::vector<std::string>& effects);
 
 }  // namespace flange::sim

@@ -35,7 +35,7 @@ struct Outcome {
 
 Outcome run(const std::vector<std::string>& args) {
   std::ostringstream out, err;
-  const int status = host::run_flange(args, out, err);
+  const int status = cli::run_flange(args, out, err);
   return {status, out.str(), err.str()};
 }
 

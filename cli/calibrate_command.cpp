@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+#include "calibrate_command.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+
+#include "calibration.h"
+#include "cli.h"
+#include "input_error.h"
+
+namespace flange::cli {
+
+using host::CalibratedRange;
+using host::Calibration;
+using host::InputError;
+using host::OrderCandidate;
+
+CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "calibrate", "Fit clearance = f(voltage, temperature) from a calibration database");
+  cmd->add_option("--data", options.data,
+                  "calibration database CSV (t_s,clearance_mm,temp_c,voltage_v[,run])")
+      ->required();
+  cmd->add_option("--append", options.append,
+                  "a new session (same format) to add to the database before refitting");
+  cmd->add_option("--out", options.out, "where to write the calibration (model.json)")->required();
+  cmd->add_option("--max-order", options.regression.max_order, "highest order tried (1 to 6)")
+      ->default_val(4)
+      ->check(CLI::Range(host::kMinRegressionOrder, host::kMaxRegressionOrder));
+  cmd->add_option("--folds", options.regression.folds, "cross-validation folds (2 to 20)")
+      ->default_val(5)
+      ->check(CLI::Range(2, 20));
+  cmd->add_option("--min-r", options.regression.min_r,
+                  "correlation the thesis's rule requires (0 < r < 1)")
+      ->default_val(0.975)
+      ->check(CLI::Range(1e-6, 0.999999));
+  return cmd;
+}
+
+int run_calibrate_command(const CalibrateOptions& options,
+                          const std::vector<std::string>& command_line, std::ostream& out,
+                          std::ostream& err) {
+  // A model that cannot be written is found out before the database grows or the fit runs.
+  const std::filesystem::path out_path(options.out);
+  const std::filesystem::path folder =
+      out_path.has_parent_path() ? out_path.parent_path() : std::filesystem::path(".");
+  const bool writable =
+      std::filesystem::is_directory(folder) && ::access(folder.c_str(), W_OK) == 0 &&
+      (!std::filesystem::exists(out_path) ||
+       (!std::filesystem::is_directory(out_path) && ::access(out_path.c_str(), W_OK) == 0));
+  if (!writable) {
+    err << "flange calibrate: --out " << options.out
+        << ": cannot write (the folder must exist and be writable)\n";
+    return kExitFailure;
+  }
+  try {
+    if (options.append) {
+      const std::size_t added = host::append_to_database(options.data, *options.append);
+      out << fmt::format("appended {} rows from {} to {}\n", added, *options.append, options.data);
+    }
+    const Calibration calibration = calibrate_database(options.data, options.regression);
+    const CalibratedRange& r = calibration.range;
+    out << fmt::format(
+        "calibration: {} rows in {} ({} run{}), {} with a reference; V {:.3f}-{:.3f} V, "
+        "T {:.1f}-{:.1f} C, d {:.3f}-{:.3f} mm\n",
+        calibration.rows, options.data, calibration.runs.size(),
+        calibration.runs.size() == 1 ? "" : "s",
+        calibration.rows - calibration.rows_without_reference, r.v_min, r.v_max, r.t_min, r.t_max,
+        r.d_min, r.d_max);
+    out << "  order terms       r  adj_r2  rmse_mm   mae_mm  heldout_mae_mm\n";
+    for (const OrderCandidate& c : calibration.fit.candidates) {
+      out << fmt::format("  {:>5} {:>5} {:>7.4f} {:>7.4f} {:>8.4f} {:>8.4f} {:>15.4f}{}\n", c.order,
+                         c.terms, c.stats.r, c.stats.adjusted_r2, c.stats.rmse_mm, c.stats.mae_mm,
+                         c.stats.heldout_mae_mm,
+                         c.order == calibration.fit.model.order() ? "  <- selected" : "");
+    }
+    out << "  selected: " << calibration.fit.selection << "\n";
+    out << "  d = " << calibration.fit.model.equation() << "   (d mm, V volts, T deg C)\n";
+    std::string generated_by = "flange";
+    for (const std::string& word : command_line) generated_by += " " + word;
+    std::ofstream file(options.out, std::ios::binary);
+    file << calibration_json(calibration, generated_by).dump(1) << "\n";
+    file.close();
+    if (!file) {
+      err << "flange calibrate: --out " << options.out << ": cannot write\n";
+      return kExitFailure;
+    }
+    out << "  wrote " << options.out << "\n";
+    return kExitOk;
+  } catch (const InputError& error) {
+    err << "flange calibrate: " << error.what() << "\n";
+    return kExitBadArgument;
+  }
+}
+
+}  // namespace flange::cli

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// `flange calibrate`: fit (and refit, as sessions are appended) the temperature-compensating
+// regression from a calibration database.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "regression.h"
+
+namespace flange::cli {
+
+struct CalibrateOptions {
+  std::string data;                   // the calibration database (recording format)
+  std::optional<std::string> append;  // a new session to add to it first
+  std::string out;                    // model.json
+  host::RegressionOptions regression;
+};
+
+CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options);
+int run_calibrate_command(const CalibrateOptions& options,
+                          const std::vector<std::string>& command_line, std::ostream& out,
+                          std::ostream& err);
+
+}  // namespace flange::cli

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+#include "cli.h"
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <ostream>
+
+#include "calibrate_command.h"
+#include "cosim_command.h"
+#include "demo_command.h"
+#include "design_command.h"
+#include "diagnose_command.h"
+#include "diagnose_selftest_command.h"
+#include "hw_diagnose_command.h"
+#include "run_command.h"
+#include "simulate_command.h"
+#include "stream_command.h"
+#include "synth_command.h"
+
+namespace flange::cli {
+
+namespace {
+
+// CLI11 says "Could not convert: --order = 1.5" for a value of the wrong type; say what the option
+// takes too (its help text carries the valid range).
+std::string explain_parse_error(const CLI::App& app, const CLI::ParseError& error) {
+  const std::string what = error.what();
+  const std::string prefix = "Could not convert: ";
+  const std::size_t equals = what.find(" = ");
+  if (what.rfind(prefix, 0) != 0 || equals == std::string::npos) return what;
+  const std::string name = what.substr(prefix.size(), equals - prefix.size());
+  const std::string value = what.substr(equals + 3);
+  const CLI::Option* option = app.get_option_no_throw(name);
+  if (option == nullptr) return what;
+  return name + ": '" + value + "' is not a valid value; expected " + option->get_description();
+}
+
+}  // namespace
+
+int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"flange: FPGA IIR filter for wheel-flange wear measurement"};
+  app.name("flange");
+  app.require_subcommand(1);
+  app.fallthrough(false);
+
+  DesignOptions design_options;
+  CLI::App* design = add_design_command(app, design_options);
+  CalibrateOptions calibrate_options;
+  CLI::App* calibrate = add_calibrate_command(app, calibrate_options);
+  host::RunOptions run_options;
+  CLI::App* run = add_run_command(app, run_options);
+  DemoOptions demo_options;
+  CLI::App* demo = add_demo_command(app, demo_options);
+  SimulateOptions simulate_options;
+  CLI::App* simulate = add_simulate_command(app, simulate_options);
+  CosimCommandOptions cosim_options;
+  CLI::App* cosim = add_cosim_command(app, cosim_options);
+  SynthOptions synth_options;
+  CLI::App* synth = add_synth_command(app, synth_options);
+  host::StreamSettings stream_options;
+  CLI::App* stream = add_stream_command(app, stream_options);
+  DiagnoseCommandOptions diagnose_options;
+  CLI::App* diagnose = add_diagnose_command(app, diagnose_options);
+  HwDiagnoseOptions hw_diagnose_options;  // --hw: the float design against the Verilated RTL
+  add_hw_diagnose_options(*diagnose, hw_diagnose_options);
+  SelftestCommandOptions selftest_options;  // --selftest: the blind check of the data layer
+  add_selftest_options(*diagnose, selftest_options);
+  // The three layers of diagnose take different inputs: say so rather than ignore one.
+  for (const char* data_option : {"--real", "--holdout", "--holdout-fraction", "--twin"}) {
+    diagnose->get_option("--selftest")->excludes(data_option);
+    diagnose->get_option("--hw")->excludes(data_option);
+  }
+  diagnose->get_option("--hw")->excludes("--selftest");
+
+  std::vector<const char*> argv{"flange"};
+  for (const std::string& arg : args) argv.push_back(arg.c_str());
+  try {
+    app.parse(static_cast<int>(argv.size()), argv.data());
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help, out, err);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help, out, err);
+  } catch (const CLI::ParseError& error) {
+    std::string where = "flange";
+    const CLI::App* parsed = &app;
+    for (const CLI::App* sub : app.get_subcommands()) {
+      where += " " + sub->get_name();
+      parsed = sub;
+    }
+    err << where << ": " << explain_parse_error(*parsed, error) << "\n";
+    return kExitBadArgument;
+  }
+  try {
+    if (design->parsed()) return run_design_command(design_options, args, out, err);
+    if (calibrate->parsed()) return run_calibrate_command(calibrate_options, args, out, err);
+    if (run->parsed()) return run_run_command(run_options, out, err);
+    if (demo->parsed()) return run_demo_command(demo_options, out, err);
+    if (simulate->parsed()) return run_simulate_command(simulate_options, out, err);
+    if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
+    if (synth->parsed()) return run_synth_command(synth_options, out, err);
+    if (stream->parsed()) return run_stream_command(stream_options, out, err);
+    if (diagnose->parsed()) {
+      if (hw_diagnose_options.hw) {
+        // --seed and --out are the data layer's options; the hardware layer reads them too.
+        hw_diagnose_options.request.seed = diagnose_options.seed;
+        if (!diagnose_options.out.empty()) hw_diagnose_options.out = diagnose_options.out;
+        return run_hw_diagnosis(hw_diagnose_options, out, err);
+      }
+      if (selftest_options.selftest) {
+        // --seed, --out and --bootstrap are the data layer's options; the self-test reads them.
+        selftest_options.run.seed = diagnose_options.seed;
+        selftest_options.run.bootstrap_rounds = diagnose_options.bootstrap_rounds;
+        if (!diagnose_options.out.empty()) selftest_options.out = diagnose_options.out;
+        return run_selftest_command(selftest_options, out, err);
+      }
+      return run_diagnose_command(diagnose_options, out, err);
+    }
+  } catch (const std::exception& error) {
+    err << "flange: " << error.what() << "\n";
+    return kExitFailure;
+  }
+  return kExitBadArgument;
+}
+
+}  // namespace flange::cli

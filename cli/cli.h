@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+// The `flange` command line: one entry point for every subcommand, callable in-process so that
+// tests run exactly what users run.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace flange::cli {
+
+// Exit statuses shared by every subcommand (README, "Exit status").
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;      // a check failed or a file could not be read/written
+inline constexpr int kExitBadArgument = 2;  // an argument or input value is out of range
+
+// Runs `flange <args...>` and returns its exit status.
+int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+}  // namespace flange::cli

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+#include "diagnose_command.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <ostream>
+
+#include "cli.h"
+#include "diagnose_report.h"
+#include "input_error.h"
+#include "sim_error.h"
+#include "twin_file.h"
+
+namespace flange::cli {
+
+CLI::App* add_diagnose_command(CLI::App& app, DiagnoseCommandOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "diagnose",
+      "Where the sim-to-real gap of a recording lies, which effect causes it, and how "
+      "far it shrinks on held-out data");
+  cmd->add_option("--real", options.real, "recording (CSV t_s,clearance_mm,temp_c,voltage_v)");
+  CLI::Option* holdout =
+      cmd->add_option("--holdout", options.holdout, "a separate held-out recording");
+  cmd->add_option("--holdout-fraction", options.holdout_fraction,
+                  "hold out the last fraction of --real instead, 0.05 to 0.5")
+      ->excludes(holdout)
+      ->check(CLI::Range(0.05, 0.5));
+  cmd->add_option("--twin", options.twin, "twin file (JSON); default: thesis eq. 3.14");
+  cmd->add_option("--out", options.out, "folder for diagnosis.json and report.html");
+  cmd->add_option("--seed", options.seed, "seed of the bootstrap resampling")->default_val(1);
+  cmd->add_option("--bootstrap", options.bootstrap_rounds, "bootstrap rounds, 20 to 2000")
+      ->default_val(100)
+      ->check(CLI::Range(20, 2000));
+  return cmd;
+}
+
+int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& out,
+                         std::ostream& err) {
+  try {
+    if (options.real.empty())
+      throw host::InputError(
+          "--real: a recording is required (or --hw --coeffs DIR/filter.json for the float design "
+          "against the RTL)");
+    if (options.out.empty()) throw host::InputError("--out: an output folder is required");
+    if (!options.holdout && !options.holdout_fraction) {
+      throw host::InputError("give --holdout B.csv or --holdout-fraction F (0.05 to 0.5)");
+    }
+    diagnose::DiagnoseOptions diagnose_options;
+    if (options.twin) diagnose_options.twin = sim::load_twin(*options.twin);
+    diagnose_options.seed = options.seed;
+    diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
+
+    const diagnose::RecordingSeries real = diagnose::read_recording_series(options.real);
+    diagnose::HoldoutSplit split;
+    if (options.holdout) {
+      split.calibration = real;
+      split.heldout = diagnose::read_recording_series(*options.holdout);
+      split.heldout_name = *options.holdout;
+    } else {
+      split = diagnose::split_holdout(real, *options.holdout_fraction);
+    }
+    const diagnose::DiagnosisResult result =
+        diagnose::diagnose_in_detail(split.calibration, split.heldout, diagnose_options);
+
+    std::filesystem::create_directories(options.out);
+    const std::filesystem::path json_path = std::filesystem::path(options.out) / "diagnosis.json";
+    std::ofstream json(json_path, std::ios::binary);
+    json << diagnose::diagnosis_json(result, options.real, split.heldout_name).dump(2) << "\n";
+    json.close();
+    if (!json) {
+      err << "flange diagnose: " << json_path.string() << ": cannot write\n";
+      return kExitFailure;
+    }
+    diagnose::write_diagnosis_report(options.out, result, options.real);
+    out << diagnose::diagnosis_summary(result);
+    out << "  wrote " << json_path.string() << " and "
+        << (std::filesystem::path(options.out) / "report.html").string() << "\n";
+    return kExitOk;
+  } catch (const host::InputError& error) {
+    err << "flange diagnose: " << error.what() << "\n";
+    return kExitBadArgument;
+  } catch (const sim::BadArgument& error) {
+    err << "flange diagnose: " << error.what() << "\n";
+    return kExitBadArgument;
+  }
+}
+
+}  // namespace flange::cli

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+#include "diagnose_selftest_command.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <stdexcept>
+
+#include "bench_scenario.h"
+#include "cli.h"
+#include "input_error.h"
+#include "selftest_report.h"
+
+namespace flange::cli {
+namespace fs = std::filesystem;
+
+namespace {
+
+// selftest.json, selftest.md and, for one case, its two sessions; throws std::runtime_error.
+void write_selftest_files(const SelftestCommandOptions& options, const std::string& header,
+                          const std::vector<diagnose::SelftestCaseResult>& results,
+                          const diagnose::SelftestSummary& summary, double duration_s,
+                          std::ostream& out) {
+  const fs::path dir(*options.out);
+  fs::create_directories(dir);
+  if (results.front().recordings) {
+    for (const fs::path& path : diagnose::write_selftest_recordings(
+             dir, options.run.only_case, *results.front().recordings)) {
+      out << "  wrote " << path.string() << "\n";
+    }
+  }
+  std::ofstream json(dir / "selftest.json", std::ios::binary);
+  json << diagnose::selftest_json(options.run, results, summary, duration_s).dump(2) << "\n";
+  std::ofstream md(dir / "selftest.md", std::ios::binary);
+  md << diagnose::selftest_markdown(header, results, summary);
+  json.close();
+  md.close();
+  if (!json || !md) throw std::runtime_error(dir.string() + ": cannot write");
+  out << "  wrote " << (dir / "selftest.json").string() << " and "
+      << (dir / "selftest.md").string() << "\n";
+}
+
+}  // namespace
+
+void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
+  diagnose.add_flag("--selftest", options.selftest,
+                    "blind check: simulated bench sessions with random, undisclosed effects");
+  diagnose.add_option("--cases", options.run.cases, "--selftest: number of cases, 1 to 1000")
+      ->default_val(10)
+      ->check(CLI::Range(1, 1000));
+  diagnose
+      .add_option("--case", options.run.only_case,
+                  "--selftest: run only case K of the seed (one row of a table), 1 to 1000")
+      ->check(CLI::Range(1, 1000));
+  diagnose
+      .add_option("--duration", options.run.duration_s,
+                  "--selftest: seconds per bench session, 600 to 6600 (default: the protocol's "
+                  "6600)")
+      ->check(CLI::Range(600.0, 6600.0));
+  diagnose.add_option("--jobs", options.run.jobs, "--selftest: worker threads, 1 to 64")
+      ->check(CLI::Range(1, 64));
+}
+
+int run_selftest_command(const SelftestCommandOptions& options, std::ostream& out,
+                         std::ostream& err) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<diagnose::SelftestCaseResult> results;
+  try {
+    results = diagnose::run_selftest(options.run);
+  } catch (const host::InputError& error) {
+    err << "flange diagnose --selftest: " << error.what() << "\n";
+    return kExitBadArgument;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const diagnose::SelftestSummary summary = diagnose::summarise_selftest(results);
+  const double duration =
+      options.run.duration_s > 0 ? options.run.duration_s : sim::BenchProtocol{}.duration_s;
+
+  const std::string header = diagnose::selftest_header(summary, options.run.seed, duration);
+  out << header << "\n" << diagnose::selftest_terminal_table(results);
+  for (const std::string& line : diagnose::selftest_summary_lines(summary)) out << line << "\n";
+  out << fmt::format("aims {} ({:.0f} s)\n", summary.aims_met() ? "met" : "MISSED", seconds);
+  if (options.out) {
+    try {
+      write_selftest_files(options, header, results, summary, duration, out);
+    } catch (const std::runtime_error& error) {
+      err << "flange diagnose --selftest: " << error.what() << "\n";
+      return kExitFailure;
+    }
+  }
+  return summary.aims_met() ? kExitOk : kExitFailure;
+}
+
+}  // namespace flange::cli

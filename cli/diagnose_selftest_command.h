@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+// `flange diagnose --selftest --cases N --seed S`: the blind check of the data layer
+// (diagnose/data/diagnose_selftest.h). Prints one row per case and the summary against the aims; with --out
+// writes DIR/selftest.json and DIR/selftest.md (the table as docs/diagnose.md records it).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include "diagnose_selftest.h"
+
+namespace flange::cli {
+
+struct SelftestCommandOptions {
+  bool selftest = false;
+  diagnose::SelftestOptions run;             // cases, duration, jobs; seed and bootstrap from the data layer
+  std::optional<std::string> out;  // folder for selftest.json and selftest.md
+};
+
+// --selftest --cases --duration --jobs (--seed, --out and --bootstrap are the data layer's).
+void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options);
+
+// 0 when every aim is met, 1 when one is missed (the summary says which) or a file cannot be
+// written, 2 on a bad argument.
+int run_selftest_command(const SelftestCommandOptions& options, std::ostream& out,
+                         std::ostream& err);
+
+}  // namespace flange::cli

@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: MIT
+#include "simulate_command.h"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+
+#include "aliasing.h"
+#include "cli.h"
+#include "bench_scenario.h"
+#include "effect_argument.h"
+#include "effect_catalogue.h"
+#include "loco_scenario.h"
+#include "sim_error.h"
+#include "simulation.h"
+#include "twin_file.h"
+
+namespace flange::cli {
+
+// What the command takes from the sensor twin and its scenarios (sim/).
+using sim::alias_frequency_hz;
+using sim::BadArgument;
+using sim::BenchProtocol;
+using sim::BenchScenario;
+using sim::EffectSettings;
+using sim::LocoRun;
+using sim::LocoScenario;
+using sim::Scenario;
+using sim::SensorTwin;
+using sim::SimulationSummary;
+using sim::TwinConfig;
+
+namespace {
+
+constexpr double kMaxSampleRateHz = 100000.0;
+constexpr double kMaxDurationS = 366.0 * 86400.0;
+constexpr double kMaxSamples = 1e9;          // about 45 GB of CSV: a typo, not a plan
+constexpr double kBenchSampleRateHz = 6.0;   // thesis 4.3.1: the lab DAQ's 6 Hz
+constexpr double kLocoSampleRateHz = 100.0;  // thesis 4.4.2: the multibody record's 100 Hz
+constexpr double kLocoDurationS = 300.0;
+
+void check_positive_finite(double value, double max, const std::string& name,
+                           const std::string& unit) {
+  if (!std::isfinite(value) || value <= 0.0 || value > max) {
+    throw BadArgument(
+        fmt::format("{} = {} is outside its valid range (0, {}] {}", name, value, max, unit));
+  }
+}
+
+// Checks a number in (0, max] as the user typed it, so that "six", "nan" and "-1" get the same
+// one-line message with the range.
+CLI::Validator positive_up_to(double max, const std::string& unit) {
+  return CLI::Validator(
+      [max, unit](std::string& text) -> std::string {
+        double value = 0.0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        const bool parsed = error == std::errc() && end == text.data() + text.size();
+        if (parsed && std::isfinite(value) && value > 0.0 && value <= max) return "";
+        return fmt::format("{} is outside its valid range (0, {}] {}", text, max, unit);
+      },
+      fmt::format("(0, {}] {}", max, unit));
+}
+
+// Seeds are whole numbers 0 to 2^64 - 1; strtoull alone would wrap "-1" round to 2^64 - 1.
+CLI::Validator seed_range() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (!text.empty() && error == std::errc() && end == text.data() + text.size()) return "";
+        return text + " is not a whole number from 0 to 18446744073709551615";
+      },
+      "0 to 2^64-1");
+}
+
+std::string list_hz(const std::vector<double>& frequencies) {
+  std::string text;
+  for (const double f : frequencies) text += fmt::format("{}{:.4g}", text.empty() ? "" : ", ", f);
+  return text + " Hz";
+}
+
+// Where the periodic parts of the run land after sampling: the point of simulating at fs.
+void report_aliasing(const TwinConfig& config, const SimulateOptions& options, double fs_hz,
+                     const LocoRun& loco, std::ostream& out) {
+  for (const EffectSettings& effect : config.effects) {
+    if (effect.name == "mains_pickup") {
+      std::vector<double> tones;
+      std::vector<double> seen;
+      for (int k = 1; k <= static_cast<int>(effect.params.at("harmonics")); ++k) {
+        tones.push_back(k * effect.params.at("mains_hz"));
+        seen.push_back(alias_frequency_hz(tones.back(), fs_hz));
+      }
+      out << "  mains_pickup: tones at " << list_hz(tones) << " appear at " << list_hz(seen)
+          << "\n";
+    }
+    if (effect.name == "vibration" && effect.params.at("f_high_hz") > fs_hz / 2.0) {
+      out << fmt::format(
+          "  vibration: the {:.4g}-{:.4g} Hz band reaches above fs/2 = {:.4g} Hz "
+          "and folds into 0-{:.4g} Hz\n",
+          effect.params.at("f_low_hz"), effect.params.at("f_high_hz"), fs_hz / 2.0, fs_hz / 2.0);
+    }
+  }
+  if (options.scenario == "loco") {
+    const double mode_hz = lateral_natural_frequency_hz(loco.wheelset);
+    out << fmt::format("  wheelset lateral mode: {:.3g} Hz undamped ({} leads){}\n", mode_hz,
+                       loco.wheelset.leads,
+                       mode_hz > fs_hz / 2.0 ? fmt::format(", above fs/2: it appears at {:.3g} Hz",
+                                                           alias_frequency_hz(mode_hz, fs_hz))
+                                             : ", below fs/2: sampled without aliasing");
+  }
+}
+
+}  // namespace
+
+CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "simulate", "Run a bench or locomotive scenario through the sensor twin into a recording");
+  cmd->add_option("--scenario", options.scenario,
+                  "bench: the thesis's heated micrometer protocol; loco: a locomotive run")
+      ->required()
+      ->check(CLI::IsMember({"bench", "loco"}));
+  cmd->add_option("--effect", options.effects,
+                  "switch an effect on: NAME or NAME:key=value[,key=value...] (repeatable); "
+                  "names and keys in docs/sensor_twin.md");
+  cmd->add_option("--fs", options.fs_hz, "sample rate in Hz (bench 6, loco 100)")
+      ->check(positive_up_to(kMaxSampleRateHz, "Hz"));
+  cmd->add_option("--duration", options.duration_s, "record length in s (bench 6600, loco 300)")
+      ->check(positive_up_to(kMaxDurationS, "s"));
+  cmd->add_option("--seed", options.seed, "seed of the twin's random numbers")
+      ->required()
+      ->check(seed_range());
+  cmd->add_option("--out", options.out, "recording to write (CSV)")->required();
+  cmd->add_option("--twin", options.twin, "twin file (JSON) to start from");
+  cmd->add_option("--save-twin", options.save_twin, "write the twin used to this JSON file");
+  cmd->add_option("--calibration", options.calibration,
+                  "a calibration (model.json from flange calibrate) as the twin's nominal model");
+  return cmd;
+}
+
+int run_simulate_command(const SimulateOptions& options, std::ostream& out, std::ostream& err) {
+  try {
+    const bool bench = options.scenario == "bench";
+    const BenchProtocol protocol;
+    const LocoRun loco;
+    const double fs_hz = options.fs_hz.value_or(bench ? kBenchSampleRateHz : kLocoSampleRateHz);
+    const double duration_s =
+        options.duration_s.value_or(bench ? protocol.duration_s : kLocoDurationS);
+    check_positive_finite(fs_hz, kMaxSampleRateHz, "--fs", "Hz");
+    check_positive_finite(duration_s, kMaxDurationS, "--duration", "s");
+    if (fs_hz * duration_s > kMaxSamples) {
+      throw BadArgument(
+          fmt::format("--fs x --duration = {:.3g} samples is above the limit of {:.0e}",
+                      fs_hz * duration_s, kMaxSamples));
+    }
+    const TwinConfig config = sim::twin_with_effects(options.twin, options.calibration, options.effects);
+    if (options.save_twin) save_twin(config, *options.save_twin);
+
+    std::unique_ptr<Scenario> scenario;
+    if (bench) {
+      scenario = std::make_unique<BenchScenario>(protocol, fs_hz, duration_s);
+    } else {
+      scenario = std::make_unique<LocoScenario>(loco, fs_hz, duration_s);
+    }
+    SensorTwin twin(config, options.seed);
+    std::ofstream csv(options.out, std::ios::binary);
+    if (!csv) {
+      err << "flange simulate: " << options.out.string() << ": cannot write the recording\n";
+      return kExitFailure;
+    }
+    const SimulationSummary summary = run_simulation(*scenario, twin, csv);
+    csv.close();
+    if (!csv) {
+      err << "flange simulate: " << options.out.string() << ": writing the recording failed\n";
+      return kExitFailure;
+    }
+
+    std::string effects;
+    for (const EffectSettings& effect : config.effects) {
+      effects += (effects.empty() ? "" : ", ") + effect.name;
+    }
+    out << fmt::format("simulate: {} scenario, {} samples at {:.6g} Hz over {:.6g} s, seed {}\n",
+                       options.scenario, summary.samples, fs_hz, duration_s, options.seed);
+    out << fmt::format("  twin: noise {:.6g} V, effects: {}\n", config.noise.voltage_std_v,
+                       effects.empty() ? "none" : effects);
+    out << fmt::format(
+        "  reference clearance {:.3f} to {:.3f} mm, thermocouple {:.1f} to {:.1f} degC\n",
+        summary.min_clearance_mm, summary.max_clearance_mm, summary.min_temp_c, summary.max_temp_c);
+    out << fmt::format("  sensor output on a rail: {} samples at {:.6g} V, {} at {:.6g} V\n",
+                       summary.clips.low, config.nominal.v_min_v(), summary.clips.high,
+                       config.nominal.v_max_v());
+    report_aliasing(config, options, fs_hz, loco, out);
+    out << "  wrote " << options.out.string();
+    if (options.save_twin) out << " and " << options.save_twin->string();
+    out << "\n";
+    return kExitOk;
+  } catch (const BadArgument& error) {
+    err << "flange simulate: " << error.what() << "\n";
+    return kExitBadArgument;
+  } catch (const std::ios_base::failure& error) {
+    err << "flange simulate: " << error.what() << "\n";
+    return kExitFailure;
+  } catch (const std::runtime_error& error) {
+    err << "flange simulate: " << error.what() << "\n";
+    return kExitFailure;
+  }
+}
+
+}  // namespace flange::cli

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// The `flange simulate` subcommand: a scenario through the sensor twin into a recording.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace flange::cli {
+
+struct SimulateOptions {
+  std::string scenario;              // bench or loco
+  std::vector<std::string> effects;  // NAME or NAME:key=value,...; one effect per argument
+  std::optional<double> fs_hz;       // default: 6 Hz (bench), 100 Hz (loco)
+  std::optional<double> duration_s;  // default: the scenario's own (6600 s bench, 300 s loco)
+  std::uint64_t seed = 0;
+  std::filesystem::path out;
+  std::optional<std::filesystem::path> twin;       // start from this twin file
+  std::optional<std::filesystem::path> save_twin;  // write the twin used, effects included
+  std::optional<std::filesystem::path> calibration;  // model.json as the nominal model
+};
+
+// Registers the subcommand on `app`; the returned pointer tells whether it was chosen.
+CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options);
+
+// Runs a parsed simulate command. Returns 0, 1 (a file could not be written) or 2 (a bad
+// argument, effect or twin file; one line names it and its valid range).
+int run_simulate_command(const SimulateOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace flange::cli

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// The sim-to-real gap diagnosis of a recording: where the gap lies, which unmodelled effect of
+// the twin's library explains it, and how far it shrinks on held-out data. `flange diagnose`
+// writes it as diagnosis.json and an HTML report; `flange diagnose --selftest` calls it blind.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "recording_series.h"
+#include "sensor_twin.h"
+
+namespace flange::diagnose {
+
+struct DiagnoseOptions {
+  // The twin the recording is compared with; its effects are the ones already modelled.
+  // Default: the nominal eq. 3.14 model with the noise level estimated from the data.
+  sim::TwinConfig twin;
+  bool estimate_noise = true;  // estimate twin.noise.voltage_std_v from the data
+  int bootstrap_rounds = 100;  // for confidence intervals and effect inclusion frequencies
+  std::uint64_t seed = 1;      // bootstrap resampling
+};
+
+struct EffectFinding {
+  std::string name;                      // an effect of the twin's library
+  std::map<std::string, double> params;  // fitted on the calibration part only
+  double heldout_rms_before = 0.0;       // voltage gap RMS on held-out data, V
+  double heldout_rms_after = 0.0;        // ... once this and the effects before it are added
+  double shrink_pct = 0.0;               // 100 * (before - after) / before
+  double inclusion = 0.0;                // share of bootstrap rounds that selected it, 0..1
+  bool noise_type = false;               // identified from its signature, not by a bias it removes
+  std::string evidence;                  // one sentence: why it was selected
+};
+
+struct Diagnosis {
+  std::string status;                  // "explained", "unexplained" or "none"
+  std::vector<EffectFinding> effects;  // selected, in selection order (empty unless explained)
+  std::string stage;                   // the stage where the gap first appears
+  double heldout_rms_before = 0.0;     // V, nominal twin against the held-out recording
+  double heldout_rms_after = 0.0;      // V, with every selected effect
+  double noise_std_v = 0.0;            // V, the twin's white noise the verdict compares with
+};
+
+// Fits on `calibration`, scores on `heldout`; both must share a sample rate and carry the
+// reference clearance. Throws InputError (input_error.h) on mismatched or too-short data.
+Diagnosis diagnose(const RecordingSeries& calibration, const RecordingSeries& heldout,
+                   const DiagnoseOptions& options);
+
+}  // namespace flange::diagnose

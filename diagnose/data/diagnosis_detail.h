@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// Everything behind a Diagnosis that diagnosis.json and the report show: the gap at each stage,
+// where it lies (operating region, frequency band, time segments), the residual tests, and the
+// held-out traces before and after the selected effects.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diagnosis.h"
+#include "residual_tests.h"
+
+namespace flange::diagnose {
+
+// The gap at one stage of the chain against what the twin's noise alone gives there.
+struct StageGap {
+  std::string name;          // "voltage", "clearance", "filtered_clearance", "alarm_timing"
+  std::string unit;          // "V", "mm" or "s"
+  double gap_rms = 0.0;      // real minus sim (alarm timing: largest onset difference)
+  double noise_floor = 0.0;  // the same figure for the noisy twin against the noiseless one
+  double real_error_rms = 0.0, sim_error_rms = 0.0;  // clearance stages: against the reference
+  bool significant = false;  // gap_rms > 1.5 x noise_floor (alarm timing: > floor + 1 s)
+  std::string note;
+};
+
+struct RegionCell {
+  double clearance_lo = 0, clearance_hi = 0, temp_lo = 0, temp_hi = 0;
+  std::size_t n = 0;
+  double bias_v = 0, rms_v = 0;
+  double bias_lo = 0, bias_hi = 0, rms_lo = 0, rms_hi = 0;  // 95 % block-bootstrap intervals
+};
+
+struct InputCoherence {
+  std::string input;     // "temperature", "temperature_rate", "clearance"
+  double in_band = 0.0;  // mean magnitude-squared coherence over the gap's band (or all bins)
+  double peak = 0.0;
+  double peak_hz = 0.0;
+};
+
+struct TimeSegment {
+  double t_start_s = 0, t_end_s = 0, mean_v = 0;
+};
+
+struct HowFar {
+  double rms_before = 0, rms_after = 0, max_before = 0, max_after = 0;  // held-out, V
+  double region_rms_before = 0, region_rms_after = 0;                   // in the where-region cell
+  double band_rms_before = 0, band_rms_after = 0;  // in the where-band (PSD integrated)
+};
+
+struct DiagnosisDetail {
+  double fs_hz = 0.0;
+  double noise_std_v = 0.0;  // the twin's white voltage noise, estimated or given
+  std::string noise_source;  // how it was obtained
+  std::vector<StageGap> stages;
+  std::vector<RegionCell> regions;
+  std::optional<std::size_t> where_region;  // index into regions
+  std::optional<std::pair<double, double>> band_hz;
+  std::vector<InputCoherence> coherences;
+  std::vector<TimeSegment> segments;
+  CorrelationTest whiteness, vs_temperature, vs_clearance, vs_temperature_rate;
+  Spectrum gap_psd;                // of the calibration voltage gap
+  double noise_psd = 0.0;          // white-noise level for comparison, V^2/Hz
+  std::vector<double> t_s, gap_v;  // the calibration voltage gap over time
+  // Held-out traces.
+  std::vector<double> heldout_t_s, heldout_gap_before_v, heldout_gap_after_v;
+  HowFar how_far;
+  std::vector<EffectFinding> partial;  // unexplained: what the candidates did get
+  std::vector<std::string> reasons;    // why the verdict, one sentence each
+};
+
+struct DiagnosisResult {
+  Diagnosis diagnosis;
+  DiagnosisDetail detail;
+};
+
+// diagnose() with the detail kept.
+DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
+                                   const RecordingSeries& heldout, const DiagnoseOptions& options);
+
+// The sample rate of a series from its median step (Hz). Throws InputError for fewer than two
+// samples or a non-increasing time.
+double sample_rate_hz(const RecordingSeries& series);
+
+}  // namespace flange::diagnose

@@ -1,0 +1,364 @@
+// SPDX-License-Identifier: MIT
+#include "effect_fit.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "residual_tests.h"
+
+namespace flange::diagnose {
+namespace {
+
+// A fitted parameter and the range searched (inside the catalogue's valid range; narrower
+// where the full range is physically absurd for a bench, e.g. a gain change of 1 per degree).
+struct FreeParam {
+  std::string key;
+  double lo, hi;
+};
+
+std::vector<FreeParam> free_params(const std::string& name) {
+  // The drifts' reference is the temperature the sensor was calibrated at: a room, 0-40 degC. A
+  // reference far outside it would let a temperature drift pose as a constant offset.
+  if (name == "temp_gain_drift") return {{"gain_per_c", -0.01, 0.01}, {"reference_c", 0, 40}};
+  if (name == "temp_offset_drift") return {{"offset_v_per_c", -0.05, 0.05}, {"reference_c", 0, 40}};
+  if (name == "thermal_lag") return {{"tau_s", -1800, 1800}};
+  if (name == "range_compression")
+    return {{"onset_c", -40, 150}, {"knee_drop_v_per_c", 0.0, 0.2}, {"headroom_v", 0.05, 3.0}};
+  if (name == "nonlinearity") return {{"bow_v", -1, 1}, {"s_curve_v", -1, 1}};
+  if (name == "ageing_drift") return {{"rate_v_per_day", -2, 2}, {"start_age_days", 0, 30}};
+  if (name == "channel_skew") return {{"skew_s", -10, 10}};
+  if (name == "mains_pickup")
+    return {{"amplitude_v", 0, 1}, {"phase_deg", -180, 180}, {"harmonic_ratio", 0, 1}};
+  return {};
+}
+
+// Lattice points per parameter for the starting search: finer in one dimension, where it is
+// cheap and where lags and skews have narrow basins.
+int lattice_points(std::size_t dims) { return dims == 1 ? 41 : dims == 2 ? 9 : 7; }
+
+struct Objective {
+  std::function<double(const std::vector<double>&)> value;  // of unit-cube coordinates
+  int evaluations = 0;
+};
+
+// Nelder-Mead on the unit cube (coordinates clamped), from `start`.
+std::vector<double> nelder_mead(Objective& objective, std::vector<double> start, double step,
+                                int max_evaluations) {
+  const std::size_t n = start.size();
+  const auto clamp01 = [](std::vector<double> x) {
+    for (double& v : x) v = std::clamp(v, 0.0, 1.0);
+    return x;
+  };
+  const auto f = [&](const std::vector<double>& x) {
+    ++objective.evaluations;
+    return objective.value(x);
+  };
+  std::vector<std::vector<double>> simplex{clamp01(start)};
+  for (std::size_t d = 0; d < n; ++d) {
+    std::vector<double> x = start;
+    x[d] += x[d] + step <= 1.0 ? step : -step;
+    simplex.push_back(clamp01(x));
+  }
+  std::vector<double> values;
+  for (const auto& x : simplex) values.push_back(f(x));
+  int used = static_cast<int>(simplex.size());
+  while (used < max_evaluations) {
+    std::vector<std::size_t> order(simplex.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return values[a] < values[b]; });
+    const std::size_t best = order.front(), worst = order.back(), second = order[n - 1];
+    if (std::abs(values[worst] - values[best]) <= 1e-10 * (std::abs(values[best]) + 1e-12)) {
+      break;
+    }
+    std::vector<double> centroid(n, 0.0);
+    for (std::size_t i = 0; i < simplex.size(); ++i) {
+      if (i == worst) continue;
+      for (std::size_t d = 0; d < n; ++d) centroid[d] += simplex[i][d] / static_cast<double>(n);
+    }
+    const auto along = [&](double t) {
+      std::vector<double> x(n);
+      for (std::size_t d = 0; d < n; ++d)
+        x[d] = centroid[d] + t * (simplex[worst][d] - centroid[d]);
+      return clamp01(x);
+    };
+    const std::vector<double> reflected = along(-1.0);
+    const double fr = f(reflected);
+    ++used;
+    if (fr < values[best]) {
+      const std::vector<double> expanded = along(-2.0);
+      const double fe = f(expanded);
+      ++used;
+      if (fe < fr) {
+        simplex[worst] = expanded;
+        values[worst] = fe;
+      } else {
+        simplex[worst] = reflected;
+        values[worst] = fr;
+      }
+    } else if (fr < values[second]) {
+      simplex[worst] = reflected;
+      values[worst] = fr;
+    } else {
+      const std::vector<double> contracted = along(fr < values[worst] ? -0.5 : 0.5);
+      const double fc = f(contracted);
+      ++used;
+      if (fc < std::min(fr, values[worst])) {
+        simplex[worst] = contracted;
+        values[worst] = fc;
+      } else {
+        // Shrink towards the best point.
+        for (std::size_t i = 0; i < simplex.size(); ++i) {
+          if (i == best) continue;
+          for (std::size_t d = 0; d < n; ++d) {
+            simplex[i][d] = simplex[best][d] + 0.5 * (simplex[i][d] - simplex[best][d]);
+          }
+          values[i] = f(simplex[i]);
+          ++used;
+        }
+      }
+    }
+  }
+  const auto best = std::min_element(values.begin(), values.end()) - values.begin();
+  return simplex[static_cast<std::size_t>(best)];
+}
+
+// The ageing drift's line over the record: offset a = r a0 at t = 0 and rate r, with the
+// catalogue's limits: |r| <= 2 V/day, start age a0 = a / r in [0, 3650] days (so a and r share
+// a sign). Least squares of `gap` on [1, t in days] within those limits: the free optimum if it
+// is allowed, else the best point on the edges of the allowed region (a = 0, a0 = 3650,
+// r = +-2), where a convex problem's constrained optimum lies.
+struct AgeingLine {
+  double offset_v = 0.0, rate_v_per_day = 0.0;
+};
+AgeingLine ageing_line(const std::vector<double>& gap, const std::vector<double>& t_s) {
+  constexpr double kMaxRate = 2.0, kMaxAge = 3650.0, kDay = 86400.0;
+  const double n = static_cast<double>(gap.size());
+  double st = 0, sg = 0, stt = 0, stg = 0, sgg = 0;
+  for (std::size_t i = 0; i < gap.size(); ++i) {
+    const double t = t_s[i] / kDay;
+    st += t;
+    sg += gap[i];
+    stt += t * t;
+    stg += t * gap[i];
+    sgg += gap[i] * gap[i];
+  }
+  // Sum of squares of gap - a - r t, from the sums.
+  const auto sse = [&](double a, double r) {
+    return sgg - 2 * a * sg - 2 * r * stg + n * a * a + 2 * a * r * st + r * r * stt;
+  };
+  const auto allowed = [&](double a, double r) {
+    return std::abs(r) <= kMaxRate && a * r >= 0.0 && std::abs(a) <= kMaxAge * std::abs(r) + 1e-12;
+  };
+  const double denominator = n * stt - st * st;
+  if (denominator > 0.0) {
+    const double r = (n * stg - st * sg) / denominator;
+    const double a = (sg - r * st) / n;
+    if (allowed(a, r)) return {a, r};
+  }
+  std::vector<AgeingLine> edges;
+  edges.push_back({0.0, std::clamp(stt > 0 ? stg / stt : 0.0, -kMaxRate, kMaxRate)});  // a = 0
+  // a = kMaxAge r: gap = r (kMaxAge + t).
+  const double suu = n * kMaxAge * kMaxAge + 2 * kMaxAge * st + stt;
+  const double sug = kMaxAge * sg + stg;
+  const double r_old = std::clamp(sug / suu, -kMaxRate, kMaxRate);
+  edges.push_back({kMaxAge * r_old, r_old});
+  for (const double r : {kMaxRate, -kMaxRate}) {  // r at a limit, a between 0 and kMaxAge r
+    const double a = (sg - r * st) / n;
+    edges.push_back({std::clamp(a, std::min(0.0, kMaxAge * r), std::max(0.0, kMaxAge * r)), r});
+  }
+  return *std::min_element(edges.begin(), edges.end(), [&](const auto& x, const auto& y) {
+    return sse(x.offset_v, x.rate_v_per_day) < sse(y.offset_v, y.rate_v_per_day);
+  });
+}
+
+// Subtracts the ageing drift's best line (ageing_line) from `gap`.
+void remove_ageing_line(std::vector<double>& gap, const std::vector<double>& t_s) {
+  const AgeingLine line = ageing_line(gap, t_s);
+  for (std::size_t i = 0; i < gap.size(); ++i) {
+    gap[i] -= line.offset_v + line.rate_v_per_day * t_s[i] / 86400.0;
+  }
+}
+
+// ageing_drift is linear in time, gap = r (a0 + t / day): least squares of the gap on [1, t]
+// gives r and r a0 directly (a search over r and a0 crawls along the curved valley r a0 = c).
+// Over a record of hours r itself is poorly determined; their product, the offset, is not.
+EffectFit fit_ageing(const TwinReplay& replay, const std::vector<double>& real_v,
+                     const std::vector<sim::EffectSettings>& modelled) {
+  const std::vector<double> sim_v = replay.voltage(modelled);
+  std::vector<double> gap(sim_v.size());
+  for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v[i] - sim_v[i];
+  const AgeingLine line = ageing_line(gap, replay.times());
+  const double rate = line.rate_v_per_day;
+  const double start_days = rate != 0.0 ? std::clamp(line.offset_v / rate, 0.0, 3650.0) : 0.0;
+  EffectFit fit;
+  fit.settings = sim::make_effect_settings(
+      "ageing_drift", {{"rate_v_per_day", rate}, {"start_age_days", start_days}}, "diagnose fit");
+  std::vector<sim::EffectSettings> with = modelled;
+  with.push_back(fit.settings);
+  const std::vector<double> fitted = replay.voltage(with);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < fitted.size(); ++i) sum += std::pow(real_v[i] - fitted[i], 2);
+  fit.rms_v = std::sqrt(sum / static_cast<double>(fitted.size()));
+  fit.evaluations = 2;
+  return fit;
+}
+
+}  // namespace
+
+bool fitted_by_bias(const std::string& name) {
+  return name != "vibration" && name != "adc_quantization";
+}
+
+std::vector<std::string> fitted_keys(const std::string& name) {
+  std::vector<std::string> keys;
+  for (const FreeParam& p : free_params(name)) keys.push_back(p.key);
+  return keys;
+}
+
+EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
+                     const std::vector<double>& real_v,
+                     const std::vector<sim::EffectSettings>& modelled) {
+  if (name == "ageing_drift") return fit_ageing(replay, real_v, modelled);
+  const std::vector<FreeParam> params = free_params(name);
+  // Mains: the frequency aliases (any mains_hz gives a line at its alias), so it is chosen
+  // between the two mains standards rather than fitted continuously.
+  // A standard whose fundamental aliases to DC (60 Hz at 6 Hz) is an offset, not a tone, and
+  // is left to the offset effects.
+  std::vector<double> mains_choices{0.0};
+  if (name == "mains_pickup") {
+    const std::vector<double>& t = replay.times();
+    const double fs_hz = static_cast<double>(t.size() - 1) / (t.back() - t.front());
+    mains_choices.clear();
+    for (const double f : {50.0, 60.0}) {
+      if (std::abs(f - fs_hz * std::round(f / fs_hz)) > 0.01 * fs_hz) mains_choices.push_back(f);
+    }
+    if (mains_choices.empty())
+      return {sim::make_effect_settings(name, {}, "diagnose fit"),
+              std::numeric_limits<double>::infinity(), 0};
+  }
+  EffectFit best;
+  best.rms_v = std::numeric_limits<double>::infinity();
+  for (const double mains_hz : mains_choices) {
+    sim::ParamValues fixed;
+    if (name == "mains_pickup") fixed["mains_hz"] = mains_hz;
+    const auto settings_at = [&](const std::vector<double>& unit) {
+      sim::ParamValues values = fixed;
+      for (std::size_t d = 0; d < params.size(); ++d) {
+        values[params[d].key] = params[d].lo + unit[d] * (params[d].hi - params[d].lo);
+      }
+      return sim::make_effect_settings(name, values, "diagnose fit");
+    };
+    // An ageing drift already modelled is linear in its offset and rate: it is solved by least
+    // squares at every point of the search (profiled out) rather than held, since a
+    // temperature effect and an ageing offset trade against each other along a narrow valley
+    // that one-effect-at-a-time refits crawl along.
+    std::vector<sim::EffectSettings> held;
+    for (const sim::EffectSettings& m : modelled) {
+      if (m.name != "ageing_drift") held.push_back(m);
+    }
+    const bool profile_ageing = held.size() < modelled.size();
+    Objective objective;
+    objective.value = [&](const std::vector<double>& unit) {
+      std::vector<sim::EffectSettings> effects = profile_ageing ? held : modelled;
+      effects.push_back(settings_at(unit));
+      const std::vector<double> sim_v = replay.voltage(effects);
+      std::vector<double> gap(sim_v.size());
+      for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v[i] - sim_v[i];
+      if (profile_ageing) remove_ageing_line(gap, replay.times());
+      double sum = 0.0;
+      for (const double g : gap) sum += g * g;
+      return std::sqrt(sum / static_cast<double>(gap.size()));
+    };
+    // Coarse lattice, then Nelder-Mead from its best point.
+    const std::size_t dims = params.size();
+    const int points = lattice_points(dims);
+    std::vector<double> start(dims, 0.5);
+    double start_value = std::numeric_limits<double>::infinity();
+    std::vector<int> index(dims, 0);
+    while (true) {
+      std::vector<double> unit(dims);
+      for (std::size_t d = 0; d < dims; ++d) unit[d] = index[d] / static_cast<double>(points - 1);
+      const double value = objective.value(unit);
+      ++objective.evaluations;
+      if (value < start_value) {
+        start_value = value;
+        start = unit;
+      }
+      std::size_t d = 0;
+      while (d < dims && ++index[d] == points) index[d++] = 0;
+      if (d == dims) break;
+    }
+    const std::vector<double> unit =
+        nelder_mead(objective, start, 0.5 / (points - 1), 100 * static_cast<int>(dims));
+    const double value = objective.value(unit);
+    if (value < best.rms_v) {
+      best.settings = settings_at(unit);
+      best.rms_v = value;
+    }
+    best.evaluations += objective.evaluations + 1;
+  }
+  return best;
+}
+
+std::optional<sim::EffectSettings> find_lsb_grid(const std::vector<double>& voltage_v) {
+  if (voltage_v.empty()) return std::nullopt;
+  const std::vector<std::pair<double, double>> ranges = {{-10, 10}, {0, 10}, {-5, 5}, {0, 5}};
+  constexpr double kTolerance = 1.5e-6;  // the CSV's 0.5 uV rounding plus the grid's own
+  const auto [lowest, highest] = std::minmax_element(voltage_v.begin(), voltage_v.end());
+  for (int bits = 4; bits <= 24; ++bits) {
+    for (const auto& [v_min, v_max] : ranges) {
+      const double lsb = (v_max - v_min) / std::ldexp(1.0, bits);
+      // A range that does not hold every recorded value cannot be the converter's.
+      if (lsb < 20e-6 || *lowest < v_min || *highest > v_max) continue;
+      bool on_grid = true;
+      for (double v : voltage_v) {
+        const double code = (v - v_min) / lsb;
+        if (std::abs(code - std::round(code)) * lsb > kTolerance) {
+          on_grid = false;
+          break;
+        }
+      }
+      if (on_grid) {
+        return sim::make_effect_settings("adc_quantization",
+                                         {{"bits", bits}, {"v_min", v_min}, {"v_max", v_max}},
+                                         "diagnose grid");
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+VibrationSignature vibration_signature(const std::vector<double>& gap_v,
+                                       const std::vector<double>& sensitivity_v_per_mm) {
+  VibrationSignature signature;
+  const std::size_t n = gap_v.size();
+  if (n < 16) return signature;
+  Eigen::MatrixXd design(n - 1, 2);
+  Eigen::VectorXd target(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double d = gap_v[i + 1] - gap_v[i];
+    const double s = 0.5 * (sensitivity_v_per_mm[i] + sensitivity_v_per_mm[i + 1]);
+    design(static_cast<Eigen::Index>(i), 0) = 1.0;
+    design(static_cast<Eigen::Index>(i), 1) = s * s;
+    target(static_cast<Eigen::Index>(i)) = d * d;
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
+  if (qr.rank() < 2) return signature;
+  const Eigen::Vector2d beta = qr.solve(target);
+  const Eigen::VectorXd residual = target - design * beta;
+  const double dof = static_cast<double>(n - 1) - 2.0;
+  const double s2 = residual.squaredNorm() / dof;
+  const Eigen::Matrix2d covariance = s2 * (design.transpose() * design).inverse();
+  signature.slope_t = beta(1) / std::sqrt(covariance(1, 1));
+  signature.rms_mm = std::sqrt(std::max(0.0, beta(1)) / 2.0);
+  signature.voltage_noise_std_v = std::sqrt(std::max(0.0, beta(0)) / 2.0);
+  const double mean_s2 = design.col(1).mean();
+  const double motion_share = beta(1) * mean_s2 / std::max(target.mean(), 1e-30);
+  signature.present = signature.slope_t > 8.0 && motion_share > 0.1;
+  return signature;
+}
+
+}  // namespace flange::diagnose

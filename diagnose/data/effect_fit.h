@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// Candidate effects for the diagnosis, fitted with the catalogue's own implementations: the
+// deterministic ones by minimising the voltage-gap RMS over their parameters (Nelder-Mead from
+// the best point of a coarse lattice, noise off), the noise-like ones recognised from their
+// signature in the gap.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "effect_catalogue.h"
+#include "twin_replay.h"
+
+namespace flange::diagnose {
+
+// Effects fitted by their bias (all but vibration and adc_quantization).
+bool fitted_by_bias(const std::string& name);
+
+struct EffectFit {
+  sim::EffectSettings settings;  // every parameter; the fitted ones and fixed defaults
+  double rms_v = 0.0;            // calibration voltage-gap RMS with it added
+  int evaluations = 0;           // replays spent
+};
+
+// Fits `name` on top of `modelled` (effects already in the twin), minimising
+// RMS(real_v - replay(modelled + name)).
+EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
+                     const std::vector<double>& real_v,
+                     const std::vector<sim::EffectSettings>& modelled);
+
+// Which parameters a fit varies (others stay at the catalogue's defaults).
+std::vector<std::string> fitted_keys(const std::string& name);
+
+// adc_quantization: every recorded voltage sits on the grid v_min + k (v_max - v_min) / 2^bits
+// of one of the usual converter ranges (to the recording's 1 uV). The coarsest such grid, with
+// LSB above 20 uV (finer grids hide in the CSV's six decimals).
+std::optional<sim::EffectSettings> find_lsb_grid(const std::vector<double>& voltage_v);
+
+// vibration: mount motion reaches the voltage through the sensor's sensitivity dV/dd, so the
+// squared first differences of the gap grow with (dV/dd)^2 while white voltage noise does not.
+// Fits E[diff^2] = a + b (dV/dd)^2 by least squares.
+struct VibrationSignature {
+  double slope_t = 0.0;            // t statistic of b
+  double rms_mm = 0.0;             // sqrt(b / 2): the motion's RMS if it is white at fs
+  double voltage_noise_std_v = 0;  // sqrt(a / 2): the white voltage noise beside it
+  bool present = false;            // slope_t > 8 and the motion adds > 10 % to diff variance
+};
+VibrationSignature vibration_signature(const std::vector<double>& gap_v,
+                                       const std::vector<double>& sensitivity_v_per_mm);
+
+}  // namespace flange::diagnose

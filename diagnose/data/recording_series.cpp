@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#include "recording_series.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "input_error.h"
+#include "recording_csv.h"
+
+namespace flange::diagnose {
+
+using host::InputError;
+
+RecordingSeries read_recording_series(const std::string& path) {
+  host::RecordingReader reader(path);
+  RecordingSeries series;
+  series.path = path;
+  while (const std::optional<host::RecordingRow> row = reader.next()) {
+    if (!row->clearance_mm) {
+      throw InputError(fmt::format(
+          "{}:{}: clearance_mm: empty; diagnose needs the reference clearance on every row (a "
+          "number in mm)",
+          path, row->line));
+    }
+    if (!series.t_s.empty() && row->t_s <= series.t_s.back()) {
+      throw InputError(
+          fmt::format("{}:{}: t_s: {} does not increase (a run column's restart "
+                      "cannot be diagnosed as one series)",
+                      path, row->line, row->t_s));
+    }
+    series.t_s.push_back(row->t_s);
+    series.clearance_mm.push_back(*row->clearance_mm);
+    series.temp_c.push_back(row->temp_c);
+    series.voltage_v.push_back(row->voltage_v);
+  }
+  return series;
+}
+
+RecordingSeries slice_recording_series(const RecordingSeries& series, std::size_t begin,
+                                       std::size_t end, const std::string& label) {
+  RecordingSeries part;
+  part.path = label;
+  const auto cut = [&](const std::vector<double>& v) {
+    return std::vector<double>(v.begin() + static_cast<long>(begin),
+                               v.begin() + static_cast<long>(end));
+  };
+  part.t_s = cut(series.t_s);
+  part.clearance_mm = cut(series.clearance_mm);
+  part.temp_c = cut(series.temp_c);
+  part.voltage_v = cut(series.voltage_v);
+  return part;
+}
+
+HoldoutSplit split_holdout(const RecordingSeries& real, double fraction) {
+  const auto held =
+      static_cast<std::size_t>(std::floor(fraction * static_cast<double>(real.size())));
+  constexpr std::size_t kMinPart = 256;
+  if (held < kMinPart || real.size() - held < kMinPart) {
+    throw InputError(fmt::format(
+        "{}: {} rows are too short to hold out {}: each part needs at least {} rows (the "
+        "recording needs at least {} rows at this fraction)",
+        real.path, real.size(), fraction, kMinPart,
+        static_cast<std::size_t>(std::ceil(kMinPart / std::min(fraction, 1.0 - fraction)))));
+  }
+  HoldoutSplit split;
+  split.calibration =
+      slice_recording_series(real, 0, real.size() - held, real.path + " (calibration part)");
+  split.heldout =
+      slice_recording_series(real, real.size() - held, real.size(), real.path + " (held-out part)");
+  split.heldout_name = fmt::format("last {} of {}", fraction, real.path);
+  return split;
+}
+
+}  // namespace flange::diagnose

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// One recording in memory, in time order, as the diagnosis reads it: every row must carry the
+// reference clearance and time must increase. Also the split of one recording into a calibration
+// part and a held-out part.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace flange::diagnose {
+
+// The recording format's columns (host/recording).
+struct RecordingSeries {
+  std::string path;  // where it came from, for messages ("" when built in memory)
+  std::vector<double> t_s, clearance_mm, temp_c, voltage_v;
+  std::size_t size() const { return t_s.size(); }
+};
+
+// Reads a recording strictly; every row needs the reference clearance. Throws host::InputError
+// naming the file, line and field.
+RecordingSeries read_recording_series(const std::string& path);
+
+// Rows [begin, end) of `series`, named `label`.
+RecordingSeries slice_recording_series(const RecordingSeries& series, std::size_t begin,
+                                       std::size_t end, const std::string& label);
+
+struct HoldoutSplit {
+  RecordingSeries calibration;
+  RecordingSeries heldout;
+  std::string heldout_name;  // "last 0.3 of real.csv"
+};
+
+// The last `fraction` (0.05 to 0.5) of `real` held out. Throws host::InputError when either part
+// would be shorter than 256 rows (the message says how many rows the fraction needs).
+HoldoutSplit split_holdout(const RecordingSeries& real, double fraction);
+
+}  // namespace flange::diagnose

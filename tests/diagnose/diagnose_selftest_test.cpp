@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: MIT
+// `flange diagnose --selftest`: the cases are drawn reproducibly with every kind present, the
+// outside-the-library effects really change the recording, the scoring counts what it says, and
+// the command line runs a small blind set against the aims (CI's small set; bench/ runs 50).
+#include "diagnose_selftest.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "cli.h"
+#include "recording_series.h"
+#include "test_files.h"
+
+namespace flange::diagnose {
+namespace {
+
+TEST(DiagnoseSelftest, CasesAreReproducibleAndCycleThroughEveryKind) {
+  std::multiset<std::string> kinds;
+  std::set<std::string> effects;
+  for (int i = 1; i <= 30; ++i) {
+    const SelftestCaseSpec a = draw_selftest_case(i, 7);
+    const SelftestCaseSpec b = draw_selftest_case(i, 7);
+    EXPECT_EQ(a.truth, b.truth) << i;
+    EXPECT_EQ(a.noise_seed, b.noise_seed) << i;
+    kinds.insert(selftest_kind_name(a.kind));
+    for (const auto& e : a.truth) effects.insert(e.name);
+    switch (a.kind) {
+      case SelftestKind::kSingle:
+        EXPECT_EQ(a.truth.size(), 1u);
+        break;
+      case SelftestKind::kPair:
+        ASSERT_EQ(a.truth.size(), 2u);
+        EXPECT_NE(a.truth[0].name, a.truth[1].name);
+        break;
+      case SelftestKind::kNull:
+      case SelftestKind::kOutside:
+        EXPECT_TRUE(a.truth.empty());
+        break;
+    }
+  }
+  EXPECT_EQ(kinds.count("single"), 15u);
+  EXPECT_EQ(kinds.count("pair"), 6u);
+  EXPECT_EQ(kinds.count("null"), 3u);
+  EXPECT_EQ(kinds.count("outside"), 6u);
+  EXPECT_GE(effects.size(), 8u);  // 27 draws over 10 effects
+  EXPECT_NE(draw_selftest_case(1, 7).noise_seed, draw_selftest_case(1, 8).noise_seed);
+}
+
+// Case 8 of every seed is a null case; outside cases are 9 and 10.
+SelftestCaseSpec outside_case(const std::string& name) {
+  SelftestCaseSpec spec = draw_selftest_case(8, 3);
+  spec.kind = SelftestKind::kOutside;
+  spec.outside = {name, name == "backlash" ? 0.4 : 0.08, 0.5};
+  return spec;
+}
+
+TEST(DiagnoseSelftest, OutsideEffectsChangeTheRecordingWhereTheySay) {
+  constexpr double kDurationS = 1200;
+  const SelftestCaseSpec null_spec = draw_selftest_case(8, 3);
+  ASSERT_EQ(null_spec.kind, SelftestKind::kNull);
+  const SelftestRecordings null_rec = make_selftest_recordings(null_spec, kDurationS);
+  const SelftestRecordings step = make_selftest_recordings(outside_case("gain_step"), kDurationS);
+  const SelftestRecordings backlash =
+      make_selftest_recordings(outside_case("backlash"), kDurationS);
+  ASSERT_EQ(step.calibration.size(), null_rec.calibration.size());
+  std::size_t changed_before_step = 0, changed_after_step = 0, backlash_changed = 0;
+  for (std::size_t i = 0; i < null_rec.calibration.size(); ++i) {
+    // Same noise seed, so the recordings differ only by the effect.
+    const bool differs = step.calibration.voltage_v[i] != null_rec.calibration.voltage_v[i];
+    (step.calibration.t_s[i] < 0.5 * kDurationS ? changed_before_step : changed_after_step) +=
+        differs ? 1 : 0;
+    backlash_changed += backlash.calibration.voltage_v[i] != null_rec.calibration.voltage_v[i];
+    // The reference column stays the micrometer reading.
+    EXPECT_EQ(backlash.calibration.clearance_mm[i], null_rec.calibration.clearance_mm[i]);
+  }
+  EXPECT_EQ(changed_before_step, 0u);
+  EXPECT_GT(changed_after_step, null_rec.calibration.size() / 3);
+  EXPECT_GT(backlash_changed, null_rec.calibration.size() / 4);
+  // The held-out session is another session, not a copy.
+  EXPECT_NE(null_rec.heldout.temp_c.back(), null_rec.calibration.temp_c.back());
+}
+
+TEST(DiagnoseSelftest, ScoringCountsTopAllSpuriousAndExcessShrink) {
+  SelftestCaseSpec spec;
+  spec.kind = SelftestKind::kPair;
+  spec.truth = {sim::make_effect_settings("temp_offset_drift", {}, "test"),
+                sim::make_effect_settings("vibration", {}, "test")};
+  Diagnosis d;
+  d.status = "explained";
+  d.effects = {{"temp_offset_drift", {}, 0, 0, 0, 1, false, ""},
+               {"channel_skew", {}, 0, 0, 0, 1, false, ""}};
+  d.heldout_rms_before = 0.5;
+  d.heldout_rms_after = 0.3;
+  const SelftestScore s = score_selftest_case(spec, d, 0.3);
+  EXPECT_TRUE(s.top_correct);
+  EXPECT_FALSE(s.all_found);  // vibration not named
+  EXPECT_EQ(s.spurious, 1);   // channel_skew
+  EXPECT_FALSE(s.bias_type);  // vibration cannot be subtracted
+  EXPECT_NEAR(s.shrink_pct, 40.0, 1e-9);
+  EXPECT_NEAR(s.excess_shrink_pct, 100.0, 1e-9);  // what is left is the noise
+
+  SelftestCaseSpec null_spec;
+  null_spec.kind = SelftestKind::kNull;
+  d.status = "unexplained";  // partial findings are not claims
+  const SelftestScore n = score_selftest_case(null_spec, d, 0.3);
+  EXPECT_TRUE(n.claimed.empty());
+  EXPECT_FALSE(n.verdict_correct);
+  std::vector<SelftestCaseResult> results(2);
+  results[0].spec = spec;
+  results[0].score = s;
+  results[1].spec = null_spec;
+  results[1].score = n;
+  const SelftestSummary summary = summarise_selftest(results);
+  EXPECT_EQ(summary.in_library, 1);
+  EXPECT_EQ(summary.top_correct, 1);
+  EXPECT_EQ(summary.null_claims, 0);
+  EXPECT_EQ(summary.null_correct, 0);
+  EXPECT_TRUE(summary.top_aim_met);
+}
+
+TEST(DiagnoseSelftestCommand, SmallBlindSetMeetsTheAims) {
+  const auto dir = testing::fresh_test_dir("diagnose_selftest");
+  std::ostringstream out, err;
+  const int status = cli::run_flange({"diagnose", "--selftest", "--cases", "10", "--seed", "1",
+                                 "--bootstrap", "40", "--out", dir.string()},
+                                out, err);
+  EXPECT_EQ(status, 0) << out.str() << err.str();
+  EXPECT_NE(out.str().find("aims met"), std::string::npos) << out.str();
+  std::ifstream in(dir / "selftest.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["cases"].size(), 10u);
+  EXPECT_EQ(j["summary"]["null_claims"], 0);
+  for (const auto& c : j["cases"]) {
+    if (c["kind"] == "null") {
+      EXPECT_TRUE(c["claimed"].empty()) << c.dump();
+    }
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir / "selftest.md"));
+}
+
+TEST(DiagnoseSelftestCommand, OneCaseWritesItsSessionsInTheRecordingFormat) {
+  const auto dir = testing::fresh_test_dir("diagnose_selftest_case");
+  std::ostringstream out, err;
+  // Case 8 is a null case: a short one runs in a second.
+  const int status = cli::run_flange({"diagnose", "--selftest", "--case", "8", "--seed", "1",
+                                 "--duration", "600", "--bootstrap", "20", "--out", dir.string()},
+                                out, err);
+  EXPECT_EQ(status, 0) << out.str() << err.str();
+  const SelftestRecordings expected = make_selftest_recordings(draw_selftest_case(8, 1), 600);
+  for (const auto& [name, series] :
+       {std::pair{"calibration", &expected.calibration}, std::pair{"heldout", &expected.heldout}}) {
+    const RecordingSeries read =
+        read_recording_series((dir / (std::string("case_8_") + name + ".csv")).string());
+    ASSERT_EQ(read.size(), series->size()) << name;
+    EXPECT_NEAR(read.voltage_v.back(), series->voltage_v.back(), 1e-6) << name;
+  }
+}
+
+TEST(DiagnoseSelftestCommand, BadArgumentsGiveStatusTwo) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"diagnose", "--selftest", "--cases", "0"},
+        std::vector<std::string>{"diagnose", "--selftest", "--duration", "10"},
+        std::vector<std::string>{"diagnose", "--selftest", "--real", "real.csv"}}) {
+    std::ostringstream out, err;
+    EXPECT_EQ(cli::run_flange(args, out, err), 2) << args.back();
+    EXPECT_NE(err.str().find(args[2]), std::string::npos) << err.str();
+  }
+}
+
+}  // namespace
+}  // namespace flange::diagnose

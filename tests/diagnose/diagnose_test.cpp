@@ -1,0 +1,230 @@
+// SPDX-License-Identifier: MIT
+// The data layer of `flange diagnose`: each library effect alone is found and fitted, a null
+// recording gives "none", an effect outside the library "unexplained", and bad inputs one line
+// and exit status 2. Recordings are short synthetic sweeps made with the twin itself.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli.h"
+#include "diagnosis.h"
+#include "effect_catalogue.h"
+#include "sensor_twin.h"
+#include "test_files.h"
+#include "twin_replay.h"
+
+namespace flange::diagnose {
+namespace {
+
+using testing::fresh_test_dir;
+using testing::write_file;
+
+constexpr double kFsHz = 6.0;
+constexpr double kDurationS = 600.0;
+constexpr double kNoiseV = 0.03;
+
+// Clearance: a triangle over 1.5-10 mm (period 240 s, shifted by `phase_s`); temperature: the
+// blower heats towards 98 degC for 360 s, then the sensor cools towards 20 degC.
+double sweep_clearance(double t, double phase_s) {
+  const double u = std::fmod(t + phase_s, 240.0) / 240.0;
+  return 1.5 + 8.5 * (u < 0.5 ? 2.0 * u : 2.0 - 2.0 * u);
+}
+double sweep_temperature(double t) {
+  const double peak = 20.0 + 78.0 * (1.0 - std::exp(-360.0 / 150.0));
+  return t < 360.0 ? 20.0 + 78.0 * (1.0 - std::exp(-t / 150.0))
+                   : 20.0 + (peak - 20.0) * std::exp(-(t - 360.0) / 200.0);
+}
+
+// A recording of the twin with `effects`; `gain_step` multiplies the voltage from half-way on
+// (an effect the library does not have).
+RecordingSeries twin_recording(const std::vector<sim::EffectSettings>& effects, std::uint64_t seed,
+                               double phase_s, double gain_step = 1.0) {
+  sim::TwinConfig config;
+  config.noise.voltage_std_v = kNoiseV;
+  config.effects = effects;
+  sim::SensorTwin twin(config, seed);
+  RecordingSeries series;
+  const int n = static_cast<int>(kDurationS * kFsHz);
+  for (int i = 0; i <= n; ++i) {
+    const double t = i / kFsHz;
+    const sim::Reading r = twin.step({t, sweep_clearance(t, phase_s), sweep_temperature(t)});
+    series.t_s.push_back(t);
+    series.clearance_mm.push_back(sweep_clearance(t, phase_s));
+    series.temp_c.push_back(r.temp_c);
+    series.voltage_v.push_back(t > kDurationS / 2 ? r.voltage_v * gain_step : r.voltage_v);
+  }
+  return series;
+}
+
+struct Case {
+  std::string effect;
+  sim::ParamValues truth;
+  std::vector<std::string> checked;  // identifiable parameters, within 20 %
+};
+
+std::ostream& operator<<(std::ostream& out, const Case& c) { return out << c.effect; }
+
+class DiagnoseRecovers : public ::testing::TestWithParam<Case> {};
+
+TEST_P(DiagnoseRecovers, TopEffectAndParameters) {
+  const Case& c = GetParam();
+  const std::vector<sim::EffectSettings> effects = {
+      sim::make_effect_settings(c.effect, c.truth, "test")};
+  const RecordingSeries calibration = twin_recording(effects, 11, 0.0);
+  const RecordingSeries heldout = twin_recording(effects, 12, 70.0);
+  DiagnoseOptions options;
+  options.bootstrap_rounds = 40;
+  const Diagnosis d = diagnose(calibration, heldout, options);
+  ASSERT_EQ(d.status, "explained") << "before " << d.heldout_rms_before << " after "
+                                   << d.heldout_rms_after << " noise " << d.noise_std_v;
+  ASSERT_FALSE(d.effects.empty());
+  const EffectFinding& top = d.effects.front();
+  std::string found;
+  for (const EffectFinding& f : d.effects) {
+    found += f.name + " (" + std::to_string(f.heldout_rms_after) + " V) ";
+  }
+  EXPECT_EQ(top.name, c.effect) << found;
+  for (const std::string& key : c.checked) {
+    EXPECT_NEAR(top.params.at(key), c.truth.at(key), 0.2 * std::abs(c.truth.at(key)))
+        << c.effect << "." << key;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EachLibraryEffect, DiagnoseRecovers,
+    ::testing::Values(
+        Case{"temp_gain_drift", {{"gain_per_c", -0.002}, {"reference_c", 20}}, {"gain_per_c"}},
+        Case{"temp_offset_drift", {{"offset_v_per_c", -0.003}}, {"offset_v_per_c"}},
+        Case{"thermal_lag", {{"tau_s", 60}}, {"tau_s"}}, Case{"range_compression", {}, {}},
+        Case{"nonlinearity", {{"bow_v", 0.1}, {"s_curve_v", 0.05}}, {"bow_v", "s_curve_v"}},
+        Case{"ageing_drift", {{"rate_v_per_day", 0.2}, {"start_age_days", 1.0}}, {}},
+        Case{"channel_skew", {{"skew_s", -2.0}}, {"skew_s"}},
+        Case{"mains_pickup", {{"amplitude_v", 0.05}}, {"amplitude_v"}},
+        Case{"vibration", {{"rms_mm", 0.1}}, {}},
+        Case{"adc_quantization", {{"bits", 12}}, {"bits"}}),
+    [](const auto& param_info) {
+      std::string name;
+      for (char ch : param_info.param.effect) name += ch == '_' ? 'X' : ch;
+      return name;
+    });
+
+TEST(Diagnose, NullRecordingGivesNone) {
+  const Diagnosis d = diagnose(twin_recording({}, 21, 0.0), twin_recording({}, 22, 70.0), {});
+  EXPECT_EQ(d.status, "none") << d.heldout_rms_before << " vs noise " << d.noise_std_v;
+  EXPECT_TRUE(d.effects.empty());
+  EXPECT_NEAR(d.noise_std_v, kNoiseV, 0.1 * kNoiseV);
+}
+
+TEST(Diagnose, GainStepOutsideTheLibraryIsUnexplained) {
+  const Diagnosis d =
+      diagnose(twin_recording({}, 31, 0.0, 1.08), twin_recording({}, 32, 70.0, 1.08), {});
+  EXPECT_EQ(d.status, "unexplained");
+  EXPECT_EQ(d.stage, "voltage");
+  EXPECT_TRUE(d.effects.empty());
+}
+
+TEST(Diagnose, ReplayMatchesTheTwinSampleForSample) {
+  const std::vector<sim::EffectSettings> effects = {
+      sim::make_effect_settings("thermal_lag", {{"tau_s", 40}}, "test"),
+      sim::make_effect_settings("nonlinearity", {}, "test"),
+      sim::make_effect_settings("mains_pickup", {}, "test")};
+  RecordingSeries recording;
+  sim::TwinConfig config;
+  config.noise.voltage_std_v = 0.0;
+  config.effects = effects;
+  sim::SensorTwin twin(config, 5);
+  for (int i = 0; i < 600; ++i) {
+    const double t = i / kFsHz;
+    const sim::Reading r = twin.step({t, sweep_clearance(t, 0), sweep_temperature(t)});
+    recording.t_s.push_back(t);
+    recording.clearance_mm.push_back(sweep_clearance(t, 0));
+    recording.temp_c.push_back(r.temp_c);
+    recording.voltage_v.push_back(r.voltage_v);
+  }
+  const TwinReplay replay(recording, config.nominal);
+  const std::vector<double> v = replay.voltage(effects, 5);
+  for (std::size_t i = 0; i < v.size(); ++i) ASSERT_NEAR(v[i], recording.voltage_v[i], 1e-9) << i;
+}
+
+// The command line, as users run it.
+struct Outcome {
+  int status;
+  std::string out, err;
+};
+Outcome run(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int status = cli::run_flange(args, out, err);
+  return {status, out.str(), err.str()};
+}
+
+void write_csv(const std::filesystem::path& path, const RecordingSeries& s, double time_scale = 1) {
+  std::ofstream csv(path, std::ios::binary);
+  csv << "t_s,clearance_mm,temp_c,voltage_v\n";
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    csv << s.t_s[i] * time_scale << "," << s.clearance_mm[i] << "," << s.temp_c[i] << ","
+        << s.voltage_v[i] << "\n";
+  }
+}
+
+TEST(DiagnoseCommand, WritesJsonAndReportWithVerdictFirst) {
+  const auto dir = fresh_test_dir("diagnose_command");
+  const std::vector<sim::EffectSettings> effects = {
+      sim::make_effect_settings("temp_offset_drift", {{"offset_v_per_c", -0.003}}, "test")};
+  write_csv(dir / "real.csv", twin_recording(effects, 41, 0.0));
+  const Outcome o = run({"diagnose", "--real", (dir / "real.csv").string(), "--holdout-fraction",
+                         "0.3", "--out", (dir / "out").string(), "--bootstrap", "20"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("verdict: explained by temp_offset_drift", 0), 0u) << o.out;
+  std::ifstream in(dir / "out" / "diagnosis.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["verdict"]["status"], "explained");
+  EXPECT_EQ(j["verdict"]["effects"][0], "temp_offset_drift");
+  EXPECT_EQ(j["where"]["stage"], "voltage");
+  EXPECT_EQ(j["stages"].size(), 4u);
+  EXPECT_GT(j["effects"][0]["shrink_pct"].get<double>(), 50.0);
+  for (const char* file :
+       {"report.html", "region.svg", "spectrum.svg", "time.svg", "heldout.svg"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / file)) << file;
+  }
+}
+
+TEST(DiagnoseCommand, BadInputsGiveOneLineAndStatusTwo) {
+  const auto dir = fresh_test_dir("diagnose_bad");
+  const RecordingSeries good = twin_recording({}, 51, 0.0);
+  write_csv(dir / "good.csv", good);
+  write_csv(dir / "fast.csv", good, 0.5);  // 12 Hz
+  write_file(dir / "short.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,5,20,5\n0.1667,5,20,5\n");
+  write_file(dir / "noref.csv", "t_s,temp_c,voltage_v\n0,20,5\n");
+  write_file(dir / "emptyref.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,5,20,5\n0.2,,20,5\n");
+  write_file(dir / "badrow.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,5,20,5\n0.2,5,20,12\n");
+  const std::string out = (dir / "out").string();
+  struct Bad {
+    std::vector<std::string> args;
+    std::string expected;
+  };
+  const std::vector<Bad> cases = {
+      {{"--real", (dir / "good.csv").string(), "--holdout", (dir / "fast.csv").string()},
+       "differs from"},
+      {{"--real", (dir / "short.csv").string(), "--holdout-fraction", "0.3"}, "too short"},
+      {{"--real", (dir / "noref.csv").string(), "--holdout-fraction", "0.3"}, "clearance_mm"},
+      {{"--real", (dir / "emptyref.csv").string(), "--holdout-fraction", "0.3"},
+       "emptyref.csv:3: clearance_mm"},
+      {{"--real", (dir / "badrow.csv").string(), "--holdout-fraction", "0.3"}, "badrow.csv:3"},
+      {{"--real", (dir / "good.csv").string(), "--holdout-fraction", "0.9"}, "0.9"},
+  };
+  for (const Bad& bad : cases) {
+    std::vector<std::string> args = {"diagnose"};
+    args.insert(args.end(), bad.args.begin(), bad.args.end());
+    args.insert(args.end(), {"--out", out});
+    const Outcome o = run(args);
+    EXPECT_EQ(o.status, 2) << bad.expected << ": " << o.err;
+    EXPECT_NE(o.err.find(bad.expected), std::string::npos) << o.err;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
+  }
+}
+
+}  // namespace
+}  // namespace flange::diagnose
