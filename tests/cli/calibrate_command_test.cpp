@@ -17,6 +17,9 @@ namespace {
 
 using testing::fresh_test_dir;
 using testing::write_file;
+using host::Calibration;
+using host::InputError;
+using host::load_calibration;
 
 // Bench-like rows whose voltage is eq. 3.14 inverted (no noise): steps of clearance while the
 // temperature sweeps.
