@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <optional>
 #include <ostream>
 
 #include "calibrate_command.h"
@@ -35,43 +36,85 @@ std::string explain_parse_error(const CLI::App& app, const CLI::ParseError& erro
   return name + ": '" + value + "' is not a valid value; expected " + option->get_description();
 }
 
-}  // namespace
-
-int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app{"flange: FPGA IIR filter for wheel-flange wear measurement"};
-  app.name("flange");
-  app.require_subcommand(1);
-  app.fallthrough(false);
-
+// Every subcommand's options, filled by the parse.
+struct Subcommands {
   DesignOptions design_options;
-  CLI::App* design = add_design_command(app, design_options);
   CalibrateOptions calibrate_options;
-  CLI::App* calibrate = add_calibrate_command(app, calibrate_options);
   host::RunOptions run_options;
-  CLI::App* run = add_run_command(app, run_options);
   DemoOptions demo_options;
-  CLI::App* demo = add_demo_command(app, demo_options);
   SimulateOptions simulate_options;
-  CLI::App* simulate = add_simulate_command(app, simulate_options);
   CosimCommandOptions cosim_options;
-  CLI::App* cosim = add_cosim_command(app, cosim_options);
   SynthOptions synth_options;
-  CLI::App* synth = add_synth_command(app, synth_options);
   host::StreamSettings stream_options;
-  CLI::App* stream = add_stream_command(app, stream_options);
   DiagnoseCommandOptions diagnose_options;
-  CLI::App* diagnose = add_diagnose_command(app, diagnose_options);
-  HwDiagnoseOptions hw_diagnose_options;  // --hw: the float design against the Verilated RTL
-  add_hw_diagnose_options(*diagnose, hw_diagnose_options);
+  HwDiagnoseOptions hw_diagnose_options;    // --hw: the float design against the Verilated RTL
   SelftestCommandOptions selftest_options;  // --selftest: the blind check of the data layer
-  add_selftest_options(*diagnose, selftest_options);
-  // The three layers of diagnose take different inputs: say so rather than ignore one.
-  for (const char* data_option : {"--real", "--holdout", "--holdout-fraction", "--twin"}) {
-    diagnose->get_option("--selftest")->excludes(data_option);
-    diagnose->get_option("--hw")->excludes(data_option);
-  }
-  diagnose->get_option("--hw")->excludes("--selftest");
+  CLI::App* design = nullptr;
+  CLI::App* calibrate = nullptr;
+  CLI::App* run = nullptr;
+  CLI::App* demo = nullptr;
+  CLI::App* simulate = nullptr;
+  CLI::App* cosim = nullptr;
+  CLI::App* synth = nullptr;
+  CLI::App* stream = nullptr;
+  CLI::App* diagnose = nullptr;
 
+  void add_to(CLI::App& app) {
+    design = add_design_command(app, design_options);
+    calibrate = add_calibrate_command(app, calibrate_options);
+    run = add_run_command(app, run_options);
+    demo = add_demo_command(app, demo_options);
+    simulate = add_simulate_command(app, simulate_options);
+    cosim = add_cosim_command(app, cosim_options);
+    synth = add_synth_command(app, synth_options);
+    stream = add_stream_command(app, stream_options);
+    diagnose = add_diagnose_command(app, diagnose_options);
+    add_hw_diagnose_options(*diagnose, hw_diagnose_options);
+    add_selftest_options(*diagnose, selftest_options);
+    // The three layers of diagnose take different inputs: say so rather than ignore one.
+    for (const char* data_option : {"--real", "--holdout", "--holdout-fraction", "--twin"}) {
+      diagnose->get_option("--selftest")->excludes(data_option);
+      diagnose->get_option("--hw")->excludes(data_option);
+    }
+    diagnose->get_option("--hw")->excludes("--selftest");
+  }
+
+  // Runs the parsed subcommand; its exit status.
+  int run_parsed(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    if (design->parsed()) return run_design_command(design_options, args, out, err);
+    if (calibrate->parsed()) return run_calibrate_command(calibrate_options, args, out, err);
+    if (run->parsed()) return run_run_command(run_options, out, err);
+    if (demo->parsed()) return run_demo_command(demo_options, out, err);
+    if (simulate->parsed()) return run_simulate_command(simulate_options, out, err);
+    if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
+    if (synth->parsed()) return run_synth_command(synth_options, out, err);
+    if (stream->parsed()) return run_stream_command(stream_options, out, err);
+    if (diagnose->parsed()) return run_diagnose_layer(out, err);
+    return kExitBadArgument;
+  }
+
+  // --hw, --selftest or the data layer.
+  int run_diagnose_layer(std::ostream& out, std::ostream& err) {
+    if (hw_diagnose_options.hw) {
+      // --seed and --out are the data layer's options; the hardware layer reads them too.
+      hw_diagnose_options.request.seed = diagnose_options.seed;
+      if (!diagnose_options.out.empty()) hw_diagnose_options.out = diagnose_options.out;
+      return run_hw_diagnosis(hw_diagnose_options, out, err);
+    }
+    if (selftest_options.selftest) {
+      // --seed, --out and --bootstrap are the data layer's options; the self-test reads them.
+      selftest_options.run.seed = diagnose_options.seed;
+      selftest_options.run.bootstrap_rounds = diagnose_options.bootstrap_rounds;
+      if (!diagnose_options.out.empty()) selftest_options.out = diagnose_options.out;
+      return run_selftest_command(selftest_options, out, err);
+    }
+    return run_diagnose_command(diagnose_options, out, err);
+  }
+};
+
+// Parses `args`: a status to return at once (help, or a parse error named on `err`), or nothing.
+std::optional<int> parse_command_line(CLI::App& app, const std::vector<std::string>& args,
+                                      std::ostream& out, std::ostream& err) {
   std::vector<const char*> argv{"flange"};
   for (const std::string& arg : args) argv.push_back(arg.c_str());
   try {
@@ -90,36 +133,25 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
     err << where << ": " << explain_parse_error(*parsed, error) << "\n";
     return kExitBadArgument;
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"flange: FPGA IIR filter for wheel-flange wear measurement"};
+  app.name("flange");
+  app.require_subcommand(1);
+  app.fallthrough(false);
+  Subcommands subcommands;
+  subcommands.add_to(app);
+  if (const std::optional<int> status = parse_command_line(app, args, out, err)) return *status;
   try {
-    if (design->parsed()) return run_design_command(design_options, args, out, err);
-    if (calibrate->parsed()) return run_calibrate_command(calibrate_options, args, out, err);
-    if (run->parsed()) return run_run_command(run_options, out, err);
-    if (demo->parsed()) return run_demo_command(demo_options, out, err);
-    if (simulate->parsed()) return run_simulate_command(simulate_options, out, err);
-    if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
-    if (synth->parsed()) return run_synth_command(synth_options, out, err);
-    if (stream->parsed()) return run_stream_command(stream_options, out, err);
-    if (diagnose->parsed()) {
-      if (hw_diagnose_options.hw) {
-        // --seed and --out are the data layer's options; the hardware layer reads them too.
-        hw_diagnose_options.request.seed = diagnose_options.seed;
-        if (!diagnose_options.out.empty()) hw_diagnose_options.out = diagnose_options.out;
-        return run_hw_diagnosis(hw_diagnose_options, out, err);
-      }
-      if (selftest_options.selftest) {
-        // --seed, --out and --bootstrap are the data layer's options; the self-test reads them.
-        selftest_options.run.seed = diagnose_options.seed;
-        selftest_options.run.bootstrap_rounds = diagnose_options.bootstrap_rounds;
-        if (!diagnose_options.out.empty()) selftest_options.out = diagnose_options.out;
-        return run_selftest_command(selftest_options, out, err);
-      }
-      return run_diagnose_command(diagnose_options, out, err);
-    }
+    return subcommands.run_parsed(args, out, err);
   } catch (const std::exception& error) {
     err << "flange: " << error.what() << "\n";
     return kExitFailure;
   }
-  return kExitBadArgument;
 }
 
 }  // namespace flange::cli

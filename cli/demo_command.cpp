@@ -77,7 +77,6 @@ double number_after(const std::string& text, const std::string& key) {
   return std::stod(text.substr(at + key.size()));
 }
 
-
 // 1. The thesis's filters, designed and quantised (the 7th-order direct form must be refused).
 void design_thesis_filters(Demo& demo) {
   demo.out << "== 1. The thesis's filters, quantised for the FPGA (docs/thesis_filters.md)\n";
@@ -88,7 +87,7 @@ void design_thesis_filters(Demo& demo) {
     std::ostringstream quiet;
     const int status = demo.step(args, &report, false, quiet);
     demo.out << "  " << line_with(report, "structure:") << "\n  " << line_with(report, "poles:")
-        << "\n  " << line_with(report, "verdict:") << "\n";
+             << "\n  " << line_with(report, "verdict:") << "\n";
     if (filter.expect_rejected) {
       if (status != 3) demo.must(1, "refusing the thesis's 7th-order direct form");
     } else {
@@ -99,14 +98,15 @@ void design_thesis_filters(Demo& demo) {
 
 // 2. Two bench sessions: one to calibrate, one to evaluate.
 bool simulate_bench_sessions(Demo& demo) {
-  demo.out << "\n== 2. Two simulated bench sessions (the thesis's heated micrometer protocol): one to "
+  demo.out
+      << "\n== 2. Two simulated bench sessions (the thesis's heated micrometer protocol): one to "
          "calibrate, one to evaluate\n";
   if (!demo.must(demo.step({"simulate", "--scenario", "bench", "--seed", "1", "--out",
-                  demo.path("bench_calibration.csv")}),
-            "simulating the calibration session") ||
+                            demo.path("bench_calibration.csv")}),
+                 "simulating the calibration session") ||
       !demo.must(demo.step({"simulate", "--scenario", "bench", "--seed", "2", "--out",
-                  demo.path("bench_evaluation.csv")}),
-            "simulating the evaluation session")) {
+                            demo.path("bench_evaluation.csv")}),
+                 "simulating the evaluation session")) {
     return false;
   }
 
@@ -116,9 +116,9 @@ bool simulate_bench_sessions(Demo& demo) {
 // 3. The temperature-compensating regression.
 bool calibrate_on_first_session(Demo& demo) {
   demo.out << "\n== 3. Calibration: the temperature-compensating regression\n";
-  if (!demo.must(
-          demo.step({"calibrate", "--data", demo.path("bench_calibration.csv"), "--out", demo.path("model.json")}),
-          "calibrating")) {
+  if (!demo.must(demo.step({"calibrate", "--data", demo.path("bench_calibration.csv"), "--out",
+                            demo.path("model.json")}),
+                 "calibrating")) {
     return false;
   }
 
@@ -128,12 +128,13 @@ bool calibrate_on_first_session(Demo& demo) {
 // 4. The evaluation session through the chain with the Verilated RTL; its summary in run_text.
 bool run_evaluation_through_rtl(Demo& demo, const std::string& measurement, std::string& run_text) {
   demo.out << "\n== 4. The evaluation session through the chain, with the Verilated RTL as the "
-         "filter (the model checks every output)\n";
-  if (!demo.must(demo.step({"run", "--input", demo.path("bench_evaluation.csv"), "--calibration",
-                  demo.path("model.json"), "--coeffs", measurement, "--engine", "rtl", "--out",
-                  demo.path("bench_results.csv"), "--report", demo.path("bench_report")},
-                 &run_text),
-            "running the bench session")) {
+              "filter (the model checks every output)\n";
+  if (!demo.must(
+          demo.step({"run", "--input", demo.path("bench_evaluation.csv"), "--calibration",
+                     demo.path("model.json"), "--coeffs", measurement, "--engine", "rtl", "--out",
+                     demo.path("bench_results.csv"), "--report", demo.path("bench_report")},
+                    &run_text),
+          "running the bench session")) {
     return false;
   }
 
@@ -142,50 +143,53 @@ bool run_evaluation_through_rtl(Demo& demo, const std::string& measurement, std:
 
 // 5. The thesis's own chain on the same data, beside this project's figures.
 void compare_with_thesis_chain(Demo& demo, const std::string& run_text) {
-  demo.out << "\n== 5. The same data through the thesis's chain: eq. 3.14 fixed, eq. 4.15 as printed, "
+  demo.out
+      << "\n== 5. The same data through the thesis's chain: eq. 3.14 fixed, eq. 4.15 as printed, "
          "double precision\n";
   try {
     const std::uint64_t settle = static_cast<std::uint64_t>(number_after(run_text, "first "));
-    const ThesisPipelineResult thesis = host::run_thesis_pipeline(demo.path("bench_evaluation.csv"), settle);
+    const ThesisPipelineResult thesis =
+        host::run_thesis_pipeline(demo.path("bench_evaluation.csv"), settle);
     const double ours_before = number_after(run_text, "error before filtering: MAE ");
     const double ours_after = number_after(run_text, "error after filtering:  MAE ");
     demo.out << fmt::format("  {:<44} {:>12} {:>12}\n", "", "MAE before", "MAE after");
     demo.out << fmt::format("  {:<44} {:>9.4f} mm {:>9.4f} mm\n",
-                       "this project (calibrated fit, RTL filter)", ours_before, ours_after);
+                            "this project (calibrated fit, RTL filter)", ours_before, ours_after);
     demo.out << fmt::format("  {:<44} {:>9.4f} mm {:>9.4f} mm\n",
-                       "thesis (eq. 3.14, eq. 4.15 in floating point)", thesis.before.mae(),
-                       thesis.after.mae());
+                            "thesis (eq. 3.14, eq. 4.15 in floating point)", thesis.before.mae(),
+                            thesis.after.mae());
     demo.out << fmt::format("  ratio thesis / this project after filtering: {:.2f}\n",
-                       thesis.after.mae() / ours_after);
+                            thesis.after.mae() / ours_after);
     demo.out << fmt::format(
         "  (eq. 4.15 as printed has a DC gain of {:.4f}, not 1: {:+.3f} mm of bias at 6 mm)\n",
         thesis.dc_gain, (thesis.dc_gain - 1.0) * 6.0);
   } catch (const InputError& error) {
     demo.must(1, std::string("the thesis chain: ") + error.what());
   }
-
 }
 
 // 6. The locomotive run at 6 Hz and at 96 Hz: where the wheelset's lateral mode lands.
 bool show_lateral_mode_aliasing(Demo& demo, const std::string& measurement) {
   demo.out << "\n== 6. A locomotive run: the wheelset's lateral mode against 6 Hz sampling\n";
   if (!demo.must(demo.step({"simulate", "--scenario", "loco", "--fs", "6", "--seed", "3", "--out",
-                  demo.path("loco_6hz.csv")}),
-            "simulating the loco run at 6 Hz") ||
+                            demo.path("loco_6hz.csv")}),
+                 "simulating the loco run at 6 Hz") ||
       !demo.must(demo.step({"simulate", "--scenario", "loco", "--fs", "96", "--seed", "3", "--out",
-                  demo.path("loco_96hz.csv")}),
-            "simulating the loco run at 96 Hz") ||
+                            demo.path("loco_96hz.csv")}),
+                 "simulating the loco run at 96 Hz") ||
       !demo.must(demo.step({"design", "--fs", "96", "--order", "5", "--fc", "0.5742", "--name",
-                  "measurement_96hz", "--out", demo.path("measurement_96hz")}),
-            "designing the 96 Hz filter") ||
-      !demo.must(demo.step({"run", "--input", demo.path("loco_6hz.csv"), "--calibration", demo.path("model.json"),
-                  "--coeffs", measurement, "--engine", "rtl", "--out", demo.path("loco_6hz_results.csv"),
-                  "--report", demo.path("loco_report")}),
-            "running the loco run at 6 Hz") ||
-      !demo.must(demo.step({"run", "--input", demo.path("loco_96hz.csv"), "--calibration", demo.path("model.json"),
-                  "--coeffs", demo.path("measurement_96hz/filter.json"), "--engine", "rtl", "--out",
-                  demo.path("loco_96hz_results.csv")}),
-            "running the loco run at 96 Hz")) {
+                            "measurement_96hz", "--out", demo.path("measurement_96hz")}),
+                 "designing the 96 Hz filter") ||
+      !demo.must(
+          demo.step({"run", "--input", demo.path("loco_6hz.csv"), "--calibration",
+                     demo.path("model.json"), "--coeffs", measurement, "--engine", "rtl", "--out",
+                     demo.path("loco_6hz_results.csv"), "--report", demo.path("loco_report")}),
+          "running the loco run at 6 Hz") ||
+      !demo.must(
+          demo.step({"run", "--input", demo.path("loco_96hz.csv"), "--calibration",
+                     demo.path("model.json"), "--coeffs", demo.path("measurement_96hz/filter.json"),
+                     "--engine", "rtl", "--out", demo.path("loco_96hz_results.csv")}),
+          "running the loco run at 96 Hz")) {
     return false;
   }
   try {
@@ -221,32 +225,31 @@ bool show_lateral_mode_aliasing(Demo& demo, const std::string& measurement) {
 
 // 7. A bench session with a withheld sensor effect, diagnosed blind.
 void diagnose_withheld_effect(Demo& demo) {
-  demo.out << "\n== 7. The sim-to-real gap: two bench sessions with an effect the twin was not told "
+  demo.out
+      << "\n== 7. The sim-to-real gap: two bench sessions with an effect the twin was not told "
          "about (the sensor's offset drifts with temperature), diagnosed blind\n";
   const std::string drift = "temp_offset_drift:offset_v_per_c=-0.002";
-  if (demo.must(demo.step({"simulate", "--scenario", "bench", "--effect", drift, "--seed", "3", "--out",
-                 demo.path("bench_drift_a.csv")}),
-           "simulating the drifting bench session A") &&
-      demo.must(demo.step({"simulate", "--scenario", "bench", "--effect", drift, "--seed", "4", "--out",
-                 demo.path("bench_drift_b.csv")}),
-           "simulating the drifting bench session B")) {
+  if (demo.must(demo.step({"simulate", "--scenario", "bench", "--effect", drift, "--seed", "3",
+                           "--out", demo.path("bench_drift_a.csv")}),
+                "simulating the drifting bench session A") &&
+      demo.must(demo.step({"simulate", "--scenario", "bench", "--effect", drift, "--seed", "4",
+                           "--out", demo.path("bench_drift_b.csv")}),
+                "simulating the drifting bench session B")) {
     demo.must(demo.step({"diagnose", "--real", demo.path("bench_drift_a.csv"), "--holdout",
-               demo.path("bench_drift_b.csv"), "--out", demo.path("diagnosis")}),
-         "diagnosing the drifting bench session");
+                         demo.path("bench_drift_b.csv"), "--out", demo.path("diagnosis")}),
+              "diagnosing the drifting bench session");
   }
-
 }
 
 // 8. The float design against the Verilated RTL, and eq. 4.20 as printed.
 void diagnose_hardware_gap(Demo& demo, const std::string& measurement) {
   demo.out << "\n== 8. The gap one layer down: the float design against the Verilated RTL\n";
   demo.must(demo.step({"diagnose", "--hw", "--coeffs", measurement, "--stimulus", "sweep", "--out",
-             demo.path("hw_diagnosis")}),
-       "diagnosing the measurement filter's float-to-RTL gap");
-  demo.must(demo.step({"diagnose", "--hw", "--coeffs", demo.path("vehicle_sos/filter.json"), "--thesis-eq-4-20",
-             "--stimulus", "step"}),
-       "diagnosing the thesis's printed eq. 4.20");
-
+                       demo.path("hw_diagnosis")}),
+            "diagnosing the measurement filter's float-to-RTL gap");
+  demo.must(demo.step({"diagnose", "--hw", "--coeffs", demo.path("vehicle_sos/filter.json"),
+                       "--thesis-eq-4-20", "--stimulus", "step"}),
+            "diagnosing the thesis's printed eq. 4.20");
 }
 
 }  // namespace

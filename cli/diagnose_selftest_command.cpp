@@ -27,8 +27,8 @@ void write_selftest_files(const SelftestCommandOptions& options, const std::stri
   const fs::path dir(*options.out);
   fs::create_directories(dir);
   if (results.front().recordings) {
-    for (const fs::path& path : diagnose::write_selftest_recordings(
-             dir, options.run.only_case, *results.front().recordings)) {
+    for (const fs::path& path : diagnose::write_selftest_recordings(dir, options.run.only_case,
+                                                                    *results.front().recordings)) {
       out << "  wrote " << path.string() << "\n";
     }
   }
@@ -39,8 +39,8 @@ void write_selftest_files(const SelftestCommandOptions& options, const std::stri
   json.close();
   md.close();
   if (!json || !md) throw std::runtime_error(dir.string() + ": cannot write");
-  out << "  wrote " << (dir / "selftest.json").string() << " and "
-      << (dir / "selftest.md").string() << "\n";
+  out << "  wrote " << (dir / "selftest.json").string() << " and " << (dir / "selftest.md").string()
+      << "\n";
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `flange diagnose --selftest --cases N --seed S`: the blind check of the data layer
-// (diagnose/data/diagnose_selftest.h). Prints one row per case and the summary against the aims; with --out
-// writes DIR/selftest.json and DIR/selftest.md (the table as docs/diagnose.md records it).
+// (diagnose/data/diagnose_selftest.h). Prints one row per case and the summary against the aims;
+// with --out writes DIR/selftest.json and DIR/selftest.md (the table as docs/diagnose.md records
+// it).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -15,7 +16,7 @@ namespace flange::cli {
 
 struct SelftestCommandOptions {
   bool selftest = false;
-  diagnose::SelftestOptions run;             // cases, duration, jobs; seed and bootstrap from the data layer
+  diagnose::SelftestOptions run;   // cases, duration, jobs; seed and bootstrap from the data layer
   std::optional<std::string> out;  // folder for selftest.json and selftest.md
 };
 

@@ -37,7 +37,8 @@ void add_hw_diagnose_options(CLI::App& diagnose, HwDiagnoseOptions& options) {
 
 void add_hw_diagnose_shared_options(CLI::App& diagnose, HwDiagnoseOptions& options) {
   diagnose.add_option("--seed", options.request.seed, "seed of the random stimuli")->default_val(1);
-  diagnose.add_option("--out", options.out, "folder for hw_diagnosis.json, hw_diagnosis.html, SVGs");
+  diagnose.add_option("--out", options.out,
+                      "folder for hw_diagnosis.json, hw_diagnosis.html, SVGs");
 }
 
 int run_hw_diagnosis(const HwDiagnoseOptions& options, std::ostream& out, std::ostream& err) {

@@ -46,7 +46,8 @@ CLI::App* add_run_command(CLI::App& app, host::RunOptions& options) {
 int run_run_command(const host::RunOptions& options, std::ostream& out, std::ostream& err) {
   try {
     host::RunTrace trace;
-    const host::RunSummary summary = host::run_pipeline(options, options.report_dir ? &trace : nullptr);
+    const host::RunSummary summary =
+        host::run_pipeline(options, options.report_dir ? &trace : nullptr);
     out << run_summary_text(options, summary);
     if (options.out_csv) out << "  wrote " << *options.out_csv << "\n";
     if (options.report_dir) {

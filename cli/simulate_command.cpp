@@ -11,8 +11,8 @@
 #include <stdexcept>
 
 #include "aliasing.h"
-#include "cli.h"
 #include "bench_scenario.h"
+#include "cli.h"
 #include "effect_argument.h"
 #include "effect_catalogue.h"
 #include "loco_scenario.h"
@@ -157,7 +157,8 @@ int run_simulate_command(const SimulateOptions& options, std::ostream& out, std:
           fmt::format("--fs x --duration = {:.3g} samples is above the limit of {:.0e}",
                       fs_hz * duration_s, kMaxSamples));
     }
-    const TwinConfig config = sim::twin_with_effects(options.twin, options.calibration, options.effects);
+    const TwinConfig config =
+        sim::twin_with_effects(options.twin, options.calibration, options.effects);
     if (options.save_twin) save_twin(config, *options.save_twin);
 
     std::unique_ptr<Scenario> scenario;

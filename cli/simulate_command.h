@@ -19,8 +19,8 @@ struct SimulateOptions {
   std::optional<double> duration_s;  // default: the scenario's own (6600 s bench, 300 s loco)
   std::uint64_t seed = 0;
   std::filesystem::path out;
-  std::optional<std::filesystem::path> twin;       // start from this twin file
-  std::optional<std::filesystem::path> save_twin;  // write the twin used, effects included
+  std::optional<std::filesystem::path> twin;         // start from this twin file
+  std::optional<std::filesystem::path> save_twin;    // write the twin used, effects included
   std::optional<std::filesystem::path> calibration;  // model.json as the nominal model
 };
 

@@ -120,9 +120,9 @@ std::string selftest_header(const SelftestSummary& summary, std::uint64_t seed, 
 }
 
 std::string selftest_terminal_table(const std::vector<SelftestCaseResult>& results) {
-  std::string text = fmt::format("{:>4}  {:<7}  {:<11}  {:<3}  {:<3}  {:>7}  {:>7}  {:<40}  {}\n",
-                                 "case", "kind", "verdict", "top", "all", "shrink", "excess",
-                                 "named", "truth");
+  std::string text =
+      fmt::format("{:>4}  {:<7}  {:<11}  {:<3}  {:<3}  {:>7}  {:>7}  {:<40}  {}\n", "case", "kind",
+                  "verdict", "top", "all", "shrink", "excess", "named", "truth");
   for (const SelftestCaseResult& r : results) {
     const bool lib = in_library(r.spec);
     text += fmt::format("{:>4}  {:<7}  {:<11}  {:<3}  {:<3}  {:>6.1f}%  {:>6.1f}%  {:<40}  {}\n",
@@ -142,11 +142,11 @@ std::string selftest_markdown(const std::string& header,
                    "shrink % |\n|---:|---|---|---|---|---|---|---:|---:|\n";
   for (const SelftestCaseResult& r : results) {
     const bool lib = in_library(r.spec);
-    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {:.1f} | {:.1f} |\n", r.spec.index,
-                      selftest_kind_name(r.spec.kind), describe_truth(r.spec), r.diagnosis.status,
-                      join(r.score.claimed), yes_no(lib, r.score.top_correct),
-                      yes_no(lib, r.score.all_found), r.score.shrink_pct,
-                      r.score.excess_shrink_pct);
+    md +=
+        fmt::format("| {} | {} | {} | {} | {} | {} | {} | {:.1f} | {:.1f} |\n", r.spec.index,
+                    selftest_kind_name(r.spec.kind), describe_truth(r.spec), r.diagnosis.status,
+                    join(r.score.claimed), yes_no(lib, r.score.top_correct),
+                    yes_no(lib, r.score.all_found), r.score.shrink_pct, r.score.excess_shrink_pct);
   }
   md += "\n";
   for (const std::string& line : selftest_summary_lines(summary)) md += "- " + line + "\n";

@@ -9,10 +9,10 @@
 #include <fstream>
 #include <iterator>
 
-#include "fixed_decimals.h"
 #include "calibration.h"
 #include "filter_engine.h"
 #include "filter_json.h"
+#include "fixed_decimals.h"
 #include "input_error.h"
 #include "recording_csv.h"
 #include "sample_scaling.h"

@@ -15,11 +15,11 @@
 namespace flange::cli {
 namespace {
 
-using testing::fresh_test_dir;
-using testing::write_file;
 using host::Calibration;
 using host::InputError;
 using host::load_calibration;
+using testing::fresh_test_dir;
+using testing::write_file;
 
 // Bench-like rows whose voltage is eq. 3.14 inverted (no noise): steps of clearance while the
 // temperature sweeps.

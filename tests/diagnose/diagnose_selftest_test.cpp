@@ -126,8 +126,8 @@ TEST(DiagnoseSelftestCommand, SmallBlindSetMeetsTheAims) {
   const auto dir = testing::fresh_test_dir("diagnose_selftest");
   std::ostringstream out, err;
   const int status = cli::run_flange({"diagnose", "--selftest", "--cases", "10", "--seed", "1",
-                                 "--bootstrap", "40", "--out", dir.string()},
-                                out, err);
+                                      "--bootstrap", "40", "--out", dir.string()},
+                                     out, err);
   EXPECT_EQ(status, 0) << out.str() << err.str();
   EXPECT_NE(out.str().find("aims met"), std::string::npos) << out.str();
   std::ifstream in(dir / "selftest.json");
@@ -146,9 +146,10 @@ TEST(DiagnoseSelftestCommand, OneCaseWritesItsSessionsInTheRecordingFormat) {
   const auto dir = testing::fresh_test_dir("diagnose_selftest_case");
   std::ostringstream out, err;
   // Case 8 is a null case: a short one runs in a second.
-  const int status = cli::run_flange({"diagnose", "--selftest", "--case", "8", "--seed", "1",
-                                 "--duration", "600", "--bootstrap", "20", "--out", dir.string()},
-                                out, err);
+  const int status =
+      cli::run_flange({"diagnose", "--selftest", "--case", "8", "--seed", "1", "--duration", "600",
+                       "--bootstrap", "20", "--out", dir.string()},
+                      out, err);
   EXPECT_EQ(status, 0) << out.str() << err.str();
   const SelftestRecordings expected = make_selftest_recordings(draw_selftest_case(8, 1), 600);
   for (const auto& [name, series] :
