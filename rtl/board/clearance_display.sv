@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Q1.15 sample word -> clearance in mm with two decimals, as four display digit codes.
 //
-// mm = 6 + 8 * word / 2^15 (host/src/sample_scaling.h), so in hundredths of a millimetre
+// mm = 6 + 8 * word / 2^15 (host/engines/sample_scaling.h), so in hundredths of a millimetre
 // h = 600 + 25 * word / 2^10, rounded half up: h = floor((614400 + 25 * word + 512) / 1024),
 // an exact integer computation (no float anywhere). word in [-32768, 32767] gives h in
 // [-200, 1400], i.e. -2.00 to 14.00 mm: "-1.99", " 9.87", "14.00" (the decimal point is the one

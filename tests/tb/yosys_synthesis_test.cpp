@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `flange synth`: the parsing of Yosys's report and the checks, on hand-written reports (the
-// Yosys run itself is the FlangeSynth.* CTest test, tests/host/CMakeLists.txt).
+// Yosys run itself is the FlangeSynth.* CTest test, tests/cli/CMakeLists.txt).
 #include "yosys_synthesis.h"
 
 #include <gtest/gtest.h>
