@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "gnuplot_runner.h"
+#include "report_format.h"
 
 namespace flange::diagnose {
 namespace {
@@ -40,25 +41,6 @@ nlohmann::ordered_json region_json(const RegionCell& c) {
           {"rms_ci95_v", {c.rms_lo, c.rms_hi}}};
 }
 
-std::string data_block(const std::string& name, const std::vector<std::vector<double>>& columns) {
-  std::string text = "$" + name + " << EOD\n";
-  for (std::size_t row = 0; row < columns.front().size(); ++row) {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      const double v = columns[c][row];
-      text += std::isfinite(v) ? fmt::format("{:.7g}", v) : "NaN";
-      text += c + 1 == columns.size() ? "\n" : " ";
-    }
-  }
-  return text + "EOD\n";
-}
-
-std::string svg_header(const std::filesystem::path& path, int width, int height) {
-  return fmt::format(
-      "set terminal svg size {},{} dynamic font 'sans,12' background '#ffffff'\nset output "
-      "'{}'\nset grid\n",
-      width, height, path.string());
-}
-
 // At most about 4000 points per trace: every k-th sample.
 std::vector<std::vector<double>> decimated(const std::vector<std::vector<double>>& columns) {
   const std::size_t n = columns.front().size();
@@ -71,7 +53,7 @@ std::vector<std::vector<double>> decimated(const std::vector<std::vector<double>
 }
 
 void plot_region(const std::filesystem::path& dir, const DiagnosisDetail& d) {
-  std::string script = svg_header(dir / "region.svg", 1000, 450);
+  std::string script = coeffs::gnuplot_svg_terminal(dir / "region.svg", 1000, 450);
   for (int which = 0; which < 2; ++which) {
     script += which == 0 ? "$bias << EOD\n" : "$rms << EOD\n";
     // 5 clearance cells per temperature row (diagnosis.cpp's grid); blank line between rows.
@@ -98,14 +80,14 @@ void plot_region(const std::filesystem::path& dir, const DiagnosisDetail& d) {
 }
 
 void plot_spectrum(const std::filesystem::path& dir, const DiagnosisDetail& d) {
-  std::string script = svg_header(dir / "spectrum.svg", 900, 450);
+  std::string script = coeffs::gnuplot_svg_terminal(dir / "spectrum.svg", 900, 450);
   std::vector<double> f, db, noise_db;
   for (std::size_t k = 1; k < d.gap_psd.value.size(); ++k) {
     f.push_back(d.gap_psd.frequency_hz[k]);
     db.push_back(10.0 * std::log10(std::max(d.gap_psd.value[k], 1e-30)));
     noise_db.push_back(10.0 * std::log10(std::max(d.noise_psd, 1e-30)));
   }
-  script += data_block("psd", {f, db, noise_db});
+  script += coeffs::gnuplot_data_block("psd", {f, db, noise_db});
   if (d.band_hz) {
     script += fmt::format(
         "set object 1 rect from {},graph 0 to {},graph 1 fc rgb '#fde0dd' fs solid 0.6 behind\n",
@@ -119,14 +101,14 @@ void plot_spectrum(const std::filesystem::path& dir, const DiagnosisDetail& d) {
 }
 
 void plot_time(const std::filesystem::path& dir, const DiagnosisDetail& d) {
-  std::string script = svg_header(dir / "time.svg", 1000, 450);
-  script += data_block("gap", decimated({d.t_s, d.gap_v}));
+  std::string script = coeffs::gnuplot_svg_terminal(dir / "time.svg", 1000, 450);
+  script += coeffs::gnuplot_data_block("gap", decimated({d.t_s, d.gap_v}));
   std::vector<double> st, sm;
   for (const TimeSegment& s : d.segments) {
     st.insert(st.end(), {s.t_start_s, s.t_end_s});
     sm.insert(sm.end(), {s.mean_v, s.mean_v});
   }
-  script += data_block("segments", {st, sm});
+  script += coeffs::gnuplot_data_block("segments", {st, sm});
   script +=
       "set xlabel 'time (s)'\nset ylabel 'voltage gap (V)'\nset key outside bottom center "
       "horizontal\nplot $gap using 1:2 with lines lc rgb '#aaaaaa' title 'real - sim', "
@@ -136,30 +118,15 @@ void plot_time(const std::filesystem::path& dir, const DiagnosisDetail& d) {
 }
 
 void plot_heldout(const std::filesystem::path& dir, const DiagnosisDetail& d) {
-  std::string script = svg_header(dir / "heldout.svg", 1000, 450);
+  std::string script = coeffs::gnuplot_svg_terminal(dir / "heldout.svg", 1000, 450);
   script +=
-      data_block("ho", decimated({d.heldout_t_s, d.heldout_gap_before_v, d.heldout_gap_after_v}));
+      coeffs::gnuplot_data_block("ho", decimated({d.heldout_t_s, d.heldout_gap_before_v, d.heldout_gap_after_v}));
   script +=
       "set xlabel 'time (s)'\nset ylabel 'voltage gap on held-out data (V)'\nset key outside "
       "bottom center horizontal\nplot $ho using 1:2 with lines lc rgb '#bbbbbb' title 'before "
       "(twin as given)', $ho using 1:3 with lines lc rgb '#1f77b4' title 'after (selected "
       "effects added)'\n";
   coeffs::run_gnuplot(script, (dir / "heldout.svg").string());
-}
-
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else
-      out += c;
-  }
-  return out;
 }
 
 }  // namespace
@@ -269,12 +236,12 @@ void write_diagnosis_report(const std::filesystem::path& dir, const DiagnosisRes
   std::ofstream html(dir / "report.html", std::ios::binary);
   if (!html) throw std::runtime_error("cannot write " + (dir / "report.html").string());
   html << "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>flange diagnose: "
-       << html_escape(title) << "</title>\n<style>body{font-family:sans-serif;max-width:1050px;"
+       << coeffs::html_escape(title) << "</title>\n<style>body{font-family:sans-serif;max-width:1050px;"
        << "margin:1em auto}pre{background:#f4f4f4;padding:.8em}img{max-width:100%}"
        << "td,th{padding:2px 8px;text-align:right}</style></head><body>\n";
-  html << "<h1>flange diagnose</h1>\n<pre>" << html_escape(diagnosis_summary(result)) << "</pre>\n";
+  html << "<h1>flange diagnose</h1>\n<pre>" << coeffs::html_escape(diagnosis_summary(result)) << "</pre>\n";
   html << "<h2>Verdict</h2><ul>";
-  for (const std::string& r : d.reasons) html << "<li>" << html_escape(r) << "</li>";
+  for (const std::string& r : d.reasons) html << "<li>" << coeffs::html_escape(r) << "</li>";
   html << "</ul>\n<h2>The gap at each stage</h2><table><tr><th>stage</th><th>gap RMS</th>"
           "<th>noise floor</th><th>real error</th><th>sim error</th><th>significant</th></tr>\n";
   for (const StageGap& s : d.stages) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "gnuplot_runner.h"
+#include "report_format.h"
 
 namespace flange::diagnose {
 namespace fs = std::filesystem;
@@ -33,37 +34,9 @@ std::string lsb(double v) {
 
 const GapStep& last(const HwDiagnosis& d) { return d.attribution.steps.back(); }
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-std::string svg_header(const fs::path& path, int width, int height) {
-  return fmt::format(
-      "set terminal svg size {},{} dynamic noenhanced font 'sans,12' background '#ffffff'\nset "
-      "output "
-      "'{}'\n",
-      width, height, path.string());
-}
-
 void plot_steps(const HwDiagnosis& d, const fs::path& dir) {
   const fs::path svg = dir / "gap_steps.svg";
-  std::string script = svg_header(svg, 900, 420);
+  std::string script = coeffs::gnuplot_svg_terminal(svg, 900, 420, false, false);
   script +=
       "set title 'Gap to the hardware after each step (output LSB)'\nset style data histograms\n"
       "set style histogram clustered gap 1\nset style fill solid 0.8 border -1\nset logscale y\n"
@@ -81,7 +54,7 @@ void plot_steps(const HwDiagnosis& d, const fs::path& dir) {
 void plot_traces(const HwDiagnosis& d, const fs::path& dir) {
   const fs::path svg = dir / "traces.svg";
   const std::size_t n = std::min<std::size_t>(d.real.size(), 2000);
-  std::string script = svg_header(svg, 1000, 700);
+  std::string script = coeffs::gnuplot_svg_terminal(svg, 1000, 700, false, false);
   script += "set multiplot layout 2,1\nset grid\nset key outside right\nset xlabel 'sample'\n";
   script += "$data << EOD\n";
   const auto& steps = d.attribution.steps;
@@ -241,7 +214,7 @@ void write_hw_diagnosis(const HwDiagnosis& d, const fs::path& dir) {
   plot_traces(d, dir);
   std::string html =
       "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>flange diagnose --hw: " +
-      html_escape(d.coeffs) +
+      coeffs::html_escape(d.coeffs) +
       "</title>\n<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
       "pre{background:#f4f4f4;padding:8px}</style></head><body>\n"
       "<h1>flange diagnose --hw</h1>\n<p>The gap between the float design and the hardware, "
@@ -249,7 +222,7 @@ void write_hw_diagnosis(const HwDiagnosis& d, const fs::path& dir) {
       "at a time, the one that leaves the least gap first.</p>\n<pre>";
   std::ostringstream table;
   print_hw_diagnosis(d, table);
-  html += html_escape(table.str());
+  html += coeffs::html_escape(table.str());
   html +=
       "</pre>\n<h2>Gap after each step</h2><p>RMS and largest absolute gap in output LSB, "
       "logarithmic; a gap of zero is drawn at 1e-4.</p><img src='gap_steps.svg'>\n"

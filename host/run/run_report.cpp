@@ -11,6 +11,7 @@
 
 #include "filter_json.h"
 #include "gnuplot_runner.h"
+#include "report_format.h"
 
 namespace flange::host {
 
@@ -55,28 +56,9 @@ std::string run_summary_text(const RunOptions& options, const RunSummary& summar
 
 namespace {
 
-std::string data_block(const std::string& name, const std::vector<std::vector<double>>& columns) {
-  std::string text = "$" + name + " << EOD\n";
-  for (std::size_t row = 0; row < columns.front().size(); ++row) {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      const double v = columns[c][row];
-      text += std::isfinite(v) ? fmt::format("{:.7g}", v) : "NaN";
-      text += c + 1 == columns.size() ? "\n" : " ";
-    }
-  }
-  return text + "EOD\n";
-}
-
-std::string svg_header(const std::filesystem::path& path, int width, int height) {
-  return fmt::format(
-      "set terminal svg size {},{} dynamic font 'sans,12' background '#ffffff'\nset output "
-      "'{}'\nset grid\n",
-      width, height, path.string());
-}
-
 void plot_traces(const std::filesystem::path& dir, const RunTrace& trace) {
-  std::string script = svg_header(dir / "traces.svg", 1000, 500);
-  script += data_block("trace",
+  std::string script = coeffs::gnuplot_svg_terminal(dir / "traces.svg", 1000, 500);
+  script += coeffs::gnuplot_data_block("trace",
                        {trace.t_s, trace.raw_mm, trace.filt_mm, trace.reference_mm, trace.temp_c});
   script +=
       "set xlabel 'time (s)'\nset ylabel 'clearance (mm)'\nset y2label 'temperature (C)'\n"
@@ -90,7 +72,7 @@ void plot_traces(const std::filesystem::path& dir, const RunTrace& trace) {
 }
 
 void plot_regions(const std::filesystem::path& dir, const RunTrace& trace) {
-  std::string script = svg_header(dir / "error_by_region.svg", 1000, 450);
+  std::string script = coeffs::gnuplot_svg_terminal(dir / "error_by_region.svg", 1000, 450);
   for (int which = 0; which < 2; ++which) {
     const auto& cells = which == 0 ? trace.region_before : trace.region_after;
     script += fmt::format("${} << EOD\n", which == 0 ? "before" : "after");
@@ -150,8 +132,8 @@ void plot_response(const std::filesystem::path& dir, const std::string& coeffs_p
     float_db.push_back(std::max(-200.0, 20.0 * std::log10(std::abs(h_float))));
     quant_db.push_back(std::max(-200.0, 20.0 * std::log10(std::abs(h_quant))));
   }
-  std::string script = svg_header(dir / "response.svg", 900, 450);
-  script += data_block("response", {f, float_db, quant_db});
+  std::string script = coeffs::gnuplot_svg_terminal(dir / "response.svg", 900, 450);
+  script += coeffs::gnuplot_data_block("response", {f, float_db, quant_db});
   script +=
       "set logscale x\nset xlabel 'frequency (Hz)'\nset ylabel 'magnitude (dB)'\n"
       "set yrange [-120:5]\nset key bottom left\n"
@@ -163,7 +145,7 @@ void plot_response(const std::filesystem::path& dir, const std::string& coeffs_p
 void plot_spectra(const std::filesystem::path& dir, const RunTrace& trace) {
   const std::vector<double> raw = trace.spectrum_raw->psd();
   const std::vector<double> filt = trace.spectrum_filt->psd();
-  std::string script = svg_header(dir / "spectra.svg", 900, 450);
+  std::string script = coeffs::gnuplot_svg_terminal(dir / "spectra.svg", 900, 450);
   if (raw.empty()) {
     script +=
         "set label 'recording shorter than one 256-sample segment: no spectrum' at graph "
@@ -178,28 +160,13 @@ void plot_spectra(const std::filesystem::path& dir, const RunTrace& trace) {
     f.erase(f.begin());  // DC is removed per segment; the log axis cannot show it anyway
     raw_db.erase(raw_db.begin());
     filt_db.erase(filt_db.begin());
-    script += data_block("psd", {f, raw_db, filt_db});
+    script += coeffs::gnuplot_data_block("psd", {f, raw_db, filt_db});
     script +=
         "set logscale x\nset xlabel 'frequency (Hz)'\nset ylabel 'PSD (dB re 1 mm^2/Hz)'\n"
         "plot $psd using 1:2 with lines lc rgb '#888888' title 'before filtering', "
         "$psd using 1:3 with lines lw 2 lc rgb '#1f77b4' title 'after filtering'\n";
   }
   coeffs::run_gnuplot(script, (dir / "spectra.svg").string());
-}
-
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else
-      out += c;
-  }
-  return out;
 }
 
 }  // namespace
@@ -214,10 +181,10 @@ void write_run_report(const std::filesystem::path& dir, const RunOptions& option
   std::ofstream html(dir / "index.html", std::ios::binary);
   if (!html) throw std::runtime_error("cannot write " + (dir / "index.html").string());
   html << "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>flange run: "
-       << html_escape(options.input) << "</title>\n<style>body{font-family:sans-serif;"
+       << coeffs::html_escape(options.input) << "</title>\n<style>body{font-family:sans-serif;"
        << "max-width:1050px;margin:1em auto}pre{background:#f4f4f4;padding:.8em}"
        << "img{max-width:100%}</style></head><body>\n";
-  html << "<h1>flange run</h1>\n<pre>" << html_escape(run_summary_text(options, summary))
+  html << "<h1>flange run</h1>\n<pre>" << coeffs::html_escape(run_summary_text(options, summary))
        << "</pre>\n";
   html << "<h2>Clearance over time</h2><p>Raw: the regression's clearance before the filter. "
           "Filtered: after the "
@@ -228,7 +195,7 @@ void write_run_report(const std::filesystem::path& dir, const RunOptions& option
   html << "<h2>Error by clearance and temperature</h2><p>Mean absolute error per cell; white "
           "cells had no data. After filtering, the reference is delayed by the filter's group "
           "delay.</p><img src='error_by_region.svg'>\n";
-  html << "<h2>The filter</h2><p>" << html_escape(options.coeffs)
+  html << "<h2>The filter</h2><p>" << coeffs::html_escape(options.coeffs)
        << ": the float design and the quantised coefficients in the ROM.</p>"
           "<img src='response.svg'>\n";
   html << "<h2>Spectra before and after filtering</h2><p>Welch estimate, 256-sample Hann "
