@@ -45,20 +45,21 @@ std::vector<std::int32_t> square(const SignalSpec& spec, std::size_t n, std::siz
   return x;
 }
 
+double exponential_chirp_phase(double f0, double f1, double duration, double t) {
+  const double k = std::log(f1 / f0);
+  return 2.0 * std::numbers::pi * f0 * duration / k * (std::exp(k * t / duration) - 1.0);
+}
+
 std::vector<std::int32_t> sine_sweep(const SignalSpec& spec, std::size_t n, double f0, double f1,
                                      double level) {
   if (!(f0 > 0.0 && f0 < f1 && f1 <= spec.fs_hz / 2)) {
     throw std::invalid_argument("sine_sweep: need 0 < f0 < f1 <= fs / 2");
   }
   std::vector<std::int32_t> x(n);
-  const double k = std::log(f1 / f0);
   const double duration = static_cast<double>(n) / spec.fs_hz;
   for (std::size_t i = 0; i < n; ++i) {
     const double t = static_cast<double>(i) / spec.fs_hz;
-    // Phase of an exponential chirp: 2 pi f0 T / k (e^(k t / T) - 1).
-    const double phase =
-        2.0 * std::numbers::pi * f0 * duration / k * (std::exp(k * t / duration) - 1.0);
-    x[i] = quantise(spec, level * std::sin(phase));
+    x[i] = quantise(spec, level * std::sin(exponential_chirp_phase(f0, f1, duration, t)));
   }
   return x;
 }

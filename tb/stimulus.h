@@ -26,6 +26,9 @@ std::vector<std::int32_t> step(const SignalSpec& spec, std::size_t n, double lev
 // Full-scale square wave between min and max, half period `half_period` >= 1 samples.
 std::vector<std::int32_t> square(const SignalSpec& spec, std::size_t n, std::size_t half_period);
 // Logarithmic sine sweep from f0 to f1 Hz (0 < f0 < f1 <= fs / 2) at `level` of full scale.
+// The phase (rad) at time t of an exponential chirp from f0 to f1 Hz over `duration` s:
+// 2 pi f0 T / k (e^(k t / T) - 1) with k = ln(f1 / f0).
+double exponential_chirp_phase(double f0, double f1, double duration, double t);
 std::vector<std::int32_t> sine_sweep(const SignalSpec& spec, std::size_t n, double f0, double f1,
                                      double level);
 // Independent uniform samples in [level * min, level * max] (0 < level <= 1), seeded.

@@ -11,6 +11,7 @@
 
 #include "input_error.h"
 #include "staged_fixed_point.h"
+#include "stimulus.h"
 
 namespace flange::diagnose {
 
@@ -73,14 +74,10 @@ HwStimulus make_hw_stimulus(const HwStimulusSpec& spec) {
   } else if (kind == "sweep") {
     const double f0 = spec.fc_hz / 20;
     const double f1 = 0.49 * spec.fs_hz;
-    const double k = std::log(f1 / f0);
     const double duration = static_cast<double>(n) / spec.fs_hz;
     for (std::size_t i = 0; i < n; ++i) {
       const double t = static_cast<double>(i) / spec.fs_hz;
-      // Phase of an exponential chirp: 2 pi f0 T / k (e^(k t / T) - 1).
-      const double phase =
-          2.0 * std::numbers::pi * f0 * duration / k * (std::exp(k * t / duration) - 1.0);
-      s.analog.push_back(0.7 * full * std::sin(phase));
+      s.analog.push_back(0.7 * full * std::sin(tb::exponential_chirp_phase(f0, f1, duration, t)));
     }
   } else if (kind == "step") {
     s.analog.assign(n, 0.5 * full);
