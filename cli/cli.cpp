@@ -13,6 +13,8 @@
 #include "diagnose_command.h"
 #include "diagnose_selftest_command.h"
 #include "hw_diagnose_command.h"
+#include "input_notes.h"
+#include "printable_stream.h"
 #include "run_command.h"
 #include "simulate_command.h"
 #include "stream_command.h"
@@ -138,7 +140,9 @@ std::optional<int> parse_command_line(CLI::App& app, const std::vector<std::stri
 
 }  // namespace
 
-int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& raw_err) {
+  PrintableStream err(raw_err);
+  const host::ScopedInputNotes notes(err);
   CLI::App app{"flange: FPGA IIR filter for wheel-flange wear measurement"};
   app.name("flange");
   app.require_subcommand(1);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "input_error.h"
+#include "input_notes.h"
 
 namespace flange::host {
 
@@ -32,7 +33,40 @@ void split_fields(std::string_view line, std::vector<std::string_view>& fields) 
   }
 }
 
+// Refuses a file that is not text: a NUL byte in its first 4 KiB (a spreadsheet's binary format,
+// a compressed log, a ROM image).
+void refuse_binary(std::ifstream& file, const std::string& path) {
+  char block[4096];
+  file.read(block, sizeof block);
+  const std::string_view head(block, static_cast<std::size_t>(file.gcount()));
+  const std::size_t nul = head.find('\0');
+  if (nul != std::string_view::npos) {
+    throw InputError(fmt::format(
+        "{}: not a text file (a zero byte at offset {}); expected a CSV recording with the header "
+        "{}",
+        path, nul, kExpectedHeader));
+  }
+  file.clear();
+  file.seekg(0);
+}
+
 }  // namespace
+
+std::string printable_excerpt(std::string_view text, std::size_t max_chars) {
+  std::string out;
+  std::size_t shown = 0;
+  for (const char c : text) {
+    if (shown == max_chars) return out + "...";
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+    } else {
+      out += fmt::format("\\x{:02X}", byte);
+    }
+    ++shown;
+  }
+  return out;
+}
 
 std::optional<double> parse_number(std::string_view field) {
   double value = 0.0;
@@ -47,16 +81,20 @@ std::optional<double> parse_number(std::string_view field) {
 RecordingReader::RecordingReader(const std::string& path, bool lenient)
     : path_(path), lenient_(lenient), file_(path) {
   if (!file_) throw InputError(fmt::format("{}: cannot open the recording", path));
+  refuse_binary(file_, path);
   std::string header;
   if (!std::getline(file_, header)) {
     throw InputError(
         fmt::format("{}:1: empty file; expected the header {}", path, kExpectedHeader));
   }
+  // A spreadsheet saving "CSV UTF-8" puts a byte-order mark before the first column name.
+  if (header.rfind("\xEF\xBB\xBF", 0) == 0) header.erase(0, 3);
   std::vector<std::string_view> name_views;
   split_fields(header, name_views);
   const std::vector<std::string> names(name_views.begin(), name_views.end());
   column_count_ = names.size();
   std::optional<std::size_t> t, clearance, temp, voltage;
+  std::string ignored;
   for (std::size_t i = 0; i < names.size(); ++i) {
     std::optional<std::size_t>* slot = nullptr;
     if (names[i] == "t_s") slot = &t;
@@ -65,11 +103,13 @@ RecordingReader::RecordingReader(const std::string& path, bool lenient)
     if (names[i] == "voltage_v") slot = &voltage;
     if (names[i] == "run") slot = &run_column_;
     if (slot == nullptr) {
-      throw InputError(fmt::format("{}:1: column {}: unknown column '{}' (expected {})", path,
-                                   i + 1, names[i], kExpectedHeader));
+      // A logger's extra columns (humidity, speed, ...) are not part of the format: skipped.
+      ignored += fmt::format("{}'{}'", ignored.empty() ? "" : ", ", printable_excerpt(names[i]));
+      continue;
     }
     if (slot->has_value()) {
-      throw InputError(fmt::format("{}:1: column {}: '{}' appears twice", path, i + 1, names[i]));
+      throw InputError(fmt::format("{}:1: column {}: '{}' appears twice", path, i + 1,
+                                   printable_excerpt(names[i])));
     }
     *slot = i;
   }
@@ -80,6 +120,10 @@ RecordingReader::RecordingReader(const std::string& path, bool lenient)
       throw InputError(
           fmt::format("{}:1: missing column '{}' (expected {})", path, name, kExpectedHeader));
     }
+  }
+  if (!ignored.empty()) {
+    note_input(fmt::format("{}:1: ignoring column(s) {}: not part of the recording format {}", path,
+                           ignored, kExpectedHeader));
   }
   t_column_ = *t;
   clearance_column_ = *clearance;
@@ -102,6 +146,10 @@ std::optional<RecordingRow> RecordingReader::next() {
     }
     return row;
   }
+  if (rows_read_ == 0) {
+    throw InputError(fmt::format("{}:{}: no data rows (the file holds only the header {})", path_,
+                                 line_ + 1, kExpectedHeader));
+  }
   return std::nullopt;
 }
 
@@ -114,7 +162,7 @@ std::string RecordingReader::check_row(RecordingRow& row,
     const std::optional<double> value = parse_number(fields[column]);
     if (!value) {
       return fmt::format("column {} ({}): '{}' is not a finite number", column + 1, name,
-                         fields[column]);
+                         printable_excerpt(fields[column]));
     }
     out = *value;
     return "";
@@ -134,17 +182,19 @@ std::string RecordingReader::check_row(RecordingRow& row,
   const bool same_run = last_time_.has_value() && row.run == last_run_;
   if (same_run && !(row.t_s > *last_time_)) {
     return fmt::format("column {} (t_s): {} is not after the previous time {}", t_column_ + 1,
-                       fields[t_column_], *last_time_);
+                       printable_excerpt(fields[t_column_]), *last_time_);
   }
   last_time_ = row.t_s;
   last_run_ = row.run;
   if (row.voltage_v < kMinVoltageV || row.voltage_v > kMaxVoltageV) {
     return fmt::format("column {} (voltage_v): {} is outside the sensor's range {} to {} V",
-                       voltage_column_ + 1, fields[voltage_column_], kMinVoltageV, kMaxVoltageV);
+                       voltage_column_ + 1, printable_excerpt(fields[voltage_column_]),
+                       kMinVoltageV, kMaxVoltageV);
   }
   if (row.temp_c < kMinTempC || row.temp_c > kMaxTempC) {
     return fmt::format("column {} (temp_c): {} is outside the valid range {} to {} C",
-                       temp_column_ + 1, fields[temp_column_], kMinTempC, kMaxTempC);
+                       temp_column_ + 1, printable_excerpt(fields[temp_column_]), kMinTempC,
+                       kMaxTempC);
   }
   return "";
 }

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include "input_error.h"
+#include "input_notes.h"
 #include "test_files.h"
 
 namespace flange::host {
@@ -56,7 +59,8 @@ TEST(RecordingCsv, EveryBadInputNamesFileLineAndColumn) {
   };
   const Case cases[] = {
       {"t_s,clearance_mm,temp_c\n0,1,20\n", ":1: missing column 'voltage_v'"},
-      {"t_s,clearance_mm,temp_c,voltage_v,speed\n", ":1: column 5: unknown column 'speed'"},
+      {header, ":2: no data rows (the file holds only the header"},
+      {header + "\n\n", ":4: no data rows"},
       {"", ":1: empty file"},
       {header + "0,1,20\n", ":2: expected 4 fields, found 3"},
       {header + "0,1,20,abc\n", ":2: column 4 (voltage_v): 'abc' is not a finite number"},
@@ -76,6 +80,58 @@ TEST(RecordingCsv, EveryBadInputNamesFileLineAndColumn) {
     EXPECT_NE(error.find("input.csv"), std::string::npos) << error;
     EXPECT_NE(error.find(c.expected), std::string::npos) << "got: " << error;
   }
+}
+
+TEST(RecordingCsv, AByteOrderMarkIsSkipped) {
+  const auto path = write_file(fresh_test_dir("csv_bom") / "excel.csv",
+                               "\xEF\xBB\xBFt_s,clearance_mm,temp_c,voltage_v\r\n0,1,20,5\r\n");
+  RecordingReader reader(path.string());
+  const auto row = reader.next();
+  ASSERT_TRUE(row);
+  EXPECT_EQ(row->t_s, 0.0);
+  EXPECT_EQ(row->voltage_v, 5.0);
+}
+
+TEST(RecordingCsv, ExtraColumnsAreIgnoredWithOneNote) {
+  const auto path = write_file(fresh_test_dir("csv_extra") / "logger.csv",
+                               "t_s,speed_kmh,clearance_mm,temp_c,humidity,voltage_v\n"
+                               "0,80,1,20,55,5\n"
+                               "1,81,1.1,20,55,5.1\n");
+  std::ostringstream notes;
+  {
+    const ScopedInputNotes sink(notes);
+    RecordingReader reader(path.string());
+    const auto first = reader.next();
+    ASSERT_TRUE(first);
+    EXPECT_EQ(first->clearance_mm.value(), 1.0);
+    EXPECT_EQ(first->voltage_v, 5.0);
+    const auto second = reader.next();
+    ASSERT_TRUE(second);
+    EXPECT_EQ(second->temp_c, 20.0);
+    EXPECT_FALSE(reader.next());
+  }
+  EXPECT_EQ(notes.str(),
+            "note: " + path.string() +
+                ":1: ignoring column(s) 'speed_kmh', 'humidity': not part of the recording format "
+                "t_s,clearance_mm,temp_c,voltage_v[,run]\n");
+}
+
+TEST(RecordingCsv, ABinaryFileIsRefusedInOneLine) {
+  std::string bytes = "PK\x03\x04";
+  bytes += std::string(1, '\0');
+  bytes += "\x14\x00\x06\x00garbage";
+  const std::string error = read_error(bytes);
+  EXPECT_NE(error.find("input.csv: not a text file (a zero byte at offset 4)"), std::string::npos)
+      << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos);
+}
+
+TEST(RecordingCsv, NonPrintableBytesInAFieldAreEscapedAndCut) {
+  const std::string error = read_error("t_s,clearance_mm,temp_c,voltage_v\n0,1,20,\x01\x7f\xff" +
+                                       std::string(100, 'x') + "\n");
+  EXPECT_NE(error.find("'\\x01\\x7F\\xFF" + std::string(37, 'x') + "...' is not a finite number"),
+            std::string::npos)
+      << error;
 }
 
 TEST(RecordingCsv, LenientModeFlagsBadRowsAndGoesOn) {

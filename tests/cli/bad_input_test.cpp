@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+// Every subcommand's bad inputs in one table: the exit status, one line on stderr that names what
+// is wrong, and no byte of the input echoed raw. Also what is accepted with a note: a
+// spreadsheet's byte-order mark and a logger's extra columns.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.h"
+#include "test_files.h"
+
+namespace flange::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::fresh_test_dir;
+using testing::write_file;
+
+struct BadInput {
+  std::vector<std::string> args;
+  int status;            // the documented exit status
+  std::string expected;  // a part of the one line on stderr
+};
+
+// Files every case may name, in one folder.
+struct InputFiles {
+  fs::path dir = fresh_test_dir("bad_input");
+  std::string header_only =
+      write_file(dir / "header_only.csv", "t_s,clearance_mm,temp_c,voltage_v\n").string();
+  std::string binary =
+      write_file(dir / "binary.csv", std::string("PK\x03\x04\0\x14\x80\xff garbage", 16)).string();
+  std::string good =
+      write_file(dir / "good.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,2,20,1\n1,3,20,2\n")
+          .string();
+  std::string filter =
+      (fs::path(FLANGE_SOURCE_DIR) / "coeffs/measurement_sos/filter.json").string();
+  std::string out(const std::string& name) const { return (dir / name).string(); }
+};
+
+// Runs flange; its stderr in `err`.
+int flange(const std::vector<std::string>& args, std::string& err) {
+  std::ostringstream out, err_stream;
+  const int status = run_flange(args, out, err_stream);
+  err = err_stream.str();
+  return status;
+}
+
+std::string command_text(const std::vector<std::string>& args) {
+  std::string text = "flange";
+  for (const std::string& a : args) text += " " + a;
+  return text;
+}
+
+TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
+  const InputFiles f;
+  const std::vector<BadInput> table = {
+      {{"design", "--fs", "6", "--order", "40", "--fc", "1"}, 2, "--order"},
+      {{"design", "--fs", "abc", "--order", "4", "--fc", "1"}, 2, "--fs: 'abc' is not a valid"},
+      {{"cosim", "--coeffs", f.out("missing.json")}, 2, "missing.json"},
+      {{"cosim", "--coeffs", f.binary}, 2, "binary.csv"},
+      {{"synth", "--coeffs", f.out("no_set")}, 2, "is missing"},
+      {{"simulate", "--scenario", "bench", "--seed", "1", "--fs", "-1", "--out", f.out("s.csv")},
+       2,
+       "--fs"},
+      {{"simulate", "--scenario", "bench", "--seed", "1", "--effect", "bogus", "--out",
+        f.out("s.csv")},
+       2,
+       "bogus"},
+      {{"calibrate", "--data", f.header_only, "--out", f.out("m.json")}, 2, ":2: no data rows"},
+      {{"calibrate", "--data", f.binary, "--out", f.out("m.json")}, 2, "not a text file"},
+      {{"run", "--input", f.header_only, "--calibration", f.binary, "--coeffs", f.filter},
+       2,
+       "binary.csv"},
+      {{"run", "--input", f.binary, "--calibration", f.out("none.json"), "--coeffs", f.filter},
+       2,
+       "none.json: cannot open the calibration"},
+      {{"stream", "--port", "/dev/null", "--input", f.header_only, "--out", f.out("b.csv")},
+       2,
+       ":2: no data rows"},
+      {{"diagnose", "--real", f.header_only, "--holdout-fraction", "0.3", "--out", f.out("d")},
+       2,
+       ":2: no data rows"},
+      {{"diagnose", "--real", f.binary, "--holdout-fraction", "0.3", "--out", f.out("d")},
+       2,
+       "not a text file"},
+      {{"diagnose", "--hw", "--coeffs", f.out("missing.json")}, 2, "missing.json"},
+      {{"diagnose", "--selftest", "--cases", "0"}, 2, "--cases"},
+  };
+  for (const BadInput& c : table) {
+    std::string err;
+    const int status = flange(c.args, err);
+    const std::string reproduce = command_text(c.args);
+    EXPECT_EQ(status, c.status) << reproduce << "\n" << err;
+    EXPECT_NE(err.find(c.expected), std::string::npos) << reproduce << "\n" << err;
+    ASSERT_FALSE(err.empty()) << reproduce;
+    EXPECT_EQ(err.find('\n'), err.size() - 1) << reproduce << ": more than one line\n" << err;
+    for (const char ch : err) {
+      const auto byte = static_cast<unsigned char>(ch);
+      EXPECT_TRUE(ch == '\n' || (byte >= 0x20 && byte < 0x7f))
+          << reproduce << ": raw byte " << static_cast<int>(byte) << " in\n"
+          << err;
+    }
+  }
+}
+
+TEST(BadInput, ASpreadsheetsByteOrderMarkAndExtraColumnsAreAcceptedWithANote) {
+  const InputFiles f;
+  std::string rows;
+  for (int i = 0; i < 40; ++i) {
+    const double d = 2.0 + 0.2 * i;
+    rows += std::to_string(i) + "," + std::to_string(d) + "," + std::to_string(20 + (i * 7) % 40) +
+            "," + std::to_string(0.5 + 0.9 * (d - 1.5) - 0.002 * ((i * 7) % 40)) + ",55\n";
+  }
+  const std::string csv =
+      write_file(f.dir / "excel.csv",
+                 "\xEF\xBB\xBFt_s,clearance_mm,temp_c,voltage_v,humidity\n" + rows)
+          .string();
+  std::string err;
+  EXPECT_EQ(flange({"calibrate", "--data", csv, "--out", f.out("m.json"), "--max-order", "1"}, err),
+            0)
+      << err;
+  EXPECT_NE(err.find("note: " + csv + ":1: ignoring column(s) 'humidity'"), std::string::npos)
+      << err;
+}
+
+}  // namespace
+}  // namespace flange::cli
