@@ -131,6 +131,19 @@ Errors errors_of(const CalibrationData& data, int fold, int folds, const Variabl
   return e;
 }
 
+// Every fold needs rows of its own: the folds take blocks of kFoldBlockRows in turn.
+void require_rows_for_folds(std::size_t n, int folds) {
+  const std::size_t min_rows = std::max<std::size_t>(
+      {regression_terms(kMinRegressionOrder).size() * 2 + 2, static_cast<std::size_t>(folds) * 4,
+       static_cast<std::size_t>(folds - 1) * kFoldBlockRows + 1});
+  if (n < min_rows) {
+    throw InputError(fmt::format(
+        "calibration data: {} points with a clearance reference; at least {} are needed for "
+        "{}-fold cross-validation (in blocks of {} rows) of even the first order",
+        n, min_rows, folds, kFoldBlockRows));
+  }
+}
+
 void require_spread(const std::vector<double>& values, const char* column) {
   const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
   if (*hi - *lo <= 1e-9 * std::max(1.0, std::abs(*hi))) {
@@ -221,19 +234,13 @@ RegressionFit fit_regression(const CalibrationData& data, const RegressionOption
   const std::size_t n = data.clearance_mm.size();
   const int folds = options.folds;
   const std::vector<std::pair<int, int>> all_terms = regression_terms(options.max_order);
-  const std::size_t min_rows = std::max<std::size_t>(
-      regression_terms(kMinRegressionOrder).size() * 2 + 2, static_cast<std::size_t>(folds) * 4);
-  if (n < min_rows) {
-    throw InputError(fmt::format(
-        "calibration data: {} points with a clearance reference; at least {} are needed for "
-        "{}-fold cross-validation of even the first order",
-        n, min_rows, folds));
-  }
+  // A spread needs two points; what is wrong with the values says more than their count.
+  if (n < 2) require_rows_for_folds(n, folds);
   require_spread(data.voltage_v, "voltage_v");
   require_spread(data.temp_c, "temp_c");
   require_spread(data.clearance_mm, "clearance_mm");
   require_independent(data.voltage_v, data.temp_c);
-
+  require_rows_for_folds(n, folds);
   VariableScaling s;
   const auto [v_lo, v_hi] = std::minmax_element(data.voltage_v.begin(), data.voltage_v.end());
   const auto [t_lo, t_hi] = std::minmax_element(data.temp_c.begin(), data.temp_c.end());
@@ -288,9 +295,12 @@ RegressionFit fit_regression(const CalibrationData& data, const RegressionOption
         if (g != f) training.push_back(&fold_factors[static_cast<std::size_t>(g)]);
       }
       const BlockFactor trained = stack(training, p_all);
+      if (trained.r.rows() < p) {
+        identifiable_in_every_fold = false;
+        break;
+      }
       const Eigen::VectorXd trained_diagonal = trained.r.topLeftCorner(p, p).diagonal().cwiseAbs();
-      if (trained.r.rows() < p ||
-          trained_diagonal.minCoeff() <= 1e-10 * trained_diagonal.maxCoeff()) {
+      if (trained_diagonal.minCoeff() <= 1e-10 * trained_diagonal.maxCoeff()) {
         identifiable_in_every_fold = false;
         break;
       }

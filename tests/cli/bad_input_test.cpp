@@ -34,6 +34,19 @@ struct InputFiles {
   std::string good =
       write_file(dir / "good.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,2,20,1\n1,3,20,2\n")
           .string();
+  // 40 rows: fewer than 5-fold cross-validation in 64-row blocks needs (it crashed before).
+  std::string short_calibration =
+      write_file(dir / "short.csv",
+                 [] {
+                   std::string text = "t_s,clearance_mm,temp_c,voltage_v\n";
+                   for (int i = 0; i < 40; ++i) {
+                     text += std::to_string(i) + "," + std::to_string(2.0 + 0.2 * i) + "," +
+                             std::to_string(20 + (i * 7) % 40) + "," +
+                             std::to_string(0.5 + 0.18 * i) + "\n";
+                   }
+                   return text;
+                 }())
+          .string();
   std::string filter =
       (fs::path(FLANGE_SOURCE_DIR) / "coeffs/measurement_sos/filter.json").string();
   std::string out(const std::string& name) const { return (dir / name).string(); }
@@ -70,6 +83,9 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
        "bogus"},
       {{"calibrate", "--data", f.header_only, "--out", f.out("m.json")}, 2, ":2: no data rows"},
       {{"calibrate", "--data", f.binary, "--out", f.out("m.json")}, 2, "not a text file"},
+      {{"calibrate", "--data", f.short_calibration, "--out", f.out("m.json")},
+       2,
+       "40 points with a clearance reference; at least 257 are needed"},
       {{"run", "--input", f.header_only, "--calibration", f.binary, "--coeffs", f.filter},
        2,
        "binary.csv"},
@@ -108,8 +124,8 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
 TEST(BadInput, ASpreadsheetsByteOrderMarkAndExtraColumnsAreAcceptedWithANote) {
   const InputFiles f;
   std::string rows;
-  for (int i = 0; i < 40; ++i) {
-    const double d = 2.0 + 0.2 * i;
+  for (int i = 0; i < 300; ++i) {
+    const double d = 2.0 + 0.02 * i;
     rows += std::to_string(i) + "," + std::to_string(d) + "," + std::to_string(20 + (i * 7) % 40) +
             "," + std::to_string(0.5 + 0.9 * (d - 1.5) - 0.002 * ((i * 7) % 40)) + ",55\n";
   }
