@@ -19,9 +19,13 @@ namespace {
 constexpr double kRelative = 1e-9;
 constexpr double kTinyAbsolute = 1e-15;
 
-nlohmann::json reference() {
-  std::ifstream file(std::string(FLANGE_SOURCE_DIR) + "/tests/data/butterworth_scipy.json");
-  return nlohmann::json::parse(file);
+// Loaded once and kept: the tests iterate over parts of it (a temporary would dangle there).
+const nlohmann::json& reference() {
+  static const nlohmann::json loaded = [] {
+    std::ifstream file(std::string(FLANGE_SOURCE_DIR) + "/tests/data/butterworth_scipy.json");
+    return nlohmann::json::parse(file);
+  }();
+  return loaded;
 }
 
 void expect_close(double expected, double actual, const std::string& what) {
