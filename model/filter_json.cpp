@@ -120,7 +120,7 @@ void validate_core_config(const CoreConfig& c) {
   }
 }
 
-CoreConfig load_core_config(const std::filesystem::path& filter_json) {
+static CoreConfig load_core_config_unguarded(const std::filesystem::path& filter_json) {
   const Reader reader(filter_json);
   const json& q = reader.object(reader.root(), "", "quantized");
   if (!q.is_object()) reader.fail("quantized", "expected an object");
@@ -178,7 +178,18 @@ CoreConfig load_core_config(const std::filesystem::path& filter_json) {
   return c;
 }
 
-FloatDesign load_float_design(const std::filesystem::path& filter_json) {
+CoreConfig load_core_config(const std::filesystem::path& filter_json) {
+  // A field of the wrong type that no check names (an object where a number goes, ...) is
+  // refused like any other bad field, never let through as a library exception.
+  try {
+    return load_core_config_unguarded(filter_json);
+  } catch (const nlohmann::json::exception& error) {
+    throw FilterJsonError(
+        fmt::format("{}: a field has the wrong type ({})", filter_json.string(), error.what()));
+  }
+}
+
+static FloatDesign load_float_design_unguarded(const std::filesystem::path& filter_json) {
   const Reader reader(filter_json);
   FloatDesign d;
   d.name = name_of(reader);
@@ -210,6 +221,17 @@ FloatDesign load_float_design(const std::filesystem::path& filter_json) {
     d.sos.push_back(row);
   }
   return d;
+}
+
+FloatDesign load_float_design(const std::filesystem::path& filter_json) {
+  // A field of the wrong type that no check names (an object where a number goes, ...) is
+  // refused like any other bad field, never let through as a library exception.
+  try {
+    return load_float_design_unguarded(filter_json);
+  } catch (const nlohmann::json::exception& error) {
+    throw FilterJsonError(
+        fmt::format("{}: a field has the wrong type ({})", filter_json.string(), error.what()));
+  }
 }
 
 }  // namespace flange::model

@@ -175,6 +175,12 @@ double number_field(const nlohmann::json& json, const std::string& path, const c
 
 }  // namespace
 
+namespace {
+
+Calibration calibration_from_json(const nlohmann::json& json, const std::string& path);
+
+}  // namespace
+
 Calibration load_calibration(const std::string& path) {
   std::ifstream file(path);
   if (!file) throw InputError(fmt::format("{}: cannot open the calibration", path));
@@ -184,16 +190,28 @@ Calibration load_calibration(const std::string& path) {
   } catch (const nlohmann::json::parse_error& error) {
     throw InputError(fmt::format("{}: not valid JSON ({})", path, error.what()));
   }
-  if (json.value("kind", "") != "flange-calibration") {
+  try {
+    return calibration_from_json(json, path);
+  } catch (const nlohmann::json::exception& error) {
+    // A field of the wrong type that no check below names (e.g. an object where a number goes).
+    throw InputError(fmt::format("{}: a field has the wrong type ({})", path, error.what()));
+  }
+}
+
+namespace {
+
+Calibration calibration_from_json(const nlohmann::json& json, const std::string& path) {
+  if (!json.is_object() || !json.contains("kind") || json["kind"] != "flange-calibration") {
     throw InputError(fmt::format(
         "{}: field kind must be \"flange-calibration\" (make one with flange calibrate)", path));
   }
   const double order_value = number_field(json, path, "order", "");
-  const int order = static_cast<int>(order_value);
-  if (order < kMinRegressionOrder || order > kMaxRegressionOrder || order != order_value) {
+  if (order_value < kMinRegressionOrder || order_value > kMaxRegressionOrder ||
+      order_value != std::floor(order_value)) {
     throw InputError(fmt::format("{}: field order is {}; valid range is {} to {}", path,
                                  order_value, kMinRegressionOrder, kMaxRegressionOrder));
   }
+  const int order = static_cast<int>(order_value);
   if (!json.contains("scaling") || !json["scaling"].is_object()) {
     throw InputError(fmt::format("{}: field scaling is missing", path));
   }
@@ -241,6 +259,8 @@ Calibration load_calibration(const std::string& path) {
   calibration.database = json.value("/database/path"_json_pointer, std::string());
   return calibration;
 }
+
+}  // namespace
 
 double eq_3_14(double v, double t) {
   return 1.16 + 0.3672 * v - 0.0036 * t + 0.05812 * v * v + 0.0006618 * v * t;

@@ -170,7 +170,7 @@ TwinConfig twin_from_json(const json& root, const std::string& where) {
   return config;
 }
 
-TwinConfig load_twin(const std::filesystem::path& path) {
+static TwinConfig load_twin_unguarded(const std::filesystem::path& path) {
   const std::string where = path.string();
   std::ifstream in(path, std::ios::binary);
   if (!in) throw BadArgument(fmt::format("{}: cannot open the twin file", where));
@@ -197,6 +197,17 @@ TwinConfig load_twin(const std::filesystem::path& path) {
   return twin_from_json(root, where);
 }
 
+TwinConfig load_twin(const std::filesystem::path& path) {
+  // A field of the wrong type that no check names (an object where a number goes, ...) is
+  // refused like any other bad field, never let through as a library exception.
+  try {
+    return load_twin_unguarded(path);
+  } catch (const nlohmann::json::exception& error) {
+    throw BadArgument(
+        fmt::format("{}: a field has the wrong type ({})", path.string(), error.what()));
+  }
+}
+
 void save_twin(const TwinConfig& config, const std::filesystem::path& path) {
   std::ofstream out(path, std::ios::binary);
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write the twin file", path.string()));
@@ -205,7 +216,7 @@ void save_twin(const TwinConfig& config, const std::filesystem::path& path) {
     throw std::runtime_error(fmt::format("{}: writing the twin file failed", path.string()));
 }
 
-PolynomialSensorModel nominal_from_calibration(const std::filesystem::path& path) {
+static PolynomialSensorModel nominal_from_calibration_unguarded(const std::filesystem::path& path) {
   const std::string where = path.string();
   std::ifstream file(path);
   if (!file) throw BadArgument(where + ": cannot open the calibration");
@@ -246,6 +257,17 @@ PolynomialSensorModel nominal_from_calibration(const std::filesystem::path& path
     return PolynomialSensorModel(a, 0.0, 10.0);
   } catch (const BadArgument& error) {
     throw BadArgument(fmt::format("{}: {}", where, error.what()));
+  }
+}
+
+PolynomialSensorModel nominal_from_calibration(const std::filesystem::path& path) {
+  // A field of the wrong type that no check names (an object where a number goes, ...) is
+  // refused like any other bad field, never let through as a library exception.
+  try {
+    return nominal_from_calibration_unguarded(path);
+  } catch (const nlohmann::json::exception& error) {
+    throw BadArgument(
+        fmt::format("{}: a field has the wrong type ({})", path.string(), error.what()));
   }
 }
 
