@@ -187,7 +187,7 @@ Calibration load_calibration(const std::string& path) {
   nlohmann::json json;
   try {
     json = nlohmann::json::parse(file);
-  } catch (const nlohmann::json::parse_error& error) {
+  } catch (const nlohmann::json::exception& error) {  // a syntax error or a number overflow
     throw InputError(fmt::format("{}: not valid JSON ({})", path, error.what()));
   }
   try {
