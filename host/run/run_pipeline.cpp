@@ -142,11 +142,11 @@ std::unique_ptr<FilterEngine> load_engine(const RunOptions& options) {
   }
 }
 
-// A good row's reference, at the row and delay_samples earlier; NaN where there is none.
+// What the errors of one row were measured against.
 struct References {
-  std::optional<double> reference;
-  double aligned = 0.0;
-  bool settled = false;  // past the filter's start-up transient
+  std::optional<double> reference;  // the row's own; none for a bad row or an unknown one
+  double aligned = 0.0;             // the one delay_samples earlier; NaN when there is none
+  bool settled = false;             // past the filter's start-up transient
 };
 
 // One run through the chain: its stages, the output file, the summary, and the bookkeeping
