@@ -15,11 +15,11 @@
 namespace flange::tb {
 
 struct CosimReport {
-  std::uint64_t cycles = 0;                 // cycles simulated
-  std::uint64_t accepted = 0;               // strobes the model accepted
-  std::uint64_t dropped = 0;                // strobes the model dropped (overrun)
-  std::uint64_t mismatches = 0;             // cycles in which some pin differed
-  std::string first_mismatch;  // one line: cycle, sample index and input, DUT pins, model pins
+  std::uint64_t cycles = 0;      // cycles simulated
+  std::uint64_t accepted = 0;    // strobes the model accepted
+  std::uint64_t dropped = 0;     // strobes the model dropped (overrun)
+  std::uint64_t mismatches = 0;  // cycles in which some pin differed
+  std::string first_mismatch;    // one line: cycle, sample index and input, DUT pins, model pins
   std::vector<std::int32_t> outputs;        // DUT sample_o in each sample_valid_o cycle
   std::vector<std::uint64_t> valid_cycles;  // those cycles
   std::vector<std::uint64_t> latencies;     // valid cycle - accept cycle, per model result
@@ -42,7 +42,14 @@ class CosimHarness {
   model::IirCore& model() { return model_; }
 
  private:
+  struct RunState;  // run()'s progress through the stimulus, defined with run()
+
   model::Pins dut_pins();
+  void compare_pins(std::uint64_t cycle, const RunState& state, CosimReport& report);
+  DutInputs apply_actions(std::uint64_t cycle, const Stimulus& stimulus, RunState& state,
+                          CosimReport& report);
+  void apply_strobe(std::uint64_t cycle, std::int32_t sample, RunState& state, CosimReport& report,
+                    DutInputs& in);
 
   model::IirCore model_;
   std::unique_ptr<Dut> dut;

@@ -65,6 +65,120 @@ FloatSections float_sections(const FloatDesign& design, Structure structure) {
 
 std::string format_number(double value) { return fmt::format("{:.6g}", value); }
 
+// The denominators' coefficients after a[0], section after section.
+std::vector<double> feedback_coefficients(const FloatSections& sections) {
+  std::vector<double> feedback;
+  for (std::size_t k = 0; k < sections.b.size(); ++k) {
+    feedback.insert(feedback.end(), sections.a[k].begin() + 1, sections.a[k].end());
+  }
+  return feedback;
+}
+
+// Fa as the denominators' largest coefficient allows; a word too narrow to leave a fractional
+// bit rejects the design.
+int feedback_frac_bits(const FloatSections& sections, const FloatDesign& design,
+                       Structure structure, int c) {
+  const std::vector<double> feedback = feedback_coefficients(sections);
+  const std::optional<int> feedback_int = integer_bits(feedback, c);
+  const int fa = feedback_int ? c - 1 - *feedback_int : c - 1;
+  if (fa < 1) {
+    throw DesignRejected(fmt::format(
+        "{} of order {} needs {} integer bits for its largest denominator coefficient ({}); "
+        "{}-bit coefficients leave none for the fraction; use --structure sos or more "
+        "coefficient bits",
+        structure == Structure::kDf1 ? "direct form" : "second-order sections", design.order,
+        *feedback_int, format_number(largest_magnitude(feedback)), c));
+  }
+  return fa;
+}
+
+// Numerator compensation: scale each section's numerator by A_q(1) / A(1), the rounded
+// denominator's DC value over the exact one, so that rounding the denominator of a narrow
+// filter (where A(1) is tiny) does not move the section's DC gain.
+std::vector<std::vector<double>> compensated_numerators(const FloatSections& sections, int fa) {
+  std::vector<std::vector<double>> numerators = sections.b;
+  for (std::size_t k = 0; k < sections.b.size(); ++k) {
+    double exact_dc = 1.0;
+    double rounded_dc = 1.0;
+    for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
+      exact_dc += sections.a[k][j];
+      rounded_dc -= std::ldexp(static_cast<double>(round_to_word(-sections.a[k][j], fa)), -fa);
+    }
+    if (exact_dc != 0.0 && rounded_dc != 0.0 &&
+        std::signbit(exact_dc) == std::signbit(rounded_dc)) {
+      for (double& value : numerators[k]) value *= rounded_dc / exact_dc;
+    }
+  }
+  return numerators;
+}
+
+struct FracBits {
+  int fa = 0;  // feedback coefficients
+  int fb = 0;  // feed-forward coefficients
+};
+
+// Fb as the numerators' largest coefficient allows, at most max_shift above Fa, and Fa lowered
+// to it: the feedback shift cannot be negative, so a numerator larger than the denominator takes
+// the denominator's format down with it.
+FracBits numerator_frac_bits(const std::vector<std::vector<double>>& numerators, int fa, int c,
+                             int max_shift) {
+  std::vector<double> feedforward;
+  for (const std::vector<double>& numerator : numerators) {
+    feedforward.insert(feedforward.end(), numerator.begin(), numerator.end());
+  }
+  const std::optional<int> feedforward_int = integer_bits(feedforward, c);
+  const int fb =
+      feedforward_int ? std::min(c - 1 - *feedforward_int, fa + max_shift) : fa + max_shift;
+  const FracBits bits{std::min(fa, fb), fb};
+  if (bits.fa < 1) {
+    // The accumulator's rounding constant is 2^(Fa-1) (docs/fixed_point.md).
+    throw DesignRejected(
+        fmt::format("the numerator needs {} integer bits for its largest coefficient ({}); {}-bit "
+                    "coefficients leave none for the fraction; use more coefficient bits",
+                    feedforward_int.value_or(0), format_number(largest_magnitude(feedforward)), c));
+  }
+  return bits;
+}
+
+// Rounds every section's coefficients in the formats already in `filter`, into its words and
+// sections. Returns the accumulator's worst case over the sections (docs/fixed_point.md): the
+// rounding constant 2^(Fa-1), |B| times the largest sample magnitude 2^(D-1), and |A| times the
+// largest feedback history magnitude 2^(D-1+s) (y_ext, D + s bits).
+Int128 round_sections(const FloatSections& sections,
+                      const std::vector<std::vector<double>>& numerators, QuantizedFilter& filter) {
+  const int fa = filter.coef_frac_bits;
+  const int fb = filter.b_frac_bits;
+  const int data_bits = filter.widths.data_bits;
+  Int128 worst_any = 0;
+  for (std::size_t k = 0; k < sections.b.size(); ++k) {
+    QuantizedSection quantized;
+    Int128 worst = Int128{1} << (fa - 1);  // the rounding constant
+    for (double value : numerators[k]) {
+      const std::int64_t word = round_to_word(value, fb);
+      filter.words.push_back(word);
+      quantized.b.push_back(std::ldexp(static_cast<double>(word), -fb));
+      worst += static_cast<Int128>(std::llabs(word)) << (data_bits - 1);
+    }
+    quantized.a.push_back(1.0);
+    for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
+      const std::int64_t word = round_to_word(-sections.a[k][j], fa);  // stored negated
+      filter.words.push_back(word);
+      quantized.a.push_back(-std::ldexp(static_cast<double>(word), -fa));
+      worst += static_cast<Int128>(std::llabs(word)) << (data_bits - 1 + filter.feedback_shift);
+    }
+    filter.sections.push_back(std::move(quantized));
+    worst_any = std::max(worst_any, worst);
+  }
+  return worst_any;
+}
+
+// Two's complement of P bits holds magnitudes up to 2^(P-1) - 1.
+int accumulator_bits_needed(Int128 worst) {
+  int needed = 1;
+  while ((Int128{1} << (needed - 1)) <= worst) ++needed;
+  return needed;
+}
+
 }  // namespace
 
 std::string structure_name(Structure structure) {
@@ -81,86 +195,16 @@ QuantizedFilter quantize(const FloatDesign& design, Structure structure,
   filter.section_order = static_cast<int>(sections.b.front().size()) - 1;
   filter.leftover_gain = sections.leftover_gain;
 
-  std::vector<double> feedback;
-  for (std::size_t k = 0; k < sections.b.size(); ++k) {
-    feedback.insert(feedback.end(), sections.a[k].begin() + 1, sections.a[k].end());
-  }
   const int c = widths.coef_bits;
   const int max_shift = std::max(0, kDspAPortBits - widths.data_bits);
-  const std::optional<int> feedback_int = integer_bits(feedback, c);
-  int fa = feedback_int ? c - 1 - *feedback_int : c - 1;
-  if (fa < 1) {
-    throw DesignRejected(fmt::format(
-        "{} of order {} needs {} integer bits for its largest denominator coefficient ({}); "
-        "{}-bit coefficients leave none for the fraction; use --structure sos or more "
-        "coefficient bits",
-        structure == Structure::kDf1 ? "direct form" : "second-order sections", design.order,
-        *feedback_int, format_number(largest_magnitude(feedback)), c));
-  }
-  // Numerator compensation: scale each section's numerator by A_q(1) / A(1), the rounded
-  // denominator's DC value over the exact one, so that rounding the denominator of a narrow
-  // filter (where A(1) is tiny) does not move the section's DC gain.
-  std::vector<std::vector<double>> numerators = sections.b;
-  for (std::size_t k = 0; k < sections.b.size(); ++k) {
-    double exact_dc = 1.0;
-    double rounded_dc = 1.0;
-    for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
-      exact_dc += sections.a[k][j];
-      rounded_dc -= std::ldexp(static_cast<double>(round_to_word(-sections.a[k][j], fa)), -fa);
-    }
-    if (exact_dc != 0.0 && rounded_dc != 0.0 &&
-        std::signbit(exact_dc) == std::signbit(rounded_dc)) {
-      for (double& value : numerators[k]) value *= rounded_dc / exact_dc;
-    }
-  }
-  std::vector<double> feedforward;
-  for (const std::vector<double>& numerator : numerators) {
-    feedforward.insert(feedforward.end(), numerator.begin(), numerator.end());
-  }
-  const std::optional<int> feedforward_int = integer_bits(feedforward, c);
-  const int fb =
-      feedforward_int ? std::min(c - 1 - *feedforward_int, fa + max_shift) : fa + max_shift;
-  // The feedback shift cannot be negative: a numerator larger than the denominator takes the
-  // denominator's format down with it.
-  fa = std::min(fa, fb);
-  if (fa < 1) {
-    // The accumulator's rounding constant is 2^(Fa-1) (docs/fixed_point.md).
-    throw DesignRejected(
-        fmt::format("the numerator needs {} integer bits for its largest coefficient ({}); {}-bit "
-                    "coefficients leave none for the fraction; use more coefficient bits",
-                    feedforward_int.value_or(0), format_number(largest_magnitude(feedforward)), c));
-  }
-  filter.coef_frac_bits = fa;
-  filter.b_frac_bits = fb;
-  filter.feedback_shift = fb - fa;
+  const int feedback_fa = feedback_frac_bits(sections, design, structure, c);
+  const std::vector<std::vector<double>> numerators = compensated_numerators(sections, feedback_fa);
+  const FracBits bits = numerator_frac_bits(numerators, feedback_fa, c, max_shift);
+  filter.coef_frac_bits = bits.fa;
+  filter.b_frac_bits = bits.fb;
+  filter.feedback_shift = bits.fb - bits.fa;
 
-  // Accumulator worst case per section (docs/fixed_point.md): the rounding constant 2^(Fa-1),
-  // |B| times the largest sample magnitude 2^(D-1), and |A| times the largest feedback history
-  // magnitude 2^(D-1+s) (y_ext, D + s bits).
-  Int128 worst_any = 0;
-  for (std::size_t k = 0; k < sections.b.size(); ++k) {
-    QuantizedSection quantized;
-    Int128 worst = Int128{1} << (fa - 1);  // the rounding constant
-    for (double value : numerators[k]) {
-      const std::int64_t word = round_to_word(value, fb);
-      filter.words.push_back(word);
-      quantized.b.push_back(std::ldexp(static_cast<double>(word), -fb));
-      worst += static_cast<Int128>(std::llabs(word)) << (widths.data_bits - 1);
-    }
-    quantized.a.push_back(1.0);
-    for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
-      const std::int64_t word = round_to_word(-sections.a[k][j], fa);  // stored negated
-      filter.words.push_back(word);
-      quantized.a.push_back(-std::ldexp(static_cast<double>(word), -fa));
-      worst += static_cast<Int128>(std::llabs(word))
-               << (widths.data_bits - 1 + filter.feedback_shift);
-    }
-    filter.sections.push_back(std::move(quantized));
-    worst_any = std::max(worst_any, worst);
-  }
-  // Two's complement of P bits holds magnitudes up to 2^(P-1) - 1.
-  int needed = 1;
-  while ((Int128{1} << (needed - 1)) <= worst_any) ++needed;
+  const int needed = accumulator_bits_needed(round_sections(sections, numerators, filter));
   filter.acc_bits_needed = needed;
   if (needed > widths.acc_bits) {
     throw DesignRejected(fmt::format(
@@ -219,11 +263,7 @@ std::string fix_phrase(const QuantizedFilter& filter) {
                                              : "use more coefficient bits (--coef-bits)";
 }
 
-}  // namespace
-
-QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filter,
-                          const AcceptanceLimits& limits) {
-  QuantizedAnalysis analysis;
+void find_poles(const QuantizedFilter& filter, QuantizedAnalysis& analysis) {
   for (const QuantizedSection& section : filter.sections) {
     for (const Complex& pole : polynomial_roots(section.a)) {
       analysis.poles.push_back(pole);
@@ -231,63 +271,79 @@ QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filt
       if (std::abs(pole) >= 1.0) ++analysis.poles_outside;
     }
   }
-  analysis.stable = analysis.poles_outside == 0;
-  const double float_dc = std::abs(float_response(design, 0.0));
-  const double quantized_dc = std::abs(quantized_response(filter, 0.0));
-  analysis.dc_gain_error_db = 20.0 * std::log10(quantized_dc / float_dc);
+}
 
-  if (!analysis.stable) {
-    analysis.rejection = fmt::format(
-        "{} with {}-bit coefficients puts {} pole{} on or outside the unit circle "
-        "(max |z| = {:.4f}); {}",
-        structure_phrase(filter), filter.widths.coef_bits, analysis.poles_outside,
-        analysis.poles_outside == 1 ? "" : "s", analysis.max_pole_radius, fix_phrase(filter));
-    return analysis;
+std::string instability_rejection(const QuantizedFilter& filter,
+                                  const QuantizedAnalysis& analysis) {
+  return fmt::format(
+      "{} with {}-bit coefficients puts {} pole{} on or outside the unit circle "
+      "(max |z| = {:.4f}); {}",
+      structure_phrase(filter), filter.widths.coef_bits, analysis.poles_outside,
+      analysis.poles_outside == 1 ? "" : "s", analysis.max_pole_radius, fix_phrase(filter));
+}
+
+std::string passband_rejection(const LowpassSpec& spec, const QuantizedFilter& filter,
+                               const AcceptanceLimits& limits, const QuantizedAnalysis& analysis) {
+  return fmt::format(
+      "quantised {} misses the spec: passband {} {:.4f} dB over 0-{} Hz exceeds ap = {} dB "
+      "(+{} dB tolerance); {}",
+      structure_phrase(filter),
+      *analysis.passband_loss_db >= *analysis.passband_peak_db ? "loss" : "gain",
+      std::max(*analysis.passband_loss_db, *analysis.passband_peak_db), format_number(spec.fp_hz),
+      format_number(spec.ap_db), format_number(limits.spec_tolerance_db), fix_phrase(filter));
+}
+
+// The float design's smallest attenuation over [fa, fs/2], on the grid extreme_loss_db uses.
+double float_stopband_atten_db(const FloatDesign& design, const LowpassSpec& spec) {
+  double float_atten = std::numeric_limits<double>::infinity();
+  constexpr int kPoints = 4096;
+  for (int i = 0; i <= kPoints; ++i) {
+    const double f = spec.fa_hz + (spec.fs_hz / 2.0 - spec.fa_hz) * i / kPoints;
+    float_atten = std::min(
+        float_atten, loss_db(float_response(design, 2.0 * std::numbers::pi * f / spec.fs_hz)));
   }
-  if (design.spec) {
-    const LowpassSpec& spec = *design.spec;
-    analysis.passband_loss_db = extreme_loss_db(filter, spec.fs_hz, 0.0, spec.fp_hz, true);
-    analysis.passband_peak_db = -extreme_loss_db(filter, spec.fs_hz, 0.0, spec.fp_hz, false);
-    analysis.stopband_atten_db =
-        extreme_loss_db(filter, spec.fs_hz, spec.fa_hz, spec.fs_hz / 2.0, false);
-    // The passband may deviate by ap either way: a gain bump from moved poles is as wrong as a
-    // loss, and above 0 dB it eats the headroom of the sample format.
-    const bool passband_ok = *analysis.passband_loss_db <= spec.ap_db + limits.spec_tolerance_db &&
-                             *analysis.passband_peak_db <= spec.ap_db + limits.spec_tolerance_db;
-    const bool stopband_ok = *analysis.stopband_atten_db >= spec.aa_db - limits.spec_tolerance_db;
-    analysis.meets_spec = passband_ok && stopband_ok;
-    if (!passband_ok) {
-      analysis.rejection = fmt::format(
-          "quantised {} misses the spec: passband {} {:.4f} dB over 0-{} Hz exceeds ap = {} dB "
-          "(+{} dB tolerance); {}",
-          structure_phrase(filter),
-          *analysis.passband_loss_db >= *analysis.passband_peak_db ? "loss" : "gain",
-          std::max(*analysis.passband_loss_db, *analysis.passband_peak_db),
-          format_number(spec.fp_hz), format_number(spec.ap_db),
-          format_number(limits.spec_tolerance_db), fix_phrase(filter));
-    } else if (!stopband_ok) {
-      // Say whether rounding lost the attenuation or the design never had it.
-      double float_atten = std::numeric_limits<double>::infinity();
-      constexpr int kPoints = 4096;
-      for (int i = 0; i <= kPoints; ++i) {
-        const double f = spec.fa_hz + (spec.fs_hz / 2.0 - spec.fa_hz) * i / kPoints;
-        float_atten = std::min(
-            float_atten, loss_db(float_response(design, 2.0 * std::numbers::pi * f / spec.fs_hz)));
-      }
-      const bool design_misses = float_atten < spec.aa_db - limits.spec_tolerance_db;
-      analysis.rejection = fmt::format(
-          "quantised {} misses the spec: stopband attenuation {:.2f} dB over {}-{} Hz is below "
-          "aa = {} dB; {}",
-          structure_phrase(filter), *analysis.stopband_atten_db, format_number(spec.fa_hz),
-          format_number(spec.fs_hz / 2.0), format_number(spec.aa_db),
-          design_misses ? fmt::format("the float design itself gives only {:.2f} dB: raise "
-                                      "--order or design from the spec alone",
-                                      float_atten)
-                        : fix_phrase(filter));
-    }
-    return analysis;
+  return float_atten;
+}
+
+// Says whether rounding lost the attenuation or the design never had it.
+std::string stopband_rejection(const FloatDesign& design, const LowpassSpec& spec,
+                               const QuantizedFilter& filter, const AcceptanceLimits& limits,
+                               const QuantizedAnalysis& analysis) {
+  const double float_atten = float_stopband_atten_db(design, spec);
+  const bool design_misses = float_atten < spec.aa_db - limits.spec_tolerance_db;
+  return fmt::format(
+      "quantised {} misses the spec: stopband attenuation {:.2f} dB over {}-{} Hz is below "
+      "aa = {} dB; {}",
+      structure_phrase(filter), *analysis.stopband_atten_db, format_number(spec.fa_hz),
+      format_number(spec.fs_hz / 2.0), format_number(spec.aa_db),
+      design_misses ? fmt::format("the float design itself gives only {:.2f} dB: raise "
+                                  "--order or design from the spec alone",
+                                  float_atten)
+                    : fix_phrase(filter));
+}
+
+void judge_against_spec(const FloatDesign& design, const LowpassSpec& spec,
+                        const QuantizedFilter& filter, const AcceptanceLimits& limits,
+                        QuantizedAnalysis& analysis) {
+  analysis.passband_loss_db = extreme_loss_db(filter, spec.fs_hz, 0.0, spec.fp_hz, true);
+  analysis.passband_peak_db = -extreme_loss_db(filter, spec.fs_hz, 0.0, spec.fp_hz, false);
+  analysis.stopband_atten_db =
+      extreme_loss_db(filter, spec.fs_hz, spec.fa_hz, spec.fs_hz / 2.0, false);
+  // The passband may deviate by ap either way: a gain bump from moved poles is as wrong as a
+  // loss, and above 0 dB it eats the headroom of the sample format.
+  const bool passband_ok = *analysis.passband_loss_db <= spec.ap_db + limits.spec_tolerance_db &&
+                           *analysis.passband_peak_db <= spec.ap_db + limits.spec_tolerance_db;
+  const bool stopband_ok = *analysis.stopband_atten_db >= spec.aa_db - limits.spec_tolerance_db;
+  analysis.meets_spec = passband_ok && stopband_ok;
+  if (!passband_ok) {
+    analysis.rejection = passband_rejection(spec, filter, limits, analysis);
+  } else if (!stopband_ok) {
+    analysis.rejection = stopband_rejection(design, spec, filter, limits, analysis);
   }
-  // Without a mask, the quantised response must follow the float one up to the cut-off.
+}
+
+// Largest |quantised - float| loss in dB from DC to the cut-off.
+double deviation_from_float_db(const FloatDesign& design, const QuantizedFilter& filter) {
   double deviation = 0.0;
   constexpr int kPoints = 4096;
   for (int i = 0; i <= kPoints; ++i) {
@@ -296,6 +352,13 @@ QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filt
                                              loss_db(float_response(design, omega))));
   }
   if (!std::isfinite(deviation)) deviation = std::numeric_limits<double>::max();
+  return deviation;
+}
+
+// Without a mask, the quantised response must follow the float one up to the cut-off.
+void judge_against_float(const FloatDesign& design, const QuantizedFilter& filter,
+                         const AcceptanceLimits& limits, QuantizedAnalysis& analysis) {
+  const double deviation = deviation_from_float_db(design, filter);
   analysis.passband_deviation_db = deviation;
   const bool dc_ok = std::abs(analysis.dc_gain_error_db) <= limits.max_dc_error_db;
   const bool shape_ok = deviation <= limits.max_passband_deviation_db;
@@ -311,6 +374,26 @@ QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filt
         "{} dB allowed; {}",
         structure_phrase(filter), deviation, format_number(design.fc_hz),
         format_number(limits.max_passband_deviation_db), fix_phrase(filter));
+  }
+}
+
+}  // namespace
+
+QuantizedAnalysis analyse(const FloatDesign& design, const QuantizedFilter& filter,
+                          const AcceptanceLimits& limits) {
+  QuantizedAnalysis analysis;
+  find_poles(filter, analysis);
+  analysis.stable = analysis.poles_outside == 0;
+  const double float_dc = std::abs(float_response(design, 0.0));
+  const double quantized_dc = std::abs(quantized_response(filter, 0.0));
+  analysis.dc_gain_error_db = 20.0 * std::log10(quantized_dc / float_dc);
+
+  if (!analysis.stable) {
+    analysis.rejection = instability_rejection(filter, analysis);
+  } else if (design.spec) {
+    judge_against_spec(design, *design.spec, filter, limits, analysis);
+  } else {
+    judge_against_float(design, filter, limits, analysis);
   }
   return analysis;
 }

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "input_error.h"
 
@@ -184,6 +187,216 @@ void require_independent(const std::vector<double>& v, const std::vector<double>
   }
 }
 
+// Enough rows for cross-validation, a spread in every column, and voltage and temperature that
+// do not move together.
+void require_fittable(const CalibrationData& data, int folds) {
+  const std::size_t n = data.clearance_mm.size();
+  // A spread needs two points; what is wrong with the values says more than their count.
+  if (n < 2) require_rows_for_folds(n, folds);
+  require_spread(data.voltage_v, "voltage_v");
+  require_spread(data.temp_c, "temp_c");
+  require_spread(data.clearance_mm, "clearance_mm");
+  require_independent(data.voltage_v, data.temp_c);
+  require_rows_for_folds(n, folds);
+}
+
+// The fit runs on voltage and temperature scaled to [-1, 1] over the data's range.
+VariableScaling scaling_of(const CalibrationData& data) {
+  VariableScaling s;
+  const auto [v_lo, v_hi] = std::minmax_element(data.voltage_v.begin(), data.voltage_v.end());
+  const auto [t_lo, t_hi] = std::minmax_element(data.temp_c.begin(), data.temp_c.end());
+  s.v_center = (*v_lo + *v_hi) / 2.0;
+  s.v_half = (*v_hi - *v_lo) / 2.0;
+  s.t_center = (*t_lo + *t_hi) / 2.0;
+  s.t_half = (*t_hi - *t_lo) / 2.0;
+  return s;
+}
+
+double total_sum_of_squares(const std::vector<double>& values) {
+  double mean = 0.0;
+  for (double d : values) mean += d;
+  mean /= static_cast<double>(values.size());
+  double sst = 0.0;
+  for (double d : values) sst += (d - mean) * (d - mean);
+  return sst;
+}
+
+// What the fit of every order shares: the data and its scaling, one factor per fold over all
+// terms up to the highest order, the whole as their stack, and the total sum of squares.
+struct FitContext {
+  FitContext(const CalibrationData& data, const RegressionOptions& options);
+
+  const CalibrationData& data;
+  int folds = 0;
+  VariableScaling s;
+  std::vector<BlockFactor> fold_factors;
+  BlockFactor whole;
+  Eigen::Index p_all = 0;
+  double sst = 0.0;
+};
+
+FitContext::FitContext(const CalibrationData& data_in, const RegressionOptions& options)
+    : data(data_in), folds(options.folds), s(scaling_of(data_in)) {
+  const std::vector<std::pair<int, int>> all_terms = regression_terms(options.max_order);
+  p_all = static_cast<Eigen::Index>(all_terms.size());
+  for (int f = 0; f < folds; ++f) {
+    Eigen::MatrixXd x;
+    Eigen::VectorXd y;
+    fold_design(data, f, folds, s, all_terms, x, y);
+    fold_factors.push_back(factor(x, y));
+  }
+  std::vector<const BlockFactor*> every;
+  for (const BlockFactor& f : fold_factors) every.push_back(&f);
+  whole = stack(every, p_all);
+  sst = total_sum_of_squares(data.clearance_mm);
+}
+
+Eigen::VectorXd diagonal_magnitudes(const BlockFactor& f, Eigen::Index p) {
+  return f.r.topLeftCorner(p, p).diagonal().cwiseAbs();
+}
+
+// Rank: a diagonal of R that is tiny next to the largest means a column is a combination of
+// the others on this data.
+bool rank_deficient(const Eigen::VectorXd& diagonal) {
+  return diagonal.minCoeff() <= 1e-10 * diagonal.maxCoeff();
+}
+
+// Errors of the first p terms on each fold, fitted on the other folds; nullopt when some
+// training set cannot identify them.
+std::optional<Errors> heldout_errors(const FitContext& context,
+                                     const std::vector<std::pair<int, int>>& terms,
+                                     Eigen::Index p) {
+  Errors heldout;
+  for (int f = 0; f < context.folds; ++f) {
+    std::vector<const BlockFactor*> training;
+    for (int g = 0; g < context.folds; ++g) {
+      if (g != f) training.push_back(&context.fold_factors[static_cast<std::size_t>(g)]);
+    }
+    const BlockFactor trained = stack(training, context.p_all);
+    if (trained.r.rows() < p) return std::nullopt;  // R has no p x p corner to read
+    if (rank_deficient(diagonal_magnitudes(trained, p))) return std::nullopt;
+    const Eigen::VectorXd fold_coefficients = solve_prefix(trained, p);
+    const Errors e = errors_of(context.data, f, context.folds, context.s, terms, fold_coefficients);
+    heldout.sse += e.sse;
+    heldout.sae += e.sae;
+    heldout.n += e.n;
+  }
+  return heldout;
+}
+
+OrderCandidate candidate_of(int order, std::size_t p, std::size_t n, double sst,
+                            const Errors& in_sample, const Errors& heldout) {
+  OrderCandidate candidate;
+  candidate.order = order;
+  candidate.terms = p;
+  const double r2 = sst > 0.0 ? 1.0 - in_sample.sse / sst : 0.0;
+  candidate.stats.r = std::sqrt(std::max(0.0, r2));
+  candidate.stats.adjusted_r2 =
+      1.0 - (1.0 - r2) * static_cast<double>(n - 1) / static_cast<double>(n - p);
+  candidate.stats.rmse_mm = std::sqrt(in_sample.sse / static_cast<double>(n));
+  candidate.stats.mae_mm = in_sample.sae / static_cast<double>(n);
+  candidate.stats.heldout_mae_mm = heldout.sae / static_cast<double>(heldout.n);
+  candidate.stats.heldout_rmse_mm = std::sqrt(heldout.sse / static_cast<double>(heldout.n));
+  return candidate;
+}
+
+struct OrderFit {
+  OrderCandidate candidate;
+  Eigen::VectorXd coefficients;
+};
+
+// The fit of one order, or nullopt when this and higher orders are not identifiable on this
+// data; throws when not even the first order is.
+std::optional<OrderFit> fit_order(const FitContext& context, int order) {
+  const std::size_t n = context.data.clearance_mm.size();
+  const std::vector<std::pair<int, int>> terms = regression_terms(order);
+  const auto p = static_cast<Eigen::Index>(terms.size());
+  if (static_cast<std::size_t>(p) + 2 > n) return std::nullopt;
+  if (rank_deficient(diagonal_magnitudes(context.whole, p))) {
+    if (order == kMinRegressionOrder) {
+      throw InputError(
+          "calibration data: rank deficient (voltage and temperature move together, so their "
+          "effects cannot be told apart); measure over independent ranges of both");
+    }
+    return std::nullopt;
+  }
+  const Eigen::VectorXd coefficients = solve_prefix(context.whole, p);
+  const Errors in_sample =
+      errors_of(context.data, -1, context.folds, context.s, terms, coefficients);
+  const std::optional<Errors> heldout = heldout_errors(context, terms, p);
+  if (!heldout) {
+    if (order == kMinRegressionOrder) {
+      throw InputError(
+          "calibration data: some cross-validation fold cannot identify even the first order "
+          "(too little variation of voltage or temperature outside it); measure over wider "
+          "ranges");
+    }
+    return std::nullopt;
+  }
+  return OrderFit{
+      candidate_of(order, static_cast<std::size_t>(p), n, context.sst, in_sample, *heldout),
+      coefficients};
+}
+
+struct OrderChoice {
+  std::size_t chosen = 0;
+  std::size_t thesis_choice = 0;  // the lowest order with r >= min_r
+  bool thesis_rule_met = false;
+};
+
+// The thesis's rule first (lowest order with r >= min_r), then one more order at a time while
+// the held-out error improves by at least min_heldout_gain: over-fitting stops it.
+OrderChoice choose_order(const std::vector<OrderCandidate>& candidates,
+                         const RegressionOptions& options) {
+  OrderChoice choice;
+  std::size_t& chosen = choice.chosen;
+  while (chosen + 1 < candidates.size() && candidates[chosen].stats.r < options.min_r) {
+    ++chosen;
+  }
+  choice.thesis_rule_met = candidates[chosen].stats.r >= options.min_r;
+  choice.thesis_choice = chosen;
+  if (!choice.thesis_rule_met) {
+    // No order reaches the threshold: take the best held-out error instead.
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      if (candidates[k].stats.heldout_mae_mm < candidates[chosen].stats.heldout_mae_mm) {
+        chosen = k;
+      }
+    }
+  } else {
+    auto worth_it = [&](const OrderCandidate& now, const OrderCandidate& next) {
+      const double gain = now.stats.heldout_mae_mm - next.stats.heldout_mae_mm;
+      return gain > options.min_heldout_gain * now.stats.heldout_mae_mm &&
+             gain > options.min_heldout_gain_mm;
+    };
+    while (chosen + 1 < candidates.size() && worth_it(candidates[chosen], candidates[chosen + 1])) {
+      ++chosen;
+    }
+  }
+  return choice;
+}
+
+std::string selection_reason(const std::vector<OrderCandidate>& candidates,
+                             const OrderChoice& choice, const RegressionOptions& options) {
+  const OrderCandidate& best = candidates[choice.chosen];
+  if (!choice.thesis_rule_met) {
+    return fmt::format(
+        "no order up to {} reaches r >= {} (best r = {:.4f}); order {} has the lowest held-out "
+        "MAE",
+        candidates.back().order, options.min_r, candidates.back().stats.r, best.order);
+  }
+  if (choice.chosen == choice.thesis_choice) {
+    return fmt::format(
+        "order {} is the lowest with r >= {} (r = {:.4f}); order {} would not cut the held-out "
+        "MAE by {:.0f} %",
+        best.order, options.min_r, best.stats.r, best.order + 1, options.min_heldout_gain * 100);
+  }
+  return fmt::format(
+      "order {} reaches r >= {}; held-out MAE kept falling by more than {:.0f} % per order up "
+      "to order {}",
+      candidates[choice.thesis_choice].order, options.min_r, options.min_heldout_gain * 100,
+      best.order);
+}
+
 }  // namespace
 
 RegressionModel::RegressionModel(int order, VariableScaling scaling,
@@ -231,154 +444,20 @@ std::vector<double> RegressionModel::raw_coefficients() const {
 }
 
 RegressionFit fit_regression(const CalibrationData& data, const RegressionOptions& options) {
-  const std::size_t n = data.clearance_mm.size();
-  const int folds = options.folds;
-  const std::vector<std::pair<int, int>> all_terms = regression_terms(options.max_order);
-  // A spread needs two points; what is wrong with the values says more than their count.
-  if (n < 2) require_rows_for_folds(n, folds);
-  require_spread(data.voltage_v, "voltage_v");
-  require_spread(data.temp_c, "temp_c");
-  require_spread(data.clearance_mm, "clearance_mm");
-  require_independent(data.voltage_v, data.temp_c);
-  require_rows_for_folds(n, folds);
-  VariableScaling s;
-  const auto [v_lo, v_hi] = std::minmax_element(data.voltage_v.begin(), data.voltage_v.end());
-  const auto [t_lo, t_hi] = std::minmax_element(data.temp_c.begin(), data.temp_c.end());
-  s.v_center = (*v_lo + *v_hi) / 2.0;
-  s.v_half = (*v_hi - *v_lo) / 2.0;
-  s.t_center = (*t_lo + *t_hi) / 2.0;
-  s.t_half = (*t_hi - *t_lo) / 2.0;
-
-  // One factor per fold, then the whole as their stack.
-  const auto p_all = static_cast<Eigen::Index>(all_terms.size());
-  std::vector<BlockFactor> fold_factors;
-  for (int f = 0; f < folds; ++f) {
-    Eigen::MatrixXd x;
-    Eigen::VectorXd y;
-    fold_design(data, f, folds, s, all_terms, x, y);
-    fold_factors.push_back(factor(x, y));
-  }
-  std::vector<const BlockFactor*> every;
-  for (const BlockFactor& f : fold_factors) every.push_back(&f);
-  const BlockFactor whole = stack(every, p_all);
-
-  double mean = 0.0;
-  for (double d : data.clearance_mm) mean += d;
-  mean /= static_cast<double>(n);
-  double sst = 0.0;
-  for (double d : data.clearance_mm) sst += (d - mean) * (d - mean);
-
+  require_fittable(data, options.folds);
+  const FitContext context(data, options);
   RegressionFit fit;
   std::vector<Eigen::VectorXd> coefficients_by_order;
   for (int order = kMinRegressionOrder; order <= options.max_order; ++order) {
-    const std::vector<std::pair<int, int>> terms = regression_terms(order);
-    const auto p = static_cast<Eigen::Index>(terms.size());
-    if (static_cast<std::size_t>(p) + 2 > n) break;
-    // Rank: a diagonal of R that is tiny next to the largest means a column is a combination
-    // of the others on this data.
-    const Eigen::VectorXd diagonal = whole.r.topLeftCorner(p, p).diagonal().cwiseAbs();
-    if (diagonal.minCoeff() <= 1e-10 * diagonal.maxCoeff()) {
-      if (order == kMinRegressionOrder) {
-        throw InputError(
-            "calibration data: rank deficient (voltage and temperature move together, so their "
-            "effects cannot be told apart); measure over independent ranges of both");
-      }
-      break;  // this and higher orders are not identifiable on this data
-    }
-    const Eigen::VectorXd coefficients = solve_prefix(whole, p);
-    const Errors in_sample = errors_of(data, -1, folds, s, terms, coefficients);
-    Errors heldout;
-    bool identifiable_in_every_fold = true;
-    for (int f = 0; f < folds; ++f) {
-      std::vector<const BlockFactor*> training;
-      for (int g = 0; g < folds; ++g) {
-        if (g != f) training.push_back(&fold_factors[static_cast<std::size_t>(g)]);
-      }
-      const BlockFactor trained = stack(training, p_all);
-      if (trained.r.rows() < p) {
-        identifiable_in_every_fold = false;
-        break;
-      }
-      const Eigen::VectorXd trained_diagonal = trained.r.topLeftCorner(p, p).diagonal().cwiseAbs();
-      if (trained_diagonal.minCoeff() <= 1e-10 * trained_diagonal.maxCoeff()) {
-        identifiable_in_every_fold = false;
-        break;
-      }
-      const Eigen::VectorXd fold_coefficients = solve_prefix(trained, p);
-      const Errors e = errors_of(data, f, folds, s, terms, fold_coefficients);
-      heldout.sse += e.sse;
-      heldout.sae += e.sae;
-      heldout.n += e.n;
-    }
-    if (!identifiable_in_every_fold) {
-      if (order == kMinRegressionOrder) {
-        throw InputError(
-            "calibration data: some cross-validation fold cannot identify even the first order "
-            "(too little variation of voltage or temperature outside it); measure over wider "
-            "ranges");
-      }
-      break;
-    }
-    OrderCandidate candidate;
-    candidate.order = order;
-    candidate.terms = static_cast<std::size_t>(p);
-    const double r2 = sst > 0.0 ? 1.0 - in_sample.sse / sst : 0.0;
-    candidate.stats.r = std::sqrt(std::max(0.0, r2));
-    candidate.stats.adjusted_r2 = 1.0 - (1.0 - r2) * static_cast<double>(n - 1) /
-                                            static_cast<double>(n - static_cast<std::size_t>(p));
-    candidate.stats.rmse_mm = std::sqrt(in_sample.sse / static_cast<double>(n));
-    candidate.stats.mae_mm = in_sample.sae / static_cast<double>(n);
-    candidate.stats.heldout_mae_mm = heldout.sae / static_cast<double>(heldout.n);
-    candidate.stats.heldout_rmse_mm = std::sqrt(heldout.sse / static_cast<double>(heldout.n));
-    fit.candidates.push_back(candidate);
-    coefficients_by_order.push_back(coefficients);
+    std::optional<OrderFit> order_fit = fit_order(context, order);
+    if (!order_fit) break;
+    fit.candidates.push_back(order_fit->candidate);
+    coefficients_by_order.push_back(std::move(order_fit->coefficients));
   }
-
-  // The thesis's rule first (lowest order with r >= min_r), then one more order at a time while
-  // the held-out error improves by at least min_heldout_gain: over-fitting stops it.
-  std::size_t chosen = 0;
-  while (chosen + 1 < fit.candidates.size() && fit.candidates[chosen].stats.r < options.min_r) {
-    ++chosen;
-  }
-  const bool thesis_rule_met = fit.candidates[chosen].stats.r >= options.min_r;
-  const std::size_t thesis_choice = chosen;
-  if (!thesis_rule_met) {
-    // No order reaches the threshold: take the best held-out error instead.
-    for (std::size_t k = 0; k < fit.candidates.size(); ++k) {
-      if (fit.candidates[k].stats.heldout_mae_mm < fit.candidates[chosen].stats.heldout_mae_mm) {
-        chosen = k;
-      }
-    }
-  } else {
-    auto worth_it = [&](const OrderCandidate& now, const OrderCandidate& next) {
-      const double gain = now.stats.heldout_mae_mm - next.stats.heldout_mae_mm;
-      return gain > options.min_heldout_gain * now.stats.heldout_mae_mm &&
-             gain > options.min_heldout_gain_mm;
-    };
-    while (chosen + 1 < fit.candidates.size() &&
-           worth_it(fit.candidates[chosen], fit.candidates[chosen + 1])) {
-      ++chosen;
-    }
-  }
-  const OrderCandidate& best = fit.candidates[chosen];
-  if (!thesis_rule_met) {
-    fit.selection = fmt::format(
-        "no order up to {} reaches r >= {} (best r = {:.4f}); order {} has the lowest held-out "
-        "MAE",
-        fit.candidates.back().order, options.min_r, fit.candidates.back().stats.r, best.order);
-  } else if (chosen == thesis_choice) {
-    fit.selection = fmt::format(
-        "order {} is the lowest with r >= {} (r = {:.4f}); order {} would not cut the held-out "
-        "MAE by {:.0f} %",
-        best.order, options.min_r, best.stats.r, best.order + 1, options.min_heldout_gain * 100);
-  } else {
-    fit.selection = fmt::format(
-        "order {} reaches r >= {}; held-out MAE kept falling by more than {:.0f} % per order up "
-        "to order {}",
-        fit.candidates[thesis_choice].order, options.min_r, options.min_heldout_gain * 100,
-        best.order);
-  }
-  fit.model = RegressionModel(best.order, s, coefficients_by_order[chosen]);
+  const OrderChoice choice = choose_order(fit.candidates, options);
+  const OrderCandidate& best = fit.candidates[choice.chosen];
+  fit.selection = selection_reason(fit.candidates, choice, options);
+  fit.model = RegressionModel(best.order, context.s, coefficients_by_order[choice.chosen]);
   fit.stats = best.stats;
   return fit;
 }

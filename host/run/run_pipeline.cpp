@@ -8,6 +8,11 @@
 #include <deque>
 #include <fstream>
 #include <iterator>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "calibration.h"
 #include "filter_engine.h"
@@ -99,186 +104,289 @@ void format_row(fmt::memory_buffer& buffer, double t, const double* raw, double 
   buffer.push_back('\n');
 }
 
-}  // namespace
+// Rows wait in a block for the engine; everything after the filter runs once it returns.
+constexpr std::size_t kBlock = 4096;
 
-RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
-  const Calibration calibration = load_calibration(options.calibration);
+struct PendingRow {
+  RecordingRow row;
+  std::string flags;
+  double raw_mm = 0.0;
+};
+
+void add_flag(std::string& flags, const char* name) {
+  flags += flags.empty() ? name : std::string("|") + name;
+}
+
+// The coefficient file's float design and core format; its errors are bad input.
+struct FilterFile {
   model::FloatDesign design;
   model::CoreConfig core;
+};
+
+FilterFile load_filter_file(const std::string& coeffs) {
+  FilterFile file;
   try {
-    design = model::load_float_design(options.coeffs);
-    core = model::load_core_config(options.coeffs);
+    file.design = model::load_float_design(coeffs);
+    file.core = model::load_core_config(coeffs);
   } catch (const model::FilterJsonError& error) {
     throw InputError(error.what());
   }
-  std::unique_ptr<FilterEngine> engine;
+  return file;
+}
+
+std::unique_ptr<FilterEngine> load_engine(const RunOptions& options) {
   try {
-    engine = make_filter_engine(options.engine, options.coeffs);
+    return make_filter_engine(options.engine, options.coeffs);
   } catch (const std::invalid_argument& error) {
     throw InputError(error.what());
   }
-  ThresholdStage thresholds(options.thresholds);
-  const SampleScaling scaling{core.sample_width};
+}
 
-  RunSummary summary;
-  summary.engine = engine->name();
-  summary.fs_hz = design.fs_hz;
-  const double delay = dc_group_delay_samples(design);
-  summary.delay_samples = static_cast<int>(std::lround(delay));
-  summary.group_delay_s = delay / design.fs_hz;
-  summary.settle_samples = settle_samples(design);
-  if (trace != nullptr) {
-    trace->spectrum_raw.emplace(256, design.fs_hz);
-    trace->spectrum_filt.emplace(256, design.fs_hz);
+// What the errors of one row were measured against.
+struct References {
+  std::optional<double> reference;  // the row's own; none for a bad row or an unknown one
+  double aligned = 0.0;             // the one delay_samples earlier; NaN when there is none
+  bool settled = false;             // past the filter's start-up transient
+};
+
+// One run through the chain: its stages, the output file, the summary, and the bookkeeping
+// that carries over from row to row and block to block.
+class Pipeline {
+ public:
+  // Loads the calibration, the filter and the engine, and opens the output CSV.
+  Pipeline(const RunOptions& options, RunTrace* trace);
+
+  // Calibrates one row and queues it for the engine; a full block goes through at once.
+  void add(RecordingRow row);
+  // Filters what is still queued and completes the summary.
+  RunSummary finish(std::size_t rows_read);
+
+ private:
+  void start_summary();
+  void open_output_csv();
+  void flag_bad_row(const RecordingRow& row, PendingRow& p);
+  void check_sample_rate(const RecordingRow& row);
+  void convert_to_sample(const RecordingRow& row, PendingRow& p);
+  void finish_block();
+  void finish_row(PendingRow& p, const EngineOutput& output);
+  ThresholdOutput raise_alarms(double t_s, double filt_mm);
+  References add_errors(const PendingRow& p, double filt_mm);
+  void add_to_trace(const PendingRow& p, double filt_mm, const References& references);
+
+  const RunOptions& options_;
+  RunTrace* const trace_;
+  const Calibration calibration_;
+  const FilterFile filter_;
+  const std::unique_ptr<FilterEngine> engine_;
+  ThresholdStage thresholds_;
+  const SampleScaling scaling_;
+
+  RunSummary summary_;
+  std::ofstream out_;
+  fmt::memory_buffer out_buffer_;
+  std::deque<std::optional<double>> recent_reference_;  // for delay-aligned errors
+  EngineSample last_input_;
+  std::optional<double> previous_t_;
+  std::string previous_run_;
+  bool rate_checked_ = false;
+  AlarmLevel final_level_ = AlarmLevel::kNone;
+  std::uint64_t rows_done_ = 0;
+
+  std::vector<PendingRow> pending_;
+  std::vector<EngineSample> inputs_;
+  std::vector<EngineOutput> outputs_;
+};
+
+Pipeline::Pipeline(const RunOptions& options, RunTrace* trace)
+    : options_(options),
+      trace_(trace),
+      calibration_(load_calibration(options.calibration)),
+      filter_(load_filter_file(options.coeffs)),
+      engine_(load_engine(options)),
+      thresholds_(options.thresholds),
+      scaling_{filter_.core.sample_width},
+      last_input_{scaling_.to_unit(SampleScaling::kCenterMm), 0} {
+  start_summary();
+  if (trace_ != nullptr) {
+    trace_->spectrum_raw.emplace(256, filter_.design.fs_hz);
+    trace_->spectrum_filt.emplace(256, filter_.design.fs_hz);
   }
+  open_output_csv();
+  pending_.reserve(kBlock);
+  inputs_.reserve(kBlock);
+}
 
-  std::ofstream out;
-  if (options.out_csv) {
-    out.open(*options.out_csv, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write " + *options.out_csv);
-    out << "t_s,clearance_raw_mm,clearance_filt_mm,flange_mm,alarm,flags\n";
+void Pipeline::start_summary() {
+  summary_.engine = engine_->name();
+  summary_.fs_hz = filter_.design.fs_hz;
+  const double delay = dc_group_delay_samples(filter_.design);
+  summary_.delay_samples = static_cast<int>(std::lround(delay));
+  summary_.group_delay_s = delay / filter_.design.fs_hz;
+  summary_.settle_samples = settle_samples(filter_.design);
+}
+
+void Pipeline::open_output_csv() {
+  if (!options_.out_csv) return;
+  out_.open(*options_.out_csv, std::ios::binary);
+  if (!out_) throw std::runtime_error("cannot write " + *options_.out_csv);
+  out_ << "t_s,clearance_raw_mm,clearance_filt_mm,flange_mm,alarm,flags\n";
+}
+
+void Pipeline::add(RecordingRow row) {
+  PendingRow p;
+  if (!row.problem.empty()) {
+    flag_bad_row(row, p);
+  } else {
+    check_sample_rate(row);
+    convert_to_sample(row, p);
   }
+  p.row = std::move(row);
+  pending_.push_back(std::move(p));
+  inputs_.push_back(last_input_);
+  if (pending_.size() == kBlock) finish_block();
+}
 
+// Lenient: the filter holds its last valid input, so its timing stays intact.
+void Pipeline::flag_bad_row(const RecordingRow& row, PendingRow& p) {
+  add_flag(p.flags, "bad_row");
+  ++summary_.bad_rows;
+  if (summary_.bad_row_messages.size() < 5) {
+    summary_.bad_row_messages.push_back(
+        fmt::format("{}:{}: {}", options_.input, row.line, row.problem));
+  }
+}
+
+// The filter was designed for fs: a recording at another rate would move its cut-off.
+void Pipeline::check_sample_rate(const RecordingRow& row) {
+  if (previous_t_ && row.run == previous_run_ && !rate_checked_) {
+    const double dt = row.t_s - *previous_t_;
+    if (std::abs(dt * filter_.design.fs_hz - 1.0) > 0.02) {
+      throw InputError(fmt::format(
+          "{}:{}: column t_s: sample interval {:.6g} s does not match the filter's fs = "
+          "{:.6g} Hz ({}); resample the recording or design the filter for {:.6g} Hz",
+          options_.input, row.line, dt, filter_.design.fs_hz, options_.coeffs, 1.0 / dt));
+    }
+    rate_checked_ = true;
+  }
+  previous_t_ = row.t_s;
+  previous_run_ = row.run;
+}
+
+// Voltage and temperature to clearance, then to the engine's input.
+void Pipeline::convert_to_sample(const RecordingRow& row, PendingRow& p) {
+  const Calibration::Estimate estimate = calibration_.estimate(row.voltage_v, row.temp_c);
+  p.raw_mm = estimate.clearance_mm;
+  if (estimate.outside_calibration) {
+    add_flag(p.flags, "outside_calibration");
+    ++summary_.outside_calibration;
+  }
+  bool clipped = false;
+  last_input_.word = scaling_.to_word(p.raw_mm, clipped);
+  last_input_.unit = scaling_.to_unit(p.raw_mm);
+  if (clipped) {
+    add_flag(p.flags, "clipped");
+    ++summary_.clipped_samples;
+  }
+}
+
+void Pipeline::finish_block() {
+  engine_->process(inputs_, outputs_);
+  for (std::size_t k = 0; k < pending_.size(); ++k) finish_row(pending_[k], outputs_[k]);
+  pending_.clear();
+  inputs_.clear();
+  out_.write(out_buffer_.data(), static_cast<std::streamsize>(out_buffer_.size()));
+  out_buffer_.clear();
+}
+
+void Pipeline::finish_row(PendingRow& p, const EngineOutput& output) {
+  const RecordingRow& row = p.row;
+  if (output.saturated) {
+    add_flag(p.flags, "saturated");
+    ++summary_.saturated_outputs;
+  }
+  const double filt_mm = scaling_.unit_to_mm(output.unit);
+  const ThresholdOutput alarm = raise_alarms(row.t_s, filt_mm);
+  if (!p.flags.empty()) ++summary_.rows_flagged;
+  if (out_.is_open()) {
+    format_row(out_buffer_, row.t_s, row.problem.empty() ? &p.raw_mm : nullptr, filt_mm,
+               alarm.flange_mm, alarm_name(alarm.level), p.flags);
+  }
+  const References references = add_errors(p, filt_mm);
+  if (trace_ != nullptr && row.problem.empty()) add_to_trace(p, filt_mm, references);
+}
+
+ThresholdOutput Pipeline::raise_alarms(double t_s, double filt_mm) {
+  const ThresholdOutput alarm = thresholds_.step(t_s, filt_mm);
+  final_level_ = alarm.level;
+  if (alarm.level_changed) {
+    summary_.alarm_events.push_back({t_s, alarm_name(alarm.level)});
+  }
+  if (alarm.wear_step_mm) {
+    summary_.alarm_events.push_back({t_s, fmt::format("wear_step {:.3f} mm", *alarm.wear_step_mm)});
+  }
+  return alarm;
+}
+
+// Errors against the reference: before filtering sample by sample, after filtering against
+// the reference delay_samples earlier (the filter's lag is not an error).
+References Pipeline::add_errors(const PendingRow& p, double filt_mm) {
+  const bool good = p.row.problem.empty();
+  References references;
+  references.reference = good ? p.row.clearance_mm : std::nullopt;
+  recent_reference_.push_back(references.reference);
+  if (recent_reference_.size() > static_cast<std::size_t>(summary_.delay_samples) + 1) {
+    recent_reference_.pop_front();
+  }
+  if (references.reference) {
+    summary_.has_reference = true;
+    summary_.before.add(p.raw_mm - *references.reference);
+  }
+  // NaN when there is no aligned reference (start of the run, or a row without one).
+  references.aligned =
+      recent_reference_.size() == static_cast<std::size_t>(summary_.delay_samples) + 1
+          ? recent_reference_.front().value_or(std::nan(""))
+          : std::nan("");
+  ++rows_done_;
+  references.settled = rows_done_ > summary_.settle_samples;
+  if (!std::isnan(references.aligned) && good && references.settled) {
+    summary_.after.add(filt_mm - references.aligned);
+  }
+  return references;
+}
+
+void Pipeline::add_to_trace(const PendingRow& p, double filt_mm, const References& references) {
+  const RecordingRow& row = p.row;
+  const std::optional<double>& reference = references.reference;
+  const double aligned = references.aligned;
+  trace_->add(row.t_s, p.raw_mm, filt_mm, reference.value_or(std::nan("")), row.temp_c);
+  trace_->spectrum_raw->push(p.raw_mm);
+  trace_->spectrum_filt->push(filt_mm);
+  if (reference) {
+    trace_->region_before[static_cast<std::size_t>(region_index(*reference, row.temp_c))].add(
+        p.raw_mm - *reference);
+  }
+  if (!std::isnan(aligned) && references.settled) {
+    trace_->region_after[static_cast<std::size_t>(region_index(aligned, row.temp_c))].add(filt_mm -
+                                                                                          aligned);
+  }
+}
+
+RunSummary Pipeline::finish(std::size_t rows_read) {
+  if (!pending_.empty()) finish_block();
+  summary_.rows_read = rows_read;
+  summary_.rtl_mismatches = engine_->mismatches();
+  summary_.final_alarm = alarm_name(final_level_);
+  if (out_.is_open() && !out_) throw std::runtime_error("cannot write " + *options_.out_csv);
+  return std::move(summary_);
+}
+
+}  // namespace
+
+RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
+  Pipeline pipeline(options, trace);
   RecordingReader reader(options.input, options.lenient);
-  std::deque<std::optional<double>> recent_reference;  // for delay-aligned errors
-  EngineSample last_input{scaling.to_unit(SampleScaling::kCenterMm), 0};
-  std::optional<double> previous_t;
-  std::string previous_run;
-  bool rate_checked = false;
-  AlarmLevel final_level = AlarmLevel::kNone;
-  std::uint64_t rows_done = 0;
-
-  // Rows wait in a block for the engine; everything after the filter runs once it returns.
-  struct PendingRow {
-    RecordingRow row;
-    std::string flags;
-    double raw_mm = 0.0;
-  };
-  fmt::memory_buffer out_buffer;
-  constexpr std::size_t kBlock = 4096;
-  std::vector<PendingRow> pending;
-  std::vector<EngineSample> inputs;
-  std::vector<EngineOutput> outputs;
-  pending.reserve(kBlock);
-  inputs.reserve(kBlock);
-
-  auto add_flag = [](std::string& flags, const char* name) {
-    flags += flags.empty() ? name : std::string("|") + name;
-  };
-
-  auto finish_block = [&]() {
-    engine->process(inputs, outputs);
-    for (std::size_t k = 0; k < pending.size(); ++k) {
-      PendingRow& p = pending[k];
-      const RecordingRow& row = p.row;
-      if (outputs[k].saturated) {
-        add_flag(p.flags, "saturated");
-        ++summary.saturated_outputs;
-      }
-      const double filt_mm = scaling.unit_to_mm(outputs[k].unit);
-      const ThresholdOutput alarm = thresholds.step(row.t_s, filt_mm);
-      final_level = alarm.level;
-      if (alarm.level_changed) {
-        summary.alarm_events.push_back({row.t_s, alarm_name(alarm.level)});
-      }
-      if (alarm.wear_step_mm) {
-        summary.alarm_events.push_back(
-            {row.t_s, fmt::format("wear_step {:.3f} mm", *alarm.wear_step_mm)});
-      }
-      if (!p.flags.empty()) ++summary.rows_flagged;
-      if (out.is_open()) {
-        format_row(out_buffer, row.t_s, row.problem.empty() ? &p.raw_mm : nullptr, filt_mm,
-                   alarm.flange_mm, alarm_name(alarm.level), p.flags);
-      }
-      // Errors against the reference: before filtering sample by sample, after filtering
-      // against the reference delay_samples earlier (the filter's lag is not an error).
-      const bool good = row.problem.empty();
-      const std::optional<double> reference = good ? row.clearance_mm : std::nullopt;
-      recent_reference.push_back(reference);
-      if (recent_reference.size() > static_cast<std::size_t>(summary.delay_samples) + 1) {
-        recent_reference.pop_front();
-      }
-      if (reference) {
-        summary.has_reference = true;
-        summary.before.add(p.raw_mm - *reference);
-      }
-      // NaN when there is no aligned reference (start of the run, or a row without one).
-      const double aligned =
-          recent_reference.size() == static_cast<std::size_t>(summary.delay_samples) + 1
-              ? recent_reference.front().value_or(std::nan(""))
-              : std::nan("");
-      ++rows_done;
-      const bool settled = rows_done > summary.settle_samples;
-      if (!std::isnan(aligned) && good && settled) summary.after.add(filt_mm - aligned);
-      if (trace != nullptr && good) {
-        trace->add(row.t_s, p.raw_mm, filt_mm, reference.value_or(std::nan("")), row.temp_c);
-        trace->spectrum_raw->push(p.raw_mm);
-        trace->spectrum_filt->push(filt_mm);
-        if (reference) {
-          trace->region_before[static_cast<std::size_t>(region_index(*reference, row.temp_c))].add(
-              p.raw_mm - *reference);
-        }
-        if (!std::isnan(aligned) && settled) {
-          trace->region_after[static_cast<std::size_t>(region_index(aligned, row.temp_c))].add(
-              filt_mm - aligned);
-        }
-      }
-    }
-    pending.clear();
-    inputs.clear();
-    out.write(out_buffer.data(), static_cast<std::streamsize>(out_buffer.size()));
-    out_buffer.clear();
-  };
-
-  while (std::optional<RecordingRow> row = reader.next()) {
-    PendingRow p;
-    if (!row->problem.empty()) {
-      // Lenient: the filter holds its last valid input, so its timing stays intact.
-      add_flag(p.flags, "bad_row");
-      ++summary.bad_rows;
-      if (summary.bad_row_messages.size() < 5) {
-        summary.bad_row_messages.push_back(
-            fmt::format("{}:{}: {}", options.input, row->line, row->problem));
-      }
-    } else {
-      // The filter was designed for fs: a recording at another rate would move its cut-off.
-      if (previous_t && row->run == previous_run && !rate_checked) {
-        const double dt = row->t_s - *previous_t;
-        if (std::abs(dt * design.fs_hz - 1.0) > 0.02) {
-          throw InputError(fmt::format(
-              "{}:{}: column t_s: sample interval {:.6g} s does not match the filter's fs = "
-              "{:.6g} Hz ({}); resample the recording or design the filter for {:.6g} Hz",
-              options.input, row->line, dt, design.fs_hz, options.coeffs, 1.0 / dt));
-        }
-        rate_checked = true;
-      }
-      previous_t = row->t_s;
-      previous_run = row->run;
-      const Calibration::Estimate estimate = calibration.estimate(row->voltage_v, row->temp_c);
-      p.raw_mm = estimate.clearance_mm;
-      if (estimate.outside_calibration) {
-        add_flag(p.flags, "outside_calibration");
-        ++summary.outside_calibration;
-      }
-      bool clipped = false;
-      last_input.word = scaling.to_word(p.raw_mm, clipped);
-      last_input.unit = scaling.to_unit(p.raw_mm);
-      if (clipped) {
-        add_flag(p.flags, "clipped");
-        ++summary.clipped_samples;
-      }
-    }
-    p.row = std::move(*row);
-    pending.push_back(std::move(p));
-    inputs.push_back(last_input);
-    if (pending.size() == kBlock) finish_block();
-  }
-  if (!pending.empty()) finish_block();
-  summary.rows_read = reader.rows_read();
-  summary.rtl_mismatches = engine->mismatches();
-  summary.final_alarm = alarm_name(final_level);
-  if (out.is_open() && !out) throw std::runtime_error("cannot write " + *options.out_csv);
-  return summary;
+  while (std::optional<RecordingRow> row = reader.next()) pipeline.add(std::move(*row));
+  return pipeline.finish(reader.rows_read());
 }
 
 }  // namespace flange::host

@@ -65,23 +65,38 @@ std::string format_sim_time(double seconds) {
   return fmt::format("{:.3f} us", seconds * 1e6);
 }
 
-int run_bench(const BenchOptions& options, const std::string& reproduce) {
-  const flange::tb::BuiltCoeffSet& set = flange::tb::built_coeff_set();
-  const flange::model::CoreConfig config = flange::model::load_core_config(set.filter_json);
-  const flange::model::FloatDesign design = flange::model::load_float_design(set.filter_json);
-  const flange::model::IirCore timing_model(config);  // only asked for its timing
-  const auto cycles_per_sample = static_cast<std::uint64_t>(timing_model.cycles_per_sample());
-  const auto latency = static_cast<std::uint64_t>(timing_model.latency_cycles());
+// The core's cycles per sample and latency, and the sample period in clock cycles: the true
+// one (100 MHz / fs) or a compressed one.
+struct BenchTiming {
+  std::uint64_t cycles_per_sample = 0;
+  std::uint64_t latency = 0;
+  std::uint64_t true_period_cycles = 0;
+  std::uint64_t period = 0;
+  double compression = 0.0;  // true period over the period used
+};
 
-  const auto true_period_cycles = static_cast<std::uint64_t>(std::llround(kClockHz / design.fs_hz));
-  const std::uint64_t period = options.true_period ? true_period_cycles : options.period_cycles;
-  if (period < cycles_per_sample) {
+BenchTiming bench_timing(const BenchOptions& options, const flange::model::CoreConfig& config,
+                         const flange::model::FloatDesign& design) {
+  const flange::model::IirCore timing_model(config);  // only asked for its timing
+  BenchTiming timing;
+  timing.cycles_per_sample = static_cast<std::uint64_t>(timing_model.cycles_per_sample());
+  timing.latency = static_cast<std::uint64_t>(timing_model.latency_cycles());
+  timing.true_period_cycles = static_cast<std::uint64_t>(std::llround(kClockHz / design.fs_hz));
+  timing.period = options.true_period ? timing.true_period_cycles : options.period_cycles;
+  if (timing.period < timing.cycles_per_sample) {
     throw std::invalid_argument(
         fmt::format("--period-cycles: must be at least the core's {} cycles per sample, got {}",
-                    cycles_per_sample, period));
+                    timing.cycles_per_sample, timing.period));
   }
-  const double compression = static_cast<double>(true_period_cycles) / static_cast<double>(period);
+  timing.compression =
+      static_cast<double>(timing.true_period_cycles) / static_cast<double>(timing.period);
+  return timing;
+}
 
+sc::SampleSchedule sample_schedule(const BenchOptions& options,
+                                   const flange::tb::BuiltCoeffSet& set,
+                                   const flange::model::CoreConfig& config,
+                                   const flange::model::FloatDesign& design, std::uint64_t period) {
   flange::tb::CosimOptions stimulus_options;
   stimulus_options.coeffs = set.filter_json;
   stimulus_options.samples = options.samples;
@@ -91,39 +106,67 @@ int run_bench(const BenchOptions& options, const std::string& reproduce) {
   schedule.samples = flange::tb::cosim_samples(stimulus_options, config, design);
   schedule.sample_width = config.sample_width;
   schedule.period_cycles = period;
+  return schedule;
+}
 
+sc::PlantedFault planted_fault(const BenchOptions& options) {
   sc::PlantedFault fault;
   if (options.plant_fault == "value") fault.kind = sc::PlantedFault::Kind::kWrongValue;
   if (options.plant_fault == "late") fault.kind = sc::PlantedFault::Kind::kOneCycleLate;
   fault.output_index = options.plant_at;
+  return fault;
+}
 
-  // An RTL assertion is counted and reported here, not a process abort.
-  Verilated::threadContextp()->fatalOnError(false);
-  if (!options.trace.empty()) Verilated::traceEverOn(true);
+// The signals and modules of the bench, wired: source -> dut -> monitor, and both ends into the
+// scoreboard. Members are constructed in the order they are declared.
+struct Bench {
+  Bench(const sc::SampleSchedule& schedule, const flange::model::CoreConfig& config,
+        const sc_core::sc_time& clock_period, const sc::PlantedFault& fault);
 
-  const sc_core::sc_time clock_period(kClockPeriodNs, sc_core::SC_NS);
-  sc_core::sc_clock clk("clk", clock_period);  // first rising edge at time 0
-  sc_core::sc_signal<bool> rst_n("rst_n", false);
-  sc_core::sc_signal<std::uint32_t> sample_in("sample_in");
-  sc_core::sc_signal<bool> sample_valid_in("sample_valid_in", false);
-  sc_core::sc_signal<bool> flag_clear("flag_clear", false);  // never raised: flags stay sticky
-  sc_core::sc_signal<std::uint32_t> sample_out("sample_out");
-  sc_core::sc_signal<bool> sample_valid_out("sample_valid_out");
-  sc_core::sc_signal<bool> busy("busy");
-  sc_core::sc_signal<bool> overrun("overrun");
-  sc_core::sc_signal<bool> saturation("saturation");
+  sc_core::sc_clock clk;  // first rising edge at time 0
+  sc_core::sc_signal<bool> rst_n;
+  sc_core::sc_signal<std::uint32_t> sample_in;
+  sc_core::sc_signal<bool> sample_valid_in;
+  sc_core::sc_signal<bool> flag_clear;  // never raised: flags stay sticky
+  sc_core::sc_signal<std::uint32_t> sample_out;
+  sc_core::sc_signal<bool> sample_valid_out;
+  sc_core::sc_signal<bool> busy;
+  sc_core::sc_signal<bool> overrun;
+  sc_core::sc_signal<bool> saturation;
   // Deep enough for a sample period: the scoreboard empties both every delta cycle.
-  sc_core::sc_fifo<sc::InputRecord> applied("applied", 16);
-  sc_core::sc_fifo<sc::OutputRecord> observed("observed", 16);
+  sc_core::sc_fifo<sc::InputRecord> applied;
+  sc_core::sc_fifo<sc::OutputRecord> observed;
 
-  sc::SampleSource source("source", schedule);
+  sc::SampleSource source;
+  const std::unique_ptr<Viir_core> dut;
+  sc::OutputMonitor monitor;
+  sc::Scoreboard scoreboard;
+};
+
+Bench::Bench(const sc::SampleSchedule& schedule, const flange::model::CoreConfig& config,
+             const sc_core::sc_time& clock_period, const sc::PlantedFault& fault)
+    : clk("clk", clock_period),
+      rst_n("rst_n", false),
+      sample_in("sample_in"),
+      sample_valid_in("sample_valid_in", false),
+      flag_clear("flag_clear", false),
+      sample_out("sample_out"),
+      sample_valid_out("sample_valid_out"),
+      busy("busy"),
+      overrun("overrun"),
+      saturation("saturation"),
+      applied("applied", 16),
+      observed("observed", 16),
+      source("source", schedule),
+      dut(std::make_unique<Viir_core>("dut")),
+      monitor("monitor", config.sample_width, clock_period, fault),
+      scoreboard("scoreboard", config, clock_period) {
   source.clk(clk);
   source.rst_n(rst_n);
   source.sample(sample_in);
   source.sample_valid(sample_valid_in);
   source.applied(applied);
 
-  const auto dut = std::make_unique<Viir_core>("dut");
   dut->clk_i(clk);
   dut->rst_ni(rst_n);
   dut->sample_i(sample_in);
@@ -135,7 +178,6 @@ int run_bench(const BenchOptions& options, const std::string& reproduce) {
   dut->overrun_o(overrun);
   dut->saturation_o(saturation);
 
-  sc::OutputMonitor monitor("monitor", config.sample_width, clock_period, fault);
   monitor.clk(clk);
   monitor.sample(sample_out);
   monitor.sample_valid(sample_valid_out);
@@ -144,50 +186,49 @@ int run_bench(const BenchOptions& options, const std::string& reproduce) {
   monitor.saturation(saturation);
   monitor.observed(observed);
 
-  sc::Scoreboard scoreboard("scoreboard", config, clock_period);
   scoreboard.applied(applied);
   scoreboard.observed(observed);
+}
 
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);  // elaborate: a trace can only open after it
-  std::unique_ptr<VerilatedFstSc> trace;
-  if (!options.trace.empty()) {
-    if (options.trace.has_parent_path()) {
-      std::filesystem::create_directories(options.trace.parent_path());
-    }
-    trace = std::make_unique<VerilatedFstSc>();
-    dut->trace(trace.get(), 99);
-    trace->open(options.trace.string().c_str());
-  }
+// After elaboration; nullptr when no trace was asked for.
+std::unique_ptr<VerilatedFstSc> open_trace(const std::filesystem::path& path, Viir_core& dut) {
+  if (path.empty()) return nullptr;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  auto trace = std::make_unique<VerilatedFstSc>();
+  dut.trace(trace.get(), 99);
+  trace->open(path.string().c_str());
+  return trace;
+}
 
-  const std::uint64_t end_cycle = schedule.last_strobe_cycle() + latency + kTailCycles;
-  const sc_core::sc_time end = clock_period * static_cast<double>(end_cycle);
+// Simulates up to `end`; returns the wall-clock seconds it took.
+double simulate_until(const sc_core::sc_time& end) {
   const auto wall_start = std::chrono::steady_clock::now();
   sc_core::sc_start(end - sc_core::sc_time_stamp());
-  const double wall_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  dut->final();
-  if (trace) trace->close();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+}
 
-  const sc::ScoreboardSummary summary = scoreboard.finish(sc_core::sc_time_stamp());
-  const bool rtl_assertion = Verilated::threadContextp()->gotError();
+std::vector<std::string> bench_failures(const sc::ScoreboardSummary& summary, bool rtl_assertion,
+                                        bool source_done, std::size_t samples,
+                                        std::uint64_t latency) {
   std::vector<std::string> failures;
   if (!summary.first_mismatch.empty()) {
     failures.push_back("first mismatch: " + summary.first_mismatch);
   }
   if (rtl_assertion) failures.push_back("an RTL assertion fired (see above)");
-  if (!source.done()) failures.push_back("the run ended before every sample was strobed");
-  if (summary.outputs_checked != schedule.samples.size()) {
-    failures.push_back(
-        fmt::format("{} outputs for {} samples", summary.outputs_checked, schedule.samples.size()));
+  if (!source_done) failures.push_back("the run ended before every sample was strobed");
+  if (summary.outputs_checked != samples) {
+    failures.push_back(fmt::format("{} outputs for {} samples", summary.outputs_checked, samples));
   }
   if (summary.min_latency_cycles != latency || summary.max_latency_cycles != latency) {
     failures.push_back(fmt::format("latency {}..{} cycles, the model's is {}",
                                    summary.min_latency_cycles, summary.max_latency_cycles,
                                    latency));
   }
-  for (const std::string& failure : failures) std::cerr << "systemc: " << failure << "\n";
-  if (!failures.empty()) std::cerr << "systemc: reproduce with: " << reproduce << "\n";
+  return failures;
+}
 
+void print_summary_line(const std::string& set_name, const sc::ScoreboardSummary& summary,
+                        const BenchTiming& timing, double fs_hz, double wall_s) {
   const std::string latency_text =
       summary.min_latency_cycles == summary.max_latency_cycles
           ? fmt::format("{}", summary.min_latency_cycles)
@@ -196,9 +237,40 @@ int run_bench(const BenchOptions& options, const std::string& reproduce) {
       "systemc: {}: {} samples, {} mismatches, latency {} cycles (model {}), {} simulated at "
       "100 MHz, sample period {} cycles (true period {} cycles at {:g} Hz: time compressed "
       "{:.0f}x), {:.2f} s wall\n",
-      set.name, summary.outputs_checked, summary.mismatches, latency_text, latency,
-      format_sim_time(sc_core::sc_time_stamp().to_seconds()), period, true_period_cycles,
-      design.fs_hz, compression, wall_s);
+      set_name, summary.outputs_checked, summary.mismatches, latency_text, timing.latency,
+      format_sim_time(sc_core::sc_time_stamp().to_seconds()), timing.period,
+      timing.true_period_cycles, fs_hz, timing.compression, wall_s);
+}
+
+int run_bench(const BenchOptions& options, const std::string& reproduce) {
+  const flange::tb::BuiltCoeffSet& set = flange::tb::built_coeff_set();
+  const flange::model::CoreConfig config = flange::model::load_core_config(set.filter_json);
+  const flange::model::FloatDesign design = flange::model::load_float_design(set.filter_json);
+  const BenchTiming timing = bench_timing(options, config, design);
+  const sc::SampleSchedule schedule = sample_schedule(options, set, config, design, timing.period);
+  const sc::PlantedFault fault = planted_fault(options);
+
+  // An RTL assertion is counted and reported here, not a process abort.
+  Verilated::threadContextp()->fatalOnError(false);
+  if (!options.trace.empty()) Verilated::traceEverOn(true);
+
+  const sc_core::sc_time clock_period(kClockPeriodNs, sc_core::SC_NS);
+  Bench bench(schedule, config, clock_period, fault);
+  sc_core::sc_start(sc_core::SC_ZERO_TIME);  // elaborate: a trace can only open after it
+  const std::unique_ptr<VerilatedFstSc> trace = open_trace(options.trace, *bench.dut);
+
+  const std::uint64_t end_cycle = schedule.last_strobe_cycle() + timing.latency + kTailCycles;
+  const double wall_s = simulate_until(clock_period * static_cast<double>(end_cycle));
+  bench.dut->final();
+  if (trace) trace->close();
+
+  const sc::ScoreboardSummary summary = bench.scoreboard.finish(sc_core::sc_time_stamp());
+  const bool rtl_assertion = Verilated::threadContextp()->gotError();
+  const std::vector<std::string> failures = bench_failures(
+      summary, rtl_assertion, bench.source.done(), schedule.samples.size(), timing.latency);
+  for (const std::string& failure : failures) std::cerr << "systemc: " << failure << "\n";
+  if (!failures.empty()) std::cerr << "systemc: reproduce with: " << reproduce << "\n";
+  print_summary_line(set.name, summary, timing, design.fs_hz, wall_s);
   return failures.empty() ? 0 : 1;
 }
 
