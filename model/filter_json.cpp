@@ -234,4 +234,16 @@ FloatDesign load_float_design(const std::filesystem::path& filter_json) {
   }
 }
 
+double dc_group_delay_samples(const FloatDesign& design) {
+  double delay = 0.0;
+  for (const auto& row : design.sos) {
+    auto centroid = [](double c0, double c1, double c2) {
+      const double sum = c0 + c1 + c2;
+      return sum == 0.0 ? 0.0 : (c1 + 2.0 * c2) / sum;
+    };
+    delay += centroid(row[0], row[1], row[2]) - centroid(row[3], row[4], row[5]);
+  }
+  return delay;
+}
+
 }  // namespace flange::model

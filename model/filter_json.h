@@ -53,6 +53,10 @@ struct FloatDesign {
 CoreConfig load_core_config(const std::filesystem::path& filter_json);
 FloatDesign load_float_design(const std::filesystem::path& filter_json);
 
+// Group delay at DC in samples of the design's sections: sum n c_n / sum c_n of each numerator
+// minus its denominator's, summed (what the host uses to align a filtered trace with its input).
+double dc_group_delay_samples(const FloatDesign& design);
+
 // Throws std::invalid_argument (one line naming the field) when `config` breaks the contract.
 void validate_core_config(const CoreConfig& config);
 

@@ -50,18 +50,6 @@ double gain_db(const model::FloatDesign& design, double f_hz) {
   return 20.0 * std::log10(std::abs(h));
 }
 
-double dc_delay_s(const model::FloatDesign& design) {
-  double delay = 0.0;
-  for (const auto& row : design.sos) {
-    auto centroid = [](double c0, double c1, double c2) {
-      const double sum = c0 + c1 + c2;
-      return sum == 0.0 ? 0.0 : (c1 + 2.0 * c2) / sum;
-    };
-    delay += centroid(row[0], row[1], row[2]) - centroid(row[3], row[4], row[5]);
-  }
-  return delay / design.fs_hz;
-}
-
 }  // namespace
 
 AliasAnalysis analyse_aliasing(const AliasAnalysisInput& input) {
@@ -132,8 +120,11 @@ AliasAnalysis analyse_aliasing(const AliasAnalysisInput& input) {
   std::vector<double> t_slow, y_slow, t_fast, y_fast;
   read_run_output(input.slow_output, t_slow, y_slow);
   read_run_output(input.fast_output, t_fast, y_fast);
-  result.slow_rms_mm = rms_against_truth(t_slow, y_slow, dc_delay_s(slow_design), 1);
-  result.fast_rms_mm = rms_against_truth(t_fast, y_fast, dc_delay_s(fast_design), input.decimation);
+  result.slow_rms_mm = rms_against_truth(
+      t_slow, y_slow, model::dc_group_delay_samples(slow_design) / slow_design.fs_hz, 1);
+  result.fast_rms_mm = rms_against_truth(
+      t_fast, y_fast, model::dc_group_delay_samples(fast_design) / fast_design.fs_hz,
+      input.decimation);
   return result;
 }
 

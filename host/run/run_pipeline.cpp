@@ -52,19 +52,6 @@ void RunTrace::add(double t, double raw, double filt, double reference, double t
 
 namespace {
 
-// Group delay at DC of b/a: sum n c_n / sum c_n of the numerator minus the denominator's.
-double dc_group_delay_samples(const model::FloatDesign& design) {
-  double delay = 0.0;
-  for (const auto& row : design.sos) {
-    auto centroid = [](double c0, double c1, double c2) {
-      const double sum = c0 + c1 + c2;
-      return sum == 0.0 ? 0.0 : (c1 + 2.0 * c2) / sum;
-    };
-    delay += centroid(row[0], row[1], row[2]) - centroid(row[3], row[4], row[5]);
-  }
-  return delay;
-}
-
 // Samples until the slowest pole has decayed to 1 %: the start-up transient from the core's
 // zero state, left out of the after-filtering errors.
 std::uint64_t settle_samples(const model::FloatDesign& design) {
@@ -219,7 +206,7 @@ Pipeline::Pipeline(const RunOptions& options, RunTrace* trace)
 void Pipeline::start_summary() {
   summary_.engine = engine_->name();
   summary_.fs_hz = filter_.design.fs_hz;
-  const double delay = dc_group_delay_samples(filter_.design);
+  const double delay = model::dc_group_delay_samples(filter_.design);
   summary_.delay_samples = static_cast<int>(std::lround(delay));
   summary_.group_delay_s = delay / filter_.design.fs_hz;
   summary_.settle_samples = settle_samples(filter_.design);

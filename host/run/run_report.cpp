@@ -58,8 +58,8 @@ namespace {
 
 void plot_traces(const std::filesystem::path& dir, const RunTrace& trace) {
   std::string script = coeffs::gnuplot_svg_terminal(dir / "traces.svg", 1000, 500);
-  script += coeffs::gnuplot_data_block("trace",
-                       {trace.t_s, trace.raw_mm, trace.filt_mm, trace.reference_mm, trace.temp_c});
+  script += coeffs::gnuplot_data_block(
+      "trace", {trace.t_s, trace.raw_mm, trace.filt_mm, trace.reference_mm, trace.temp_c});
   script +=
       "set xlabel 'time (s)'\nset ylabel 'clearance (mm)'\nset y2label 'temperature (C)'\n"
       "set y2tics\nset key outside bottom center horizontal\n";
