@@ -7,7 +7,9 @@
 #include <cmath>
 #include <future>
 #include <limits>
+#include <optional>
 #include <random>
+#include <string>
 
 #include "diagnosis_detail.h"
 #include "effect_fit.h"
@@ -364,6 +366,422 @@ void backfit(std::vector<sim::EffectSettings>& modelled, std::size_t first,
   }
 }
 
+// The sample rate the two parts share. Throws InputError for a part that is too short or has
+// unequal columns, and for parts sampled at different rates.
+double shared_sample_rate_hz(const RecordingSeries& calibration, const RecordingSeries& heldout) {
+  check_series(calibration, "calibration");
+  check_series(heldout, "held-out");
+  const double fs_hz = sample_rate_hz(calibration);
+  const double fs_heldout = sample_rate_hz(heldout);
+  if (std::abs(fs_heldout - fs_hz) > 0.01 * fs_hz) {
+    throw InputError(fmt::format(
+        "{}: sample rate {:.6g} Hz differs from {}'s {:.6g} Hz; the held-out recording must be "
+        "sampled at the same rate (within 1 %)",
+        heldout.path.empty() ? "held-out" : heldout.path, fs_heldout,
+        calibration.path.empty() ? "the calibration part" : calibration.path, fs_hz));
+  }
+  return fs_hz;
+}
+
+// The two parts of the data, each with the twin replayed on its inputs.
+struct Parts {
+  const RecordingSeries& calibration;
+  const RecordingSeries& heldout;
+  TwinReplay cal_replay;
+  TwinReplay ho_replay;
+};
+
+// A candidate effect fitted on the calibration part and scored on the held-out part.
+struct Candidate {
+  EffectFit fit;
+  std::vector<sim::EffectSettings> with;  // modelled + the candidate, refitted
+  std::vector<double> heldout_error;      // the held-out gap `with` leaves
+};
+
+// One round of the greedy selection that picked an effect: every candidate it weighed (their
+// held-out gaps are scored again on resamples for the inclusion) and the one it picked.
+struct Step {
+  std::vector<Candidate> candidates;
+  std::size_t chosen = 0;
+};
+
+// What the diagnosis's steps hand on to each other once the nominal twin is replayed.
+struct Selection {
+  std::vector<sim::EffectSettings> modelled;        // the twin's own effects, then the picks
+  std::size_t first_selected = 0;                   // where the picks start in `modelled`
+  std::vector<double> ho_gap;                       // held-out gap of the twin as given
+  std::vector<double> current_error;                // held-out gap `modelled` leaves
+  double sigma = 0.0;                               // the twin's white noise, V (>= 1e-9)
+  std::vector<std::vector<std::size_t>> resamples;  // held-out block-bootstrap index sets
+  std::vector<Step> steps;                          // one per bias-type pick
+  std::vector<EffectFinding> findings;              // in selection order
+};
+
+// The twin's white voltage noise: estimated from the calibration gap, or the twin's own.
+void estimate_noise(const std::vector<double>& cal_gap, const DiagnoseOptions& options,
+                    DiagnosisDetail& detail) {
+  if (options.estimate_noise) {
+    detail.noise_std_v = white_noise_std(cal_gap, kNoiseLag);
+    detail.noise_source =
+        "estimated from the calibration gap: 1.4826 MAD(differences at lag 2) / sqrt(2)";
+  } else {
+    detail.noise_std_v = options.twin.noise.voltage_std_v;
+    detail.noise_source = "given by the twin (noise.voltage_std_v)";
+  }
+}
+
+// The first stage whose gap stands above its noise floor; empty when none does.
+std::string first_significant_stage(const std::vector<StageGap>& stages) {
+  for (const StageGap& stage : stages) {
+    if (stage.significant) return stage.name;
+  }
+  return "";
+}
+
+// The twin as given (options.twin) replayed on both parts: the noise estimate, where the gap
+// lies on the calibration part, and the held-out gap the selection starts from.
+Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options,
+                              DiagnosisResult& result) {
+  Diagnosis& diagnosis = result.diagnosis;
+  DiagnosisDetail& detail = result.detail;
+  Selection selection;
+  selection.modelled = options.twin.effects;
+  const std::vector<double> cal_base = parts.cal_replay.voltage(selection.modelled);
+  const std::vector<double> ho_base = parts.ho_replay.voltage(selection.modelled);
+  const std::vector<double> cal_gap = minus(parts.calibration.voltage_v, cal_base);
+  selection.ho_gap = minus(parts.heldout.voltage_v, ho_base);
+
+  estimate_noise(cal_gap, options, detail);
+  selection.sigma = std::max(detail.noise_std_v, 1e-9);
+  diagnosis.noise_std_v = selection.sigma;
+  locate(parts.calibration, cal_base, detail.fs_hz, options, detail);
+  diagnosis.stage = first_significant_stage(detail.stages);
+  return selection;
+}
+
+// Every bias-type effect of the catalogue not yet modelled, fitted on top of `modelled` and
+// scored on the held-out part, in catalogue order.
+std::vector<Candidate> score_candidates(const Parts& parts,
+                                        const std::vector<sim::EffectSettings>& modelled,
+                                        std::size_t first_selected) {
+  std::vector<std::string> names;
+  for (const sim::EffectSpec& spec : sim::effect_catalogue()) {
+    const bool taken = std::any_of(modelled.begin(), modelled.end(),
+                                   [&](const auto& m) { return m.name == spec.name; });
+    if (fitted_by_bias(spec.name) && !taken) names.push_back(spec.name);
+  }
+  // Candidates are independent of each other: each is fitted in its own thread (the replays
+  // are read-only), and the results are taken in catalogue order, so the outcome does not
+  // depend on the threads.
+  std::vector<std::future<Candidate>> pending;
+  for (const std::string& name : names) {
+    pending.push_back(std::async(std::launch::async, [&, name] {
+      Candidate c;
+      c.fit = fit_effect(name, parts.cal_replay, parts.calibration.voltage_v, modelled);
+      c.with = modelled;
+      c.with.push_back(c.fit.settings);
+      // Each candidate is scored with the effects chosen before it refitted around it.
+      if (c.with.size() > first_selected + 1) {
+        backfit(c.with, first_selected, parts.cal_replay, parts.calibration.voltage_v);
+      }
+      c.heldout_error = minus(parts.heldout.voltage_v, parts.ho_replay.voltage(c.with));
+      return c;
+    }));
+  }
+  std::vector<Candidate> candidates;
+  for (std::size_t i = 0; i < names.size(); ++i) candidates.push_back(pending[i].get());
+  return candidates;
+}
+
+struct Pick {
+  std::size_t best = 0;  // index into the round's candidates
+  double gain = 0.0;     // the held-out mean-square gain, V^2
+  double lower = 0.0;    // its block-bootstrap 5 % quantile, V^2
+};
+
+// The candidate that lowers the held-out mean square most, if the gain is significant: a real
+// share of the noise variance, and its block-bootstrap 95 % lower bound above zero.
+std::optional<Pick> pick_next_effect(const std::vector<Candidate>& candidates,
+                                     const Selection& selection) {
+  const std::vector<double>& current_error = selection.current_error;
+  const double mse_now = rms_of(current_error) * rms_of(current_error);
+  Pick pick;
+  pick.gain = -std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    const double r = rms_of(candidates[c].heldout_error);
+    if (mse_now - r * r > pick.gain) {
+      pick.gain = mse_now - r * r;
+      pick.best = c;
+    }
+  }
+  std::vector<double> gains;
+  for (const auto& set : selection.resamples) {
+    gains.push_back(mean_square_on(current_error, set) -
+                    mean_square_on(candidates[pick.best].heldout_error, set));
+  }
+  pick.lower = quantile(gains, 0.05);
+  const double sigma = selection.sigma;
+  if (pick.gain < kMinGainOfNoiseVariance * sigma * sigma || pick.lower <= 0.0) return std::nullopt;
+  return pick;
+}
+
+// The finding for a picked candidate: its fit and how far it shrinks the held-out gap.
+EffectFinding finding_for_pick(const Candidate& chosen, const Pick& pick,
+                               const std::vector<double>& current_error) {
+  EffectFinding finding;
+  finding.name = chosen.fit.settings.name;
+  finding.params = chosen.fit.settings.params;
+  finding.heldout_rms_before = rms_of(current_error);
+  finding.heldout_rms_after = rms_of(chosen.heldout_error);
+  finding.shrink_pct =
+      100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) / finding.heldout_rms_before;
+  finding.evidence = fmt::format(
+      "fitted on the calibration part (RMS {:.4g} V); on held-out data it lowers the gap's mean "
+      "square by {:.3g} V^2 (bootstrap 95 % lower bound {:.3g})",
+      chosen.fit.rms_v, pick.gain, pick.lower);
+  if (finding.name == "mains_pickup") {
+    finding.noise_type = true;
+    finding.evidence += "; a tone: the mains line aliased by the sampling";
+  }
+  return finding;
+}
+
+// Adds the pick to the model. The earlier findings carry their parameters as refitted with it.
+void take_pick(std::vector<Candidate> candidates, const Pick& pick, Selection& selection) {
+  const Candidate& chosen = candidates[pick.best];
+  const EffectFinding finding = finding_for_pick(chosen, pick, selection.current_error);
+  selection.modelled = chosen.with;
+  selection.current_error = chosen.heldout_error;
+  selection.findings.push_back(finding);
+  for (std::size_t j = 0; j < selection.findings.size(); ++j) {
+    selection.findings[j].params = selection.modelled[selection.first_selected + j].params;
+  }
+  selection.steps.push_back({std::move(candidates), pick.best});
+}
+
+// A deterministic effect in the gap (a mains tone, a lag on the clearance steps) inflates the
+// difference-based noise estimate; estimate it again from what the picks leave, kept if lower.
+void reestimate_noise(const Parts& parts, Selection& selection, DiagnosisResult& result) {
+  const double left = white_noise_std(
+      minus(parts.calibration.voltage_v, parts.cal_replay.voltage(selection.modelled)), kNoiseLag);
+  if (left < selection.sigma) {
+    selection.sigma = std::max(left, 1e-9);
+    result.detail.noise_std_v = selection.sigma;
+    result.diagnosis.noise_std_v = selection.sigma;
+    result.detail.noise_source =
+        "estimated from the calibration gap left by the selected effects: 1.4826 "
+        "MAD(differences at lag 2) / sqrt(2)";
+  }
+}
+
+// Greedy selection of bias-type effects, each scored on the held-out part: at most
+// kMaxSelected, stopping at the first round whose best candidate is not significant.
+void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Selection& selection,
+                         DiagnosisResult& result) {
+  selection.current_error = selection.ho_gap;
+  selection.resamples =
+      block_resamples(parts.heldout.size(), options.bootstrap_rounds, options.seed);
+  selection.first_selected = options.twin.effects.size();
+  for (int round = 0; round < kMaxSelected; ++round) {
+    std::vector<Candidate> candidates =
+        score_candidates(parts, selection.modelled, selection.first_selected);
+    if (candidates.empty()) break;
+    const std::optional<Pick> pick = pick_next_effect(candidates, selection);
+    if (!pick) break;
+    take_pick(std::move(candidates), *pick, selection);
+    if (options.estimate_noise) reestimate_noise(parts, selection, result);
+  }
+}
+
+// The share of `resamples` on which `step`'s choice still wins and gains over `before`.
+double share_of_wins(const Step& step, const std::vector<double>& before,
+                     const std::vector<std::vector<std::size_t>>& resamples) {
+  int wins = 0;
+  for (const auto& set : resamples) {
+    const double base = mean_square_on(before, set);
+    std::size_t arg = 0;
+    double best = -std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < step.candidates.size(); ++c) {
+      const double gain = base - mean_square_on(step.candidates[c].heldout_error, set);
+      if (gain > best) {
+        best = gain;
+        arg = c;
+      }
+    }
+    if (arg == step.chosen && best > 0.0) ++wins;
+  }
+  return static_cast<double>(wins) / static_cast<double>(resamples.size());
+}
+
+// Inclusion: the share of held-out resamples on which each step's choice still wins and gains
+// (the fits are not redone per round: it is the scoring that is resampled).
+void measure_inclusion(Selection& selection) {
+  const std::vector<Step>& steps = selection.steps;
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    const std::vector<double>& before =
+        s == 0 ? selection.ho_gap : steps[s - 1].candidates[steps[s - 1].chosen].heldout_error;
+    selection.findings[s].inclusion = share_of_wins(steps[s], before, selection.resamples);
+  }
+}
+
+// adc_quantization, recognised when every voltage of both parts lies on one LSB grid.
+void recognise_quantization(const Parts& parts, Selection& selection) {
+  const auto cal_grid = find_lsb_grid(parts.calibration.voltage_v);
+  const auto ho_grid = find_lsb_grid(parts.heldout.voltage_v);
+  if (!cal_grid || !ho_grid || *cal_grid != *ho_grid) return;
+  EffectFinding finding;
+  finding.name = "adc_quantization";
+  finding.params = cal_grid->params;
+  finding.noise_type = true;
+  finding.inclusion = 1.0;
+  finding.evidence = fmt::format(
+      "every recorded voltage of both parts lies on a {}-bit grid over [{}, {}] V (LSB {:.4g} "
+      "mV)",
+      cal_grid->params.at("bits"), cal_grid->params.at("v_min"), cal_grid->params.at("v_max"),
+      1e3 * (cal_grid->params.at("v_max") - cal_grid->params.at("v_min")) /
+          std::ldexp(1.0, static_cast<int>(cal_grid->params.at("bits"))));
+  std::vector<sim::EffectSettings> with = selection.modelled;
+  with.push_back(*cal_grid);
+  finding.heldout_rms_before = rms_of(selection.current_error);
+  selection.current_error = minus(parts.heldout.voltage_v, parts.ho_replay.voltage(with));
+  finding.heldout_rms_after = rms_of(selection.current_error);
+  finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
+                       std::max(finding.heldout_rms_before, 1e-30);
+  selection.modelled = with;
+  selection.findings.push_back(finding);
+}
+
+// The share of `resamples` of the held-out gap on which the vibration signature still shows.
+double vibration_inclusion(const std::vector<double>& gap, const TwinReplay& replay,
+                           const std::vector<std::vector<std::size_t>>& resamples) {
+  int shows = 0;
+  for (const auto& set : resamples) {
+    std::vector<double> gap_drawn, sens_drawn;
+    for (std::size_t i : set) {
+      gap_drawn.push_back(gap[i]);
+      sens_drawn.push_back(replay.sensitivity_v_per_mm()[i]);
+    }
+    if (vibration_signature(gap_drawn, sens_drawn).present) ++shows;
+  }
+  return static_cast<double>(shows) / static_cast<double>(resamples.size());
+}
+
+// vibration, recognised from its signature in both parts. Returns the noise the verdict
+// compares what is left with: the white voltage noise, or, with mount motion found, that plus
+// the motion's share, whose variance follows the sensitivity and so escapes the median-based
+// estimate: the held-out gap's mean squared difference / 2.
+double recognise_vibration(const Parts& parts, Selection& selection) {
+  const std::vector<double>& current_error = selection.current_error;
+  const std::vector<double> cal_after =
+      minus(parts.calibration.voltage_v, parts.cal_replay.voltage(selection.modelled));
+  const VibrationSignature cal_vibration =
+      vibration_signature(cal_after, parts.cal_replay.sensitivity_v_per_mm());
+  const VibrationSignature ho_vibration =
+      vibration_signature(current_error, parts.ho_replay.sensitivity_v_per_mm());
+  const double sigma = selection.sigma;
+  if (!cal_vibration.present || !ho_vibration.present) return sigma;
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < current_error.size(); ++i) {
+    sum += std::pow(current_error[i + 1] - current_error[i], 2);
+  }
+  const double verdict_noise =
+      std::max(sigma, std::sqrt(0.5 * sum / static_cast<double>(current_error.size() - 1)));
+  EffectFinding finding;
+  finding.name = "vibration";
+  finding.params = {{"rms_mm", cal_vibration.rms_mm}};
+  finding.noise_type = true;
+  finding.heldout_rms_before = finding.heldout_rms_after = rms_of(current_error);
+  finding.inclusion = vibration_inclusion(current_error, parts.ho_replay, selection.resamples);
+  finding.evidence = fmt::format(
+      "the gap's sample-to-sample variance grows with the sensor's sensitivity squared "
+      "(t = {:.1f} calibration, {:.1f} held-out): clearance motion, not voltage noise; "
+      "random phases cannot be fitted, so it adds no shrink (held-out rms_mm {:.3g})",
+      cal_vibration.slope_t, ho_vibration.slope_t, ho_vibration.rms_mm);
+  selection.findings.push_back(finding);
+  return verdict_noise;
+}
+
+// The status, "explained", "unexplained" or "none", and the reasons for it.
+void verdict(const Selection& selection, double verdict_noise, DiagnosisResult& result) {
+  Diagnosis& diagnosis = result.diagnosis;
+  const std::vector<EffectFinding>& findings = selection.findings;
+  const double sigma = selection.sigma;
+  diagnosis.heldout_rms_before = rms_of(selection.ho_gap);
+  diagnosis.heldout_rms_after = rms_of(selection.current_error);
+  const bool has_noise_type =
+      std::any_of(findings.begin(), findings.end(),
+                  [](const EffectFinding& f) { return f.noise_type && f.name != "mains_pickup"; });
+  const bool gap_exists = diagnosis.heldout_rms_before > kGapRatio * sigma ||
+                          !diagnosis.stage.empty() || has_noise_type || !findings.empty();
+  const bool left_within_noise = diagnosis.heldout_rms_after <= kExplainedRatio * verdict_noise;
+  auto& reasons = result.detail.reasons;
+  reasons.push_back(fmt::format(
+      "held-out gap RMS {:.4g} V before, {:.4g} V after the selected effects; white noise {:.4g} V",
+      diagnosis.heldout_rms_before, diagnosis.heldout_rms_after, sigma));
+  if (verdict_noise > sigma) {
+    reasons.push_back(fmt::format(
+        "with the mount motion, the noise what is left is compared with is {:.4g} V (the held-out "
+        "gap's mean squared difference / 2), not the white {:.4g} V",
+        verdict_noise, sigma));
+  }
+  if (!findings.empty() && left_within_noise) {
+    diagnosis.status = "explained";
+    diagnosis.effects = findings;
+    reasons.push_back(fmt::format("what is left is within {:.0f} % of the noise",
+                                  100.0 * (kExplainedRatio - 1.0)));
+  } else if (gap_exists) {
+    diagnosis.status = "unexplained";
+    result.detail.partial = findings;
+    reasons.push_back(findings.empty()
+                          ? "no library effect shrinks the held-out gap significantly"
+                          : "the effects that help leave more than the noise: something outside "
+                            "the library remains");
+  } else {
+    diagnosis.status = "none";
+    reasons.push_back(fmt::format(
+        "the held-out gap is within {:.0f} % of the twin's noise and no stage exceeds its noise "
+        "floor",
+        100.0 * (kGapRatio - 1.0)));
+  }
+  if (diagnosis.stage.empty()) diagnosis.stage = "none";
+}
+
+// How far, on held-out data: overall, in the where-cell and in the where-band; and the
+// held-out traces before and after.
+void measure_how_far(const RecordingSeries& heldout, const Selection& selection,
+                     DiagnosisResult& result) {
+  DiagnosisDetail& detail = result.detail;
+  const std::vector<double>& ho_gap = selection.ho_gap;
+  const std::vector<double>& current_error = selection.current_error;
+  HowFar& how = detail.how_far;
+  how.rms_before = result.diagnosis.heldout_rms_before;
+  how.rms_after = result.diagnosis.heldout_rms_after;
+  how.max_before = max_abs_of(ho_gap);
+  how.max_after = max_abs_of(current_error);
+  if (detail.where_region) {
+    const RegionCell& cell = detail.regions[*detail.where_region];
+    std::vector<double> before, after;
+    for (std::size_t i = 0; i < heldout.size(); ++i) {
+      if (heldout.clearance_mm[i] >= cell.clearance_lo &&
+          heldout.clearance_mm[i] <= cell.clearance_hi && heldout.temp_c[i] >= cell.temp_lo &&
+          heldout.temp_c[i] <= cell.temp_hi) {
+        before.push_back(ho_gap[i]);
+        after.push_back(current_error[i]);
+      }
+    }
+    how.region_rms_before = rms_of(before);
+    how.region_rms_after = rms_of(after);
+  }
+  if (detail.band_hz) {
+    const std::size_t segment = spectrum_segment(heldout.size());
+    how.band_rms_before = band_rms(welch_psd(ho_gap, detail.fs_hz, segment), *detail.band_hz);
+    how.band_rms_after = band_rms(welch_psd(current_error, detail.fs_hz, segment), *detail.band_hz);
+  }
+  detail.heldout_t_s = heldout.t_s;
+  detail.heldout_gap_before_v = ho_gap;
+  detail.heldout_gap_after_v = current_error;
+}
+
 }  // namespace
 
 double sample_rate_hz(const RecordingSeries& series) {
@@ -384,313 +802,21 @@ double sample_rate_hz(const RecordingSeries& series) {
 
 DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
                                    const RecordingSeries& heldout, const DiagnoseOptions& options) {
-  check_series(calibration, "calibration");
-  check_series(heldout, "held-out");
-  const double fs_hz = sample_rate_hz(calibration);
-  const double fs_heldout = sample_rate_hz(heldout);
-  if (std::abs(fs_heldout - fs_hz) > 0.01 * fs_hz) {
-    throw InputError(fmt::format(
-        "{}: sample rate {:.6g} Hz differs from {}'s {:.6g} Hz; the held-out recording must be "
-        "sampled at the same rate (within 1 %)",
-        heldout.path.empty() ? "held-out" : heldout.path, fs_heldout,
-        calibration.path.empty() ? "the calibration part" : calibration.path, fs_hz));
-  }
+  const double fs_hz = shared_sample_rate_hz(calibration, heldout);
   sim::check_twin_config(options.twin);
 
   DiagnosisResult result;
-  Diagnosis& diagnosis = result.diagnosis;
-  DiagnosisDetail& detail = result.detail;
-  detail.fs_hz = fs_hz;
-  const TwinReplay cal_replay(calibration, options.twin.nominal);
-  const TwinReplay ho_replay(heldout, options.twin.nominal);
-  std::vector<sim::EffectSettings> modelled = options.twin.effects;
-  const std::vector<double> cal_base = cal_replay.voltage(modelled);
-  const std::vector<double> ho_base = ho_replay.voltage(modelled);
-  const std::vector<double> cal_gap = minus(calibration.voltage_v, cal_base);
-  const std::vector<double> ho_gap = minus(heldout.voltage_v, ho_base);
-
-  if (options.estimate_noise) {
-    detail.noise_std_v = white_noise_std(cal_gap, kNoiseLag);
-    detail.noise_source =
-        "estimated from the calibration gap: 1.4826 MAD(differences at lag 2) / sqrt(2)";
-  } else {
-    detail.noise_std_v = options.twin.noise.voltage_std_v;
-    detail.noise_source = "given by the twin (noise.voltage_std_v)";
-  }
-  double sigma = std::max(detail.noise_std_v, 1e-9);
-  diagnosis.noise_std_v = sigma;
-  locate(calibration, cal_base, fs_hz, options, detail);
-  for (const StageGap& stage : detail.stages) {
-    if (stage.significant) {
-      diagnosis.stage = stage.name;
-      break;
-    }
-  }
-
-  // Greedy selection of bias-type effects, each scored on the held-out part.
-  struct Step {
-    std::vector<std::string> names;
-    std::vector<std::vector<double>> heldout_error;  // per candidate, after adding it
-    std::size_t chosen = 0;
-  };
-  std::vector<Step> steps;
-  std::vector<EffectFinding> findings;
-  std::vector<double> current_error = ho_gap;
-  const auto resamples = block_resamples(heldout.size(), options.bootstrap_rounds, options.seed);
-  const std::size_t first_selected = options.twin.effects.size();
-  for (int round = 0; round < kMaxSelected; ++round) {
-    Step step;
-    std::vector<EffectFit> fits;
-    std::vector<std::vector<sim::EffectSettings>> candidate_sets;  // modelled + each candidate
-    // Candidates are independent of each other: each is fitted in its own thread (the replays
-    // are read-only), and the results are taken in catalogue order, so the outcome does not
-    // depend on the threads.
-    struct Candidate {
-      EffectFit fit;
-      std::vector<sim::EffectSettings> with;  // modelled + the candidate, refitted
-      std::vector<double> heldout_error;
-    };
-    std::vector<std::string> names;
-    for (const sim::EffectSpec& spec : sim::effect_catalogue()) {
-      const bool taken = std::any_of(modelled.begin(), modelled.end(),
-                                     [&](const auto& m) { return m.name == spec.name; });
-      if (fitted_by_bias(spec.name) && !taken) names.push_back(spec.name);
-    }
-    std::vector<std::future<Candidate>> pending;
-    for (const std::string& name : names) {
-      pending.push_back(std::async(std::launch::async, [&, name] {
-        Candidate c;
-        c.fit = fit_effect(name, cal_replay, calibration.voltage_v, modelled);
-        c.with = modelled;
-        c.with.push_back(c.fit.settings);
-        // Each candidate is scored with the effects chosen before it refitted around it.
-        if (c.with.size() > first_selected + 1) {
-          backfit(c.with, first_selected, cal_replay, calibration.voltage_v);
-        }
-        c.heldout_error = minus(heldout.voltage_v, ho_replay.voltage(c.with));
-        return c;
-      }));
-    }
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      Candidate c = pending[i].get();
-      fits.push_back(std::move(c.fit));
-      candidate_sets.push_back(std::move(c.with));
-      step.names.push_back(names[i]);
-      step.heldout_error.push_back(std::move(c.heldout_error));
-    }
-    if (fits.empty()) break;
-    const double mse_now = rms_of(current_error) * rms_of(current_error);
-    std::size_t best = 0;
-    double best_gain = -std::numeric_limits<double>::infinity();
-    for (std::size_t c = 0; c < fits.size(); ++c) {
-      const double r = rms_of(step.heldout_error[c]);
-      if (mse_now - r * r > best_gain) {
-        best_gain = mse_now - r * r;
-        best = c;
-      }
-    }
-    // Significant: the gain is a real share of the noise variance and its block-bootstrap 95 %
-    // lower bound is above zero.
-    std::vector<double> gains;
-    for (const auto& set : resamples) {
-      gains.push_back(mean_square_on(current_error, set) -
-                      mean_square_on(step.heldout_error[best], set));
-    }
-    const double lower = quantile(gains, 0.05);
-    if (best_gain < kMinGainOfNoiseVariance * sigma * sigma || lower <= 0.0) break;
-    step.chosen = best;
-    EffectFinding finding;
-    finding.name = fits[best].settings.name;
-    finding.params = fits[best].settings.params;
-    finding.heldout_rms_before = rms_of(current_error);
-    finding.heldout_rms_after = rms_of(step.heldout_error[best]);
-    finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
-                         finding.heldout_rms_before;
-    finding.evidence = fmt::format(
-        "fitted on the calibration part (RMS {:.4g} V); on held-out data it lowers the gap's mean "
-        "square by {:.3g} V^2 (bootstrap 95 % lower bound {:.3g})",
-        fits[best].rms_v, best_gain, lower);
-    if (finding.name == "mains_pickup") {
-      finding.noise_type = true;
-      finding.evidence += "; a tone: the mains line aliased by the sampling";
-    }
-    modelled = candidate_sets[best];
-    current_error = step.heldout_error[best];
-    findings.push_back(finding);
-    // The earlier findings carry their parameters as refitted with this one.
-    for (std::size_t j = 0; j < findings.size(); ++j) {
-      findings[j].params = modelled[first_selected + j].params;
-    }
-    steps.push_back(std::move(step));
-    // A deterministic effect in the gap (a mains tone, a lag on the clearance steps) inflates
-    // the difference-based noise estimate; estimate it again from what the effects leave.
-    if (options.estimate_noise) {
-      const double left =
-          white_noise_std(minus(calibration.voltage_v, cal_replay.voltage(modelled)), kNoiseLag);
-      if (left < sigma) {
-        sigma = std::max(left, 1e-9);
-        detail.noise_std_v = sigma;
-        diagnosis.noise_std_v = sigma;
-        detail.noise_source =
-            "estimated from the calibration gap left by the selected effects: 1.4826 "
-            "MAD(differences at lag 2) / sqrt(2)";
-      }
-    }
-  }
-  // Inclusion: the share of held-out resamples on which each step's choice still wins and
-  // gains (the fits are not redone per round: it is the scoring that is resampled).
-  for (std::size_t s = 0; s < steps.size(); ++s) {
-    const std::vector<double>& before =
-        s == 0 ? ho_gap : steps[s - 1].heldout_error[steps[s - 1].chosen];
-    int wins = 0;
-    for (const auto& set : resamples) {
-      const double base = mean_square_on(before, set);
-      std::size_t arg = 0;
-      double best = -std::numeric_limits<double>::infinity();
-      for (std::size_t c = 0; c < steps[s].names.size(); ++c) {
-        const double gain = base - mean_square_on(steps[s].heldout_error[c], set);
-        if (gain > best) {
-          best = gain;
-          arg = c;
-        }
-      }
-      if (arg == steps[s].chosen && best > 0.0) ++wins;
-    }
-    findings[s].inclusion = static_cast<double>(wins) / static_cast<double>(resamples.size());
-  }
-
+  result.detail.fs_hz = fs_hz;
+  const Parts parts{calibration, heldout, TwinReplay(calibration, options.twin.nominal),
+                    TwinReplay(heldout, options.twin.nominal)};
+  Selection selection = replay_nominal_twin(parts, options, result);
+  select_bias_effects(parts, options, selection, result);
+  measure_inclusion(selection);
   // Noise-type effects, recognised from their signatures in both parts.
-  const auto cal_grid = find_lsb_grid(calibration.voltage_v);
-  const auto ho_grid = find_lsb_grid(heldout.voltage_v);
-  if (cal_grid && ho_grid && *cal_grid == *ho_grid) {
-    EffectFinding finding;
-    finding.name = "adc_quantization";
-    finding.params = cal_grid->params;
-    finding.noise_type = true;
-    finding.inclusion = 1.0;
-    finding.evidence = fmt::format(
-        "every recorded voltage of both parts lies on a {}-bit grid over [{}, {}] V (LSB {:.4g} "
-        "mV)",
-        cal_grid->params.at("bits"), cal_grid->params.at("v_min"), cal_grid->params.at("v_max"),
-        1e3 * (cal_grid->params.at("v_max") - cal_grid->params.at("v_min")) /
-            std::ldexp(1.0, static_cast<int>(cal_grid->params.at("bits"))));
-    std::vector<sim::EffectSettings> with = modelled;
-    with.push_back(*cal_grid);
-    finding.heldout_rms_before = rms_of(current_error);
-    current_error = minus(heldout.voltage_v, ho_replay.voltage(with));
-    finding.heldout_rms_after = rms_of(current_error);
-    finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
-                         std::max(finding.heldout_rms_before, 1e-30);
-    modelled = with;
-    findings.push_back(finding);
-  }
-  const std::vector<double> cal_after = minus(calibration.voltage_v, cal_replay.voltage(modelled));
-  const VibrationSignature cal_vibration =
-      vibration_signature(cal_after, cal_replay.sensitivity_v_per_mm());
-  const VibrationSignature ho_vibration =
-      vibration_signature(current_error, ho_replay.sensitivity_v_per_mm());
-  // The noise the verdict compares what is left with: the white voltage noise, or, with mount
-  // motion found, that plus the motion's share, whose variance follows the sensitivity and so
-  // escapes the median-based estimate: the held-out gap's mean squared difference / 2.
-  double verdict_noise = sigma;
-  if (cal_vibration.present && ho_vibration.present) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i + 1 < current_error.size(); ++i) {
-      sum += std::pow(current_error[i + 1] - current_error[i], 2);
-    }
-    verdict_noise =
-        std::max(sigma, std::sqrt(0.5 * sum / static_cast<double>(current_error.size() - 1)));
-    EffectFinding finding;
-    finding.name = "vibration";
-    finding.params = {{"rms_mm", cal_vibration.rms_mm}};
-    finding.noise_type = true;
-    finding.heldout_rms_before = finding.heldout_rms_after = rms_of(current_error);
-    // Inclusion: resamples of the held-out gap on which the signature still shows.
-    int shows = 0;
-    for (const auto& set : resamples) {
-      std::vector<double> gap_drawn, sens_drawn;
-      for (std::size_t i : set) {
-        gap_drawn.push_back(current_error[i]);
-        sens_drawn.push_back(ho_replay.sensitivity_v_per_mm()[i]);
-      }
-      if (vibration_signature(gap_drawn, sens_drawn).present) ++shows;
-    }
-    finding.inclusion = static_cast<double>(shows) / static_cast<double>(resamples.size());
-    finding.evidence = fmt::format(
-        "the gap's sample-to-sample variance grows with the sensor's sensitivity squared "
-        "(t = {:.1f} calibration, {:.1f} held-out): clearance motion, not voltage noise; "
-        "random phases cannot be fitted, so it adds no shrink (held-out rms_mm {:.3g})",
-        cal_vibration.slope_t, ho_vibration.slope_t, ho_vibration.rms_mm);
-    findings.push_back(finding);
-  }
-
-  diagnosis.heldout_rms_before = rms_of(ho_gap);
-  diagnosis.heldout_rms_after = rms_of(current_error);
-  const bool has_noise_type =
-      std::any_of(findings.begin(), findings.end(),
-                  [](const EffectFinding& f) { return f.noise_type && f.name != "mains_pickup"; });
-  const bool gap_exists = diagnosis.heldout_rms_before > kGapRatio * sigma ||
-                          !diagnosis.stage.empty() || has_noise_type || !findings.empty();
-  const bool left_within_noise = diagnosis.heldout_rms_after <= kExplainedRatio * verdict_noise;
-  auto& reasons = detail.reasons;
-  reasons.push_back(fmt::format(
-      "held-out gap RMS {:.4g} V before, {:.4g} V after the selected effects; white noise {:.4g} V",
-      diagnosis.heldout_rms_before, diagnosis.heldout_rms_after, sigma));
-  if (verdict_noise > sigma) {
-    reasons.push_back(fmt::format(
-        "with the mount motion, the noise what is left is compared with is {:.4g} V (the held-out "
-        "gap's mean squared difference / 2), not the white {:.4g} V",
-        verdict_noise, sigma));
-  }
-  if (!findings.empty() && left_within_noise) {
-    diagnosis.status = "explained";
-    diagnosis.effects = findings;
-    reasons.push_back(fmt::format("what is left is within {:.0f} % of the noise",
-                                  100.0 * (kExplainedRatio - 1.0)));
-  } else if (gap_exists) {
-    diagnosis.status = "unexplained";
-    detail.partial = findings;
-    reasons.push_back(findings.empty()
-                          ? "no library effect shrinks the held-out gap significantly"
-                          : "the effects that help leave more than the noise: something outside "
-                            "the library remains");
-  } else {
-    diagnosis.status = "none";
-    reasons.push_back(fmt::format(
-        "the held-out gap is within {:.0f} % of the twin's noise and no stage exceeds its noise "
-        "floor",
-        100.0 * (kGapRatio - 1.0)));
-  }
-  if (diagnosis.stage.empty()) diagnosis.stage = "none";
-
-  // How far, on held-out data: overall, in the where-cell and in the where-band.
-  HowFar& how = detail.how_far;
-  how.rms_before = diagnosis.heldout_rms_before;
-  how.rms_after = diagnosis.heldout_rms_after;
-  how.max_before = max_abs_of(ho_gap);
-  how.max_after = max_abs_of(current_error);
-  if (detail.where_region) {
-    const RegionCell& cell = detail.regions[*detail.where_region];
-    std::vector<double> before, after;
-    for (std::size_t i = 0; i < heldout.size(); ++i) {
-      if (heldout.clearance_mm[i] >= cell.clearance_lo &&
-          heldout.clearance_mm[i] <= cell.clearance_hi && heldout.temp_c[i] >= cell.temp_lo &&
-          heldout.temp_c[i] <= cell.temp_hi) {
-        before.push_back(ho_gap[i]);
-        after.push_back(current_error[i]);
-      }
-    }
-    how.region_rms_before = rms_of(before);
-    how.region_rms_after = rms_of(after);
-  }
-  if (detail.band_hz) {
-    const std::size_t segment = spectrum_segment(heldout.size());
-    how.band_rms_before = band_rms(welch_psd(ho_gap, fs_hz, segment), *detail.band_hz);
-    how.band_rms_after = band_rms(welch_psd(current_error, fs_hz, segment), *detail.band_hz);
-  }
-  detail.heldout_t_s = heldout.t_s;
-  detail.heldout_gap_before_v = ho_gap;
-  detail.heldout_gap_after_v = current_error;
+  recognise_quantization(parts, selection);
+  const double verdict_noise = recognise_vibration(parts, selection);
+  verdict(selection, verdict_noise, result);
+  measure_how_far(heldout, selection, result);
   return result;
 }
 

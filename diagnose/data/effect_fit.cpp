@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <utility>
 
 #include "residual_tests.h"
 
@@ -44,85 +45,117 @@ struct Objective {
   int evaluations = 0;
 };
 
+// The objective at `x`, counted.
+double evaluate(Objective& objective, const std::vector<double>& x) {
+  ++objective.evaluations;
+  return objective.value(x);
+}
+
+std::vector<double> clamp_to_unit_cube(std::vector<double> x) {
+  for (double& v : x) v = std::clamp(v, 0.0, 1.0);
+  return x;
+}
+
+// Nelder-Mead's n + 1 points in the unit cube and the objective at each.
+struct Simplex {
+  std::vector<std::vector<double>> points;
+  std::vector<double> values;
+};
+
+// `start` and one point `step` away along each axis (backwards where forwards leaves the cube).
+Simplex initial_simplex(Objective& objective, const std::vector<double>& start, double step) {
+  Simplex simplex;
+  simplex.points.push_back(clamp_to_unit_cube(start));
+  for (std::size_t d = 0; d < start.size(); ++d) {
+    std::vector<double> x = start;
+    x[d] += x[d] + step <= 1.0 ? step : -step;
+    simplex.points.push_back(clamp_to_unit_cube(x));
+  }
+  for (const auto& x : simplex.points) simplex.values.push_back(evaluate(objective, x));
+  return simplex;
+}
+
+// Halves every point's distance to the best one. Returns the evaluations spent.
+int shrink_towards(Objective& objective, Simplex& simplex, std::size_t best) {
+  int used = 0;
+  for (std::size_t i = 0; i < simplex.points.size(); ++i) {
+    if (i == best) continue;
+    std::vector<double>& x = simplex.points[i];
+    for (std::size_t d = 0; d < x.size(); ++d) {
+      x[d] = simplex.points[best][d] + 0.5 * (x[d] - simplex.points[best][d]);
+    }
+    simplex.values[i] = evaluate(objective, x);
+    ++used;
+  }
+  return used;
+}
+
+// One Nelder-Mead move: the worst point is reflected through the centroid of the others, then
+// the reflection is expanded or contracted, or else the simplex shrinks towards the best point.
+// Returns the evaluations spent.
+int move_worst_point(Objective& objective, Simplex& simplex, std::size_t best, std::size_t second,
+                     std::size_t worst) {
+  std::vector<std::vector<double>>& points = simplex.points;
+  std::vector<double>& values = simplex.values;
+  const std::size_t n = points.size() - 1;
+  std::vector<double> centroid(n, 0.0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i == worst) continue;
+    for (std::size_t d = 0; d < n; ++d) centroid[d] += points[i][d] / static_cast<double>(n);
+  }
+  const auto along = [&](double t) {
+    std::vector<double> x(n);
+    for (std::size_t d = 0; d < n; ++d) x[d] = centroid[d] + t * (points[worst][d] - centroid[d]);
+    return clamp_to_unit_cube(x);
+  };
+  const auto replace_worst = [&](const std::vector<double>& x, double value) {
+    points[worst] = x;
+    values[worst] = value;
+  };
+  const std::vector<double> reflected = along(-1.0);
+  const double fr = evaluate(objective, reflected);
+  if (fr < values[best]) {
+    const std::vector<double> expanded = along(-2.0);
+    const double fe = evaluate(objective, expanded);
+    if (fe < fr) {
+      replace_worst(expanded, fe);
+    } else {
+      replace_worst(reflected, fr);
+    }
+    return 2;
+  }
+  if (fr < values[second]) {
+    replace_worst(reflected, fr);
+    return 1;
+  }
+  const std::vector<double> contracted = along(fr < values[worst] ? -0.5 : 0.5);
+  const double fc = evaluate(objective, contracted);
+  if (fc < std::min(fr, values[worst])) {
+    replace_worst(contracted, fc);
+    return 2;
+  }
+  return 2 + shrink_towards(objective, simplex, best);
+}
+
 // Nelder-Mead on the unit cube (coordinates clamped), from `start`.
 std::vector<double> nelder_mead(Objective& objective, std::vector<double> start, double step,
                                 int max_evaluations) {
   const std::size_t n = start.size();
-  const auto clamp01 = [](std::vector<double> x) {
-    for (double& v : x) v = std::clamp(v, 0.0, 1.0);
-    return x;
-  };
-  const auto f = [&](const std::vector<double>& x) {
-    ++objective.evaluations;
-    return objective.value(x);
-  };
-  std::vector<std::vector<double>> simplex{clamp01(start)};
-  for (std::size_t d = 0; d < n; ++d) {
-    std::vector<double> x = start;
-    x[d] += x[d] + step <= 1.0 ? step : -step;
-    simplex.push_back(clamp01(x));
-  }
-  std::vector<double> values;
-  for (const auto& x : simplex) values.push_back(f(x));
-  int used = static_cast<int>(simplex.size());
+  Simplex simplex = initial_simplex(objective, start, step);
+  const std::vector<double>& values = simplex.values;
+  int used = static_cast<int>(simplex.points.size());
   while (used < max_evaluations) {
-    std::vector<std::size_t> order(simplex.size());
+    std::vector<std::size_t> order(simplex.points.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](auto a, auto b) { return values[a] < values[b]; });
     const std::size_t best = order.front(), worst = order.back(), second = order[n - 1];
     if (std::abs(values[worst] - values[best]) <= 1e-10 * (std::abs(values[best]) + 1e-12)) {
       break;
     }
-    std::vector<double> centroid(n, 0.0);
-    for (std::size_t i = 0; i < simplex.size(); ++i) {
-      if (i == worst) continue;
-      for (std::size_t d = 0; d < n; ++d) centroid[d] += simplex[i][d] / static_cast<double>(n);
-    }
-    const auto along = [&](double t) {
-      std::vector<double> x(n);
-      for (std::size_t d = 0; d < n; ++d)
-        x[d] = centroid[d] + t * (simplex[worst][d] - centroid[d]);
-      return clamp01(x);
-    };
-    const std::vector<double> reflected = along(-1.0);
-    const double fr = f(reflected);
-    ++used;
-    if (fr < values[best]) {
-      const std::vector<double> expanded = along(-2.0);
-      const double fe = f(expanded);
-      ++used;
-      if (fe < fr) {
-        simplex[worst] = expanded;
-        values[worst] = fe;
-      } else {
-        simplex[worst] = reflected;
-        values[worst] = fr;
-      }
-    } else if (fr < values[second]) {
-      simplex[worst] = reflected;
-      values[worst] = fr;
-    } else {
-      const std::vector<double> contracted = along(fr < values[worst] ? -0.5 : 0.5);
-      const double fc = f(contracted);
-      ++used;
-      if (fc < std::min(fr, values[worst])) {
-        simplex[worst] = contracted;
-        values[worst] = fc;
-      } else {
-        // Shrink towards the best point.
-        for (std::size_t i = 0; i < simplex.size(); ++i) {
-          if (i == best) continue;
-          for (std::size_t d = 0; d < n; ++d) {
-            simplex[i][d] = simplex[best][d] + 0.5 * (simplex[i][d] - simplex[best][d]);
-          }
-          values[i] = f(simplex[i]);
-          ++used;
-        }
-      }
-    }
+    used += move_worst_point(objective, simplex, best, second, worst);
   }
   const auto best = std::min_element(values.begin(), values.end()) - values.begin();
-  return simplex[static_cast<std::size_t>(best)];
+  return simplex.points[static_cast<std::size_t>(best)];
 }
 
 // The ageing drift's line over the record: offset a = r a0 at t = 0 and rate r, with the
@@ -206,6 +239,110 @@ EffectFit fit_ageing(const TwinReplay& replay, const std::vector<double>& real_v
   return fit;
 }
 
+// Mains: the frequency aliases (any mains_hz gives a line at its alias), so it is chosen between
+// the two mains standards rather than fitted continuously. A standard whose fundamental aliases
+// to DC (60 Hz at 6 Hz) is an offset, not a tone, and is left to the offset effects.
+std::vector<double> mains_standards_hz(const TwinReplay& replay) {
+  const std::vector<double>& t = replay.times();
+  const double fs_hz = static_cast<double>(t.size() - 1) / (t.back() - t.front());
+  std::vector<double> standards;
+  for (const double f : {50.0, 60.0}) {
+    if (std::abs(f - fs_hz * std::round(f / fs_hz)) > 0.01 * fs_hz) standards.push_back(f);
+  }
+  return standards;
+}
+
+// The calibration voltage-gap RMS with one effect added to those modelled, as a function of the
+// effect's free parameters in unit-cube coordinates.
+class GapRms {
+ public:
+  // `fixed`: parameters held (mains_pickup's mains_hz); the others stay at their defaults.
+  GapRms(const std::string& name, const std::vector<FreeParam>& params, sim::ParamValues fixed,
+         const TwinReplay& replay, const std::vector<double>& real_v,
+         const std::vector<sim::EffectSettings>& modelled)
+      : name_(name),
+        params_(params),
+        fixed_(std::move(fixed)),
+        replay_(replay),
+        real_v_(real_v),
+        modelled_(modelled) {
+    // An ageing drift already modelled is linear in its offset and rate: it is solved by least
+    // squares at every point of the search (profiled out) rather than held, since a
+    // temperature effect and an ageing offset trade against each other along a narrow valley
+    // that one-effect-at-a-time refits crawl along.
+    for (const sim::EffectSettings& m : modelled) {
+      if (m.name != "ageing_drift") held_.push_back(m);
+    }
+    profile_ageing_ = held_.size() < modelled.size();
+  }
+
+  std::size_t dims() const { return params_.size(); }
+
+  sim::EffectSettings settings_at(const std::vector<double>& unit) const {
+    sim::ParamValues values = fixed_;
+    for (std::size_t d = 0; d < params_.size(); ++d) {
+      values[params_[d].key] = params_[d].lo + unit[d] * (params_[d].hi - params_[d].lo);
+    }
+    return sim::make_effect_settings(name_, values, "diagnose fit");
+  }
+
+  double operator()(const std::vector<double>& unit) const {
+    std::vector<sim::EffectSettings> effects = profile_ageing_ ? held_ : modelled_;
+    effects.push_back(settings_at(unit));
+    const std::vector<double> sim_v = replay_.voltage(effects);
+    std::vector<double> gap(sim_v.size());
+    for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v_[i] - sim_v[i];
+    if (profile_ageing_) remove_ageing_line(gap, replay_.times());
+    double sum = 0.0;
+    for (const double g : gap) sum += g * g;
+    return std::sqrt(sum / static_cast<double>(gap.size()));
+  }
+
+ private:
+  const std::string& name_;
+  const std::vector<FreeParam>& params_;
+  sim::ParamValues fixed_;
+  const TwinReplay& replay_;
+  const std::vector<double>& real_v_;
+  const std::vector<sim::EffectSettings>& modelled_;
+  std::vector<sim::EffectSettings> held_;  // modelled_ but an ageing drift
+  bool profile_ageing_ = false;
+};
+
+// The best point of a lattice of `points` per dimension over the unit cube.
+std::vector<double> best_lattice_point(Objective& objective, std::size_t dims, int points) {
+  std::vector<double> start(dims, 0.5);
+  double start_value = std::numeric_limits<double>::infinity();
+  std::vector<int> index(dims, 0);
+  while (true) {
+    std::vector<double> unit(dims);
+    for (std::size_t d = 0; d < dims; ++d) unit[d] = index[d] / static_cast<double>(points - 1);
+    const double value = objective.value(unit);
+    ++objective.evaluations;
+    if (value < start_value) {
+      start_value = value;
+      start = unit;
+    }
+    std::size_t d = 0;
+    while (d < dims && ++index[d] == points) index[d++] = 0;
+    if (d == dims) break;
+  }
+  return start;
+}
+
+// Minimises `gap_rms`: a coarse lattice, then Nelder-Mead from its best point.
+EffectFit minimise_gap_rms(const GapRms& gap_rms) {
+  const std::size_t dims = gap_rms.dims();
+  Objective objective;
+  objective.value = [&](const std::vector<double>& unit) { return gap_rms(unit); };
+  const int points = lattice_points(dims);
+  const std::vector<double> start = best_lattice_point(objective, dims, points);
+  const std::vector<double> unit =
+      nelder_mead(objective, start, 0.5 / (points - 1), 100 * static_cast<int>(dims));
+  const double value = objective.value(unit);
+  return {gap_rms.settings_at(unit), value, objective.evaluations + 1};
+}
+
 }  // namespace
 
 bool fitted_by_bias(const std::string& name) {
@@ -223,82 +360,25 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
                      const std::vector<sim::EffectSettings>& modelled) {
   if (name == "ageing_drift") return fit_ageing(replay, real_v, modelled);
   const std::vector<FreeParam> params = free_params(name);
-  // Mains: the frequency aliases (any mains_hz gives a line at its alias), so it is chosen
-  // between the two mains standards rather than fitted continuously.
-  // A standard whose fundamental aliases to DC (60 Hz at 6 Hz) is an offset, not a tone, and
-  // is left to the offset effects.
-  std::vector<double> mains_choices{0.0};
-  if (name == "mains_pickup") {
-    const std::vector<double>& t = replay.times();
-    const double fs_hz = static_cast<double>(t.size() - 1) / (t.back() - t.front());
-    mains_choices.clear();
-    for (const double f : {50.0, 60.0}) {
-      if (std::abs(f - fs_hz * std::round(f / fs_hz)) > 0.01 * fs_hz) mains_choices.push_back(f);
-    }
-    if (mains_choices.empty())
-      return {sim::make_effect_settings(name, {}, "diagnose fit"),
-              std::numeric_limits<double>::infinity(), 0};
+  const bool mains = name == "mains_pickup";
+  const std::vector<double> mains_choices =
+      mains ? mains_standards_hz(replay) : std::vector<double>{0.0};
+  if (mains_choices.empty()) {
+    return {sim::make_effect_settings(name, {}, "diagnose fit"),
+            std::numeric_limits<double>::infinity(), 0};
   }
   EffectFit best;
   best.rms_v = std::numeric_limits<double>::infinity();
   for (const double mains_hz : mains_choices) {
     sim::ParamValues fixed;
-    if (name == "mains_pickup") fixed["mains_hz"] = mains_hz;
-    const auto settings_at = [&](const std::vector<double>& unit) {
-      sim::ParamValues values = fixed;
-      for (std::size_t d = 0; d < params.size(); ++d) {
-        values[params[d].key] = params[d].lo + unit[d] * (params[d].hi - params[d].lo);
-      }
-      return sim::make_effect_settings(name, values, "diagnose fit");
-    };
-    // An ageing drift already modelled is linear in its offset and rate: it is solved by least
-    // squares at every point of the search (profiled out) rather than held, since a
-    // temperature effect and an ageing offset trade against each other along a narrow valley
-    // that one-effect-at-a-time refits crawl along.
-    std::vector<sim::EffectSettings> held;
-    for (const sim::EffectSettings& m : modelled) {
-      if (m.name != "ageing_drift") held.push_back(m);
+    if (mains) fixed["mains_hz"] = mains_hz;
+    const EffectFit fit =
+        minimise_gap_rms(GapRms(name, params, std::move(fixed), replay, real_v, modelled));
+    if (fit.rms_v < best.rms_v) {
+      best.settings = fit.settings;
+      best.rms_v = fit.rms_v;
     }
-    const bool profile_ageing = held.size() < modelled.size();
-    Objective objective;
-    objective.value = [&](const std::vector<double>& unit) {
-      std::vector<sim::EffectSettings> effects = profile_ageing ? held : modelled;
-      effects.push_back(settings_at(unit));
-      const std::vector<double> sim_v = replay.voltage(effects);
-      std::vector<double> gap(sim_v.size());
-      for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v[i] - sim_v[i];
-      if (profile_ageing) remove_ageing_line(gap, replay.times());
-      double sum = 0.0;
-      for (const double g : gap) sum += g * g;
-      return std::sqrt(sum / static_cast<double>(gap.size()));
-    };
-    // Coarse lattice, then Nelder-Mead from its best point.
-    const std::size_t dims = params.size();
-    const int points = lattice_points(dims);
-    std::vector<double> start(dims, 0.5);
-    double start_value = std::numeric_limits<double>::infinity();
-    std::vector<int> index(dims, 0);
-    while (true) {
-      std::vector<double> unit(dims);
-      for (std::size_t d = 0; d < dims; ++d) unit[d] = index[d] / static_cast<double>(points - 1);
-      const double value = objective.value(unit);
-      ++objective.evaluations;
-      if (value < start_value) {
-        start_value = value;
-        start = unit;
-      }
-      std::size_t d = 0;
-      while (d < dims && ++index[d] == points) index[d++] = 0;
-      if (d == dims) break;
-    }
-    const std::vector<double> unit =
-        nelder_mead(objective, start, 0.5 / (points - 1), 100 * static_cast<int>(dims));
-    const double value = objective.value(unit);
-    if (value < best.rms_v) {
-      best.settings = settings_at(unit);
-      best.rms_v = value;
-    }
-    best.evaluations += objective.evaluations + 1;
+    best.evaluations += fit.evaluations;
   }
   return best;
 }
