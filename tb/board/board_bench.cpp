@@ -6,6 +6,8 @@
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
+#include "rtl_coverage.h"
+
 namespace flange::tb::board {
 
 struct BoardBench::Impl {
@@ -58,6 +60,7 @@ BoardBench::BoardBench(const std::filesystem::path& fst_path) : impl_(std::make_
 BoardBench::~BoardBench() {
   if (impl_->trace) impl_->trace->close();
   impl_->dut->final();
+  write_rtl_coverage(*impl_->context, "basys3_top");
 }
 
 void BoardBench::send(const std::vector<std::uint8_t>& bytes, bool bad_stop) {
