@@ -334,6 +334,31 @@ TEST_F(Basys3Top, CentreButtonResetsFilterFlagsAndDisplay) {
   for (int n = 20; n < 30; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(9.0));
 }
 
+TEST_F(Basys3Top, CentreButtonClearsTheOverrunAndSaturationLeds) {
+  // Both sticky LEDs lit (a clipping full-scale edge, then a frame that arrives while the board
+  // is still answering), the STATUS bits back to 0 in the reply after the one that reported them,
+  // and btnC puts both LEDs out.
+  bool saturated = false;
+  for (int n = 0; n < 40; ++n) {
+    const std::int16_t sample = n < 20 ? std::int16_t{-32768} : std::int16_t{32767};
+    saturated = expect_filtered(static_cast<std::uint8_t>(n), sample) || saturated;
+  }
+  ASSERT_TRUE(saturated) << "the full-scale edge was meant to clip";
+  std::vector<std::uint8_t> two = request(40, clearance_word(8.0));
+  const std::vector<std::uint8_t> second = request(41, clearance_word(8.0));
+  two.insert(two.end(), second.begin(), second.end());
+  const model::StepResult want = model_->step(clearance_word(8.0));
+  const std::vector<frame::Reply> got = exchange(two);
+  ASSERT_EQ(got.size(), 1u) << "the second frame arrives during the first reply: dropped";
+  EXPECT_EQ(got[0].seq, 40);
+  EXPECT_EQ(got[0].sample, want.sample);
+  expect_filtered(42, clearance_word(8.0), frame::kStatusOverrun);
+  expect_filtered(43, clearance_word(8.0));  // reported once: STATUS is 0 again
+  EXPECT_EQ(bench_->leds() & (kLedOverrun | kLedSaturation), kLedOverrun | kLedSaturation);
+  bench_->press_reset();
+  EXPECT_EQ(bench_->leds() & (kLedOverrun | kLedSaturation | kLedLinkError), 0);
+}
+
 TEST_F(Basys3Top, SessionResetCommandRestartsTheFilter) {
   for (int n = 0; n < 30; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(9.5));
   // The reset command with the SEQ of the last sample: a command, never a retransmission.
