@@ -22,11 +22,12 @@ out=$build/coverage
 start=$SECONDS
 
 # A coverage build of its own: never turn an existing normal build into one.
-if [[ -f $build/CMakeCache.txt ]] && ! grep -q '^FLANGE_RTL_COVERAGE:BOOL=ON$' "$build/CMakeCache.txt"; then
+cache=$build/CMakeCache.txt
+if [[ -f $cache ]] && ! grep -q '^FLANGE_RTL_COVERAGE:BOOL=ON$' "$cache"; then
   echo "rtl_coverage: $build is a build without FLANGE_RTL_COVERAGE; name another folder" >&2
   exit 1
 fi
-if [[ ! -f $build/CMakeCache.txt ]]; then
+if [[ ! -f $cache ]]; then
   cmake -S "$root" -B "$build" -G Ninja -DFLANGE_RTL_COVERAGE=ON >/dev/null
 fi
 
@@ -40,8 +41,9 @@ if [[ ${#cosim[@]} -eq 0 ]]; then
 fi
 targets=("${cosim[@]}" basys3_top_cosim_test board_stream_test)
 echo "rtl_coverage: building ${#targets[@]} test binaries in $build (-j$jobs)"
-cmake --build "$build" --parallel "$jobs" --target "${targets[@]}" >"$build/rtl_coverage_build.log" ||
-  { tail -n 30 "$build/rtl_coverage_build.log" >&2; exit 1; }
+build_log=$build/rtl_coverage_build.log
+cmake --build "$build" --parallel "$jobs" --target "${targets[@]}" >"$build_log" ||
+  { tail -n 30 "$build_log" >&2; exit 1; }
 built=$SECONDS
 
 rm -rf "$out"
@@ -68,9 +70,11 @@ verilator_coverage --write "$out/merged.dat" "${dats[@]}" >/dev/null
 verilator_coverage --annotate "$out/annotated" --annotate-min 1 "$out/merged.dat" >/dev/null
 echo "rtl_coverage: ${#dats[@]} coverage files merged into $out/merged.dat"
 echo
-python3 "$root/scripts/rtl_coverage_report.py" --root "$root" "$out/merged.dat" | tee "$out/report.txt"
+python3 "$root/scripts/rtl_coverage_report.py" --root "$root" "$out/merged.dat" |
+  tee "$out/report.txt"
 echo
-echo "rtl_coverage: build $((built - start)) s, tests $((ran - built)) s, total $((SECONDS - start)) s"
+echo "rtl_coverage: build $((built - start)) s, tests $((ran - built)) s," \
+     "total $((SECONDS - start)) s"
 if [[ $failed -ne 0 ]]; then
   echo "rtl_coverage: a test failed (see above); the coverage is of what ran" >&2
   exit 1

@@ -98,7 +98,8 @@ def index_matches(spec, index):
 
 class Waiver:
     def __init__(self, kind, path, pattern, reason, where):
-        self.kind, self.path, self.pattern, self.reason, self.where = kind, path, pattern, reason, where
+        self.kind, self.path, self.pattern = kind, path, pattern
+        self.reason, self.where = reason, where
         self.used = 0
         if kind == "toggle":
             self.name, self.indices = split_indices(pattern)
@@ -125,7 +126,8 @@ def read_waivers(path):
                 continue
             fields = [x.strip() for x in text.split("|", 3)]
             if len(fields) != 4 or fields[0] not in ("toggle", "line") or not all(fields):
-                raise ValueError(f"{path}:{number}: expected 'toggle|line | file | pattern | reason'")
+                raise ValueError(
+                    f"{path}:{number}: expected 'toggle|line | file | pattern | reason'")
             waivers.append(Waiver(*fields, where=f"{os.path.basename(path)}:{number}"))
     return waivers
 
@@ -166,7 +168,8 @@ def collect(counts, root):
         if root and os.path.isabs(path):
             path = os.path.relpath(path, root)
         if page in LINE_PAGES:
-            files[path].line_points[(f["l"], f.get("n", ""), f.get("o", ""), f.get("S", ""))] += count
+            key = (f["l"], f.get("n", ""), f.get("o", ""), f.get("S", ""))
+            files[path].line_points[key] += count
         elif page in TOGGLE_PAGES:
             # One module per file, so the signal names the point (the page names Verilator's
             # parameterised copy of the module, iir_core__Rz1 in the board top).
@@ -266,7 +269,8 @@ def report(files, waivers, waiver_file, root, out):
                 out.write(f"  {w.path}: {w.pattern} ({n} {unit}): {w.reason}\n")
     stale = [w for w in waivers if not w.used]
     if stale:
-        out.write("waivers that matched no uncovered point (remove them, or the run was partial):\n")
+        out.write("waivers that matched no uncovered point "
+                  "(remove them, or the run was partial):\n")
         for w in stale:
             out.write(f"  {w.where}: {w.kind} {w.path} {w.pattern}\n")
     return totals["all"]
