@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include "iir_core_dut.h"
+#include "rtl_coverage.h"
 
 namespace flange::tb {
 
@@ -43,6 +44,7 @@ class VerilatedDut final : public Dut {
   ~VerilatedDut() override {
     if (trace_) trace_->close();
     dut->final();
+    write_rtl_coverage(*context_, "iir_core");
   }
 
   DutOutputs outputs() override {

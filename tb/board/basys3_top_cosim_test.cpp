@@ -8,7 +8,9 @@
 // (FLANGE_TRACE=1 writes logs/basys3_<Name>.fst).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <random>
@@ -332,6 +334,31 @@ TEST_F(Basys3Top, CentreButtonResetsFilterFlagsAndDisplay) {
   for (int n = 20; n < 30; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(9.0));
 }
 
+TEST_F(Basys3Top, CentreButtonClearsTheOverrunAndSaturationLeds) {
+  // Both sticky LEDs lit (a clipping full-scale edge, then a frame that arrives while the board
+  // is still answering), the STATUS bits back to 0 in the reply after the one that reported them,
+  // and btnC puts both LEDs out.
+  bool saturated = false;
+  for (int n = 0; n < 40; ++n) {
+    const std::int16_t sample = n < 20 ? std::int16_t{-32768} : std::int16_t{32767};
+    saturated = expect_filtered(static_cast<std::uint8_t>(n), sample) || saturated;
+  }
+  ASSERT_TRUE(saturated) << "the full-scale edge was meant to clip";
+  std::vector<std::uint8_t> two = request(40, clearance_word(8.0));
+  const std::vector<std::uint8_t> second = request(41, clearance_word(8.0));
+  two.insert(two.end(), second.begin(), second.end());
+  const model::StepResult want = model_->step(clearance_word(8.0));
+  const std::vector<frame::Reply> got = exchange(two);
+  ASSERT_EQ(got.size(), 1u) << "the second frame arrives during the first reply: dropped";
+  EXPECT_EQ(got[0].seq, 40);
+  EXPECT_EQ(got[0].sample, want.sample);
+  expect_filtered(42, clearance_word(8.0), frame::kStatusOverrun);
+  expect_filtered(43, clearance_word(8.0));  // reported once: STATUS is 0 again
+  EXPECT_EQ(bench_->leds() & (kLedOverrun | kLedSaturation), kLedOverrun | kLedSaturation);
+  bench_->press_reset();
+  EXPECT_EQ(bench_->leds() & (kLedOverrun | kLedSaturation | kLedLinkError), 0);
+}
+
 TEST_F(Basys3Top, SessionResetCommandRestartsTheFilter) {
   for (int n = 0; n < 30; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(9.5));
   // The reset command with the SEQ of the last sample: a command, never a retransmission.
@@ -353,6 +380,76 @@ TEST_F(Basys3Top, SessionResetCommandRestartsTheFilter) {
   damaged[3] ^= 0x01;
   EXPECT_TRUE(exchange({damaged.begin(), damaged.end()}).empty());
   expect_filtered(42, clearance_word(7.0), frame::kStatusLinkError);
+}
+
+TEST_F(Basys3Top, LinkErrorCountShowsEveryHexDigitAndHoldsAtFfff) {
+  // sw[1]: the display shows the link-error count in hex (docs/board.md: saturating at FFFF).
+  // A byte with a low stop bit is one link error and never reaches the frame decoder.
+  bench_->set_switches(0x2);
+  const auto errors = [&](int n) {
+    while (n > 0) {
+      const int chunk = std::min(n, 4096);  // bounds the queued line levels
+      for (int i = 0; i < chunk; ++i) {
+        bench_->send({0xFF}, /*bad_stop=*/true);
+        bench_->idle(1);
+      }
+      bench_->drain(2);
+      n -= chunk;
+    }
+    bench_->run(4u << kSimRefreshBits);  // a full refresh of the four digits
+  };
+  const auto hex = [](int count) {
+    char text[8];
+    std::snprintf(text, sizeof text, "%04X", count);
+    return std::string(text);
+  };
+  int count = 0;
+  for (; count < 0x1F; ++count) {  // every hex digit in the rightmost place, 1 in the next
+    errors(1);
+    EXPECT_EQ(bench_->display(), hex(count + 1));
+  }
+  // Up to one below the top (every count bit rises and, from 0x7FFF to 0x8000, falls), then over
+  // it: the count stops at FFFF instead of wrapping to 0000.
+  errors(0xFFFE - count);
+  EXPECT_EQ(bench_->display(), "FFFE");
+  errors(1);
+  EXPECT_EQ(bench_->display(), "FFFF");
+  errors(3);
+  EXPECT_EQ(bench_->display(), "FFFF");
+  EXPECT_TRUE(replies().empty()) << "a byte with a bad stop bit must get no reply";
+  // The link still works, and the next reply reports the errors; btnC clears the count.
+  expect_filtered(0, clearance_word(8.0), frame::kStatusLinkError);
+  EXPECT_TRUE(bench_->leds() & kLedLinkError);  // set with the reply that reports the errors
+  bench_->press_reset();
+  bench_->run(4u << kSimRefreshBits);
+  EXPECT_EQ(bench_->display(), "0000");
+}
+
+TEST_F(Basys3Top, StartBitGlitchIsIgnored) {
+  // A low pulse shorter than half a bit (4 cycles here, plus the 2-cycle synchroniser) is no
+  // start bit: no byte, no link error, and the next frame is answered as if nothing happened.
+  for (int n = 0; n < 3; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(7.0));
+  for (int cycles = 1; cycles <= kSimClksPerBit / 2 - 1; ++cycles) {
+    bench_->glitch(cycles);
+    bench_->drain();
+    EXPECT_TRUE(replies().empty());
+    expect_filtered(static_cast<std::uint8_t>(2 + cycles), clearance_word(7.0 + 0.1 * cycles));
+  }
+  EXPECT_FALSE(bench_->leds() & kLedLinkError);
+}
+
+TEST_F(Basys3Top, UnusedSwitchesChangeNothing) {
+  // sw[15:2] are not connected (sw[1] shows the error count, sw[0] bypasses): all of them up or
+  // down, the replies stay bit-exact, the display shows the clearance, the LEDs stay dark.
+  constexpr std::uint16_t kSwitches[] = {0xFFFC, 0x0000, 0xAAA8, 0x5554, 0x0000};
+  std::uint8_t seq = 0;
+  for (const std::uint16_t sw : kSwitches) {
+    bench_->set_switches(sw);
+    bench_->run(4);
+    for (int n = 0; n < 4; ++n) expect_filtered(seq++, clearance_word(6.5 + 0.2 * n));
+    EXPECT_EQ(bench_->leds() & ~kLedHeartbeat, 0) << "sw " << sw;
+    expect_display_shows(last_out_);
+  }
 }
 
 TEST_F(Basys3Top, HeartbeatBlinks) {

@@ -6,6 +6,8 @@
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
+#include "rtl_coverage.h"
+
 namespace flange::tb::board {
 
 struct BoardBench::Impl {
@@ -58,18 +60,27 @@ BoardBench::BoardBench(const std::filesystem::path& fst_path) : impl_(std::make_
 BoardBench::~BoardBench() {
   if (impl_->trace) impl_->trace->close();
   impl_->dut->final();
+  write_rtl_coverage(*impl_->context, "basys3_top");
 }
 
 void BoardBench::send(const std::vector<std::uint8_t>& bytes, bool bad_stop) {
+  const auto bit_time = [this](bool level) {
+    rx_levels_.insert(rx_levels_.end(), kSimClksPerBit, level);
+  };
   for (std::uint8_t byte : bytes) {
-    rx_levels_.push_back(false);
-    for (int bit = 0; bit < 8; ++bit) rx_levels_.push_back(((byte >> bit) & 1u) != 0);
-    rx_levels_.push_back(!bad_stop);
+    bit_time(false);
+    for (int bit = 0; bit < 8; ++bit) bit_time(((byte >> bit) & 1u) != 0);
+    bit_time(!bad_stop);
   }
 }
 
 void BoardBench::idle(int bits) {
-  for (int i = 0; i < bits; ++i) rx_levels_.push_back(true);
+  rx_levels_.insert(rx_levels_.end(), static_cast<std::size_t>(bits * kSimClksPerBit), true);
+}
+
+void BoardBench::glitch(int cycles) {
+  rx_levels_.insert(rx_levels_.end(), static_cast<std::size_t>(cycles), false);
+  idle(1);
 }
 
 void BoardBench::tick() {
@@ -85,10 +96,7 @@ void BoardBench::tick() {
   dut.clk_i = 0;
   dut.eval();
   ++cycle_;
-  if (!rx_levels_.empty() && ++rx_phase_ == kSimClksPerBit) {
-    rx_phase_ = 0;
-    rx_levels_.pop_front();
-  }
+  if (!rx_levels_.empty()) rx_levels_.pop_front();
 
   // The TX pin, decoded like a receiver: the start edge, then the middle of every bit.
   const bool tx = dut.uart_tx_o != 0;

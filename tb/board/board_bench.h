@@ -38,6 +38,9 @@ class BoardBench {
   void send(const std::vector<std::uint8_t>& bytes, bool bad_stop = false);
   // Queues `bits` bit times of idle line (high).
   void idle(int bits);
+  // Queues a low pulse of `cycles` clock cycles, then one bit time of idle line: shorter than
+  // half a bit it is a glitch the receiver must ignore.
+  void glitch(int cycles);
   bool sending() const { return !rx_levels_.empty(); }
 
   // One clock cycle: drives the RX pin, applies the edge, samples TX, LEDs and the display.
@@ -64,8 +67,7 @@ class BoardBench {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  std::deque<bool> rx_levels_;  // one entry per bit time
-  int rx_phase_ = 0;
+  std::deque<bool> rx_levels_;  // one entry per clock cycle
   std::uint16_t switches_ = 0;
   bool button_ = false;
   std::uint64_t cycle_ = 0;
