@@ -24,9 +24,10 @@ struct BadInput {
   std::string expected;  // a part of the one line on stderr
 };
 
-// Files every case may name, in one folder.
+// Files every case may name, in a folder of the test's own (CTest runs the tests in parallel).
 struct InputFiles {
-  fs::path dir = fresh_test_dir("bad_input");
+  explicit InputFiles(const std::string& folder) : dir(fresh_test_dir(folder)) {}
+  fs::path dir;
   std::string header_only =
       write_file(dir / "header_only.csv", "t_s,clearance_mm,temp_c,voltage_v\n").string();
   std::string binary =
@@ -67,7 +68,7 @@ std::string command_text(const std::vector<std::string>& args) {
 }
 
 TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
-  const InputFiles f;
+  const InputFiles f("bad_input_table");
   const std::vector<BadInput> table = {
       {{"design", "--fs", "6", "--order", "40", "--fc", "1"}, 2, "--order"},
       {{"design", "--fs", "abc", "--order", "4", "--fc", "1"}, 2, "--fs: 'abc' is not a valid"},
@@ -122,7 +123,7 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
 }
 
 TEST(BadInput, ASpreadsheetsByteOrderMarkAndExtraColumnsAreAcceptedWithANote) {
-  const InputFiles f;
+  const InputFiles f("bad_input_spreadsheet");
   std::string rows;
   for (int i = 0; i < 300; ++i) {
     const double d = 2.0 + 0.02 * i;

@@ -16,8 +16,9 @@ namespace {
 using testing::fresh_test_dir;
 using testing::write_file;
 
-std::string read_error(const std::string& text) {
-  const auto path = write_file(fresh_test_dir("csv") / "input.csv", text);
+// `folder`: one of each test's own, since CTest runs the tests of this file in parallel.
+std::string read_error(const std::string& text, const std::string& folder = "csv") {
+  const auto path = write_file(fresh_test_dir(folder) / "input.csv", text);
   try {
     RecordingReader reader(path.string());
     while (reader.next()) {
@@ -120,15 +121,16 @@ TEST(RecordingCsv, ABinaryFileIsRefusedInOneLine) {
   std::string bytes = "PK\x03\x04";
   bytes += std::string(1, '\0');
   bytes += "\x14\x00\x06\x00garbage";
-  const std::string error = read_error(bytes);
+  const std::string error = read_error(bytes, "csv_binary");
   EXPECT_NE(error.find("input.csv: not a text file (a zero byte at offset 4)"), std::string::npos)
       << error;
   EXPECT_EQ(error.find('\n'), std::string::npos);
 }
 
 TEST(RecordingCsv, NonPrintableBytesInAFieldAreEscapedAndCut) {
-  const std::string error = read_error("t_s,clearance_mm,temp_c,voltage_v\n0,1,20,\x01\x7f\xff" +
-                                       std::string(100, 'x') + "\n");
+  const std::string error = read_error(
+      "t_s,clearance_mm,temp_c,voltage_v\n0,1,20,\x01\x7f\xff" + std::string(100, 'x') + "\n",
+      "csv_escape");
   EXPECT_NE(error.find("'\\x01\\x7F\\xFF" + std::string(37, 'x') + "...' is not a finite number"),
             std::string::npos)
       << error;
