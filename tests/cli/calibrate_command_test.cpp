@@ -9,11 +9,15 @@
 
 #include "calibration.h"
 #include "cli.h"
+#include "flange_in_process.h"
 #include "input_error.h"
 #include "test_files.h"
 
 namespace flange::cli {
 namespace {
+
+using testing::FlangeOutcome;
+using testing::run_flange_captured;
 
 using host::Calibration;
 using host::InputError;
@@ -36,17 +40,6 @@ std::string bench_rows(int count, double t0, const std::string& run) {
   return text.str();
 }
 
-struct Outcome {
-  int status;
-  std::string out, err;
-};
-
-Outcome run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int status = run_flange(args, out, err);
-  return {status, out.str(), err.str()};
-}
-
 TEST(CalibrateCommand, FitsAppendsAndRefits) {
   const auto dir = fresh_test_dir("calibrate");
   const auto db =
@@ -54,7 +47,8 @@ TEST(CalibrateCommand, FitsAppendsAndRefits) {
   const auto session = write_file(dir / "day2.csv",
                                   "t_s,clearance_mm,temp_c,voltage_v\n" + bench_rows(100, 0.0, ""));
   const auto model = dir / "model.json";
-  Outcome first = run({"calibrate", "--data", db.string(), "--out", model.string()});
+  FlangeOutcome first =
+      run_flange_captured({"calibrate", "--data", db.string(), "--out", model.string()});
   ASSERT_EQ(first.status, 0) << first.err;
   EXPECT_NE(first.out.find("<- selected"), std::string::npos);
   Calibration loaded = load_calibration(model.string());
@@ -62,7 +56,7 @@ TEST(CalibrateCommand, FitsAppendsAndRefits) {
   EXPECT_NEAR(loaded.fit.model.clearance_mm(4.0, 50.0),
               1.16 + 0.3672 * 4 - 0.0036 * 50 + 0.05812 * 16 + 0.0006618 * 200, 1e-6);
 
-  Outcome second = run(
+  FlangeOutcome second = run_flange_captured(
       {"calibrate", "--data", db.string(), "--append", session.string(), "--out", model.string()});
   ASSERT_EQ(second.status, 0) << second.err;
   std::ifstream in(model);
@@ -79,8 +73,10 @@ TEST(CalibrateCommand, EstimatesOutsideTheCalibratedRangeAreFlagged) {
   const auto dir = fresh_test_dir("calibrate_range");
   const auto db =
       write_file(dir / "db.csv", "t_s,clearance_mm,temp_c,voltage_v\n" + bench_rows(300, 0.0, ""));
-  ASSERT_EQ(run({"calibrate", "--data", db.string(), "--out", (dir / "m.json").string()}).status,
-            0);
+  ASSERT_EQ(
+      run_flange_captured({"calibrate", "--data", db.string(), "--out", (dir / "m.json").string()})
+          .status,
+      0);
   const Calibration calibration = load_calibration((dir / "m.json").string());
   EXPECT_FALSE(calibration.estimate(5.0, 50.0).outside_calibration);
   EXPECT_TRUE(calibration.estimate(5.0, 120.0).outside_calibration);
@@ -93,8 +89,9 @@ TEST(CalibrateCommand, BadInputExitsTwoAndLeavesTheDatabaseAlone) {
   const auto db = write_file(dir / "db.csv", original);
   const auto broken =
       write_file(dir / "broken.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,2,20,1\n1,2,20,11\n");
-  Outcome outcome = run({"calibrate", "--data", db.string(), "--append", broken.string(), "--out",
-                         (dir / "m.json").string()});
+  FlangeOutcome outcome =
+      run_flange_captured({"calibrate", "--data", db.string(), "--append", broken.string(), "--out",
+                           (dir / "m.json").string()});
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("broken.csv:3: column 4 (voltage_v)"), std::string::npos)
       << outcome.err;
@@ -111,16 +108,17 @@ TEST(CalibrateCommand, BadInputExitsTwoAndLeavesTheDatabaseAlone) {
                                                    "12,4,25,3\n13,5,25,4\n14,6,25,5\n"
                                                    "15,2,25,1\n16,3,25,2\n17,4,25,3\n"
                                                    "18,5,25,4\n19,6,25,5\n20,1,25,1\n"));
-  outcome = run({"calibrate", "--data", flat.string(), "--out", (dir / "m.json").string()});
+  outcome = run_flange_captured(
+      {"calibrate", "--data", flat.string(), "--out", (dir / "m.json").string()});
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("temp_c is constant"), std::string::npos) << outcome.err;
 
-  outcome = run(
+  outcome = run_flange_captured(
       {"calibrate", "--data", (dir / "missing.csv").string(), "--out", (dir / "m.json").string()});
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("missing.csv: cannot open"), std::string::npos) << outcome.err;
 
-  outcome = run(
+  outcome = run_flange_captured(
       {"calibrate", "--data", db.string(), "--out", (dir / "m.json").string(), "--max-order", "9"});
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("--max-order"), std::string::npos) << outcome.err;
@@ -132,8 +130,9 @@ TEST(CalibrateCommand, UnwritableOutputFailsBeforeTheDatabaseGrows) {
   const auto db = write_file(dir / "db.csv", original);
   const auto more = write_file(dir / "more.csv",
                                "t_s,clearance_mm,temp_c,voltage_v\n" + bench_rows(100, 100.0, ""));
-  const Outcome outcome = run({"calibrate", "--data", db.string(), "--append", more.string(),
-                               "--out", (dir / "no_such_folder" / "m.json").string()});
+  const FlangeOutcome outcome =
+      run_flange_captured({"calibrate", "--data", db.string(), "--append", more.string(), "--out",
+                           (dir / "no_such_folder" / "m.json").string()});
   EXPECT_EQ(outcome.status, 1);
   EXPECT_EQ(outcome.out, "") << "nothing fitted, nothing printed";
   EXPECT_NE(outcome.err.find("flange calibrate: --out "), std::string::npos) << outcome.err;

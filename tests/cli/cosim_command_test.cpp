@@ -14,23 +14,16 @@
 #include <vector>
 
 #include "cli.h"
+#include "flange_in_process.h"
 
 namespace flange::cli {
 namespace {
+
+using testing::FlangeOutcome;
+using testing::run_flange_captured;
 namespace fs = std::filesystem;
 
 const fs::path kSet = fs::path(FLANGE_SOURCE_DIR) / "coeffs" / "measurement_sos";
-
-struct FlangeRun {
-  int status;
-  std::string out, err;
-};
-
-FlangeRun flange(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int status = run_flange(args, out, err);
-  return {status, out.str(), err.str()};
-}
 
 std::string last_line(const std::string& text) {
   std::string t = text;
@@ -39,8 +32,9 @@ std::string last_line(const std::string& text) {
 }
 
 TEST(CosimCommand, CleanRunEndsWithTheSummary) {
-  const FlangeRun r = flange({"cosim", "--coeffs", (kSet / "filter.json").string(), "--samples",
-                              "3000", "--seed", "5", "--stimulus", "fullscale"});
+  const FlangeOutcome r =
+      run_flange_captured({"cosim", "--coeffs", (kSet / "filter.json").string(), "--samples",
+                           "3000", "--seed", "5", "--stimulus", "fullscale"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(last_line(r.out),
             "cosim: 3000 samples, 0 mismatches, 19 cycles/sample, 19 cycles latency")
@@ -59,8 +53,8 @@ TEST(CosimCommand, MismatchFailsWithTheFirstOne) {
   j["quantized"]["words"][0] = j["quantized"]["words"][0].get<int>() + 1;
   std::ofstream(dir / "filter.json") << j.dump(1);
 
-  const FlangeRun r =
-      flange({"cosim", "--coeffs", (dir / "filter.json").string(), "--samples", "500"});
+  const FlangeOutcome r = run_flange_captured(
+      {"cosim", "--coeffs", (dir / "filter.json").string(), "--samples", "500"});
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_TRUE(std::regex_search(
       r.err, std::regex("first mismatch: cycle [0-9]+, sample [0-9]+ \\(input -?[0-9]+\\): dut "
@@ -76,15 +70,15 @@ TEST(CosimCommand, MismatchFailsWithTheFirstOne) {
 TEST(CosimCommand, BadInputIsOneLineNamingFileAndField) {
   const fs::path bad = fs::temp_directory_path() / "flange_cosim_bad.json";
   std::ofstream(bad) << R"({"quantized": {"data_bits": "16"}})";
-  const FlangeRun r = flange({"cosim", "--coeffs", bad.string()});
+  const FlangeOutcome r = run_flange_captured({"cosim", "--coeffs", bad.string()});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find(bad.string()), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("quantized.data_bits"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   fs::remove(bad);
 
-  const FlangeRun s =
-      flange({"cosim", "--coeffs", (kSet / "filter.json").string(), "--stimulus", "x"});
+  const FlangeOutcome s = run_flange_captured(
+      {"cosim", "--coeffs", (kSet / "filter.json").string(), "--stimulus", "x"});
   EXPECT_EQ(s.status, 2);
   EXPECT_NE(s.err.find("--stimulus 'x'"), std::string::npos) << s.err;
 }

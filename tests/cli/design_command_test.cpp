@@ -9,24 +9,15 @@
 #include <sstream>
 
 #include "cli.h"
+#include "flange_in_process.h"
 
 namespace flange::cli {
 namespace {
 
+using testing::FlangeOutcome;
+using testing::run_flange_captured;
+
 namespace fs = std::filesystem;
-
-struct Outcome {
-  int status;
-  std::string out;
-  std::string err;
-};
-
-Outcome run(const std::vector<std::string>& args) {
-  std::ostringstream out;
-  std::ostringstream err;
-  const int status = run_flange(args, out, err);
-  return {status, out.str(), err.str()};
-}
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::path(FLANGE_BINARY_DIR) / "test_design_command" / name;
@@ -84,7 +75,7 @@ TEST(DesignCommand, EveryBadInputExitsTwoWithOneLineAndNoFiles) {
     const fs::path dir = fresh_dir("bad");
     std::vector<std::string> args{"design"};
     args.insert(args.end(), bad.args.begin(), bad.args.end());
-    const Outcome outcome = run(with_out(args, dir));
+    const FlangeOutcome outcome = run_flange_captured(with_out(args, dir));
     std::string joined;
     for (const std::string& arg : bad.args) joined += arg + " ";
     EXPECT_EQ(outcome.status, kExitBadArgument) << joined << "\n" << outcome.err;
@@ -110,7 +101,7 @@ TEST(DesignCommand, ValueOfTheWrongTypeNamesTheValidRange) {
     const fs::path dir = fresh_dir("bad_type");
     std::vector<std::string> full{"design"};
     full.insert(full.end(), args.begin(), args.end());
-    const Outcome outcome = run(with_out(full, dir));
+    const FlangeOutcome outcome = run_flange_captured(with_out(full, dir));
     EXPECT_EQ(outcome.status, kExitBadArgument) << outcome.err;
     EXPECT_NE(outcome.err.find(message), std::string::npos) << outcome.err;
     EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
@@ -119,7 +110,7 @@ TEST(DesignCommand, ValueOfTheWrongTypeNamesTheValidRange) {
 
 TEST(DesignCommand, UnstableDirectFormExitsThreeAndWritesNothing) {
   const fs::path dir = fresh_dir("vehicle_df1");
-  const Outcome outcome = run(with_out(
+  const FlangeOutcome outcome = run_flange_captured(with_out(
       {"design", "--fs", "100", "--order", "7", "--fc", "0.259", "--structure", "df1"}, dir));
   EXPECT_EQ(outcome.status, 3);
   EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
@@ -132,7 +123,7 @@ TEST(DesignCommand, UnstableDirectFormExitsThreeAndWritesNothing) {
 TEST(DesignCommand, ThesisPrintedVehicleCoefficientsAreRefusedAsUnstable) {
   // Eq. 4.20 as printed: 4 significant digits of a 7th-order direct form.
   const fs::path dir = fresh_dir("eq420");
-  const Outcome outcome = run(
+  const FlangeOutcome outcome = run_flange_captured(
       with_out({"design", "--fs", "100", "--tf-b",
                 "2.273e-15,1.591e-14,4.773e-14,7.955e-14,7.955e-14,4.773e-14,1.591e-14,2.273e-15",
                 "--tf-a", "1,-6.927,20.56,-33.92,33.56,-19.93,6.574,-0.9295"},
@@ -145,10 +136,10 @@ TEST(DesignCommand, ThesisPrintedVehicleCoefficientsAreRefusedAsUnstable) {
 TEST(DesignCommand, MissedSpecExitsThree) {
   // The thesis's 5th-order measurement filter checked against the thesis's own spec.
   const fs::path dir = fresh_dir("missed_spec");
-  const Outcome outcome =
-      run(with_out({"design", "--fs", "6", "--order", "5", "--fc", "0.5742", "--fp", "0.21128",
-                    "--fa", "0.975", "--ap", "0.1737", "--aa", "40"},
-                   dir));
+  const FlangeOutcome outcome =
+      run_flange_captured(with_out({"design", "--fs", "6", "--order", "5", "--fc", "0.5742", "--fp",
+                                    "0.21128", "--fa", "0.975", "--ap", "0.1737", "--aa", "40"},
+                                   dir));
   EXPECT_EQ(outcome.status, 3);
   EXPECT_NE(outcome.err.find("stopband attenuation"), std::string::npos) << outcome.err;
   EXPECT_FALSE(fs::exists(dir));
@@ -156,7 +147,7 @@ TEST(DesignCommand, MissedSpecExitsThree) {
 
 TEST(DesignCommand, SpecDesignWritesEveryOutput) {
   const fs::path dir = fresh_dir("spec");
-  const Outcome outcome = run(with_out(
+  const FlangeOutcome outcome = run_flange_captured(with_out(
       {"design", "--fs", "6", "--fp", "0.21128", "--fa", "0.975", "--ap", "0.1737", "--aa", "40"},
       dir));
   ASSERT_EQ(outcome.status, 0) << outcome.err;
@@ -202,13 +193,13 @@ TEST(DesignCommand, SpecDesignWritesEveryOutput) {
 }
 
 TEST(DesignCommand, HelpExitsZero) {
-  const Outcome outcome = run({"design", "--help"});
+  const FlangeOutcome outcome = run_flange_captured({"design", "--help"});
   EXPECT_EQ(outcome.status, 0);
   EXPECT_NE(outcome.out.find("--coef-bits"), std::string::npos);
 }
 
 TEST(DesignCommand, UnknownSubcommandExitsTwo) {
-  const Outcome outcome = run({"frobnicate"});
+  const FlangeOutcome outcome = run_flange_captured({"frobnicate"});
   EXPECT_EQ(outcome.status, kExitBadArgument);
 }
 

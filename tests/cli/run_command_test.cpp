@@ -8,24 +8,17 @@
 #include <sstream>
 
 #include "cli.h"
+#include "flange_in_process.h"
 #include "test_files.h"
 
 namespace flange::cli {
 namespace {
 
+using testing::FlangeOutcome;
+using testing::run_flange_captured;
+
 using testing::fresh_test_dir;
 using testing::write_file;
-
-struct Outcome {
-  int status;
-  std::string out, err;
-};
-
-Outcome run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int status = run_flange(args, out, err);
-  return {status, out.str(), err.str()};
-}
 
 std::string read(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -41,10 +34,12 @@ class RunCommand : public ::testing::Test {
   static void SetUpTestSuite() {
     // One folder per process: CTest runs the tests of this file in parallel processes.
     dir_ = fresh_test_dir("run_command_" + std::to_string(::getpid()));
-    const Outcome sim = run({"simulate", "--scenario", "bench", "--duration", "1200", "--seed", "5",
+    const FlangeOutcome sim =
+        run_flange_captured({"simulate", "--scenario", "bench", "--duration", "1200", "--seed", "5",
                              "--out", (dir_ / "bench.csv").string()});
     ASSERT_EQ(sim.status, 0) << sim.err;
-    const Outcome cal = run({"calibrate", "--data", (dir_ / "bench.csv").string(), "--out",
+    const FlangeOutcome cal =
+        run_flange_captured({"calibrate", "--data", (dir_ / "bench.csv").string(), "--out",
                              (dir_ / "model.json").string()});
     ASSERT_EQ(cal.status, 0) << cal.err;
   }
@@ -63,7 +58,7 @@ TEST_F(RunCommand, FilteringHalvesTheErrorAndWritesEveryRow) {
   std::vector<std::string> args = run_args((dir_ / "bench.csv").string(), "model");
   args.insert(args.end(),
               {"--out", (dir_ / "out_model.csv").string(), "--report", (dir_ / "report").string()});
-  const Outcome outcome = run(args);
+  const FlangeOutcome outcome = run_flange_captured(args);
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("rows read 7201, flagged 0"), std::string::npos) << outcome.out;
   const std::string csv = read(dir_ / "out_model.csv");
@@ -89,8 +84,8 @@ TEST_F(RunCommand, FloatEngineStaysWithinRoundingOfTheModel) {
   model_args.insert(model_args.end(), {"--out", (dir_ / "m.csv").string()});
   std::vector<std::string> float_args = run_args((dir_ / "bench.csv").string(), "float");
   float_args.insert(float_args.end(), {"--out", (dir_ / "f.csv").string()});
-  ASSERT_EQ(run(model_args).status, 0);
-  ASSERT_EQ(run(float_args).status, 0);
+  ASSERT_EQ(run_flange_captured(model_args).status, 0);
+  ASSERT_EQ(run_flange_captured(float_args).status, 0);
   std::istringstream m(read(dir_ / "m.csv")), f(read(dir_ / "f.csv"));
   std::string lm, lf;
   std::getline(m, lm);
@@ -114,10 +109,10 @@ TEST_F(RunCommand, RtlEngineEqualsTheModelWordForWord) {
   rtl.insert(rtl.end(), {"--out", (dir_ / "r.csv").string()});
   std::vector<std::string> model = run_args((dir_ / "bench.csv").string(), "model");
   model.insert(model.end(), {"--out", (dir_ / "m2.csv").string()});
-  const Outcome outcome = run(rtl);
+  const FlangeOutcome outcome = run_flange_captured(rtl);
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("0 mismatches"), std::string::npos) << outcome.out;
-  ASSERT_EQ(run(model).status, 0);
+  ASSERT_EQ(run_flange_captured(model).status, 0);
   EXPECT_EQ(read(dir_ / "r.csv"), read(dir_ / "m2.csv"));
 }
 
@@ -132,14 +127,14 @@ TEST_F(RunCommand, BadRowsStopAStrictRunAndAreCountedInALenientOne) {
     corrupted += line + "\n";
   }
   const auto bad = write_file(dir_ / "bad.csv", corrupted);
-  Outcome strict = run(run_args(bad.string(), "model"));
+  FlangeOutcome strict = run_flange_captured(run_args(bad.string(), "model"));
   EXPECT_EQ(strict.status, 2);
   EXPECT_NE(strict.err.find("bad.csv:101: column 4 (voltage_v): 12.5 is outside"),
             std::string::npos)
       << strict.err;
   std::vector<std::string> lenient = run_args(bad.string(), "model");
   lenient.insert(lenient.end(), {"--lenient", "--out", (dir_ / "lenient.csv").string()});
-  const Outcome outcome = run(lenient);
+  const FlangeOutcome outcome = run_flange_captured(lenient);
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("rows read 7201, flagged 2 (bad 2"), std::string::npos) << outcome.out;
   const std::string csv = read(dir_ / "lenient.csv");
@@ -148,19 +143,21 @@ TEST_F(RunCommand, BadRowsStopAStrictRunAndAreCountedInALenientOne) {
 }
 
 TEST_F(RunCommand, ARecordingAtTheWrongRateIsRefused) {
-  const Outcome sim = run({"simulate", "--scenario", "bench", "--fs", "100", "--duration", "5",
+  const FlangeOutcome sim =
+      run_flange_captured({"simulate", "--scenario", "bench", "--fs", "100", "--duration", "5",
                            "--seed", "1", "--out", (dir_ / "fast.csv").string()});
   ASSERT_EQ(sim.status, 0) << sim.err;
-  const Outcome outcome = run(run_args((dir_ / "fast.csv").string(), "model"));
+  const FlangeOutcome outcome =
+      run_flange_captured(run_args((dir_ / "fast.csv").string(), "model"));
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("does not match the filter's fs = 6 Hz"), std::string::npos)
       << outcome.err;
 }
 
 TEST_F(RunCommand, UnknownEngineAndMissingFilesExitTwo) {
-  EXPECT_EQ(run(run_args((dir_ / "bench.csv").string(), "vhdl")).status, 2);
+  EXPECT_EQ(run_flange_captured(run_args((dir_ / "bench.csv").string(), "vhdl")).status, 2);
   std::vector<std::string> args = run_args((dir_ / "missing.csv").string(), "model");
-  const Outcome outcome = run(args);
+  const FlangeOutcome outcome = run_flange_captured(args);
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("missing.csv: cannot open"), std::string::npos) << outcome.err;
 }

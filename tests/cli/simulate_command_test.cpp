@@ -11,24 +11,15 @@
 #include <utility>
 
 #include "cli.h"
+#include "flange_in_process.h"
 
 namespace flange::cli {
 namespace {
 
+using testing::FlangeOutcome;
+using testing::run_flange_captured;
+
 namespace fs = std::filesystem;
-
-struct Outcome {
-  int status;
-  std::string out;
-  std::string err;
-};
-
-Outcome run(const std::vector<std::string>& args) {
-  std::ostringstream out;
-  std::ostringstream err;
-  const int status = run_flange(args, out, err);
-  return {status, out.str(), err.str()};
-}
 
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::path(FLANGE_BINARY_DIR) / "test_simulate_command";
@@ -49,7 +40,7 @@ std::string simulate(const std::vector<std::string>& args, const std::string& fi
   full.insert(full.end(), args.begin(), args.end());
   full.push_back("--out");
   full.push_back(out.string());
-  const Outcome outcome = run(full);
+  const FlangeOutcome outcome = run_flange_captured(full);
   EXPECT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_TRUE(outcome.err.empty()) << outcome.err;
   return read(out);
@@ -145,8 +136,9 @@ TEST(SimulateCommand, SavedTwinReproducesTheRunAndCanBeRetuned) {
 
 TEST(SimulateCommand, SummaryReportsAliasingOfMainsAndTheLateralMode) {
   const fs::path out = scratch("summary.csv");
-  const Outcome outcome = run({"simulate", "--scenario", "loco", "--fs", "6", "--duration", "10",
-                               "--seed", "1", "--effect", "mains_pickup", "--out", out.string()});
+  const FlangeOutcome outcome =
+      run_flange_captured({"simulate", "--scenario", "loco", "--fs", "6", "--duration", "10",
+                           "--seed", "1", "--effect", "mains_pickup", "--out", out.string()});
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("tones at 50, 100, 150 Hz appear at 2, 2, 0 Hz"), std::string::npos)
       << outcome.out;
@@ -160,7 +152,7 @@ TEST(SimulateCommand, SamplesOnTheRailsAreCountedInTheSummary) {
     std::vector<std::string> args = {"simulate", "--scenario", "bench",     "--seed",
                                      "1",        "--out",      out.string()};
     args.insert(args.end(), effect.begin(), effect.end());
-    const Outcome outcome = run(args);
+    const FlangeOutcome outcome = run_flange_captured(args);
     EXPECT_EQ(outcome.status, 0) << outcome.err;
     const std::smatch match = [&] {
       std::smatch m;
@@ -238,7 +230,7 @@ TEST(SimulateCommand, EveryBadArgumentExitsTwoWithOneLineAndNoRecording) {
     args.insert(args.end(), input.args.begin(), input.args.end());
     args.push_back("--out");
     args.push_back(out.string());
-    const Outcome outcome = run(args);
+    const FlangeOutcome outcome = run_flange_captured(args);
     std::string command;
     for (const std::string& word : args) command += " " + word;
     EXPECT_EQ(outcome.status, 2) << "flange" << command;

@@ -12,12 +12,16 @@
 #include "cli.h"
 #include "diagnosis.h"
 #include "effect_catalogue.h"
+#include "flange_in_process.h"
 #include "sensor_twin.h"
 #include "test_files.h"
 #include "twin_replay.h"
 
 namespace flange::diagnose {
 namespace {
+
+using testing::FlangeOutcome;
+using testing::run_flange_captured;
 
 using testing::fresh_test_dir;
 using testing::write_file;
@@ -149,17 +153,6 @@ TEST(Diagnose, ReplayMatchesTheTwinSampleForSample) {
   for (std::size_t i = 0; i < v.size(); ++i) ASSERT_NEAR(v[i], recording.voltage_v[i], 1e-9) << i;
 }
 
-// The command line, as users run it.
-struct Outcome {
-  int status;
-  std::string out, err;
-};
-Outcome run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int status = cli::run_flange(args, out, err);
-  return {status, out.str(), err.str()};
-}
-
 void write_csv(const std::filesystem::path& path, const RecordingSeries& s, double time_scale = 1) {
   std::ofstream csv(path, std::ios::binary);
   csv << "t_s,clearance_mm,temp_c,voltage_v\n";
@@ -174,8 +167,9 @@ TEST(DiagnoseCommand, WritesJsonAndReportWithVerdictFirst) {
   const std::vector<sim::EffectSettings> effects = {
       sim::make_effect_settings("temp_offset_drift", {{"offset_v_per_c", -0.003}}, "test")};
   write_csv(dir / "real.csv", twin_recording(effects, 41, 0.0));
-  const Outcome o = run({"diagnose", "--real", (dir / "real.csv").string(), "--holdout-fraction",
-                         "0.3", "--out", (dir / "out").string(), "--bootstrap", "20"});
+  const FlangeOutcome o =
+      run_flange_captured({"diagnose", "--real", (dir / "real.csv").string(), "--holdout-fraction",
+                           "0.3", "--out", (dir / "out").string(), "--bootstrap", "20"});
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.out.rfind("verdict: explained by temp_offset_drift", 0), 0u) << o.out;
   std::ifstream in(dir / "out" / "diagnosis.json");
@@ -219,7 +213,7 @@ TEST(DiagnoseCommand, BadInputsGiveOneLineAndStatusTwo) {
     std::vector<std::string> args = {"diagnose"};
     args.insert(args.end(), bad.args.begin(), bad.args.end());
     args.insert(args.end(), {"--out", out});
-    const Outcome o = run(args);
+    const FlangeOutcome o = run_flange_captured(args);
     EXPECT_EQ(o.status, 2) << bad.expected << ": " << o.err;
     EXPECT_NE(o.err.find(bad.expected), std::string::npos) << o.err;
     EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;

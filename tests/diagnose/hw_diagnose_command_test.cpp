@@ -15,24 +15,17 @@
 #include <vector>
 
 #include "cli.h"
+#include "flange_in_process.h"
 #include "test_files.h"
 
 namespace flange::diagnose {
 namespace {
+
+using testing::FlangeOutcome;
+using testing::run_flange_captured;
 namespace fs = std::filesystem;
 
 const fs::path kCoeffs = fs::path(FLANGE_SOURCE_DIR) / "coeffs";
-
-struct FlangeRun {
-  int status;
-  std::string out, err;
-};
-
-FlangeRun flange(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int status = cli::run_flange(args, out, err);
-  return {status, out.str(), err.str()};
-}
 
 std::string last_line(const std::string& text) {
   std::string t = text;
@@ -43,8 +36,9 @@ std::string last_line(const std::string& text) {
 TEST(HwDiagnoseCommand, MeasurementFilterGapExplainedToZeroAndRtlAgrees) {
   const fs::path dir = testing::fresh_test_dir("hw_diagnose_measurement");
   const std::string json = (kCoeffs / "measurement_sos" / "filter.json").string();
-  const FlangeRun r = flange({"diagnose", "--hw", "--coeffs", json, "--stimulus", "sweep",
-                              "--samples", "3000", "--out", dir.string()});
+  const FlangeOutcome r =
+      run_flange_captured({"diagnose", "--hw", "--coeffs", json, "--stimulus", "sweep", "--samples",
+                           "3000", "--out", dir.string()});
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_TRUE(std::regex_match(
       last_line(r.out),
@@ -77,8 +71,9 @@ TEST(HwDiagnoseCommand, MeasurementFilterGapExplainedToZeroAndRtlAgrees) {
 
 TEST(HwDiagnoseCommand, ThesisEq420PrintedCoefficientsAreUnstableByCoefficientRounding) {
   const std::string json = (kCoeffs / "vehicle_sos" / "filter.json").string();
-  const FlangeRun r = flange({"diagnose", "--hw", "--coeffs", json, "--thesis-eq-4-20",
-                              "--stimulus", "step", "--samples", "2000"});
+  const FlangeOutcome r =
+      run_flange_captured({"diagnose", "--hw", "--coeffs", json, "--thesis-eq-4-20", "--stimulus",
+                           "step", "--samples", "2000"});
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   const std::string line = last_line(r.out);
   EXPECT_NE(line.find("coefficient rounding to the printed values (eq. 4.20 as printed) alone "
@@ -92,9 +87,10 @@ TEST(HwDiagnoseCommand, ThesisEq420PrintedCoefficientsAreUnstableByCoefficientRo
 TEST(HwDiagnoseCommand, StablePrintedCoefficientsAreSaidStable) {
   // The float design's own b/a rounded to 4 significant digits, for a well-conditioned filter.
   const std::string json = (kCoeffs / "measurement_sos" / "filter.json").string();
-  const FlangeRun r = flange({"diagnose", "--hw", "--coeffs", json, "--tf-b",
-                              "0.001063,0.005317,0.01063,0.01063,0.005317,0.001063", "--tf-a",
-                              "1,-3.062,3.998,-2.719,0.9549,-0.1376", "--samples", "500"});
+  const FlangeOutcome r =
+      run_flange_captured({"diagnose", "--hw", "--coeffs", json, "--tf-b",
+                           "0.001063,0.005317,0.01063,0.01063,0.005317,0.001063", "--tf-a",
+                           "1,-3.062,3.998,-2.719,0.9549,-0.1376", "--samples", "500"});
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(last_line(r.out).find("are stable"), std::string::npos) << r.out;
 }
@@ -121,7 +117,7 @@ TEST(HwDiagnoseCommand, BadInputExitsTwoWithOneLine) {
       {{"diagnose", "--coeffs", good}, "--hw"},
   };
   for (const Case& c : cases) {
-    const FlangeRun r = flange(c.args);
+    const FlangeOutcome r = run_flange_captured(c.args);
     std::string joined;
     for (const std::string& a : c.args) joined += a + " ";
     EXPECT_EQ(r.status, 2) << joined << r.out << r.err;
