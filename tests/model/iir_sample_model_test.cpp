@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <ostream>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -130,6 +131,9 @@ std::vector<SetCase> every_set() {
   }
   return sets;
 }
+
+// gtest prints the parameter in the test's listing: the file, not its bytes.
+void PrintTo(const SetCase& set, std::ostream* os) { *os << set.json.string(); }
 
 class IirSampleModelSet : public ::testing::TestWithParam<SetCase> {};
 
