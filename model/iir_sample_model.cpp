@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <stdexcept>
 #include <utility>
@@ -12,7 +13,8 @@ namespace flange::model {
 
 namespace {
 
-// |value| * 2^shift for |value| < 2^32 and shift <= 31 + 25: at most 2^63, no overflow.
+// |value| * 2^shift: a C-bit word times the largest D-bit sample (shift D - 1) or history word
+// (shift D - 1 + s), below 2^62 since D + s + C <= P <= 64.
 std::uint64_t magnitude_scaled(std::int64_t value, int shift) {
   return static_cast<std::uint64_t>(std::llabs(value)) << shift;
 }
@@ -36,6 +38,10 @@ bool sum_can_wrap(const CoreConfig& c) {
 
 }  // namespace
 
+// Biquad sets (the generator's sos structure) with up to this many sections get a kernel with M and
+// K fixed at compile time; everything else runs the general one.
+constexpr int kMaxFixedSections = 8;
+
 IirSampleModel::IirSampleModel(CoreConfig config) : config_(std::move(config)) {
   validate_core_config(config_);
   sample_max_ = static_cast<std::int32_t>((std::int64_t{1} << (config_.sample_width - 1)) - 1);
@@ -43,77 +49,123 @@ IirSampleModel::IirSampleModel(CoreConfig config) : config_(std::move(config)) {
   ext_max_ = (std::int64_t{sample_max_} + 1) * (std::int64_t{1} << config_.feedback_shift) - 1;
   ext_min_ = std::int64_t{sample_min_} * (std::int64_t{1} << config_.feedback_shift);
   can_wrap_ = sum_can_wrap(config_);
-  const auto words = static_cast<std::size_t>(config_.num_sections * config_.section_order);
-  x_history_.assign(words, 0);
-  ext_history_.assign(words, 0);
+  kernel_ = choose_kernel();
+  partial_.resize(static_cast<std::size_t>(config_.num_sections * config_.section_order));
+  reset();
 }
 
 void IirSampleModel::reset() {
-  std::fill(x_history_.begin(), x_history_.end(), 0);
-  std::fill(ext_history_.begin(), ext_history_.end(), 0);
+  // A zero history: only the rounding constant, preloaded into each section's next sum.
+  std::fill(partial_.begin(), partial_.end(), 0);
+  for (int k = 0; k < config_.num_sections; ++k) {
+    partial_[static_cast<std::size_t>(k * config_.section_order)] = std::uint64_t{1}
+                                                                    << (config_.coef_frac_bits - 1);
+  }
 }
 
-template <int kOrder, bool kWrap>
+template <int kOrder, int kSections, bool kWrap>
 void IirSampleModel::run(const std::int32_t* in, SampleResult* out, std::size_t n) {
-  const int m = kOrder > 0 ? kOrder : config_.section_order;
+  constexpr bool kFixed = kOrder > 0;
+  const int m = kFixed ? kOrder : config_.section_order;
+  const int sections = kFixed ? kSections : config_.num_sections;
   const int terms = 2 * m + 1;
-  const int sections = config_.num_sections;
   const int fa = config_.coef_frac_bits;
   const int s = config_.feedback_shift;
   const int wrap_shift = 64 - config_.acc_width;
   const std::uint64_t rounding = std::uint64_t{1} << (fa - 1);
   const std::int64_t half = s > 0 ? std::int64_t{1} << (s - 1) : 0;
   const std::int64_t ext_min = ext_min_, ext_max = ext_max_;
-  const std::int64_t out_min = sample_min_, out_max = sample_max_;
-  const std::int64_t* const rom = config_.rom.data();
-  std::int64_t* const x_history = x_history_.data();
-  std::int64_t* const ext_history = ext_history_.data();
+  const std::int64_t out_max = sample_max_;
+  // y_ext rounds above sample_max from (sample_max + 1) 2^s - half on (never for s = 0).
+  const std::int64_t clip_free_max = std::min(ext_max, ((out_max + 1) << s) - half - 1);
+  const auto clip_free_span = static_cast<std::uint64_t>(clip_free_max - ext_min);
+
+  std::array<std::int64_t, kFixed ? kSections*(2 * kOrder + 1) : 1> local_rom{};
+  std::array<std::uint64_t, kFixed ? kSections * kOrder : 1> local_partial{};
+  const std::int64_t* rom = config_.rom.data();
+  std::uint64_t* partial = partial_.data();
+  if constexpr (kFixed) {
+    std::copy(config_.rom.begin(), config_.rom.end(), local_rom.begin());
+    std::copy(partial_.begin(), partial_.end(), local_partial.begin());
+    rom = local_rom.data();
+    partial = local_partial.data();
+  }
+
+  std::int64_t x = 0;  // x_k[n]: the filter input, then each section's output
+  bool saturated = false;
+  const auto section = [&](int k) {
+    const std::int64_t* const b = rom + k * terms;  // b[0..M]
+    const std::int64_t* const a = b + m;            // a[1..M]: -a, as the ROM holds it
+    std::uint64_t* const z = partial + k * m;
+    // Sums modulo 2^64, like iir_mac.h's mac(); the products are exact (D + s + C <= P <= 64).
+    const std::uint64_t p = z[0] + static_cast<std::uint64_t>(b[0] * x);
+    // The P-bit two's complement value: shift the sign bit of P to bit 63 and back.
+    const std::int64_t acc = kWrap ? static_cast<std::int64_t>(p << wrap_shift) >> wrap_shift
+                                   : static_cast<std::int64_t>(p);
+    const std::int64_t shifted = acc >> fa;  // arithmetic (C++20)
+    const std::int64_t y_ext = std::clamp(shifted, ext_min, ext_max);
+    // y_ext >= ext_min = sample_min 2^s rounds to >= sample_min: only the upper rail can clip.
+    const std::int64_t y = std::min((y_ext + half) >> s, out_max);
+    // Either clip, in one unsigned compare: shifted below ext_min, or above the largest y_ext that
+    // rounds into D bits (which is at most ext_max, so a first-step clip at the top counts too).
+    saturated |= static_cast<std::uint64_t>(shifted - ext_min) > clip_free_span;
+    // x_k[n] and y_ext_k[n] go into the sums of samples n+1..n+M.
+    for (int j = 0; j + 1 < m; ++j) {
+      z[j] = z[j + 1] + static_cast<std::uint64_t>(b[j + 1] * x) +
+             static_cast<std::uint64_t>(a[j + 1] * y_ext);
+    }
+    z[m - 1] = static_cast<std::uint64_t>(b[m] * x) + static_cast<std::uint64_t>(a[m] * y_ext);
+    z[0] += rounding;
+    x = y;
+  };
 
   for (std::size_t i = 0; i < n; ++i) {
-    std::int64_t x = in[i];  // x_k[n]: the filter input, then each section's output
-    bool saturated = false;
-    for (int k = 0; k < sections; ++k) {
-      const std::int64_t* const b = rom + k * terms;  // b[0..M]
-      const std::int64_t* const a = b + m;            // a[1..M]: -a, as the ROM holds it
-      std::int64_t* const xh = x_history + k * m;     // x_k[n-1-j] at xh[j]
-      std::int64_t* const yh = ext_history + k * m;   // y_ext_k[n-1-j] at yh[j]
-      // Modulo 2^64, like iir_mac.h's mac(): the sum's low P bits do not depend on the order of
-      // the terms, so this order (not the core's issue order) gives the same accumulator.
-      std::uint64_t p = rounding + static_cast<std::uint64_t>(b[0] * x);
-      for (int j = 1; j <= m; ++j) {
-        p += static_cast<std::uint64_t>(b[j] * xh[j - 1]);
-        p += static_cast<std::uint64_t>(a[j] * yh[j - 1]);
-      }
-      // The P-bit two's complement value: shift the sign bit of P to bit 63 and back.
-      const std::int64_t acc = kWrap ? static_cast<std::int64_t>(p << wrap_shift) >> wrap_shift
-                                     : static_cast<std::int64_t>(p);
-      const std::int64_t shifted = acc >> fa;  // arithmetic (C++20)
-      const std::int64_t y_ext = std::clamp(shifted, ext_min, ext_max);
-      const std::int64_t rounded = (y_ext + half) >> s;
-      const std::int64_t y = std::clamp(rounded, out_min, out_max);
-      saturated |= (y_ext != shifted) | (y != rounded);
-      for (int j = m - 1; j > 0; --j) {
-        xh[j] = xh[j - 1];
-        yh[j] = yh[j - 1];
-      }
-      xh[0] = x;
-      yh[0] = y_ext;
-      x = y;
+    x = in[i];
+    saturated = false;
+    if constexpr (kFixed) {
+      // Unrolled, so that every index is a constant and the arrays can live in registers.
+      [&]<int... k>(std::integer_sequence<int, k...>) { (section(k), ...); }
+      (std::make_integer_sequence<int, kSections>{});
+    } else {
+      for (int k = 0; k < sections; ++k) section(k);
     }
     out[i] = {static_cast<std::int32_t>(x), saturated};
   }
+
+  if constexpr (kFixed) std::copy(local_partial.begin(), local_partial.end(), partial_.begin());
 }
 
-void IirSampleModel::dispatch(const std::int32_t* in, SampleResult* out, std::size_t n) {
-  // Biquads (sos sets) and first-order sections get their order at compile time.
-  switch (config_.section_order) {
+template <bool kWrap>
+IirSampleModel::Kernel IirSampleModel::biquad_kernel(int sections) {
+  switch (sections) {
     case 1:
-      return can_wrap_ ? run<1, true>(in, out, n) : run<1, false>(in, out, n);
+      return &IirSampleModel::run<2, 1, kWrap>;
     case 2:
-      return can_wrap_ ? run<2, true>(in, out, n) : run<2, false>(in, out, n);
+      return &IirSampleModel::run<2, 2, kWrap>;
+    case 3:
+      return &IirSampleModel::run<2, 3, kWrap>;
+    case 4:
+      return &IirSampleModel::run<2, 4, kWrap>;
+    case 5:
+      return &IirSampleModel::run<2, 5, kWrap>;
+    case 6:
+      return &IirSampleModel::run<2, 6, kWrap>;
+    case 7:
+      return &IirSampleModel::run<2, 7, kWrap>;
+    case 8:
+      return &IirSampleModel::run<2, 8, kWrap>;
     default:
-      return can_wrap_ ? run<0, true>(in, out, n) : run<0, false>(in, out, n);
+      return &IirSampleModel::run<0, 0, kWrap>;
   }
+}
+static_assert(kMaxFixedSections == 8, "biquad_kernel has one case per fixed section count");
+
+IirSampleModel::Kernel IirSampleModel::choose_kernel() const {
+  if (config_.section_order == 2 && config_.num_sections <= kMaxFixedSections) {
+    return can_wrap_ ? biquad_kernel<true>(config_.num_sections)
+                     : biquad_kernel<false>(config_.num_sections);
+  }
+  return can_wrap_ ? &IirSampleModel::run<0, 0, true> : &IirSampleModel::run<0, 0, false>;
 }
 
 SampleResult IirSampleModel::step(std::int32_t sample) {
@@ -122,7 +174,12 @@ SampleResult IirSampleModel::step(std::int32_t sample) {
                                         sample_min_, sample_max_));
   }
   SampleResult result;
-  dispatch(&sample, &result, 1);
+  // The general kernel works on the members in place; a fixed one would copy them in and out.
+  if (can_wrap_) {
+    run<0, 0, true>(&sample, &result, 1);
+  } else {
+    run<0, 0, false>(&sample, &result, 1);
+  }
   return result;
 }
 
@@ -137,7 +194,7 @@ void IirSampleModel::filter(std::span<const std::int32_t> in, std::span<SampleRe
     throw std::out_of_range(
         fmt::format("IirSampleModel: sample {} outside [{}, {}]", bad, sample_min_, sample_max_));
   }
-  dispatch(in.data(), out.data(), in.size());
+  (this->*kernel_)(in.data(), out.data(), in.size());
 }
 
 }  // namespace flange::model

@@ -6,11 +6,15 @@
 // fixed-point contract of model/iir_core.h (docs/fixed_point.md): the same ROM words, the P-bit
 // accumulator preloaded with 2^(Fa-1) and wrapping like the DSP48E1 P register, y_ext = acc >>> Fa
 // clipped to D + s bits and fed back as it is, y rounded half up from y_ext and clipped to D bits,
-// the per-sample saturation flag set by either clip in any section. Only the bookkeeping differs:
-// each section keeps its D-bit input history and its y_ext history in place of the load registers
-// (line k rounded to D bits is, bit for bit, section k - 1's clipped output). The cycle model stays
-// the specification of the RTL; tests/model/iir_sample_model_test.cpp proves the two equal on every
-// checked-in set, on random legal configurations and on an accumulator that wraps.
+// the per-sample saturation flag set by either clip in any section. Only the bookkeeping differs.
+// In place of the load registers each section keeps M partial sums (transposed direct form): z[j]
+// holds, modulo 2^64, every product of the samples so far that belongs to the sum of sample n+1+j
+// (z[0] with the rounding constant). The products are the core's, b[i] times the D-bit operand
+// (line k rounded to D bits is, bit for bit, section k - 1's clipped output) and -a[j] times
+// y_ext; a sum modulo 2^64 depends neither on the order nor on the grouping of its terms, so
+// b[0] x[n] + z[0] has the low P bits of the core's accumulator, wrapped or not. The cycle model
+// stays the specification of the RTL; tests/model/iir_sample_model_test.cpp proves the two equal
+// on every checked-in set, on random legal configurations and on an accumulator that wraps.
 #pragma once
 
 #include <cstddef>
@@ -56,18 +60,22 @@ class IirSampleModel {
   void reset();
 
  private:
-  // kOrder: the section order M when it is known at compile time, 0 to read it from config_.
-  template <int kOrder, bool kWrap>
+  using Kernel = void (IirSampleModel::*)(const std::int32_t* in, SampleResult* out, std::size_t n);
+  // kOrder, kSections: M and K when known at compile time (the words and partial sums then live
+  // in local arrays the compiler keeps in registers), 0 to read them from config_.
+  template <int kOrder, int kSections, bool kWrap>
   void run(const std::int32_t* in, SampleResult* out, std::size_t n);
-  void dispatch(const std::int32_t* in, SampleResult* out, std::size_t n);
+  template <bool kWrap>
+  static Kernel biquad_kernel(int sections);
+  Kernel choose_kernel() const;
 
   CoreConfig config_;
   std::int32_t sample_min_, sample_max_;
   std::int64_t ext_min_, ext_max_;
   bool can_wrap_;
-  // Per section, M words each, age 1 first: the section's D-bit inputs x_k[n-1..n-M] and its
-  // feedback history y_ext_k[n-1..n-M].
-  std::vector<std::int64_t> x_history_, ext_history_;
+  Kernel kernel_;
+  // Per section, M partial sums z[0..M-1] (two's complement bits modulo 2^64).
+  std::vector<std::uint64_t> partial_;
 };
 
 }  // namespace flange::model
