@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Installs every Debian package the project builds, tests or plots with; quiet and quick when
-# all are present. Run as root or with sudo available.
+# Installs every Debian package the project builds, tests or plots with, and quietly the optional
+# benchmark packages; quick when all are present. Run as root or with sudo available.
 set -euo pipefail
 
 PACKAGES=(
@@ -12,14 +12,24 @@ PACKAGES=(
   gnuplot-nox
 )
 
-missing=()
-for pkg in "${PACKAGES[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$pkg")
-  fi
-done
+# Optional, for benchmarks only: bench/sosfilt_peer.sh times scipy.signal.sosfilt beside the sample
+# model (docs/benchmarks_core.md). Nothing builds or tests with these, so they are installed
+# quietly and a failed install only warns.
+BENCH_PACKAGES=(
+  python3-scipy
+)
 
-if [ "${#missing[@]}" -eq 0 ]; then
+missing_of() {
+  for pkg in "$@"; do
+    if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+      echo "$pkg"
+    fi
+  done
+}
+mapfile -t missing < <(missing_of "${PACKAGES[@]}")
+mapfile -t bench_missing < <(missing_of "${BENCH_PACKAGES[@]}")
+
+if [ "${#missing[@]}" -eq 0 ] && [ "${#bench_missing[@]}" -eq 0 ]; then
   exit 0
 fi
 
@@ -28,7 +38,14 @@ if [ "$(id -u)" -ne 0 ]; then
   SUDO="sudo"
 fi
 
-echo "setup: installing ${missing[*]}" >&2
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq >/dev/null
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  $SUDO apt-get update -qq >/dev/null
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+if [ "${#bench_missing[@]}" -gt 0 ]; then
+  { [ "${#missing[@]}" -gt 0 ] || $SUDO apt-get update -qq; } >/dev/null 2>&1 &&
+    $SUDO apt-get install -y -qq --no-install-recommends "${bench_missing[@]}" >/dev/null 2>&1 ||
+    echo "setup: optional benchmark packages not installed: ${bench_missing[*]}" >&2
+fi
