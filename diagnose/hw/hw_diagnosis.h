@@ -16,7 +16,6 @@
 #include "filter_json.h"
 #include "hw_diagnose_report.h"
 #include "hw_stimulus.h"
-#include "iir_core.h"
 
 namespace flange::diagnose {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "filter_json.h"
-#include "iir_core.h"
+#include "iir_sample_model.h"
 #include "reference_filter.h"
 #include "rtl_engine.h"
 
@@ -13,7 +13,9 @@ namespace flange::host {
 
 namespace {
 
-// The bit-accurate model of the core, streaming back to back.
+// The bit-accurate model of the core, streaming back to back. Only the samples are wanted here, so
+// it runs the sample-level twin of the cycle model (model/iir_sample_model.h), equal to it on
+// every word and flag.
 class ModelEngine : public FilterEngine {
  public:
   explicit ModelEngine(const std::filesystem::path& filter_json)
@@ -23,17 +25,23 @@ class ModelEngine : public FilterEngine {
 
   std::string name() const override { return "model"; }
   void process(const std::vector<EngineSample>& in, std::vector<EngineOutput>& out) override {
+    words_.resize(in.size());
+    results_.resize(in.size());
+    for (std::size_t k = 0; k < in.size(); ++k) words_[k] = in[k].word;
+    core_.filter(words_, results_);
     out.resize(in.size());
     for (std::size_t k = 0; k < in.size(); ++k) {
-      const model::StepResult result = core_.step(in[k].word);
+      const model::SampleResult& result = results_[k];
       out[k] = {gain_ * result.sample / full_scale_, result.saturated, result.sample};
     }
   }
 
  private:
-  model::IirCore core_;
+  model::IirSampleModel core_;
   double gain_;
   double full_scale_;
+  std::vector<std::int32_t> words_;           // reused from block to block
+  std::vector<model::SampleResult> results_;  // reused from block to block
 };
 
 // The double-precision second-order sections of the same design.
