@@ -1,0 +1,146 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Proves one formal property of the RTL with Yosys's SAT solver (docs/formal.md).
+#   tb/formal/prove.sh PROPERTY [COEFF_DIR] [--bmc N] [--keep DIR]
+# PROPERTY is a test name's last part, e.g. LatencyExact (core properties take the coefficient
+# set folder, e.g. coeffs/vehicle_sos) or ValidOnlyWithMatchingCrc (the board's frame decoder).
+# --bmc N replaces the property's proof by a bounded check of N cycles from reset; --keep DIR
+# keeps the Yosys script, log and any counterexample (VCD) there. Exit status 0: proven.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+rtl="$root/rtl"
+
+usage() {
+  echo "usage: $0 PROPERTY [COEFF_DIR] [--bmc N] [--keep DIR]" >&2
+  exit 2
+}
+[ $# -ge 1 ] || usage
+property="$1"
+shift
+set_dir=""
+bmc=""
+keep=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --bmc) [ $# -ge 2 ] || usage; bmc="$2"; shift 2 ;;
+    --keep) [ $# -ge 2 ] || usage; keep="$2"; shift 2 ;;
+    -*) usage ;;
+    *) [ -z "$set_dir" ] || usage; set_dir="$(cd "$1" && pwd)"; shift ;;
+  esac
+done
+
+# Per property: the wrapper, the assertion labels it proves (Yosys selection patterns) and the
+# proof: "induct N" is k-induction up to length N (sat -tempinduct: the base case from reset and
+# the induction step from any state), "bmc N" a bounded check of N cycles after reset.
+case "$property" in
+  LatencyExact)             unit=core; labels="latency_*";            proof="induct 40" ;;
+  BusyOverrunAsDocumented)  unit=core; labels="busy_* overrun_* history_*"; proof="induct 40" ;;
+  ScheduleAsDocumented)     unit=core; labels="sched_*";              proof="induct 2" ;;
+  BtcWithinRom)             unit=core; labels="btc_* sched_*";        proof="induct 2" ;;
+  LoadRegistersWithinLines) unit=core; labels="lr_* sched_*";         proof="induct 2" ;;
+  AccumulatorNeverWraps)    unit=core; labels="acc_* sched_*";        proof="induct 3" ;;
+  AccumulatorWithinGeneratorBound) unit=core; labels="gen_* acc_* sched_*"; proof="induct 3" ;;
+  ValidOnlyWithMatchingCrc) unit=decoder; labels="crc_*";             proof="induct 2" ;;
+  *) echo "prove: unknown property $property" >&2; usage ;;
+esac
+if [ -n "$bmc" ]; then
+  proof="bmc $bmc"
+fi
+
+work="$(mktemp -d)"
+cleanup() { rm -rf "$work"; }
+trap cleanup EXIT
+script="$work/prove.ys"
+log="$work/yosys.log"
+
+case "$unit" in
+  core)
+    [ -n "$set_dir" ] || { echo "prove: $property needs a coefficient set folder" >&2; usage; }
+    for f in "$set_dir/iir_coeffs_pkg.sv" "$set_dir/coeffs.mem"; do
+      [ -f "$f" ] || { echo "prove: $f is missing" >&2; exit 2; }
+    done
+    wrapper="$here/iir_core_props.sv"
+    top=iir_core_props
+    # -defer: the ROM path is set before the core is elaborated (as in rtl/syn/synth_xc7.sh).
+    # The RTL is read as for synthesis (its simulation-only checks stay out); the wrapper with
+    # -formal.
+    read_sources="read_verilog -sv $set_dir/iir_coeffs_pkg.sv
+read_verilog -sv -defer $rtl/iir_mac.sv $rtl/iir_core.sv
+read_verilog -formal -sv -defer $wrapper
+chparam -set RomFile \"$set_dir/coeffs.mem\" $top"
+    what="$property for $(basename "$set_dir")"
+    ;;
+  decoder)
+    wrapper="$here/frame_decoder_props.sv"
+    top=frame_decoder_props
+    read_sources="read_verilog -sv $rtl/board/crc8.sv $rtl/board/uart_rx.sv $rtl/board/frame_decoder.sv
+read_verilog -formal -sv $wrapper"
+    what="$property"
+    ;;
+esac
+
+# The wrapper's probes: each `assign dut_x = dut.y;` line (read by Verilator as written) becomes a
+# connection made after flattening, where Yosys names the core's signal dut.y.
+probes="$(sed -n 's/^ *assign \(dut_[A-Za-z0-9_]*\) *= *\(dut\.[A-Za-z0-9_.]*\);.*/connect -nounset -set \1 \2/p' "$wrapper")"
+
+keep_sel=""
+for l in $labels; do keep_sel="$keep_sel n:$l"; done
+nlabels=$(echo $labels | wc -w)
+union=""
+for ((i = 1; i < nlabels; i++)); do union="$union %u"; done
+
+read -r kind depth <<<"$proof"
+if [ "$kind" = induct ]; then
+  sat_args="-tempinduct -maxsteps $depth"
+else
+  sat_args="-tempinduct-baseonly -maxsteps $depth"
+fi
+
+cat >"$script" <<YS
+$read_sources
+hierarchy -check -top $top
+proc
+flatten
+$probes
+# Only this property's assertions remain.
+select -assert-min 1 t:\$assert$keep_sel$union %i
+delete t:\$assert$keep_sel$union %d
+memory -nomap
+memory_map
+opt -fast
+opt_clean
+dffunmap
+# Cycle 1 is the reset cycle; the assertions hold from cycle 2 on.
+sat $sat_args -prove-asserts -set-assumes -seq 1 -set-at 1 rst_ni 0 -show-inputs -show-regs -dump_vcd $work/counterexample.vcd -verify
+YS
+
+status=0
+TIMEFORMAT='%U %S %R'
+{ time yosys -q -l "$log" -s "$script" >/dev/null 2>&1 || status=$?; } 2>"$work/time"
+read -r user sys elapsed <"$work/time"
+cpu=$(awk -v u="$user" -v s="$sys" 'BEGIN { printf "%.1f", u + s }')
+elapsed=$(awk -v r="$elapsed" 'BEGIN { printf "%.1f", r }')
+steps=$( (grep -o "induction with length [0-9]*" "$log" || true) | tail -1 | awk "{ print \$4 }")
+
+if [ -n "$keep" ]; then
+  mkdir -p "$keep"
+  cp "$work"/* "$keep"/
+  sed -i "s|$work|$keep|g" "$keep/prove.ys"
+fi
+
+repro="tb/formal/prove.sh $property${set_dir:+ ${set_dir#$root/}}${bmc:+ --bmc $bmc} --keep logs/formal/$property"
+if [ "$status" -ne 0 ]; then
+  echo "prove: FAILED: $what ($kind, length ${steps:-?}, ${cpu} s CPU)" >&2
+  grep -m 1 -E "ERROR|failed|FAIL" "$log" >&2 || true
+  grep -E "Assert|assert.*failed|\\\\[a-z]+_[a-z0-9_]+ " "$log" | grep -i "fail" | head -5 >&2 || true
+  echo "prove: reproduce (script, log and counterexample.vcd kept in logs/formal/$property):" >&2
+  echo "  $repro" >&2
+  exit 1
+fi
+if [ "$kind" = induct ]; then
+  echo "prove: proven: $what (induction, length $steps, $cpu s CPU, $elapsed s)"
+else
+  echo "prove: bounded: $what holds for $depth cycles after reset ($cpu s CPU, $elapsed s)"
+fi
