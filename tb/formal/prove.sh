@@ -42,7 +42,7 @@ case "$property" in
   LoadRegistersWithinLines) unit=core; labels="lr_* sched_*";         proof="induct 2" ;;
   AccumulatorNeverWraps)    unit=core; labels="acc_* sched_*";        proof="induct 3" ;;
   AccumulatorWithinGeneratorBound) unit=core; labels="gen_* acc_* sched_*"; proof="induct 3" ;;
-  ValidOnlyWithMatchingCrc) unit=decoder; labels="crc_*";             proof="induct 2" ;;
+  ValidOnlyWithMatchingCrc) unit=decoder; labels="crc_* rx_*";           proof="induct 2" ;;
   *) echo "prove: unknown property $property" >&2; usage ;;
 esac
 if [ -n "$bmc" ]; then
@@ -81,15 +81,29 @@ read_verilog -formal -sv $wrapper"
     ;;
 esac
 
-# The wrapper's probes: each `assign dut_x = dut.y;` line (read by Verilator as written) becomes a
-# connection made after flattening, where Yosys names the core's signal dut.y.
-probes="$(sed -n 's/^ *assign \(dut_[A-Za-z0-9_]*\) *= *\(dut\.[A-Za-z0-9_.]*\);.*/connect -nounset -set \1 \2/p' "$wrapper")"
+# The wrapper's probes: each `assign probe = inst.signal;` line of its `ifndef YOSYS block (read by
+# Verilator as written) becomes a connection made after flattening, where Yosys names the signal
+# inst.signal. -nounset: the probe may already be an alias of a wire that proc made for it.
+probes="$(sed -n '/^`ifndef YOSYS/,/^`endif/ s/^ *assign \([A-Za-z0-9_]*\) *= *\([A-Za-z0-9_]*\.[A-Za-z0-9_.]*\);.*/connect -nounset -set \1 \2/p' "$wrapper")"
+[ -n "$probes" ] || { echo "prove: no probes found in $wrapper" >&2; exit 2; }
 
 keep_sel=""
 for l in $labels; do keep_sel="$keep_sel n:$l"; done
 nlabels=$(echo $labels | wc -w)
 union=""
 for ((i = 1; i < nlabels; i++)); do union="$union %u"; done
+
+# ABC first rewrites the logic into AND and XOR gates (function preserving) for two proofs that
+# are slow on RTL cells: the decoder's CRC against the CRC by polynomial division, a parity
+# problem (20 s on RTL cells, under 1 s on gates), and the generator's bound, which needs the
+# multiplier's products of ROM words (165 s on RTL cells for measurement_sos, 21 s on gates).
+gates=""
+if [ "$unit" = decoder ] || [ "$property" = AccumulatorWithinGeneratorBound ]; then
+  gates="techmap
+opt -fast
+abc -g XOR,AND
+opt_clean"
+fi
 
 read -r kind depth <<<"$proof"
 if [ "$kind" = induct ]; then
@@ -112,6 +126,7 @@ memory_map
 opt -fast
 opt_clean
 dffunmap
+$gates
 # Cycle 1 is the reset cycle; the assertions hold from cycle 2 on.
 sat $sat_args -prove-asserts -set-assumes -seq 1 -set-at 1 rst_ni 0 -show-inputs -show-regs -dump_vcd $work/counterexample.vcd -verify
 YS
@@ -132,9 +147,34 @@ fi
 
 repro="tb/formal/prove.sh $property${set_dir:+ ${set_dir#$root/}}${bmc:+ --bmc $bmc} --keep logs/formal/$property"
 if [ "$status" -ne 0 ]; then
-  echo "prove: FAILED: $what ($kind, length ${steps:-?}, ${cpu} s CPU)" >&2
-  grep -m 1 -E "ERROR|failed|FAIL" "$log" >&2 || true
-  grep -E "Assert|assert.*failed|\\\\[a-z]+_[a-z0-9_]+ " "$log" | grep -i "fail" | head -5 >&2 || true
+  echo "prove: FAILED: $what ($kind, length ${steps:-?}, $cpu s CPU)" >&2
+  grep -m 1 -E "ERROR|model found|proof failed" "$log" >&2 || true
+  # Name the failing assertions: rerun with every signal shown and read, in the last step of the
+  # last model, the assertions' check wires (named after their source line) that are low.
+  diag="$work/diagnose.log"
+  sed 's/ -show-inputs -show-regs / -show-all /' "$script" >"$work/diagnose.ys"
+  yosys -q -l "$diag" -s "$work/diagnose.ys" >/dev/null 2>&1 || true
+  awk -v wrapper="$wrapper" '
+    /Time Signal/ { delete check; delete en; last = 0 }
+    $1 ~ /^[0-9]+$/ && $2 ~ /_(CHECK|EN)\[/ {
+      if ($1 + 0 > last) { last = $1 + 0; delete check; delete en }
+      if ($1 + 0 == last && match($2, /:[0-9]+\$[0-9]+_/)) {
+        key = substr($2, RSTART + 1, RLENGTH - 2)
+        if ($2 ~ /_CHECK\[/) check[key] = $3; else en[key] = $3
+      }
+    }
+    END {
+      while ((getline text < wrapper) > 0) source[++n] = text
+      for (key in check) {
+        if (check[key] != 0 || ((key in en) && en[key] != 1)) continue
+        split(key, part, "$"); line = part[1] + 0; label = "?"
+        for (i = line; i > 0 && label == "?"; i--)
+          if (match(source[i], /[a-z0-9_]+:( |$)/)) label = substr(source[i], RSTART, RLENGTH - 1)
+        sub(/:$/, "", label)
+        printf "prove: assertion %s (%s line %d) fails in cycle %d of the counterexample\n", label, wrapper, line, last
+      }
+    }' "$diag" >&2 || true
+  cp "$work/diagnose.ys" "$work/diagnose.log" "$work/yosys.log" "$work/prove.ys" "${keep:-$work}/" 2>/dev/null || true
   echo "prove: reproduce (script, log and counterexample.vcd kept in logs/formal/$property):" >&2
   echo "  $repro" >&2
   exit 1
