@@ -33,16 +33,19 @@ done
 
 # Per property: the wrapper, the assertion labels it proves (Yosys selection patterns) and the
 # proof: "induct N" is k-induction up to length N (sat -tempinduct: the base case from reset and
-# the induction step from any state), "bmc N" a bounded check of N cycles after reset.
+# the induction step from any state), "bmc N" a bounded check of N cycles after reset. A proof
+# that holds closes at a short length (1 with the schedule invariants); N only bounds the search
+# for a counterexample from reset when it does not.
 case "$property" in
   LatencyExact)             unit=core; labels="latency_*";            proof="induct 40" ;;
   BusyOverrunAsDocumented)  unit=core; labels="busy_* overrun_* history_*"; proof="induct 40" ;;
-  ScheduleAsDocumented)     unit=core; labels="sched_*";              proof="induct 2" ;;
-  BtcWithinRom)             unit=core; labels="btc_* sched_*";        proof="induct 2" ;;
-  LoadRegistersWithinLines) unit=core; labels="lr_* sched_*";         proof="induct 2" ;;
-  AccumulatorNeverWraps)    unit=core; labels="acc_* sched_*";        proof="induct 3" ;;
-  AccumulatorWithinGeneratorBound) unit=core; labels="gen_* acc_* sched_*"; proof="induct 3" ;;
-  ValidOnlyWithMatchingCrc) unit=decoder; labels="crc_* rx_*";           proof="induct 2" ;;
+  ScheduleAsDocumented)     unit=core; labels="sched_*";              proof="induct 40" ;;
+  BtcWithinRom)             unit=core; labels="btc_* sched_*";        proof="induct 40" ;;
+  LoadRegistersWithinLines) unit=core; labels="lr_* sched_*";         proof="induct 40" ;;
+  AccumulatorNeverWraps)    unit=core; labels="acc_* sched_*";        proof="induct 12" ;;
+  AccumulatorWithinGeneratorBound)
+                            unit=core; labels="gen_* acc_* sched_*";  proof="induct 8" ;;
+  ValidOnlyWithMatchingCrc) unit=decoder; labels="crc_* rx_*";        proof="induct 12" ;;
   *) echo "prove: unknown property $property" >&2; usage ;;
 esac
 if [ -n "$bmc" ]; then
@@ -148,33 +151,41 @@ fi
 repro="tb/formal/prove.sh $property${set_dir:+ ${set_dir#$root/}}${bmc:+ --bmc $bmc} --keep logs/formal/$property"
 if [ "$status" -ne 0 ]; then
   echo "prove: FAILED: $what ($kind, length ${steps:-?}, $cpu s CPU)" >&2
-  grep -m 1 -E "ERROR|model found|proof failed" "$log" >&2 || true
-  # Name the failing assertions: rerun with every signal shown and read, in the last step of the
-  # last model, the assertions' check wires (named after their source line) that are low.
+  if grep -q "model found for base case" "$log"; then
+    echo "prove: a counterexample from reset: the property is violated" >&2
+  elif grep -q "Reached maximum number of time steps -> proof failed" "$log"; then
+    echo "prove: no counterexample from reset within the length, but no induction either: the" \
+         "counterexample below starts from an unreachable state or the length is too short" >&2
+  else
+    grep -m 1 -E "ERROR" "$log" >&2 || true
+  fi
+  # Name the failing assertions: rerun with every signal shown and the assertion cells listed
+  # (label, checked signal, enable), and read their values in the last step of the last model.
   diag="$work/diagnose.log"
-  sed 's/ -show-inputs -show-regs / -show-all /' "$script" >"$work/diagnose.ys"
+  sed 's/^sat .* -show-inputs -show-regs /tee -q -o ASSERTS dump t:$assert\n&/; s/ -show-inputs -show-regs / -show-all /' \
+    "$script" | sed "s|ASSERTS|$work/asserts.txt|" >"$work/diagnose.ys"
   yosys -q -l "$diag" -s "$work/diagnose.ys" >/dev/null 2>&1 || true
-  awk -v wrapper="$wrapper" '
-    /Time Signal/ { delete check; delete en; last = 0 }
-    $1 ~ /^[0-9]+$/ && $2 ~ /_(CHECK|EN)\[/ {
-      if ($1 + 0 > last) { last = $1 + 0; delete check; delete en }
-      if ($1 + 0 == last && match($2, /:[0-9]+\$[0-9]+_/)) {
-        key = substr($2, RSTART + 1, RLENGTH - 2)
-        if ($2 ~ /_CHECK\[/) check[key] = $3; else en[key] = $3
-      }
+  awk '
+    FNR == NR {
+      if ($1 == "cell") { cell = $3; sub(/^\\/, "", cell) }
+      if ($1 == "connect" && $2 == "\\A") a[cell] = $3
+      if ($1 == "connect" && $2 == "\\EN") en[cell] = $3
+      next
+    }
+    /Time Signal/ { delete value; last = 0 }
+    $1 ~ /^[0-9]+$/ {
+      if ($1 + 0 > last) { last = $1 + 0; delete value }
+      if ($1 + 0 == last) value[$2] = $3
     }
     END {
-      while ((getline text < wrapper) > 0) source[++n] = text
-      for (key in check) {
-        if (check[key] != 0 || ((key in en) && en[key] != 1)) continue
-        split(key, part, "$"); line = part[1] + 0; label = "?"
-        for (i = line; i > 0 && label == "?"; i--)
-          if (match(source[i], /[a-z0-9_]+:( |$)/)) label = substr(source[i], RSTART, RLENGTH - 1)
-        sub(/:$/, "", label)
-        printf "prove: assertion %s (%s line %d) fails in cycle %d of the counterexample\n", label, wrapper, line, last
+      for (cell in a) {
+        check = (a[cell] == "1'"'"'1") ? 1 : value[a[cell]]
+        enable = (en[cell] == "1'"'"'1") ? 1 : value[en[cell]]
+        if (check == "0" && enable == "1")
+          printf "prove: assertion %s fails in cycle %d of the counterexample\n", cell, last
       }
-    }' "$diag" >&2 || true
-  cp "$work/diagnose.ys" "$work/diagnose.log" "$work/yosys.log" "$work/prove.ys" "${keep:-$work}/" 2>/dev/null || true
+    }' "$work/asserts.txt" "$diag" >&2 || true
+  [ -z "$keep" ] || cp "$work"/diagnose.* "$work/asserts.txt" "$keep"/ 2>/dev/null || true
   echo "prove: reproduce (script, log and counterexample.vcd kept in logs/formal/$property):" >&2
   echo "  $repro" >&2
   exit 1
