@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Proves one formal property of the RTL with Yosys's SAT solver (docs/formal.md).
-#   tb/formal/prove.sh PROPERTY [COEFF_DIR] [--bmc N] [--keep DIR]
+#   tb/formal/prove.sh PROPERTY [COEFF_DIR] [--bmc N] [--param NAME=VALUE] [--keep DIR]
 # PROPERTY is a test name's last part, e.g. LatencyExact (core properties take the coefficient
 # set folder, e.g. coeffs/vehicle_sos) or ValidOnlyWithMatchingCrc (the board's frame decoder).
 # --bmc N replaces the property's proof by a bounded check of N cycles from reset; --keep DIR
-# keeps the Yosys script, log and any counterexample (VCD) there. Exit status 0: proven.
+# keeps the Yosys script, log and any counterexample (VCD) there; --param sets a parameter of the
+# wrapper (e.g. ClksPerBit=4 for the frame decoder, to reach a whole frame in a short bounded
+# check). Exit status 0: proven.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -13,7 +15,7 @@ root="$(cd "$here/../.." && pwd)"
 rtl="$root/rtl"
 
 usage() {
-  echo "usage: $0 PROPERTY [COEFF_DIR] [--bmc N] [--keep DIR]" >&2
+  echo "usage: $0 PROPERTY [COEFF_DIR] [--bmc N] [--param NAME=VALUE] [--keep DIR]" >&2
   exit 2
 }
 [ $# -ge 1 ] || usage
@@ -22,10 +24,12 @@ shift
 set_dir=""
 bmc=""
 keep=""
+params=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --bmc) [ $# -ge 2 ] || usage; bmc="$2"; shift 2 ;;
     --keep) [ $# -ge 2 ] || usage; keep="$2"; shift 2 ;;
+    --param) [ $# -ge 2 ] || usage; params="$params $2"; shift 2 ;;
     -*) usage ;;
     *) [ -z "$set_dir" ] || usage; set_dir="$(cd "$1" && pwd)"; shift ;;
   esac
@@ -79,7 +83,7 @@ chparam -set RomFile \"$set_dir/coeffs.mem\" $top"
     wrapper="$here/frame_decoder_props.sv"
     top=frame_decoder_props
     read_sources="read_verilog -sv $rtl/board/crc8.sv $rtl/board/uart_rx.sv $rtl/board/frame_decoder.sv
-read_verilog -formal -sv $wrapper"
+read_verilog -formal -sv -defer $wrapper"
     what="$property"
     ;;
 esac
@@ -115,8 +119,15 @@ else
   sat_args="-tempinduct-baseonly -maxsteps $depth"
 fi
 
+chparams=""
+for p in $params; do
+  chparams="$chparams
+chparam -set ${p%%=*} ${p#*=} $top"
+  what="$what ($p)"
+done
+
 cat >"$script" <<YS
-$read_sources
+$read_sources$chparams
 hierarchy -check -top $top
 proc
 flatten
@@ -148,7 +159,9 @@ if [ -n "$keep" ]; then
   sed -i "s|$work|$keep|g" "$keep/prove.ys"
 fi
 
-repro="tb/formal/prove.sh $property${set_dir:+ ${set_dir#$root/}}${bmc:+ --bmc $bmc} --keep logs/formal/$property"
+repro="tb/formal/prove.sh $property${set_dir:+ ${set_dir#$root/}}${bmc:+ --bmc $bmc}"
+for p in $params; do repro="$repro --param $p"; done
+repro="$repro --keep logs/formal/$property"
 if [ "$status" -ne 0 ]; then
   echo "prove: FAILED: $what ($kind, length ${steps:-?}, $cpu s CPU)" >&2
   if grep -q "model found for base case" "$log"; then
