@@ -1,0 +1,377 @@
+// SPDX-License-Identifier: MIT
+// Formal wrapper of iir_core (the DUT is `dut`): exact latency, busy and overrun as documented,
+// the documented term schedule, BTC and load-register addresses in range, and an accumulator
+// that never wraps; proven by tb/formal/prove.sh with Yosys (docs/formal.md).
+//
+// Every input is free (any sample, any sample_valid_i, flag_clear_i and reset pattern); prove.sh
+// only holds rst_ni low in the first cycle. The checks are immediate assertions in always_comb
+// blocks: each holds in every cycle. Their labels start with the name of the property they
+// belong to (latency_, busy_, overrun_, history_, btc_, lr_, sched_, acc_); prove.sh keeps the
+// labels of one property per test.
+`default_nettype none
+
+module iir_core_props #(
+  parameter RomFile = "coeffs.mem"  // the coeffs.mem beside the iir_coeffs_pkg.sv read with it
+) (
+  input logic                                          clk_i,
+  input logic                                          rst_ni,
+  input logic signed [iir_coeffs_pkg::SampleWidth-1:0] sample_i,
+  input logic                                          sample_valid_i,
+  input logic                                          flag_clear_i
+);
+
+  // Parameters: the contract in the header of rtl/iir_core.sv, restated here //
+  localparam int NumSections   = iir_coeffs_pkg::NumSections;    // K
+  localparam int SectionOrder  = iir_coeffs_pkg::SectionOrder;   // M
+  localparam int SampleWidth   = iir_coeffs_pkg::SampleWidth;    // D
+  localparam int CoefWidth     = iir_coeffs_pkg::CoefWidth;      // C
+  localparam int CoefFracBits  = iir_coeffs_pkg::CoefFracBits;   // Fa
+  localparam int FeedbackShift = iir_coeffs_pkg::FeedbackShift;  // s
+  localparam int AccWidth      = iir_coeffs_pkg::AccWidth;       // P
+  localparam int RomDepth      = iir_coeffs_pkg::RomDepth;
+  localparam int Terms         = 2 * SectionOrder + 1;           // T: MACs per section
+  localparam int SectionPitch  = Terms > 4 ? Terms : 4;          // S = max(T, 4)
+  localparam int LatencyCycles = Terms + (NumSections - 1) * SectionPitch + 4;  // L
+  localparam int LastIssue     = Terms + (NumSections - 1) * SectionPitch;      // T + (K-1)S
+  localparam int AWidth        = SampleWidth + FeedbackShift;    // A operand: y_ext, D + s bits
+  localparam int ProdWidth     = AWidth + CoefWidth;
+  localparam int BtcWidth      = RomDepth > 1 ? $clog2(RomDepth) : 1;
+  localparam int AgeWidth      = $clog2(SectionOrder + 1);
+  localparam int LineWidth     = $clog2(NumSections + 1);
+  localparam int LrAddrWidth   = LineWidth + AgeWidth;
+  localparam int SinceWidth    = $clog2(LatencyCycles + 1);
+  localparam int PosWidth      = $clog2(Terms + 1);
+
+  // The accumulator bound of the width argument (docs/formal.md): the rounding constant plus T
+  // products, each a ProdWidth-bit two's complement number, must fit in P - 1 bits.
+  localparam logic signed [63:0] PRELOAD   = 64'sd1 <<< (CoefFracBits - 1);
+  localparam logic signed [63:0] PROD_MAX  = 64'sd1 <<< (ProdWidth - 1);  // |product| <= this
+  localparam logic signed [63:0] ACC_MAX   = (64'sd1 <<< (AccWidth - 1)) - 64'sd1;
+  if (PRELOAD + Terms * PROD_MAX > ACC_MAX) begin : g_width_argument_fails
+    $error("iir_core_props: T products of ProdWidth bits may not fit the accumulator");
+  end
+
+  // sample_o and saturation_o carry data; no property here is about their values.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic signed [SampleWidth-1:0] sample_o;
+  logic                          saturation_o;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic                          sample_valid_o, busy_o, overrun_o;
+
+  iir_core #(.RomFile(RomFile)) dut (
+    .clk_i,
+    .rst_ni,
+    .sample_i,
+    .sample_valid_i,
+    .sample_o,
+    .sample_valid_o,
+    .busy_o,
+    .overrun_o,
+    .saturation_o,
+    .flag_clear_i
+  );
+
+  // Internal signals of the core //
+  // Yosys 0.23 has no hierarchical references: under Yosys these wires stay undriven here and
+  // prove.sh connects each one to the flattened signal named in its `assign` line below. Verilator
+  // reads the references as written (and checks their names and widths).
+  logic [1:0]                  dut_state_q;
+  logic [BtcWidth-1:0]         dut_btc_q, dut_rom_addr;
+  logic                        dut_issue;
+  logic [2:0]                  dut_wb_pipe_q;
+  logic [LineWidth-1:0]        dut_wb_sec_q;
+  logic [AgeWidth-1:0]         dut_newest_q, dut_newest_d;
+  logic [AgeWidth:0]           dut_filled_q, dut_filled_d;
+  logic                        dut_lr_we;
+  logic [LrAddrWidth-1:0]      dut_lr_waddr, dut_lr_raddr;
+  logic signed [AWidth-1:0]    dut_mac_a_q;
+  logic signed [CoefWidth-1:0] dut_mac_b_q;
+  logic signed [ProdWidth-1:0] dut_mac_m_q;
+  logic signed [AccWidth-1:0]  dut_mac_p_q, dut_mac_p_d;
+  logic                        dut_mac_first_a_q, dut_mac_first_m_q;
+`ifndef YOSYS
+  assign dut_state_q       = dut.state_q;
+  assign dut_btc_q         = dut.btc_q;
+  assign dut_rom_addr      = dut.rom_addr;
+  assign dut_issue         = dut.issue;
+  assign dut_wb_pipe_q     = dut.wb_pipe_q;
+  assign dut_wb_sec_q      = dut.wb_sec_q;
+  assign dut_newest_q      = dut.newest_q;
+  assign dut_newest_d      = dut.newest_d;
+  assign dut_filled_q      = dut.filled_q;
+  assign dut_filled_d      = dut.filled_d;
+  assign dut_lr_we         = dut.lr_we;
+  assign dut_lr_waddr      = dut.lr_waddr;
+  assign dut_lr_raddr      = dut.lr_raddr;
+  assign dut_mac_a_q       = dut.u_mac.a_q;
+  assign dut_mac_b_q       = dut.u_mac.b_q;
+  assign dut_mac_m_q       = dut.u_mac.m_q;
+  assign dut_mac_p_q       = dut.u_mac.p_q;
+  assign dut_mac_p_d       = dut.u_mac.p_d;
+  assign dut_mac_first_a_q = dut.u_mac.first_a_q;
+  assign dut_mac_first_m_q = dut.u_mac.first_m_q;
+`endif
+
+  // Shadow model: cycles since the accepted sample //
+  // A sample is accepted when sample_valid_i is high, busy_o low and rst_ni high. since_q is 1 in
+  // the next cycle, counts up to LatencyCycles (the cycle its output is due) and is 0 otherwise.
+  logic                  accept;
+  logic [SinceWidth-1:0] since_q, since_d;
+  assign accept  = rst_ni && sample_valid_i && !busy_o;
+  assign since_d = accept ? SinceWidth'(1) :
+                   (since_q != '0 && since_q != SinceWidth'(LatencyCycles)) ? since_q + 1'b1 : '0;
+
+  // Shadow model: the sticky overrun flag as documented //
+  // Set by sample_valid_i while busy_o; cleared by flag_clear_i unless an event lands at the same
+  // edge (the event wins); cleared by reset.
+  logic overrun_q, overrun_d;
+  assign overrun_d = (sample_valid_i && busy_o) || (overrun_q && !flag_clear_i);
+
+  // Products summed in the accumulator since its last restart (a first term restarts it at the
+  // preload); the d value is set beside the properties below.
+  logic [PosWidth-1:0] acc_terms_q, acc_terms_d;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      since_q     <= '0;
+      overrun_q   <= 1'b0;
+      acc_terms_q <= '0;
+    end else begin
+      since_q     <= since_d;
+      overrun_q   <= overrun_d;
+      acc_terms_q <= acc_terms_d;
+    end
+  end
+
+  // The documented term schedule //
+  // Section k issues its terms b[1..M], -a[1..M] one per cycle from the cycle after section
+  // k - 1's last term (from cycle 1 for section 0), and its last term b[0] in cycle T + kS. The
+  // BTC holds the term of the cycle (during a wait, the waiting b[0]). All cycles count from the
+  // accepted sample (since_q); a cycle c <= 0 or > T + (K-1)S issues nothing.
+  // First cycle of section k: the cycle after section k - 1's last term; cycle 1 for section 0.
+  function automatic int first_cycle_of(int k);
+    first_cycle_of = (k == 0) ? 1 : Terms + (k - 1) * SectionPitch + 1;
+  endfunction
+
+  function automatic logic issues_at(int c);
+    issues_at = 1'b0;
+    for (int k = 0; k < NumSections; k++) begin
+      if (c >= first_cycle_of(k) && c < first_cycle_of(k) + 2 * SectionOrder) issues_at = 1'b1;
+      if (c == Terms + k * SectionPitch) issues_at = 1'b1;
+    end
+  endfunction
+
+  // Position (0..T-1, issue order) of the term the BTC holds in cycle c, 1 <= c <= T + (K-1)S.
+  function automatic int position_at(int c);
+    position_at = 0;
+    for (int k = 0; k < NumSections; k++) begin
+      if (c >= first_cycle_of(k) && c <= Terms + k * SectionPitch) begin
+        position_at = (c - first_cycle_of(k) < 2 * SectionOrder) ? c - first_cycle_of(k) :
+                                                                    2 * SectionOrder;
+      end
+    end
+  endfunction
+
+  // Section of the term the BTC holds in cycle c, 1 <= c <= T + (K-1)S.
+  function automatic int section_at(int c);
+    section_at = 0;
+    for (int k = 1; k < NumSections; k++) begin
+      if (c > Terms + (k - 1) * SectionPitch) section_at = k;
+    end
+  endfunction
+
+  // Write-backs done before cycle c: section k's sum is written back in cycle T + kS + 3.
+  function automatic int written_back_before(int c);
+    written_back_before = 0;
+    for (int k = 0; k < NumSections; k++) begin
+      if (Terms + k * SectionPitch + 3 < c) written_back_before = written_back_before + 1;
+    end
+  endfunction
+
+  int  since;
+  logic sched_busy;
+  assign since      = 32'(since_q);
+  assign sched_busy = since_q != '0 && since_q != SinceWidth'(LatencyCycles);
+
+  // Properties //
+  always_comb begin
+    // 1. The output comes exactly LatencyCycles after an accepted sample, and at no other time.
+    latency_exact: assert (sample_valid_o == (since_q == SinceWidth'(LatencyCycles)));
+    latency_since_bounded: assert (since_q <= SinceWidth'(LatencyCycles));
+  end
+
+  always_comb begin
+    // 2. busy_o is high from the cycle after an accepted sample up to its output, exclusive.
+    busy_exact: assert (busy_o == sched_busy);
+    busy_since_bounded: assert (since_q <= SinceWidth'(LatencyCycles));
+    // overrun_o is the documented sticky flag.
+    overrun_as_documented: assert (overrun_o == overrun_q);
+    // A sample that is not accepted leaves the history alone: only an accepted sample writes
+    // line 0 (the input history) and ages the lines (newest_q, filled_q).
+    if (rst_ni && !accept) begin
+      history_line0_only_on_accept:
+        assert (!dut_lr_we || dut_lr_waddr[LrAddrWidth-1:AgeWidth] != '0);
+      history_age_only_on_accept:
+        assert (dut_newest_d == dut_newest_q && dut_filled_d == dut_filled_q);
+    end
+  end
+
+  always_comb begin
+    // 4. The BTC addresses only ROM words; load-register reads and writes stay within their lines
+    // (line <= K, slot <= M of the 2^AgeWidth slots a line is padded to).
+    btc_in_rom: assert (dut_btc_q < BtcWidth'(RomDepth));
+    btc_rom_addr_in_rom: assert (dut_rom_addr < BtcWidth'(RomDepth));
+    lr_read_in_line: assert (dut_lr_raddr[AgeWidth-1:0] <= AgeWidth'(SectionOrder) &&
+                             dut_lr_raddr[LrAddrWidth-1:AgeWidth] <= LineWidth'(NumSections));
+    if (dut_lr_we) begin
+      lr_write_in_line: assert (dut_lr_waddr[AgeWidth-1:0] <= AgeWidth'(SectionOrder) &&
+                                dut_lr_waddr[LrAddrWidth-1:AgeWidth] <= LineWidth'(NumSections));
+    end
+    lr_newest_in_line: assert (dut_newest_q <= AgeWidth'(SectionOrder));
+    lr_filled_bounded: assert (dut_filled_q <= (AgeWidth + 1)'(SectionOrder + 1));
+  end
+
+  always_comb begin
+    // The schedule in the header of rtl/iir_core.sv, cycle by cycle: FSM state, BTC, issue, the
+    // write-back pipe and the section count all follow from the cycles since the accepted sample.
+    sched_since_bounded: assert (since_q <= SinceWidth'(LatencyCycles));
+    sched_busy_exact: assert (busy_o == sched_busy);
+    sched_valid_exact: assert (sample_valid_o == (since_q == SinceWidth'(LatencyCycles)));
+    if (!sched_busy) begin
+      sched_idle_btc: assert (dut_btc_q == '0);
+      sched_idle_issue: assert (!dut_issue);
+      sched_idle_pipe: assert (dut_wb_pipe_q == '0);
+      sched_idle_sections: assert (dut_wb_sec_q == '0 || dut_wb_sec_q == LineWidth'(NumSections));
+    end else begin
+      sched_state: assert (dut_state_q == (since <= LastIssue ? 2'd1 : 2'd2));
+      sched_issue: assert (dut_issue == issues_at(since));
+      sched_btc: assert (since > LastIssue ||
+                         dut_btc_q == BtcWidth'(section_at(since) * Terms + position_at(since)));
+      sched_finish_btc: assert (since <= LastIssue || dut_btc_q == '0);
+      sched_pipe: assert (dut_wb_pipe_q == {issues_at(since - 3) && position_at(since - 3) == Terms - 1,
+                                            issues_at(since - 2) && position_at(since - 2) == Terms - 1,
+                                            issues_at(since - 1) && position_at(since - 1) == Terms - 1});
+      sched_sections: assert (dut_wb_sec_q == LineWidth'(written_back_before(since)));
+    end
+  end
+
+  // 3. The accumulator never wraps. The MAC pipeline follows the schedule: the A register holds
+  // the term issued one cycle ago (zero if none), M the product of the term issued two cycles
+  // ago (zero if none); a first term restarts the sum at the preload. So P holds the preload plus
+  // at most T products since its restart, each a ProdWidth-bit number, which fits (checked at
+  // elaboration above): the width argument, valid for any sample, history and ROM contents.
+  logic                         m_has_term;
+  logic signed [AccWidth:0]     acc_exact_sum;
+  logic signed [63:0]           acc_bound, p_wide;
+  assign m_has_term    = issues_at(since - 2);
+  assign acc_terms_d   = dut_mac_first_m_q ? PosWidth'(1) :
+                         acc_terms_q + PosWidth'(m_has_term);
+  assign acc_exact_sum = (dut_mac_first_m_q ? (AccWidth + 1)'(PRELOAD) : (AccWidth + 1)'(dut_mac_p_q))
+                         + (AccWidth + 1)'(dut_mac_m_q);
+  assign acc_bound     = PRELOAD + 64'(acc_terms_q) * PROD_MAX;
+  assign p_wide        = 64'(dut_mac_p_q);
+
+  always_comb begin
+    // The adder's P-bit result is the exact sum of P (or the preload) and the product.
+    acc_no_wrap: assert (acc_exact_sum == (AccWidth + 1)'(dut_mac_p_d));
+    // Helper invariants (proven with it): the pipeline contents, the term count and the bound.
+    acc_a_idle: assert (issues_at(since - 1) || dut_mac_a_q == '0);
+    acc_first_a: assert (dut_mac_first_a_q == (issues_at(since - 1) && position_at(since - 1) == 0));
+    acc_m_idle: assert (m_has_term || dut_mac_m_q == '0);
+    acc_first_m: assert (dut_mac_first_m_q == (m_has_term && position_at(since - 2) == 0));
+    acc_terms_bounded: assert (acc_terms_q <= PosWidth'(Terms));
+    if (m_has_term && position_at(since - 2) != 0) begin
+      acc_terms_before_term: assert (32'(acc_terms_q) == position_at(since - 2));
+    end
+    acc_within_bound: assert (p_wide <= acc_bound && p_wide >= -acc_bound);
+  end
+
+  // 3'. Tighter: the accumulator stays within the generator's bound (coeffs/src/quantize.cpp,
+  // docs/fixed_point.md): |P - 2^(Fa-1)| <= sum over the section's terms of |word| * 2^(D-1) for
+  // b words (operand: a D-bit sample) and |word| * 2^(D-1+s) for -a words (operand: y_ext).
+  // Here the multiplier's meaning matters: |a * word| <= |word| * |a|max for the word in B.
+  logic [CoefWidth-1:0] gen_rom [RomDepth];
+  initial $readmemh(RomFile, gen_rom);
+
+  // ROM word (ROM order b[0..M], -a[1..M]) of the term at issue position p (b[1..M], -a[1..M],
+  // b[0]) of section k.
+  function automatic int rom_word_of(int k, int p);
+    rom_word_of = k * Terms + (p < 2 * SectionOrder ? p + 1 : 0);
+  endfunction
+
+  // The generator's bound for one product: |word| times the largest operand magnitude.
+  function automatic logic signed [63:0] term_bound(logic [CoefWidth-1:0] word, logic feedback);
+    logic signed [63:0] magnitude;
+    magnitude  = 64'($signed(word));
+    if (magnitude < 0) magnitude = -magnitude;
+    term_bound = magnitude <<< (feedback ? SampleWidth - 1 + FeedbackShift : SampleWidth - 1);
+  endfunction
+
+  // The term bounds in issue order, and their running sums per section: partial[k][n] bounds
+  // |P - preload| after the first n terms of section k (flat, 64 bits per entry).
+  localparam int NumPartials = NumSections * (Terms + 1);
+  logic [64*RomDepth-1:0]    bound_of_term;
+  logic [64*NumPartials-1:0] partial;
+  for (genvar k = 0; k < NumSections; k++) begin : g_section
+    for (genvar p = 0; p < Terms; p++) begin : g_term
+      assign bound_of_term[64*(k*Terms+p) +: 64] =
+        term_bound(gen_rom[rom_word_of(k, p)], p >= SectionOrder && p < 2 * SectionOrder);
+    end
+    assign partial[64*(k*(Terms+1)) +: 64] = '0;
+    for (genvar n = 1; n <= Terms; n++) begin : g_partial
+      assign partial[64*(k*(Terms+1)+n) +: 64] =
+        $signed(partial[64*(k*(Terms+1)+n-1) +: 64]) +
+        $signed(bound_of_term[64*(k*Terms+n-1) +: 64]);
+    end
+  end
+
+  logic                      a_has_term, a_feedback;
+  logic [CoefWidth-1:0]      a_word;
+  logic signed [63:0]        m_bound, gen_bound, gen_worst, m_wide, a_wide;
+  logic [LineWidth-1:0]      gen_section_q, gen_section_d;  // section of the sum in P
+  assign a_has_term    = issues_at(since - 1);
+  assign a_word        = gen_rom[rom_word_of(section_at(since - 1), position_at(since - 1))];
+  assign a_feedback    = position_at(since - 1) >= SectionOrder &&
+                         position_at(since - 1) < 2 * SectionOrder;
+  assign m_bound       = $signed(bound_of_term[64*(section_at(since - 2)*Terms+position_at(since - 2)) +: 64]);
+  assign gen_section_d = m_has_term ? LineWidth'(section_at(since - 2)) : gen_section_q;
+  // Until the first restart after reset P is 0: within the preload of the preload.
+  assign gen_bound     = acc_terms_q == '0 ? PRELOAD :
+                         $signed(partial[64*(32'(gen_section_q)*(Terms+1)+32'(acc_terms_q)) +: 64]);
+  assign m_wide        = 64'(dut_mac_m_q);
+  assign a_wide        = 64'(dut_mac_a_q);
+
+  // The generator's worst case: the largest section sum of the term bounds.
+  always_comb begin
+    gen_worst = '0;
+    for (int k = 0; k < NumSections; k++) begin
+      if ($signed(partial[64*(k*(Terms+1)+Terms) +: 64]) > gen_worst) begin
+        gen_worst = $signed(partial[64*(k*(Terms+1)+Terms) +: 64]);
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) gen_section_q <= '0;
+    else         gen_section_q <= gen_section_d;
+  end
+
+  always_comb begin
+    gen_worst_fits: assert (PRELOAD + gen_worst <= ACC_MAX);
+    gen_within_bound: assert (p_wide - PRELOAD <= gen_bound && PRELOAD - p_wide <= gen_bound);
+    gen_section_in_range: assert (gen_section_q < LineWidth'(NumSections));
+    if (a_has_term) begin
+      // B holds the term's ROM word; A a D-bit sample for a b word.
+      gen_b_is_rom_word: assert (dut_mac_b_q == $signed(a_word));
+      gen_a_sample: assert (a_feedback || (a_wide < (64'sd1 <<< (SampleWidth - 1)) &&
+                                           a_wide >= -(64'sd1 <<< (SampleWidth - 1))));
+    end
+    if (m_has_term) begin
+      gen_m_within_term_bound: assert (m_wide <= m_bound && m_wide >= -m_bound);
+      if (position_at(since - 2) != 0) begin
+        gen_section_of_sum: assert (32'(gen_section_q) == section_at(since - 2));
+      end
+    end
+  end
+
+endmodule
