@@ -104,6 +104,7 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
        "not a text file"},
       {{"diagnose", "--hw", "--coeffs", f.out("missing.json")}, 2, "missing.json"},
       {{"diagnose", "--selftest", "--cases", "0"}, 2, "--cases"},
+      {{"demo", "--out", f.good + "/inside_a_file"}, 1, "cannot create directories"},
   };
   for (const BadInput& c : table) {
     std::string err;
