@@ -20,3 +20,17 @@ function(flange_add_gtest name)
                        TEST_PREFIX "${ARG_TEST_PREFIX}"
                        PROPERTIES TIMEOUT ${ARG_TIMEOUT} DISCOVERY_TIMEOUT 60)
 endfunction()
+
+# flange_camel_case(<out-var> <snake_name>): measurement_sos -> MeasurementSos, the prefix of the
+# tests built per coefficient set.
+function(flange_camel_case out name)
+  string(REPLACE "_" ";" words "${name}")
+  set(camel "")
+  foreach(word IN LISTS words)
+    string(SUBSTRING "${word}" 0 1 first)
+    string(SUBSTRING "${word}" 1 -1 rest)
+    string(TOUPPER "${first}" first)
+    string(APPEND camel "${first}${rest}")
+  endforeach()
+  set(${out} "${camel}" PARENT_SCOPE)
+endfunction()
