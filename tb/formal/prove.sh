@@ -126,30 +126,24 @@ chparam -set ${p%%=*} ${p#*=} $top"
   what="$what ($p)"
 done
 
-# make_script FILE KEEP_SELECTION UNION SAT_LINE: the Yosys script of one proof.
-make_script() {
-  cat >"$1" <<YS
+cat >"$script" <<YS
 $read_sources$chparams
 hierarchy -check -top $top
 proc
 flatten
 $probes
-# Only this proof's assertions and assumptions remain.
-select -assert-min 1 t:\$assert$2$3 %i
-delete t:\$assert$2$3 %d
-delete t:\$assume$2$3 %d
+# Only this property's assertions remain.
+select -assert-min 1 t:\$assert$keep_sel$union %i
+delete t:\$assert$keep_sel$union %d
 memory -nomap
 memory_map
 opt -fast
 opt_clean
 dffunmap
 $gates
-$4
-YS
-}
 # Cycle 1 is the reset cycle; the assertions hold from cycle 2 on.
-make_script "$script" "$keep_sel" "$union" \
-  "sat $sat_args -prove-asserts -set-assumes -seq 1 -set-at 1 rst_ni 0 -show-inputs -show-regs -dump_vcd $work/counterexample.vcd -verify"
+sat $sat_args -prove-asserts -set-assumes -seq 1 -set-at 1 rst_ni 0 -show-inputs -show-regs -dump_vcd $work/counterexample.vcd -verify
+YS
 
 status=0
 TIMEFORMAT='%U %S %R'
