@@ -6,8 +6,8 @@
 // Every input is free (any sample, any sample_valid_i, flag_clear_i and reset pattern); prove.sh
 // only holds rst_ni low in the first cycle. The checks are immediate assertions in always_comb
 // blocks: each holds in every cycle. Their labels start with the name of the property they
-// belong to (latency_, busy_, overrun_, history_, btc_, lr_, sched_, acc_); prove.sh keeps the
-// labels of one property per test.
+// belong to (latency_, busy_, overrun_, history_, btc_, lr_, sched_, acc_, gen_); prove.sh keeps
+// the labels of one property (and of its helper invariants) per test.
 `default_nettype none
 
 module iir_core_props #(
@@ -180,6 +180,11 @@ module iir_core_props #(
     end
   endfunction
 
+  // Whether a section's last term, b[0], issues in cycle c.
+  function automatic logic last_issued_at(int c);
+    last_issued_at = issues_at(c) && position_at(c) == Terms - 1;
+  endfunction
+
   // Write-backs done before cycle c: section k's sum is written back in cycle T + kS + 3.
   function automatic int written_back_before(int c);
     written_back_before = 0;
@@ -248,9 +253,8 @@ module iir_core_props #(
       sched_btc: assert (since > LastIssue ||
                          dut_btc_q == BtcWidth'(section_at(since) * Terms + position_at(since)));
       sched_finish_btc: assert (since <= LastIssue || dut_btc_q == '0);
-      sched_pipe: assert (dut_wb_pipe_q == {issues_at(since - 3) && position_at(since - 3) == Terms - 1,
-                                            issues_at(since - 2) && position_at(since - 2) == Terms - 1,
-                                            issues_at(since - 1) && position_at(since - 1) == Terms - 1});
+      sched_pipe: assert (dut_wb_pipe_q == {last_issued_at(since - 3), last_issued_at(since - 2),
+                                            last_issued_at(since - 1)});
       sched_sections: assert (dut_wb_sec_q == LineWidth'(written_back_before(since)));
     end
   end
@@ -266,8 +270,9 @@ module iir_core_props #(
   assign m_has_term    = issues_at(since - 2);
   assign acc_terms_d   = dut_mac_first_m_q ? PosWidth'(1) :
                          acc_terms_q + PosWidth'(m_has_term);
-  assign acc_exact_sum = (dut_mac_first_m_q ? (AccWidth + 1)'(PRELOAD) : (AccWidth + 1)'(dut_mac_p_q))
-                         + (AccWidth + 1)'(dut_mac_m_q);
+  assign acc_exact_sum = (dut_mac_first_m_q ? (AccWidth + 1)'(PRELOAD) :
+                                              (AccWidth + 1)'(dut_mac_p_q)) +
+                         (AccWidth + 1)'(dut_mac_m_q);
   assign acc_bound     = PRELOAD + 64'(acc_terms_q) * PROD_MAX;
   assign p_wide        = 64'(dut_mac_p_q);
 
@@ -276,7 +281,8 @@ module iir_core_props #(
     acc_no_wrap: assert (acc_exact_sum == (AccWidth + 1)'(dut_mac_p_d));
     // Helper invariants (proven with it): the pipeline contents, the term count and the bound.
     acc_a_idle: assert (issues_at(since - 1) || dut_mac_a_q == '0);
-    acc_first_a: assert (dut_mac_first_a_q == (issues_at(since - 1) && position_at(since - 1) == 0));
+    acc_first_a: assert (dut_mac_first_a_q ==
+                         (issues_at(since - 1) && position_at(since - 1) == 0));
     acc_m_idle: assert (m_has_term || dut_mac_m_q == '0);
     acc_first_m: assert (dut_mac_first_m_q == (m_has_term && position_at(since - 2) == 0));
     acc_terms_bounded: assert (acc_terms_q <= PosWidth'(Terms));
@@ -333,7 +339,8 @@ module iir_core_props #(
   assign a_word        = gen_rom[rom_word_of(section_at(since - 1), position_at(since - 1))];
   assign a_feedback    = position_at(since - 1) >= SectionOrder &&
                          position_at(since - 1) < 2 * SectionOrder;
-  assign m_bound       = $signed(bound_of_term[64*(section_at(since - 2)*Terms+position_at(since - 2)) +: 64]);
+  assign m_bound       = $signed(bound_of_term[64*(section_at(since - 2) * Terms +
+                                                  position_at(since - 2)) +: 64]);
   assign gen_section_d = m_has_term ? LineWidth'(section_at(since - 2)) : gen_section_q;
   // Until the first restart after reset P is 0: within the preload of the preload.
   assign gen_bound     = acc_terms_q == '0 ? PRELOAD :
