@@ -29,6 +29,7 @@
 #include "filter_json.h"
 #include "iir_core.h"
 #include "iir_sample_model.h"
+#include "rate_collector.h"
 #include "reference_filter.h"
 
 namespace {
@@ -102,32 +103,7 @@ void reference_step(benchmark::State& state, const BenchSet& set) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(set.units.size()));
 }
 
-// The console output plus each benchmark's samples/s (the median when repeated), for the ratios.
-class RateCollector : public benchmark::ConsoleReporter {
- public:
-  RateCollector() : ConsoleReporter(::isatty(STDOUT_FILENO) != 0 ? OO_Color : OO_None) {}
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& run : runs) {
-      const auto rate = run.counters.find("items_per_second");
-      if (run.error_occurred || rate == run.counters.end()) continue;
-      const std::string name = run.run_name.str();
-      if (run.run_type == Run::RT_Aggregate) {
-        if (run.aggregate_name == "median") median_[name] = rate->second.value;
-      } else {
-        last_[name] = rate->second.value;
-      }
-    }
-  }
-  std::optional<double> rate(const std::string& name) const {
-    if (const auto it = median_.find(name); it != median_.end()) return it->second;
-    if (const auto it = last_.find(name); it != last_.end()) return it->second;
-    return std::nullopt;
-  }
-
- private:
-  std::map<std::string, double> median_, last_;
-};
+using flange::bench::RateCollector;
 
 std::string ratio_text(std::optional<double> numerator, std::optional<double> denominator) {
   if (!numerator || !denominator) return "-";
