@@ -20,6 +20,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// used / capacity as "12.34 %".
+std::string percent(double used, int capacity) {
+  return fmt::format("{:.2f} %", 100.0 * used / capacity);
+}
+
 // The board sources, in dependency order (rtl/board/, docs/board.md).
 const char* const kBoardSources[] = {
     "crc8.sv",          "uart_rx.sv",         "uart_tx.sv",
@@ -78,9 +83,6 @@ YosysRun run_yosys(const SynthesisRequest& request, const std::string& top, cons
 
 }  // namespace
 
-std::string percent(double used, int capacity) {
-  return fmt::format("{:.2f} %", 100.0 * used / capacity);
-}
 
 Utilisation parse_utilisation(const std::string& stat_text, const std::string& ltp_text) {
   Utilisation u;

@@ -87,7 +87,4 @@ std::string synthesis_report_markdown(const SynthesisResult& result, double max_
 std::string synthesis_summary_line(const SynthesisResult& result,
                                    const DeviceCapacity& device = {});
 
-// used / capacity as "12.34 %".
-std::string percent(double used, int capacity);
-
 }  // namespace flange::tb
