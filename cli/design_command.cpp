@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "design_command.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <ostream>
 #include <stdexcept>
@@ -42,6 +44,9 @@ CLI::App* add_design_command(CLI::App& app, DesignOptions& options) {
       ->default_val(18);
   cmd->add_option("--data-bits", r.widths.data_bits, "sample width (4 to 24)")->default_val(16);
   cmd->add_option("--acc-bits", r.widths.acc_bits, "accumulator width (16 to 64)")->default_val(48);
+  cmd->add_option("--channels", options.channels,
+                  fmt::format("channels sharing the core and this set (1 to {})", coeffs::kMaxChannels))
+      ->default_val(1);
   cmd->add_option("--name", r.name, "name of the filter in reports")->default_val("iir");
   cmd->add_option("--spec-tolerance-db", r.limits.spec_tolerance_db,
                   "slack on ap and aa after rounding (>= 0)")
@@ -88,7 +93,12 @@ int run_design_command(const DesignOptions& options, const std::vector<std::stri
     if (!std::isfinite(request.limits.max_dc_error_db) || request.limits.max_dc_error_db <= 0) {
       throw BadArgument("--max-dc-error-db: must be a finite number > 0");
     }
-    const DesignRecord record = generate_design(request, command_without_out(command_line));
+    if (options.channels < 1 || options.channels > coeffs::kMaxChannels) {
+      throw BadArgument(fmt::format("--channels: {} is outside 1 to {}", options.channels,
+                                    coeffs::kMaxChannels));
+    }
+    DesignRecord record = generate_design(request, command_without_out(command_line));
+    record.channels = options.channels;
     out << design_report(record);
     if (!record.analysis.rejection.empty()) {
       err << "flange design: " << record.analysis.rejection << "\n";

@@ -15,6 +15,7 @@
 namespace flange::cli {
 
 struct DesignOptions {
+  int channels = 1;  // --channels: channels sharing the core, one set for all
   coeffs::DesignRequest request;
   std::string structure = "sos";
   std::optional<std::filesystem::path> out_dir;  // nothing is written without it

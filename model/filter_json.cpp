@@ -85,6 +85,19 @@ std::string name_of(const Reader& reader) {
 
 }  // namespace
 
+CoreConfig CoreConfig::channel_config(int channel) const {
+  if (channel < 0 || channel >= num_channels) {
+    throw std::out_of_range(
+        fmt::format("core config: channel {} outside [0, {}]", channel, num_channels - 1));
+  }
+  CoreConfig one = *this;
+  one.num_channels = 1;
+  one.coef_sets = 1;
+  const std::int64_t* words = channel_words(channel);
+  one.rom.assign(words, words + rom_depth());
+  return one;
+}
+
 void validate_core_config(const CoreConfig& c) {
   auto bad = [](const std::string& field, const std::string& what) {
     throw std::invalid_argument(fmt::format("core config: {}: {}", field, what));
@@ -107,9 +120,17 @@ void validate_core_config(const CoreConfig& c) {
   if (c.sample_width + c.feedback_shift + c.coef_width > c.acc_width) {
     bad("acc_width", "the product (sample_width + feedback_shift + coef_width) does not fit");
   }
-  if (static_cast<int>(c.rom.size()) != c.rom_depth()) {
-    bad("rom", fmt::format("holds {} words, expected num_sections * (2 * section_order + 1) = {}",
-                           c.rom.size(), c.rom_depth()));
+  if (c.num_channels < 1 || c.num_channels > kMaxCoreChannels) {
+    bad("num_channels", fmt::format("must lie in [1, {}]", kMaxCoreChannels));
+  }
+  if (c.coef_sets != 1 && c.coef_sets != c.num_channels) {
+    bad("coef_sets", "must be 1 or num_channels");
+  }
+  if (static_cast<std::int64_t>(c.rom.size()) !=
+      std::int64_t{c.coef_sets} * c.rom_depth()) {
+    bad("rom", fmt::format("holds {} words, expected coef_sets * num_sections * "
+                           "(2 * section_order + 1) = {}",
+                           c.rom.size(), std::int64_t{c.coef_sets} * c.rom_depth()));
   }
   const std::int64_t hi = (std::int64_t{1} << (c.coef_width - 1)) - 1;
   for (std::size_t i = 0; i < c.rom.size(); ++i) {
@@ -156,9 +177,23 @@ static CoreConfig load_core_config_unguarded(const std::filesystem::path& filter
         "quantized.rom_depth",
         fmt::format("{} is not sections * (2 * section_order + 1) = {}", depth, c.rom_depth()));
   }
+  // Written since multichannel cores; a set without them is one channel.
+  if (q.contains("channels")) {
+    c.num_channels = static_cast<int>(reader.integer(q, p, "channels", 1, kMaxCoreChannels));
+  }
+  if (q.contains("coef_sets")) {
+    c.coef_sets = static_cast<int>(reader.integer(q, p, "coef_sets", 1, kMaxCoreChannels));
+    if (c.coef_sets != 1 && c.coef_sets != c.num_channels) {
+      reader.fail("quantized.coef_sets", fmt::format("{} is neither 1 nor quantized.channels ({})",
+                                                     c.coef_sets, c.num_channels));
+    }
+  }
+  const std::int64_t word_count = depth * c.coef_sets;
   const json& words = reader.object(q, p, "words");
-  if (!words.is_array() || static_cast<std::int64_t>(words.size()) != depth) {
-    reader.fail("quantized.words", fmt::format("expected an array of {} integers", depth));
+  if (!words.is_array() || static_cast<std::int64_t>(words.size()) != word_count) {
+    reader.fail("quantized.words", fmt::format("expected an array of {} integers (rom_depth {} x "
+                                               "coef_sets {})",
+                                               word_count, depth, c.coef_sets));
   }
   const std::int64_t hi = (std::int64_t{1} << (c.coef_width - 1)) - 1;
   for (std::size_t i = 0; i < words.size(); ++i) {

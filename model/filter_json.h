@@ -32,12 +32,26 @@ struct CoreConfig {
   int num_frac_bits = 0;   // NumFracBits (Fb), >= 1
   int feedback_shift = 0;  // FeedbackShift (s) = Fb - Fa, >= 0
   int acc_width = 0;       // AccWidth (P), Fb + D <= P <= 64, D + s + C <= P
-  // ROM words in ROM order (per section b[0..M], then -a[1..M]), each a signed C-bit integer.
+  // Channels sharing the core (NumChannels, 1 to kMaxCoreChannels) and coefficient sets in the ROM
+  // (CoefSets: 1, shared by every channel, or num_channels, set c for channel c).
+  int num_channels = 1;
+  int coef_sets = 1;
+  // ROM words in ROM order (per section b[0..M], then -a[1..M]), each a signed C-bit integer;
+  // coef_sets sets of rom_depth() words one after another.
   std::vector<std::int64_t> rom;
 
   int terms() const { return 2 * section_order + 1; }
-  int rom_depth() const { return num_sections * terms(); }
+  int rom_depth() const { return num_sections * terms(); }  // words of one set
+  // The first word of channel c's set.
+  const std::int64_t* channel_words(int channel) const {
+    return rom.data() + (coef_sets == 1 ? 0 : channel * rom_depth());
+  }
+  // Channel c alone: one channel, its own set (what the channel computes, as a one-channel core).
+  CoreConfig channel_config(int channel) const;
 };
+
+// Sticky flags of every channel fit one 32-bit mask (model::Pins).
+inline constexpr int kMaxCoreChannels = 32;
 
 // The float side of the same design: what the quantised core approximates.
 struct FloatDesign {

@@ -19,7 +19,11 @@ IirCore::IirCore(CoreConfig config) : config_(std::move(config)) {
   sample_min_ = static_cast<std::int32_t>(-(std::int64_t{1} << (config_.sample_width - 1)));
   ext_max_ = (std::int64_t{sample_max_} + 1) * (std::int64_t{1} << config_.feedback_shift) - 1;
   ext_min_ = std::int64_t{sample_min_} * (std::int64_t{1} << config_.feedback_shift);
-  lr_.assign(static_cast<std::size_t>((config_.num_sections + 1) * (m + 1)), 0);
+  channel_width_ = 1;
+  while ((1 << channel_width_) < config_.num_channels) ++channel_width_;
+  lr_.assign(static_cast<std::size_t>(config_.num_channels),
+             std::vector<std::int64_t>(static_cast<std::size_t>((config_.num_sections + 1) * (m + 1)),
+                                       0));
 }
 
 IirCore::Rounded IirCore::round_to_sample(std::int64_t y_ext) const {
@@ -32,8 +36,11 @@ IirCore::Rounded IirCore::round_to_sample(std::int64_t y_ext) const {
   return r;
 }
 
-void IirCore::compute(std::int32_t sample, StepResult& result, std::vector<bool>& clipped) {
+void IirCore::compute(std::int32_t sample, int channel, StepResult& result,
+                      std::vector<bool>& clipped) {
   const int m = config_.section_order;
+  std::vector<std::int64_t>& lr = lr_[static_cast<std::size_t>(channel)];
+  const std::int64_t* const rom = config_.channel_words(channel);
   const int line = m + 1;
   const int terms = config_.terms();
   const auto at = [line](int l, int age) { return static_cast<std::size_t>(l * line + age); };
@@ -41,9 +48,9 @@ void IirCore::compute(std::int32_t sample, StepResult& result, std::vector<bool>
   // EN: every history line moves one place older; x[n] enters line 0, in the D + s-bit format of
   // the load registers (s zero LSBs).
   for (int l = 0; l <= config_.num_sections; ++l) {
-    for (int age = m; age > 0; --age) lr_[at(l, age)] = lr_[at(l, age - 1)];
+    for (int age = m; age > 0; --age) lr[at(l, age)] = lr[at(l, age - 1)];
   }
-  lr_[0] = std::int64_t{sample} * (std::int64_t{1} << config_.feedback_shift);
+  lr[0] = std::int64_t{sample} * (std::int64_t{1} << config_.feedback_shift);
 
   clipped.assign(static_cast<std::size_t>(config_.num_sections), false);
   result.saturated = false;
@@ -52,11 +59,11 @@ void IirCore::compute(std::int32_t sample, StepResult& result, std::vector<bool>
     // Rounding constant preloaded, as the DSP48E1 does through its C port.
     std::uint64_t p = std::uint64_t{1} << (config_.coef_frac_bits - 1);
     for (int i = 0; i < terms; ++i) {
-      const std::int64_t word = config_.rom[static_cast<std::size_t>(k * terms + i)];
+      const std::int64_t word = rom[k * terms + i];
       // b[i] x_k[n-i], x_k rounded to D bits from line k; -a[j] y_ext_k[n-j], j = i - M, from
       // line k + 1 as it is.
       const std::int64_t operand =
-          i <= m ? std::int64_t{round_to_sample(lr_[at(k, i)]).sample} : lr_[at(k + 1, i - m)];
+          i <= m ? std::int64_t{round_to_sample(lr[at(k, i)]).sample} : lr[at(k + 1, i - m)];
       p = mac(p, operand, word);
     }
     const std::int64_t acc = wrap_to_width(p, config_.acc_width);
@@ -67,9 +74,10 @@ void IirCore::compute(std::int32_t sample, StepResult& result, std::vector<bool>
       clipped[static_cast<std::size_t>(k)] = true;
       result.saturated = true;
     }
-    lr_[at(k + 1, 0)] = y_ext;
+    lr[at(k + 1, 0)] = y_ext;
   }
   result.sample = y.sample;
+  result.channel = channel;
 }
 
 void IirCore::schedule(const Event& event) {
@@ -93,8 +101,9 @@ void IirCore::advance(std::uint64_t cycle) {
         any_output_ = false;
         break;
       case EventKind::kClear:
-        settled_.overrun = false;
-        settled_.saturation = false;
+        settled_.overrun = 0;
+        settled_.saturation = 0;
+        settled_.channel_error = false;
         break;
       case EventKind::kBusyStart:
         settled_.busy = true;
@@ -103,13 +112,17 @@ void IirCore::advance(std::uint64_t cycle) {
         settled_.busy = false;
         break;
       case EventKind::kSaturation:
-        settled_.saturation = true;
+        settled_.saturation |= std::uint32_t{1} << event.channel;
         break;
       case EventKind::kOverrun:
-        settled_.overrun = true;
+        settled_.overrun |= std::uint32_t{1} << event.channel;
+        break;
+      case EventKind::kChannelError:
+        settled_.channel_error = true;
         break;
       case EventKind::kOutput:
         settled_.sample = event.value;
+        settled_.channel = event.channel;
         valid_cycle_ = event.cycle;
         any_output_ = true;
         break;
@@ -123,20 +136,28 @@ Pins IirCore::pins(std::uint64_t cycle) {
   return settled_;
 }
 
-std::optional<StepResult> IirCore::strobe(std::uint64_t cycle, std::int32_t sample) {
+std::optional<StepResult> IirCore::strobe(std::uint64_t cycle, std::int32_t sample, int channel) {
   if (sample < sample_min_ || sample > sample_max_) {
     throw std::out_of_range(
         fmt::format("IirCore: sample {} outside [{}, {}]", sample, sample_min_, sample_max_));
   }
+  if (channel < 0 || channel >= (1 << channel_width_)) {
+    throw std::out_of_range(fmt::format("IirCore: channel {} does not fit the {}-bit channel_i",
+                                        channel, channel_width_));
+  }
   advance(cycle);
   if (reset_cycle_ == cycle) return std::nullopt;  // reset wins
+  if (channel >= config_.num_channels) {
+    schedule({cycle + 1, EventKind::kChannelError, 0});
+    return std::nullopt;
+  }
   if (cycle < ready_cycle_) {
-    schedule({cycle + 1, EventKind::kOverrun, 0});
+    schedule({cycle + 1, EventKind::kOverrun, 0, channel});
     return std::nullopt;
   }
   StepResult result;
   std::vector<bool> clipped;
-  compute(sample, result, clipped);
+  compute(sample, channel, result, clipped);
   result.accept_cycle = cycle;
   result.valid_cycle = cycle + static_cast<std::uint64_t>(latency_);
 
@@ -146,19 +167,23 @@ std::optional<StepResult> IirCore::strobe(std::uint64_t cycle, std::int32_t samp
   const auto pitch = static_cast<std::uint64_t>(section_pitch());
   for (std::size_t k = 0; k < clipped.size(); ++k) {
     if (clipped[k]) {
-      schedule({cycle + terms + k * pitch + kMacLatency + 1, EventKind::kSaturation, 0});
+      schedule({cycle + terms + k * pitch + kMacLatency + 1, EventKind::kSaturation, 0, channel});
     }
   }
   schedule({cycle + 1, EventKind::kBusyStart, 0});
   schedule({result.valid_cycle, EventKind::kBusyEnd, 0});
-  schedule({result.valid_cycle, EventKind::kOutput, result.sample});
+  schedule({result.valid_cycle, EventKind::kOutput, result.sample, channel});
   ready_cycle_ = result.valid_cycle;
   return result;
 }
 
-StepResult IirCore::step(std::int32_t sample) {
+StepResult IirCore::step(std::int32_t sample, int channel) {
+  if (channel < 0 || channel >= config_.num_channels) {
+    throw std::out_of_range(fmt::format("IirCore: channel {} outside [0, {}]", channel,
+                                        config_.num_channels - 1));
+  }
   const std::uint64_t cycle = std::max(ready_cycle_, now_);
-  std::optional<StepResult> result = strobe(cycle, sample);
+  std::optional<StepResult> result = strobe(cycle, sample, channel);
   if (!result) throw std::logic_error("IirCore::step: the core refused a sample when ready");
   return *result;
 }
@@ -173,7 +198,7 @@ void IirCore::reset(std::uint64_t cycle) {
   // Everything that would have become visible after this cycle never happens.
   std::erase_if(events_, [cycle](const Event& e) { return e.cycle > cycle; });
   schedule({cycle + 1, EventKind::kReset, 0});
-  std::fill(lr_.begin(), lr_.end(), 0);
+  for (std::vector<std::int64_t>& lines : lr_) std::fill(lines.begin(), lines.end(), 0);
   ready_cycle_ = cycle + 1;
   reset_cycle_ = cycle;
 }

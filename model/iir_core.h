@@ -32,6 +32,13 @@
 //   LatencyCycles = T + (K - 1) * S + 4, which is MACs + 4 when M >= 2 or K = 1. A new sample is
 //   accepted in the cycle sample_valid_o is high, so CyclesPerSample = LatencyCycles too.
 //
+// Channels (docs/core.md, "Channels"): NumChannels independent filters share the one MAC. Each
+// sample comes with its channel_i; each channel has its own load registers, its own overrun_o and
+// saturation_o bit, and, when CoefSets = NumChannels, its own coefficient set (CoefSets = 1: one
+// set for all). channel_o names the channel of sample_o. A sample with channel_i >= NumChannels is
+// dropped and sets the sticky channel_error_o. The timing above is per accepted sample, whatever
+// its channel; a channel's history moves only on its own samples.
+//
 // Cycle convention: cycle c is the clock period after the c-th rising edge. Inputs given for cycle
 // c are sampled at the edge that ends it; registered outputs change at that edge and are seen in
 // cycle c + 1. Calls must come in non-decreasing cycle order: pins(c) first, then the inputs of
@@ -52,6 +59,7 @@ namespace flange::model {
 // One accepted sample.
 struct StepResult {
   std::int32_t sample = 0;         // sample_o, in [-2^(D-1), 2^(D-1) - 1]
+  int channel = 0;                 // channel_o: the sample's channel
   bool saturated = false;          // some section clipped while computing it
   std::uint64_t accept_cycle = 0;  // the cycle sample_valid_i was accepted in
   std::uint64_t valid_cycle = 0;   // the cycle sample_valid_o is high: accept_cycle + latency
@@ -60,10 +68,12 @@ struct StepResult {
 // The outputs of rtl/iir_core.sv in one cycle.
 struct Pins {
   std::int32_t sample = 0;  // sample_o (holds the last output; 0 after reset)
+  int channel = 0;          // channel_o (sample_o's channel; 0 after reset)
   bool sample_valid = false;
   bool busy = false;
-  bool overrun = false;
-  bool saturation = false;
+  std::uint32_t overrun = 0;     // overrun_o: bit c for channel c
+  std::uint32_t saturation = 0;  // saturation_o: bit c for channel c
+  bool channel_error = false;    // channel_error_o
   bool operator==(const Pins&) const = default;
 };
 
@@ -92,13 +102,16 @@ class IirCore {
   };
   Rounded round_to_sample(std::int64_t y_ext) const;
 
-  // One sample presented at the first cycle the core accepts it (back-to-back streaming).
-  // `sample` must lie in [sample_min(), sample_max()] (std::out_of_range otherwise).
-  StepResult step(std::int32_t sample);
+  // One sample of `channel` presented at the first cycle the core accepts it (back-to-back
+  // streaming). `sample` must lie in [sample_min(), sample_max()] and `channel` in
+  // [0, NumChannels) (std::out_of_range otherwise).
+  StepResult step(std::int32_t sample, int channel = 0);
 
-  // sample_valid_i high with `sample` in `cycle`. Returns the result if the core was idle, or
-  // nothing when it was busy: the sample is dropped and overrun_o rises in cycle + 1.
-  std::optional<StepResult> strobe(std::uint64_t cycle, std::int32_t sample);
+  // sample_valid_i high with `sample` and `channel` (channel_i, any value of its ChannelWidth bits)
+  // in `cycle`. Returns the result if the core was idle and the channel exists; nothing when it was
+  // busy (the sample is dropped and the channel's overrun_o bit rises in cycle + 1) or the channel
+  // is out of range (dropped; channel_error_o rises in cycle + 1).
+  std::optional<StepResult> strobe(std::uint64_t cycle, std::int32_t sample, int channel = 0);
 
   // flag_clear_i high in `cycle`: the sticky flags read 0 from cycle + 1, unless a flag event
   // lands at that same edge (the event wins).
@@ -111,19 +124,25 @@ class IirCore {
   // The expected outputs in `cycle`.
   Pins pins(std::uint64_t cycle);
 
-  // The load registers as in the RTL: (K + 1) lines of (M + 1) words of D + s bits, newest first;
-  // line 0 holds x << s, line k + 1 the y_ext history of section k.
-  const std::vector<std::int64_t>& lr() const { return lr_; }
+  // One channel's load registers as in the RTL: (K + 1) lines of (M + 1) words of D + s bits,
+  // newest first; line 0 holds x << s, line k + 1 the y_ext history of section k.
+  const std::vector<std::int64_t>& lr(int channel = 0) const {
+    return lr_.at(static_cast<std::size_t>(channel));
+  }
+  int channel_width() const { return channel_width_; }  // bits of channel_i and channel_o
 
  private:
-  enum class EventKind { kReset, kClear, kBusyStart, kBusyEnd, kSaturation, kOverrun, kOutput };
+  enum class EventKind {
+    kReset, kClear, kBusyStart, kBusyEnd, kSaturation, kOverrun, kChannelError, kOutput
+  };
   struct Event {
     std::uint64_t cycle;  // first cycle in which the effect is visible
     EventKind kind;
     std::int32_t value;
+    int channel = 0;
   };
 
-  void compute(std::int32_t sample, StepResult& result, std::vector<bool>& clipped);
+  void compute(std::int32_t sample, int channel, StepResult& result, std::vector<bool>& clipped);
   void schedule(const Event& event);
   void advance(std::uint64_t cycle);
 
@@ -131,7 +150,8 @@ class IirCore {
   int latency_;
   std::int32_t sample_min_, sample_max_;
   std::int64_t ext_min_, ext_max_;
-  std::vector<std::int64_t> lr_;
+  int channel_width_;
+  std::vector<std::vector<std::int64_t>> lr_;  // per channel
 
   std::uint64_t ready_cycle_ = 0;  // first cycle in which sample_valid_i is accepted
   std::uint64_t now_ = 0;          // last cycle asked about, or the current input cycle

@@ -44,6 +44,11 @@ constexpr int kMaxFixedSections = 8;
 
 IirSampleModel::IirSampleModel(CoreConfig config) : config_(std::move(config)) {
   validate_core_config(config_);
+  if (config_.num_channels != 1) {
+    throw std::invalid_argument(fmt::format(
+        "IirSampleModel: one channel only; {} channels take an IirSampleBank (iir_sample_bank.h)",
+        config_.num_channels));
+  }
   sample_max_ = static_cast<std::int32_t>((std::int64_t{1} << (config_.sample_width - 1)) - 1);
   sample_min_ = static_cast<std::int32_t>(-(std::int64_t{1} << (config_.sample_width - 1)));
   ext_max_ = (std::int64_t{sample_max_} + 1) * (std::int64_t{1} << config_.feedback_shift) - 1;

@@ -35,7 +35,8 @@ struct SampleResult {
 
 class IirSampleModel {
  public:
-  // Throws std::invalid_argument when `config` breaks docs/fixed_point.md (as IirCore does).
+  // Throws std::invalid_argument when `config` breaks docs/fixed_point.md (as IirCore does) or has
+  // more than one channel (IirSampleBank serves those, one IirSampleModel per channel).
   explicit IirSampleModel(CoreConfig config);
 
   const CoreConfig& config() const { return config_; }

@@ -35,6 +35,13 @@
 // Flags: sample_valid_i while busy_o is high drops that sample (the history is untouched) and sets
 // the sticky overrun_o. Sticky flags clear on reset or with flag_clear_i; a flag event in the same
 // cycle as flag_clear_i wins, so no event is lost.
+//
+// Channels (docs/core.md, "Channels"): NumChannels independent filters share the one MAC. Each
+// sample comes with its channel_i; each channel has its own load registers, its own overrun_o and
+// saturation_o bit, and, when CoefSets = NumChannels, its own coefficient set (CoefSets = 1: one
+// set for all). channel_o names the channel of sample_o. A sample with channel_i >= NumChannels is
+// dropped and sets the sticky channel_error_o. The timing above is per accepted sample, whatever
+// its channel; a channel's history moves only on its own samples.
 `default_nettype none
 
 module iir_core #(
@@ -45,12 +52,16 @@ module iir_core #(
   input  logic                                        clk_i,
   input  logic                                        rst_ni,          // synchronous, active low
   input  logic signed [iir_coeffs_pkg::SampleWidth-1:0] sample_i,
+  input  logic [iir_coeffs_pkg::ChannelWidth-1:0]     channel_i,       // the sample's channel
   input  logic                                        sample_valid_i,  // EN: one cycle per sample
   output logic signed [iir_coeffs_pkg::SampleWidth-1:0] sample_o,
+  output logic [iir_coeffs_pkg::ChannelWidth-1:0]     channel_o,       // sample_o's channel
   output logic                                        sample_valid_o,  // one cycle per output
   output logic                                        busy_o,          // sample_valid_i is dropped
-  output logic                                        overrun_o,       // sticky: a sample dropped
-  output logic                                        saturation_o,    // sticky: an output clipped
+  // Sticky, one bit per channel: a sample of that channel dropped / an output of it clipped.
+  output logic [iir_coeffs_pkg::NumChannels-1:0]      overrun_o,
+  output logic [iir_coeffs_pkg::NumChannels-1:0]      saturation_o,
+  output logic                                        channel_error_o, // sticky: channel_i too big
   input  logic                                        flag_clear_i     // clears the sticky flags
 );
 
@@ -64,7 +75,10 @@ module iir_core #(
   localparam int NumFracBits   = iir_coeffs_pkg::NumFracBits;
   localparam int FeedbackShift = iir_coeffs_pkg::FeedbackShift;
   localparam int AccWidth      = iir_coeffs_pkg::AccWidth;
-  localparam int RomDepth      = iir_coeffs_pkg::RomDepth;
+  localparam int RomDepth      = iir_coeffs_pkg::RomDepth;       // words of one set
+  localparam int NumChannels   = iir_coeffs_pkg::NumChannels;
+  localparam int CoefSets      = iir_coeffs_pkg::CoefSets;       // 1, or one per channel
+  localparam int ChannelWidth  = iir_coeffs_pkg::ChannelWidth;   // max(1, clog2(NumChannels))
 
   localparam int Terms         = 2 * SectionOrder + 1;              // MACs per section
   localparam int LrLine        = SectionOrder + 1;                  // samples per history line
@@ -72,6 +86,10 @@ module iir_core #(
   localparam int LineWidth     = $clog2(NumSections + 1);           // line number
   localparam int LrAddrWidth   = LineWidth + AgeWidth;
   localparam int LrSlots       = 1 << LrAddrWidth;                  // lines padded to 2^AgeWidth
+  localparam int LrDepth       = NumChannels * LrSlots;             // channel c from c * LrSlots
+  localparam int LrFullWidth   = LrDepth > 1 ? $clog2(LrDepth) : 1;
+  localparam int RomWords      = CoefSets * RomDepth;               // set c from c * RomDepth
+  localparam int RomFullWidth  = RomWords > 1 ? $clog2(RomWords) : 1;
   localparam int ExtWidth      = SampleWidth + FeedbackShift;       // y_ext: history word
   localparam int AWidth        = ExtWidth;                          // multiplier A operand
   localparam int MacLatency    = 3;                                 // iir_mac: A/B, M, P
@@ -101,6 +119,12 @@ module iir_core #(
   end
   if (AWidth + CoefWidth > AccWidth) begin : g_bad_product
     $error("iir_core: the product (SampleWidth + FeedbackShift + CoefWidth) exceeds AccWidth");
+  end
+  if (NumChannels < 1 || (CoefSets != 1 && CoefSets != NumChannels)) begin : g_bad_channels
+    $error("iir_core: need NumChannels >= 1 and CoefSets = 1 or NumChannels");
+  end
+  if (ChannelWidth != (NumChannels > 1 ? $clog2(NumChannels) : 1)) begin : g_bad_channel_width
+    $error("iir_core: ChannelWidth must be max(1, clog2(NumChannels))");
   end
 
   // The D-bit sample for a history word: (y_ext + 2^(s-1)) >>> s, saturated. The sum is one bit
@@ -132,14 +156,16 @@ module iir_core #(
   // wb_pipe_q[MacLatency-1] is high: that cycle rounds, saturates and writes it back.
   logic [MacLatency-1:0]                 wb_pipe_q, wb_pipe_d;
   logic [LineWidth-1:0]                  wb_sec_q, wb_sec_d;  // section of the next write-back
-  logic [AgeWidth-1:0]                   newest_q, newest_d;  // slot of age 0 in every line
+  logic [ChannelWidth-1:0]               chan_q, chan_d;      // channel of the sample in flight
   logic signed [SampleWidth-1:0]         out_q, out_d;
+  logic [ChannelWidth-1:0]               out_chan_q, out_chan_d;
   logic                                  valid_q, valid_d;
-  logic                                  overrun_q, overrun_d;
-  logic                                  saturation_q, saturation_d;
+  logic [NumChannels-1:0]                overrun_q, overrun_d;
+  logic [NumChannels-1:0]                saturation_q, saturation_d;
+  logic                                  channel_error_q, channel_error_d;
 
   // Coefficient ROM //
-  logic [CoefWidth-1:0] rom [RomDepth];
+  logic [CoefWidth-1:0] rom [RomWords];
   initial $readmemh(RomFile, rom);
 
   // Load registers: a circular buffer per line in distributed RAM (LUTRAM, a few LUTs instead of
@@ -148,15 +174,37 @@ module iir_core #(
   // cannot be reset: filled_q counts the samples accepted since reset (up to M + 1), and a word
   // older than that reads as zero, as a cleared register would. (A word of age a in any line
   // holds a value once more than a samples were accepted: line k + 1's age 0 is read only after
-  // section k wrote it.)
-  logic [ExtWidth-1:0]    lr_ram [LrSlots];
+  // section k wrote it.) Each channel has its own lines (from channel * LrSlots), its own newest
+  // slot and its own count; newest_q and filled_q are those of the channel being served (channel_i
+  // while idle, the sample's channel while busy).
+  logic [ExtWidth-1:0]    lr_ram [LrDepth];
+  // Per channel c, at bits [c * width +: width] (flat: Yosys 0.23 reads no packed 2-D arrays).
+  logic [NumChannels*AgeWidth-1:0]     newest_mem_q;  // slot of age 0
+  logic [NumChannels*(AgeWidth+1)-1:0] filled_mem_q;  // samples accepted since reset, up to M + 1
+  logic [ChannelWidth-1:0] cur_chan;
+  logic                   cur_chan_ok;                 // cur_chan < NumChannels
+  logic [AgeWidth-1:0]    newest_q, newest_d;
   logic [AgeWidth:0]      filled_q, filled_d;
   logic                   lr_we;
-  logic [LrAddrWidth-1:0] lr_waddr, lr_raddr;
+  logic [LrAddrWidth-1:0] lr_waddr, lr_raddr;          // within the channel's lines
+  logic [LrFullWidth-1:0] lr_waddr_full, lr_raddr_full;
   logic [ExtWidth-1:0]    lr_wdata;
 
+  assign cur_chan    = (state_q == StIdle) ? channel_i : chan_q;
+  assign cur_chan_ok = 32'(cur_chan) < NumChannels;
+  assign newest_q    = cur_chan_ok ? newest_mem_q[32'(cur_chan)*AgeWidth +: AgeWidth] : '0;
+  assign filled_q    = cur_chan_ok ? filled_mem_q[32'(cur_chan)*(AgeWidth+1) +: AgeWidth+1] : '0;
+
+  // Channel c's word at `addr` within its lines.
+  function automatic logic [LrFullWidth-1:0] lr_full_addr(logic [ChannelWidth-1:0] chan,
+                                                          logic [LrAddrWidth-1:0] addr);
+    lr_full_addr = LrFullWidth'(32'(chan) * LrSlots + 32'(addr));
+  endfunction
+  assign lr_waddr_full = lr_full_addr(cur_chan, lr_waddr);
+  assign lr_raddr_full = lr_full_addr(cur_chan, lr_raddr);
+
   always_ff @(posedge clk_i) begin
-    if (lr_we) lr_ram[lr_waddr] <= lr_wdata;
+    if (lr_we) lr_ram[lr_waddr_full] <= lr_wdata;
   end
 
   // The slot of the word `age` samples older than the one in slot `newest`.
@@ -214,7 +262,7 @@ module iir_core #(
 
   logic signed [ExtWidth-1:0] lr_word;
   assign lr_raddr = {rd_line, slot_of(newest_q, rd_age)};
-  assign lr_word  = (filled_q > rd_age) ? $signed(lr_ram[lr_raddr]) : '0;
+  assign lr_word  = (filled_q > rd_age) ? $signed(lr_ram[lr_raddr_full]) : '0;
 
   // Operands //
   logic                          issue;
@@ -231,7 +279,11 @@ module iir_core #(
   assign mac_a     = !issue        ? '0 :
                      term_feedback ? lr_word :
                                      AWidth'(lr_sample);
-  assign mac_b = $signed(rom[rom_addr]);
+  // One set: the decoded address; a set per channel: that channel's set.
+  logic [RomFullWidth-1:0] rom_full_addr;
+  assign rom_full_addr = CoefSets == 1 ? RomFullWidth'(rom_addr) :
+                                         RomFullWidth'(32'(chan_q) * RomDepth + 32'(rom_addr));
+  assign mac_b = $signed(rom[rom_full_addr]);
 
   iir_mac #(
     .AWidth    (AWidth),
@@ -270,12 +322,14 @@ module iir_core #(
   assign writeback = wb_pipe_q[MacLatency-1];
 
   always_comb begin
-    state_d   = state_q;
-    btc_d     = btc_q;
-    wb_sec_d  = wb_sec_q;
-    newest_d  = newest_q;
-    filled_d  = filled_q;
-    out_d     = out_q;
+    state_d    = state_q;
+    btc_d      = btc_q;
+    wb_sec_d   = wb_sec_q;
+    chan_d     = chan_q;
+    newest_d   = newest_q;
+    filled_d   = filled_q;
+    out_d      = out_q;
+    out_chan_d = out_chan_q;
     valid_d   = 1'b0;
     issue     = 1'b0;
     lr_we     = 1'b0;
@@ -284,7 +338,7 @@ module iir_core #(
 
     unique case (state_q)
       StIdle: begin
-        if (sample_valid_i) begin
+        if (sample_valid_i && cur_chan_ok) begin
           // EN: the history grows one sample older in every line; x[n] << s enters line 0.
           newest_d = (newest_q == AgeWidth'(SectionOrder)) ? '0 : newest_q + 1'b1;
           if (filled_q != (AgeWidth + 1)'(LrLine)) filled_d = filled_q + 1'b1;
@@ -293,6 +347,7 @@ module iir_core #(
           lr_wdata = ExtWidth'(sample_i) <<< FeedbackShift;
           btc_d    = '0;
           wb_sec_d = '0;
+          chan_d   = channel_i;
           state_d  = StIssue;
         end
       end
@@ -318,9 +373,10 @@ module iir_core #(
       lr_wdata = section_ext;
       wb_sec_d = wb_sec_q + 1'b1;
       if (wb_sec_q == LineWidth'(NumSections - 1)) begin
-        out_d   = section_y;
-        valid_d = 1'b1;
-        state_d = StIdle;
+        out_d      = section_y;
+        out_chan_d = chan_q;
+        valid_d    = 1'b1;
+        state_d    = StIdle;
       end
     end
   end
@@ -328,40 +384,61 @@ module iir_core #(
   assign wb_pipe_d = {wb_pipe_q[MacLatency-2:0], issue & term_last};
 
   // Sticky flags //
-  assign overrun_d    = (overrun_q & ~flag_clear_i) | (sample_valid_i & (state_q != StIdle));
-  assign saturation_d = (saturation_q & ~flag_clear_i) | (writeback & clip);
+  // The bit of channel c: one-hot of c, or nothing for a channel out of range.
+  function automatic logic [NumChannels-1:0] channel_bit(logic [ChannelWidth-1:0] chan);
+    channel_bit = '0;
+    for (int c = 0; c < NumChannels; c++) channel_bit[c] = (32'(chan) == c);
+  endfunction
+  logic channel_i_ok;
+  assign channel_i_ok    = 32'(channel_i) < NumChannels;
+  assign overrun_d       = (overrun_q & ~{NumChannels{flag_clear_i}}) |
+                           ({NumChannels{sample_valid_i & (state_q != StIdle)}} &
+                            channel_bit(channel_i));
+  assign saturation_d    = (saturation_q & ~{NumChannels{flag_clear_i}}) |
+                           ({NumChannels{writeback & clip}} & channel_bit(chan_q));
+  assign channel_error_d = (channel_error_q & ~flag_clear_i) | (sample_valid_i & ~channel_i_ok);
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       state_q      <= StIdle;
       btc_q        <= '0;
       wb_pipe_q    <= '0;
-      wb_sec_q     <= '0;
-      newest_q     <= '0;
-      filled_q     <= '0;
-      out_q        <= '0;
-      valid_q      <= 1'b0;
-      overrun_q    <= 1'b0;
-      saturation_q <= 1'b0;
+      wb_sec_q        <= '0;
+      chan_q          <= '0;
+      newest_mem_q    <= '0;
+      filled_mem_q    <= '0;
+      out_q           <= '0;
+      out_chan_q      <= '0;
+      valid_q         <= 1'b0;
+      overrun_q       <= '0;
+      saturation_q    <= '0;
+      channel_error_q <= 1'b0;
     end else begin
-      state_q      <= state_d;
-      btc_q        <= btc_d;
-      wb_pipe_q    <= wb_pipe_d;
-      wb_sec_q     <= wb_sec_d;
-      newest_q     <= newest_d;
-      filled_q     <= filled_d;
-      out_q        <= out_d;
-      valid_q      <= valid_d;
-      overrun_q    <= overrun_d;
-      saturation_q <= saturation_d;
+      state_q         <= state_d;
+      btc_q           <= btc_d;
+      wb_pipe_q       <= wb_pipe_d;
+      wb_sec_q        <= wb_sec_d;
+      chan_q          <= chan_d;
+      if (cur_chan_ok) begin
+        newest_mem_q[32'(cur_chan)*AgeWidth +: AgeWidth]           <= newest_d;
+        filled_mem_q[32'(cur_chan)*(AgeWidth+1) +: AgeWidth+1]     <= filled_d;
+      end
+      out_q           <= out_d;
+      out_chan_q      <= out_chan_d;
+      valid_q         <= valid_d;
+      overrun_q       <= overrun_d;
+      saturation_q    <= saturation_d;
+      channel_error_q <= channel_error_d;
     end
   end
 
-  assign sample_o       = out_q;
-  assign sample_valid_o = valid_q;
-  assign busy_o         = (state_q != StIdle);
-  assign overrun_o      = overrun_q;
-  assign saturation_o   = saturation_q;
+  assign sample_o        = out_q;
+  assign channel_o       = out_chan_q;
+  assign sample_valid_o  = valid_q;
+  assign busy_o          = (state_q != StIdle);
+  assign overrun_o       = overrun_q;
+  assign saturation_o    = saturation_q;
+  assign channel_error_o = channel_error_q;
 
   // Assertions //
 `ifndef SYNTHESIS

@@ -11,8 +11,11 @@
 namespace flange::tb {
 
 std::string describe(const model::Pins& p) {
-  return fmt::format("sample_o={} sample_valid_o={} busy_o={} overrun_o={} saturation_o={}",
-                     p.sample, int{p.sample_valid}, int{p.busy}, int{p.overrun}, int{p.saturation});
+  return fmt::format(
+      "sample_o={} channel_o={} sample_valid_o={} busy_o={} overrun_o={:#x} saturation_o={:#x} "
+      "channel_error_o={}",
+      p.sample, p.channel, int{p.sample_valid}, int{p.busy}, p.overrun, p.saturation,
+      int{p.channel_error});
 }
 
 CosimHarness::CosimHarness(model::CoreConfig config, std::unique_ptr<Dut> dut_in)
@@ -26,10 +29,12 @@ model::Pins CosimHarness::dut_pins() {
   const std::uint32_t mask = width >= 32 ? ~0u : (1u << width) - 1u;
   const std::uint32_t sign = 1u << (width - 1);
   p.sample = static_cast<std::int32_t>(((out.sample_bits & mask) ^ sign) - sign);
+  p.channel = static_cast<int>(out.channel);
   p.sample_valid = out.sample_valid;
   p.busy = out.busy;
   p.overrun = out.overrun;
   p.saturation = out.saturation;
+  p.channel_error = out.channel_error;
   return p;
 }
 
@@ -93,10 +98,14 @@ void CosimHarness::compare_pins(std::uint64_t cycle, const RunState& state, Cosi
   }
   if (got.sample_valid) {
     report.outputs.push_back(got.sample);
+    report.output_channels.push_back(got.channel);
     report.valid_cycles.push_back(cycle);
   }
   report.saturation_seen = report.saturation_seen || got.saturation;
   report.overrun_seen = report.overrun_seen || got.overrun;
+  report.overrun_channels |= got.overrun;
+  report.saturation_channels |= got.saturation;
+  report.channel_error_seen = report.channel_error_seen || got.channel_error;
 }
 
 // This cycle's inputs, to the model and the DUT alike.
@@ -117,7 +126,7 @@ DutInputs CosimHarness::apply_actions(std::uint64_t cycle, const Stimulus& stimu
         model_.reset(cycle);
         break;
       case Action::Kind::kStrobe:
-        apply_strobe(cycle, action.sample, state, report, in);
+        apply_strobe(cycle, action, state, report, in);
         break;
       case Action::Kind::kClear:
         in.flag_clear = true;
@@ -128,11 +137,13 @@ DutInputs CosimHarness::apply_actions(std::uint64_t cycle, const Stimulus& stimu
   return in;
 }
 
-void CosimHarness::apply_strobe(std::uint64_t cycle, std::int32_t sample, RunState& state,
+void CosimHarness::apply_strobe(std::uint64_t cycle, const Action& action, RunState& state,
                                 CosimReport& report, DutInputs& in) {
+  const std::int32_t sample = action.sample;
   in.sample_valid = true;
   in.sample_bits = static_cast<std::uint32_t>(sample) & state.sample_mask;
-  const auto result = model_.strobe(cycle, sample);
+  in.channel = static_cast<std::uint32_t>(action.channel);
+  const auto result = model_.strobe(cycle, sample, action.channel);
   if (result) state.current = {state.strobes, sample};
   ++state.strobes;
   if (result) {

@@ -21,10 +21,14 @@ struct CosimReport {
   std::uint64_t mismatches = 0;  // cycles in which some pin differed
   std::string first_mismatch;    // one line: cycle, sample index and input, DUT pins, model pins
   std::vector<std::int32_t> outputs;        // DUT sample_o in each sample_valid_o cycle
+  std::vector<int> output_channels;         // DUT channel_o in those cycles
   std::vector<std::uint64_t> valid_cycles;  // those cycles
   std::vector<std::uint64_t> latencies;     // valid cycle - accept cycle, per model result
   bool saturation_seen = false;             // DUT saturation_o was high in some cycle
   bool overrun_seen = false;                // DUT overrun_o was high in some cycle
+  std::uint32_t overrun_channels = 0;       // every overrun_o bit seen high
+  std::uint32_t saturation_channels = 0;    // every saturation_o bit seen high
+  bool channel_error_seen = false;          // DUT channel_error_o was high in some cycle
   bool rtl_assertion = false;               // an RTL assertion fired
 };
 
@@ -48,8 +52,8 @@ class CosimHarness {
   void compare_pins(std::uint64_t cycle, const RunState& state, CosimReport& report);
   DutInputs apply_actions(std::uint64_t cycle, const Stimulus& stimulus, RunState& state,
                           CosimReport& report);
-  void apply_strobe(std::uint64_t cycle, std::int32_t sample, RunState& state, CosimReport& report,
-                    DutInputs& in);
+  void apply_strobe(std::uint64_t cycle, const Action& action, RunState& state,
+                    CosimReport& report, DutInputs& in);
 
   model::IirCore model_;
   std::unique_ptr<Dut> dut;

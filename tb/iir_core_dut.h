@@ -14,6 +14,7 @@ namespace flange::tb {
 struct DutInputs {
   bool rst_n = true;
   std::uint32_t sample_bits = 0;  // sample_i, two's complement in the low SampleWidth bits
+  std::uint32_t channel = 0;      // channel_i
   bool sample_valid = false;
   bool flag_clear = false;
 };
@@ -21,10 +22,12 @@ struct DutInputs {
 // The outputs of rtl/iir_core.sv in one clock cycle, as raw bits.
 struct DutOutputs {
   std::uint32_t sample_bits = 0;  // sample_o
+  std::uint32_t channel = 0;      // channel_o
   bool sample_valid = false;
   bool busy = false;
-  bool overrun = false;
-  bool saturation = false;
+  std::uint32_t overrun = 0;     // overrun_o, bit c for channel c
+  std::uint32_t saturation = 0;  // saturation_o, bit c for channel c
+  bool channel_error = false;
 };
 
 class Dut {

@@ -41,6 +41,7 @@ struct Action {
   std::uint64_t cycle = 0;
   Kind kind = Kind::kStrobe;
   std::int32_t sample = 0;  // for kStrobe
+  int channel = 0;          // for kStrobe: channel_i
 };
 
 // A schedule of actions, sorted by cycle (several kinds may share a cycle).

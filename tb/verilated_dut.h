@@ -36,6 +36,7 @@ class VerilatedDut final : public Dut {
     dut->clk_i = 0;
     dut->rst_ni = 0;
     dut->sample_valid_i = 0;
+    dut->channel_i = 0;
     dut->flag_clear_i = 0;
     dut->eval();
     dump();
@@ -50,16 +51,19 @@ class VerilatedDut final : public Dut {
   DutOutputs outputs() override {
     DutOutputs out;
     out.sample_bits = static_cast<std::uint32_t>(dut->sample_o);
+    out.channel = static_cast<std::uint32_t>(dut->channel_o);
     out.sample_valid = dut->sample_valid_o != 0;
     out.busy = dut->busy_o != 0;
-    out.overrun = dut->overrun_o != 0;
-    out.saturation = dut->saturation_o != 0;
+    out.overrun = static_cast<std::uint32_t>(dut->overrun_o);
+    out.saturation = static_cast<std::uint32_t>(dut->saturation_o);
+    out.channel_error = dut->channel_error_o != 0;
     return out;
   }
 
   void clock(const DutInputs& in) override {
     dut->rst_ni = in.rst_n ? 1 : 0;
     dut->sample_i = static_cast<std::remove_reference_t<decltype(dut->sample_i)>>(in.sample_bits);
+    dut->channel_i = static_cast<std::remove_reference_t<decltype(dut->channel_i)>>(in.channel);
     dut->sample_valid_i = in.sample_valid ? 1 : 0;
     dut->flag_clear_i = in.flag_clear ? 1 : 0;
     dut->eval();

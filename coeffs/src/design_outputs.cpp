@@ -100,6 +100,8 @@ nlohmann::ordered_json filter_json(const DesignRecord& record) {
   quantized["rom_depth"] = q.words.size();
   quantized["rom_order"] = "per section: b[0..M] then -a[1..M]";
   quantized["words"] = q.words;
+  quantized["channels"] = record.channels;
+  quantized["coef_sets"] = 1;
   nlohmann::ordered_json values = nlohmann::ordered_json::array();
   for (const QuantizedSection& section : q.sections) {
     values.push_back({{"b", section.b}, {"a", section.a}});
@@ -131,6 +133,12 @@ std::string rom_image(const DesignRecord& record) {
   return text.str();
 }
 
+int channel_width(int channels) {
+  int width = 1;
+  while ((1 << width) < channels) ++width;
+  return width;
+}
+
 std::string params_package(const DesignRecord& record) {
   const QuantizedFilter& q = record.quantized;
   std::ostringstream text;
@@ -157,6 +165,9 @@ std::string params_package(const DesignRecord& record) {
         "NumFracBits - CoefFracBits: extra fraction bits of y_ext");
   param("AccWidth", q.widths.acc_bits, "accumulator width");
   param("RomDepth", static_cast<long long>(q.words.size()), "NumSections * (2 * SectionOrder + 1)");
+  param("NumChannels", record.channels, "independent channels sharing the MAC");
+  param("CoefSets", 1, "coefficient sets in the ROM: 1 (shared) or NumChannels");
+  param("ChannelWidth", channel_width(record.channels), "max(1, clog2(NumChannels))");
   text << "endpackage\n";
   return text.str();
 }

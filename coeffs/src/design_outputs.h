@@ -18,17 +18,24 @@ inline constexpr const char* kPackageFile = "iir_coeffs_pkg.sv";
 inline constexpr const char* kPlotFile = "response.svg";
 
 // Everything known about one generated design.
+// Most channels one core serves: the model keeps a channel's sticky flags in one 32-bit mask.
+inline constexpr int kMaxChannels = 32;
+
 struct DesignRecord {
   std::string name;          // names the filter in reports and the package comment
   std::string generated_by;  // the command that made it, without --out
   FloatDesign design;
   QuantizedFilter quantized;
   QuantizedAnalysis analysis;
+  // Channels that share the core, one coefficient set for all of them (docs/core.md, "Channels").
+  int channels = 1;
 };
 
 nlohmann::ordered_json filter_json(const DesignRecord& record);
 std::string rom_image(const DesignRecord& record);
 std::string params_package(const DesignRecord& record);
+// Width of the core's channel ports: max(1, ceil(log2(channels))).
+int channel_width(int channels);
 // Runs gnuplot; throws std::runtime_error naming the fix when gnuplot is missing or fails.
 void write_response_plot(const DesignRecord& record, const std::filesystem::path& svg_path);
 

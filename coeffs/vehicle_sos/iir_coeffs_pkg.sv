@@ -13,4 +13,7 @@ package iir_coeffs_pkg;
   localparam int FeedbackShift = 7;  // NumFracBits - CoefFracBits: extra fraction bits of y_ext
   localparam int AccWidth = 48;  // accumulator width
   localparam int RomDepth = 20;  // NumSections * (2 * SectionOrder + 1)
+  localparam int NumChannels = 1;  // independent channels sharing the MAC
+  localparam int CoefSets = 1;  // coefficient sets in the ROM: 1 (shared) or NumChannels
+  localparam int ChannelWidth = 1;  // max(1, clog2(NumChannels))
 endpackage

@@ -114,17 +114,26 @@ module basys3_top #(
   // synchronous resets costs about 250 LUTs (Yosys cannot use the plain FDRE reset pin then).
   always_ff @(posedge clk_i) core_rst_n_q <= rst_n && !core_reset;
 
+  // The board serves channel 0 of the core: its frames carry no channel number yet.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [iir_coeffs_pkg::ChannelWidth-1:0] core_channel;
+  logic                                    core_channel_error;
+  /* verilator lint_on UNUSEDSIGNAL */
+
   iir_core #(.RomFile(RomFile)) u_core (
     .clk_i,
-    .rst_ni        (core_rst_n_q),
-    .sample_i      (frame_sample),
-    .sample_valid_i(core_strobe),
-    .sample_o      (core_out),
-    .sample_valid_o(core_valid),
-    .busy_o        (core_busy),
-    .overrun_o     (core_overrun),
-    .saturation_o  (core_saturation),
-    .flag_clear_i  (core_clear)
+    .rst_ni         (core_rst_n_q),
+    .sample_i       (frame_sample),
+    .channel_i      ('0),
+    .sample_valid_i (core_strobe),
+    .sample_o       (core_out),
+    .channel_o      (core_channel),
+    .sample_valid_o (core_valid),
+    .busy_o         (core_busy),
+    .overrun_o      (core_overrun),
+    .saturation_o   (core_saturation),
+    .channel_error_o(core_channel_error),
+    .flag_clear_i   (core_clear)
   );
 
   // Control: one frame at a time //

@@ -57,17 +57,26 @@ module iir_core_props #(
   logic                          saturation_o;
   /* verilator lint_on UNUSEDSIGNAL */
   logic                          sample_valid_o, busy_o, overrun_o;
+  // The proofs cover a one-channel core (channel 0 in, channel_o always 0); the multichannel
+  // contract is co-simulated (docs/formal.md).
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [iir_coeffs_pkg::ChannelWidth-1:0] channel_o;
+  logic                                    channel_error_o;
+  /* verilator lint_on UNUSEDSIGNAL */
 
   iir_core #(.RomFile(RomFile)) dut (
     .clk_i,
     .rst_ni,
     .sample_i,
+    .channel_i      ('0),
     .sample_valid_i,
     .sample_o,
+    .channel_o,
     .sample_valid_o,
     .busy_o,
     .overrun_o,
     .saturation_o,
+    .channel_error_o,
     .flag_clear_i
   );
 

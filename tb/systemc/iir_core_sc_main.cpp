@@ -133,6 +133,10 @@ struct Bench {
   sc_core::sc_signal<bool> busy;
   sc_core::sc_signal<bool> overrun;
   sc_core::sc_signal<bool> saturation;
+  // The one-channel sets this bench runs: channel 0 in, channel_o and channel_error_o unwatched.
+  sc_core::sc_signal<bool> channel_in;
+  sc_core::sc_signal<bool> channel_out;
+  sc_core::sc_signal<bool> channel_error;
   // Deep enough for a sample period: the scoreboard empties both every delta cycle.
   sc_core::sc_fifo<sc::InputRecord> applied;
   sc_core::sc_fifo<sc::OutputRecord> observed;
@@ -155,6 +159,9 @@ Bench::Bench(const sc::SampleSchedule& schedule, const flange::model::CoreConfig
       busy("busy"),
       overrun("overrun"),
       saturation("saturation"),
+      channel_in("channel_in", false),
+      channel_out("channel_out"),
+      channel_error("channel_error"),
       applied("applied", 16),
       observed("observed", 16),
       source("source", schedule),
@@ -177,6 +184,9 @@ Bench::Bench(const sc::SampleSchedule& schedule, const flange::model::CoreConfig
   dut->busy_o(busy);
   dut->overrun_o(overrun);
   dut->saturation_o(saturation);
+  dut->channel_i(channel_in);
+  dut->channel_o(channel_out);
+  dut->channel_error_o(channel_error);
 
   monitor.clk(clk);
   monitor.sample(sample_out);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Regenerates the small SOS coefficient sets that the co-simulation tests build the RTL for
-# (orders 1, 2, 3, 4, 8 and 12; fs = 6 Hz, fc = 0.5 Hz, like the measurement filter).
+# (orders 1, 2, 3, 4, 8 and 12; fs = 6 Hz, fc = 0.5 Hz, like the measurement filter), and the
+# multichannel cores: the vehicle filter shared by 4 and by 12 channels (loco_ch4, loco_ch12).
 #   bash tests/data/coeffs/regenerate.sh [FLANGE]          rewrite tests/data/coeffs/sos_order<N>/
 #   bash tests/data/coeffs/regenerate.sh --check [FLANGE]  regenerate into a temp folder, compare
 # FLANGE defaults to build/flange.
@@ -14,7 +15,14 @@ if [ "${1:-}" = "--check" ]; then
   shift
 fi
 flange="${1:-$here/../../../build/flange}"
-ORDERS=(1 2 3 4 8 12)
+# set name | arguments of `flange design`
+SETS=()
+for order in 1 2 3 4 8 12; do
+  SETS+=("sos_order$order|--fs 6 --order $order --fc 0.5 --structure sos --name sos_order$order")
+done
+for channels in 4 12; do
+  SETS+=("loco_ch$channels|--fs 100 --order 7 --fc 0.259 --structure sos --channels $channels --name loco_ch$channels")
+done
 
 out_root="$here"
 if [ "$check" -eq 1 ]; then
@@ -23,9 +31,10 @@ if [ "$check" -eq 1 ]; then
 fi
 
 status=0
-for order in "${ORDERS[@]}"; do
-  name="sos_order$order"
-  args=(--fs 6 --order "$order" --fc 0.5 --structure sos --name "$name" --no-plot)
+for entry in "${SETS[@]}"; do
+  name="${entry%%|*}"
+  read -r -a args <<<"${entry#*|} --no-plot"
+
   "$flange" design "${args[@]}" --out "$out_root/$name" >/dev/null
   if [ "$check" -eq 1 ]; then
     for file in "$here/$name"/* "$out_root/$name"/*; do
