@@ -7,6 +7,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "channel_sets.h"
 #include "cli.h"
 #include "design_error.h"
 #include "design_outputs.h"
@@ -47,6 +48,10 @@ CLI::App* add_design_command(CLI::App& app, DesignOptions& options) {
   cmd->add_option("--channels", options.channels,
                   fmt::format("channels sharing the core and this set (1 to {})", coeffs::kMaxChannels))
       ->default_val(1);
+  cmd->add_option("--channel-fc", options.channel_fc_hz,
+                  "a coefficient set per channel: channel c's cut-off in Hz, with --order "
+                  "(the channel count is the list's length)")
+      ->delimiter(',');
   cmd->add_option("--name", r.name, "name of the filter in reports")->default_val("iir");
   cmd->add_option("--spec-tolerance-db", r.limits.spec_tolerance_db,
                   "slack on ap and aa after rounding (>= 0)")
@@ -78,6 +83,30 @@ std::string command_without_out(const std::vector<std::string>& command_line) {
   return text;
 }
 
+namespace {
+
+// One set for every channel, or (--channel-fc) a set per channel.
+DesignRecord design_record(const DesignOptions& options, const DesignRequest& request,
+                           const std::string& generated_by) {
+  if (options.channel_fc_hz.empty()) {
+    DesignRecord record = generate_design(request, generated_by);
+    record.channels = options.channels;
+    return record;
+  }
+  if (request.fc_hz || request.fp_hz || !request.tf_b.empty()) {
+    throw BadArgument("--channel-fc: gives every channel's cut-off; leave out --fc, the spec and "
+                      "--tf-b/--tf-a");
+  }
+  if (options.channels != 1 &&
+      options.channels != static_cast<int>(options.channel_fc_hz.size())) {
+    throw BadArgument(fmt::format("--channels {} but --channel-fc names {} cut-offs",
+                                  options.channels, options.channel_fc_hz.size()));
+  }
+  return generate_channel_designs(request, options.channel_fc_hz, generated_by);
+}
+
+}  // namespace
+
 int run_design_command(const DesignOptions& options, const std::vector<std::string>& command_line,
                        std::ostream& out, std::ostream& err) {
   try {
@@ -97,8 +126,7 @@ int run_design_command(const DesignOptions& options, const std::vector<std::stri
       throw BadArgument(fmt::format("--channels: {} is outside 1 to {}", options.channels,
                                     coeffs::kMaxChannels));
     }
-    DesignRecord record = generate_design(request, command_without_out(command_line));
-    record.channels = options.channels;
+    DesignRecord record = design_record(options, request, command_without_out(command_line));
     out << design_report(record);
     if (!record.analysis.rejection.empty()) {
       err << "flange design: " << record.analysis.rejection << "\n";

@@ -16,6 +16,7 @@ namespace flange::cli {
 
 struct DesignOptions {
   int channels = 1;  // --channels: channels sharing the core, one set for all
+  std::vector<double> channel_fc_hz;  // --channel-fc: a set per channel, one cut-off each
   coeffs::DesignRequest request;
   std::string structure = "sos";
   std::optional<std::filesystem::path> out_dir;  // nothing is written without it

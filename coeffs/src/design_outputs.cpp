@@ -53,6 +53,32 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   if (!file) throw std::runtime_error("cannot write " + path.string());
 }
 
+
+// Per channel of a set per channel: its float design and what its rounding did.
+nlohmann::ordered_json channel_sets_json(const DesignRecord& record) {
+  nlohmann::ordered_json sets = nlohmann::ordered_json::array();
+  for (const RecordChannelSet& set : record.channel_sets) {
+    nlohmann::ordered_json sos = nlohmann::ordered_json::array();
+    for (const Section& section : set.design.cascade.sections) {
+      sos.push_back(
+          {section.b[0], section.b[1], section.b[2], section.a[0], section.a[1], section.a[2]});
+    }
+    nlohmann::ordered_json values = nlohmann::ordered_json::array();
+    for (const QuantizedSection& section : set.quantized.sections) {
+      values.push_back({{"b", section.b}, {"a", section.a}});
+    }
+    sets.push_back({{"fc_hz", set.design.fc_hz},
+                    {"sos", sos},
+                    {"leftover_gain", set.design.cascade.leftover_gain},
+                    {"section_values", values},
+                    {"max_pole_radius", set.analysis.max_pole_radius},
+                    {"stable", set.analysis.stable},
+                    {"dc_gain_error_db", set.analysis.dc_gain_error_db},
+                    {"passband_deviation_db", finite_or_null(set.analysis.passband_deviation_db)}});
+  }
+  return sets;
+}
+
 }  // namespace
 
 nlohmann::ordered_json filter_json(const DesignRecord& record) {
@@ -99,9 +125,9 @@ nlohmann::ordered_json filter_json(const DesignRecord& record) {
   quantized["section_order"] = q.section_order;
   quantized["rom_depth"] = q.words.size();
   quantized["rom_order"] = "per section: b[0..M] then -a[1..M]";
-  quantized["words"] = q.words;
+  quantized["words"] = all_words(record);
   quantized["channels"] = record.channels;
-  quantized["coef_sets"] = 1;
+  quantized["coef_sets"] = record.coef_sets();
   nlohmann::ordered_json values = nlohmann::ordered_json::array();
   for (const QuantizedSection& section : q.sections) {
     values.push_back({{"b", section.b}, {"a", section.a}});
@@ -118,7 +144,17 @@ nlohmann::ordered_json filter_json(const DesignRecord& record) {
   quantized["passband_deviation_db"] = finite_or_null(analysis.passband_deviation_db);
   quantized["meets_spec"] = analysis.meets_spec;
   json["quantized"] = quantized;
+  if (!record.channel_sets.empty()) json["channel_sets"] = channel_sets_json(record);
   return json;
+}
+
+std::vector<std::int64_t> all_words(const DesignRecord& record) {
+  if (record.channel_sets.empty()) return record.quantized.words;
+  std::vector<std::int64_t> words;
+  for (const RecordChannelSet& set : record.channel_sets) {
+    words.insert(words.end(), set.quantized.words.begin(), set.quantized.words.end());
+  }
+  return words;
 }
 
 std::string rom_image(const DesignRecord& record) {
@@ -129,7 +165,17 @@ std::string rom_image(const DesignRecord& record) {
       "// {} sections x (b[0..{}], -a[1..{}]); {}-bit two's complement; b Q.{}, -a Q.{}\n",
       q.section_count, q.section_order, q.section_order, q.widths.coef_bits, q.b_frac_bits,
       q.coef_frac_bits);
-  for (std::int64_t word : q.words) text << hex_word(word, q.widths.coef_bits) << "\n";
+  if (record.channel_sets.empty()) {
+    for (std::int64_t word : q.words) text << hex_word(word, q.widths.coef_bits) << "\n";
+    return text.str();
+  }
+  for (std::size_t c = 0; c < record.channel_sets.size(); ++c) {
+    const RecordChannelSet& set = record.channel_sets[c];
+    text << fmt::format("// channel {}: fc = {:.6g} Hz\n", c, set.design.fc_hz);
+    for (std::int64_t word : set.quantized.words) {
+      text << hex_word(word, q.widths.coef_bits) << "\n";
+    }
+  }
   return text.str();
 }
 
@@ -166,7 +212,7 @@ std::string params_package(const DesignRecord& record) {
   param("AccWidth", q.widths.acc_bits, "accumulator width");
   param("RomDepth", static_cast<long long>(q.words.size()), "NumSections * (2 * SectionOrder + 1)");
   param("NumChannels", record.channels, "independent channels sharing the MAC");
-  param("CoefSets", 1, "coefficient sets in the ROM: 1 (shared) or NumChannels");
+  param("CoefSets", record.coef_sets(), "coefficient sets in the ROM: 1 (shared) or NumChannels");
   param("ChannelWidth", channel_width(record.channels), "max(1, clog2(NumChannels))");
   text << "endpackage\n";
   return text.str();
@@ -290,6 +336,21 @@ std::string design_report(const DesignRecord& record) {
   }
   if (std::abs(q.leftover_gain - 1.0) > 1e-12) {
     text << fmt::format("  leftover gain for the host: {:.9g}\n", q.leftover_gain);
+  }
+  if (record.channels > 1) {
+    text << fmt::format("  channels: {} sharing one MAC, {}\n", record.channels,
+                        record.channel_sets.empty() ? "one coefficient set for all"
+                                                    : "a coefficient set per channel");
+  }
+  for (std::size_t c = 0; c < record.channel_sets.size(); ++c) {
+    const RecordChannelSet& set = record.channel_sets[c];
+    text << fmt::format("    channel {}: fc = {:.6g} Hz, max |z| = {:.6f}", c, set.design.fc_hz,
+                        set.analysis.max_pole_radius);
+    if (set.analysis.passband_deviation_db) {
+      text << fmt::format(", within {:.4f} dB of its float design below fc",
+                          *set.analysis.passband_deviation_db);
+    }
+    text << "\n";
   }
   text << "  verdict: "
        << (analysis.rejection.empty()

@@ -18,6 +18,13 @@ inline constexpr const char* kPackageFile = "iir_coeffs_pkg.sv";
 inline constexpr const char* kPlotFile = "response.svg";
 
 // Everything known about one generated design.
+// One channel's own coefficient set in a set per channel.
+struct RecordChannelSet {
+  FloatDesign design;
+  QuantizedFilter quantized;
+  QuantizedAnalysis analysis;
+};
+
 // Most channels one core serves: the model keeps a channel's sticky flags in one 32-bit mask.
 inline constexpr int kMaxChannels = 32;
 
@@ -27,12 +34,18 @@ struct DesignRecord {
   FloatDesign design;
   QuantizedFilter quantized;
   QuantizedAnalysis analysis;
-  // Channels that share the core, one coefficient set for all of them (docs/core.md, "Channels").
+  // Channels that share the core (docs/core.md, "Channels"): one coefficient set for all of them
+  // (channel_sets empty), or one set per channel, channel c's in channel_sets[c] (then design,
+  // quantized and analysis above are channel 0's and channels == channel_sets.size()).
   int channels = 1;
+  std::vector<RecordChannelSet> channel_sets;
+  int coef_sets() const { return channel_sets.empty() ? 1 : static_cast<int>(channel_sets.size()); }
 };
 
 nlohmann::ordered_json filter_json(const DesignRecord& record);
 std::string rom_image(const DesignRecord& record);
+// The ROM's words in order: the one set, or every channel's set one after another.
+std::vector<std::int64_t> all_words(const DesignRecord& record);
 std::string params_package(const DesignRecord& record);
 // Width of the core's channel ports: max(1, ceil(log2(channels))).
 int channel_width(int channels);

@@ -205,7 +205,8 @@ DesignRecord generate_design(const DesignRequest& request, const std::string& ge
                                        request.fs_hz, spec);
   }
   require_representable(record.design);
-  record.quantized = quantize(record.design, request.structure, request.widths);
+  record.quantized =
+      quantize(record.design, request.structure, request.widths, request.max_feedback_shift);
   record.analysis = analyse(record.design, record.quantized, request.limits);
   return record;
 }

@@ -23,6 +23,7 @@ struct DesignRequest {
   std::vector<double> tf_b, tf_a;
   Structure structure = Structure::kSos;
   HardwareWidths widths;
+  std::optional<int> max_feedback_shift;  // a cap on s = Fb - Fa (channel sets share one format)
   AcceptanceLimits limits;
 };
 

@@ -186,7 +186,7 @@ std::string structure_name(Structure structure) {
 }
 
 QuantizedFilter quantize(const FloatDesign& design, Structure structure,
-                         const HardwareWidths& widths) {
+                         const HardwareWidths& widths, std::optional<int> max_feedback_shift) {
   const FloatSections sections = float_sections(design, structure);
   QuantizedFilter filter;
   filter.structure = structure;
@@ -196,7 +196,8 @@ QuantizedFilter quantize(const FloatDesign& design, Structure structure,
   filter.leftover_gain = sections.leftover_gain;
 
   const int c = widths.coef_bits;
-  const int max_shift = std::max(0, kDspAPortBits - widths.data_bits);
+  int max_shift = std::max(0, kDspAPortBits - widths.data_bits);
+  if (max_feedback_shift) max_shift = std::clamp(*max_feedback_shift, 0, max_shift);
   const int feedback_fa = feedback_frac_bits(sections, design, structure, c);
   const std::vector<std::vector<double>> numerators = compensated_numerators(sections, feedback_fa);
   const FracBits bits = numerator_frac_bits(numerators, feedback_fa, c, max_shift);

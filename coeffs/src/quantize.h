@@ -51,10 +51,12 @@ struct QuantizedFilter {
 };
 
 // Picks the fractional bits (docs/fixed_point.md) and rounds every coefficient to nearest.
-// Throws DesignRejected when the direct form's denominator or the numerator needs more integer
-// bits than the word has, or the accumulator could overflow.
+// `max_feedback_shift` caps s = Fb - Fa below the A port's own limit (25 - D): channels that share
+// one core need one format. Throws DesignRejected when the direct form's denominator or the
+// numerator needs more integer bits than the word has, or the accumulator could overflow.
 QuantizedFilter quantize(const FloatDesign& design, Structure structure,
-                         const HardwareWidths& widths);
+                         const HardwareWidths& widths,
+                         std::optional<int> max_feedback_shift = std::nullopt);
 
 // Frequency response of the float design (from its zeros, poles and gain) and of the
 // quantised filter (from its sections, times its leftover gain); omega in rad/sample.

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # Regenerates the small SOS coefficient sets that the co-simulation tests build the RTL for
 # (orders 1, 2, 3, 4, 8 and 12; fs = 6 Hz, fc = 0.5 Hz, like the measurement filter), and the
-# multichannel cores: the vehicle filter shared by 4 and by 12 channels (loco_ch4, loco_ch12).
+# multichannel cores: the vehicle filter shared by 4 and by 12 channels (loco_ch4, loco_ch12), and
+# three channels with a coefficient set each (loco_sets3).
 #   bash tests/data/coeffs/regenerate.sh [FLANGE]          rewrite tests/data/coeffs/sos_order<N>/
 #   bash tests/data/coeffs/regenerate.sh --check [FLANGE]  regenerate into a temp folder, compare
 # FLANGE defaults to build/flange.
@@ -23,6 +24,8 @@ done
 for channels in 4 12; do
   SETS+=("loco_ch$channels|--fs 100 --order 7 --fc 0.259 --structure sos --channels $channels --name loco_ch$channels")
 done
+# A set per channel: the vehicle filter and two wider ones, in one shared format.
+SETS+=("loco_sets3|--fs 100 --order 7 --channel-fc 0.259,0.5,1.0 --structure sos --name loco_sets3")
 
 out_root="$here"
 if [ "$check" -eq 1 ]; then
