@@ -181,6 +181,21 @@ module iir_core #(
   // Per channel c, at bits [c * width +: width] (flat: Yosys 0.23 reads no packed 2-D arrays).
   logic [NumChannels*AgeWidth-1:0]     newest_mem_q;  // slot of age 0
   logic [NumChannels*(AgeWidth+1)-1:0] filled_mem_q;  // samples accepted since reset, up to M + 1
+  // Whether a channel_i value names a channel: a ChannelWidth-bit compare (a 32-bit one costs a
+  // carry chain), none when every value does.
+  localparam logic EveryValueIsAChannel = NumChannels == (1 << ChannelWidth);
+  function automatic logic channel_exists(logic [ChannelWidth-1:0] chan);
+    channel_exists = EveryValueIsAChannel || chan < ChannelWidth'(NumChannels);
+  endfunction
+
+  // Where channel c's newest slot and count start in the flat vectors (constant 0 for one channel).
+  function automatic int newest_base(logic [ChannelWidth-1:0] chan);
+    newest_base = NumChannels == 1 ? 0 : 32'(chan) * AgeWidth;
+  endfunction
+  function automatic int filled_base(logic [ChannelWidth-1:0] chan);
+    filled_base = NumChannels == 1 ? 0 : 32'(chan) * (AgeWidth + 1);
+  endfunction
+
   logic [ChannelWidth-1:0] cur_chan;
   logic                   cur_chan_ok;                 // cur_chan < NumChannels
   logic [AgeWidth-1:0]    newest_q, newest_d;
@@ -191,15 +206,20 @@ module iir_core #(
   logic [ExtWidth-1:0]    lr_wdata;
 
   assign cur_chan    = (state_q == StIdle) ? channel_i : chan_q;
-  assign cur_chan_ok = 32'(cur_chan) < NumChannels;
-  assign newest_q    = cur_chan_ok ? newest_mem_q[32'(cur_chan)*AgeWidth +: AgeWidth] : '0;
-  assign filled_q    = cur_chan_ok ? filled_mem_q[32'(cur_chan)*(AgeWidth+1) +: AgeWidth+1] : '0;
+  assign cur_chan_ok = channel_exists(cur_chan);
+  assign newest_q    = cur_chan_ok ? newest_mem_q[newest_base(cur_chan) +: AgeWidth] : '0;
+  assign filled_q    = cur_chan_ok ? filled_mem_q[filled_base(cur_chan) +: AgeWidth+1] : '0;
 
-  // Channel c's word at `addr` within its lines.
+  // Channel c's word at `addr` within its lines: c * LrSlots + addr, which is {c, addr} since
+  // LrSlots is a power of two (no adder). One channel drops the always-0 channel bit.
+  /* verilator lint_off UNUSEDSIGNAL */
   function automatic logic [LrFullWidth-1:0] lr_full_addr(logic [ChannelWidth-1:0] chan,
                                                           logic [LrAddrWidth-1:0] addr);
-    lr_full_addr = LrFullWidth'(32'(chan) * LrSlots + 32'(addr));
+    logic [ChannelWidth+LrAddrWidth-1:0] both;
+    both         = {chan, addr};
+    lr_full_addr = both[LrFullWidth-1:0];
   endfunction
+  /* verilator lint_on UNUSEDSIGNAL */
   assign lr_waddr_full = lr_full_addr(cur_chan, lr_waddr);
   assign lr_raddr_full = lr_full_addr(cur_chan, lr_raddr);
 
@@ -390,7 +410,7 @@ module iir_core #(
     for (int c = 0; c < NumChannels; c++) channel_bit[c] = (32'(chan) == c);
   endfunction
   logic channel_i_ok;
-  assign channel_i_ok    = 32'(channel_i) < NumChannels;
+  assign channel_i_ok    = channel_exists(channel_i);
   assign overrun_d       = (overrun_q & ~{NumChannels{flag_clear_i}}) |
                            ({NumChannels{sample_valid_i & (state_q != StIdle)}} &
                             channel_bit(channel_i));
@@ -420,8 +440,8 @@ module iir_core #(
       wb_sec_q        <= wb_sec_d;
       chan_q          <= chan_d;
       if (cur_chan_ok) begin
-        newest_mem_q[32'(cur_chan)*AgeWidth +: AgeWidth]           <= newest_d;
-        filled_mem_q[32'(cur_chan)*(AgeWidth+1) +: AgeWidth+1]     <= filled_d;
+        newest_mem_q[newest_base(cur_chan) +: AgeWidth]           <= newest_d;
+        filled_mem_q[filled_base(cur_chan) +: AgeWidth+1]     <= filled_d;
       end
       out_q           <= out_d;
       out_chan_q      <= out_chan_d;
