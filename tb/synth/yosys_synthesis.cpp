@@ -230,7 +230,10 @@ std::string synthesis_report_markdown(const SynthesisResult& result, double max_
         "board). Logic depth: `ltp -noff` after deleting every flip-flop, DSP48E1 and block RAM "
         "cell, i.e. the longest chain of LUT, CARRY4, MUXF7/F8 and I/O buffer cells between "
         "registers or pins. It is an estimate only: Yosys has no timing model and there is no "
-        "place and route here (use the Vivado script, docs/board.md, for real timing).\n\n";
+        "place and route here (use the Vivado script, docs/board.md, for real timing).\n\n"
+        "A core shared by several channels (`NumChannels` > 1) grows by its load registers and "
+        "their read multiplexer; the core for 1, 4 and 12 channels and for a set per channel is "
+        "tabulated in [core.md](core.md#channels) (`bash bench/synth_channels.sh`).\n\n";
   write_all_cells_table(md, result.core.utilisation, result.top.utilisation);
   md << "\nChecks (the `FlangeSynth.*` CTest test): each multiply-accumulate maps to exactly one "
      << "DSP48E1 (core and top: 1); the core occupies at most " << max_core_lut_percent
