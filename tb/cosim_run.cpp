@@ -79,8 +79,12 @@ int run_cosim(const CosimOptions& options, const DutFactory& make, std::ostream&
   CosimHarness harness(config, make(options.trace.value_or(std::filesystem::path{})));
   const int latency = harness.model().latency_cycles();
   const int cycles_per_sample = harness.model().cycles_per_sample();
-  const CosimReport report =
-      harness.run(every(samples, static_cast<std::uint64_t>(cycles_per_sample)));
+  Stimulus stimulus = every(samples, static_cast<std::uint64_t>(cycles_per_sample));
+  // A multichannel core gets the samples dealt to its channels in turn (round robin).
+  for (std::size_t i = 0; i < stimulus.actions.size(); ++i) {
+    stimulus.actions[i].channel = static_cast<int>(i % static_cast<std::size_t>(config.num_channels));
+  }
+  const CosimReport report = harness.run(stimulus);
 
   int status = 0;
   if (report.mismatches > 0) {
@@ -96,8 +100,11 @@ int run_cosim(const CosimOptions& options, const DutFactory& make, std::ostream&
     status = 1;
   }
   if (options.trace) err << "cosim: waveform in " << options.trace->string() << "\n";
-  out << fmt::format("cosim: {} samples, {} mismatches, {} cycles/sample, {} cycles latency\n",
-                     report.accepted, report.mismatches, cycles_per_sample, latency);
+  out << fmt::format("cosim: {} samples, {} mismatches, {} cycles/sample, {} cycles latency{}\n",
+                     report.accepted, report.mismatches, cycles_per_sample, latency,
+                     config.num_channels > 1
+                         ? fmt::format(", {} channels in turn", config.num_channels)
+                         : std::string());
   return status;
 }
 

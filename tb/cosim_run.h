@@ -39,7 +39,8 @@ std::vector<std::int32_t> cosim_samples(const CosimOptions& options,
 using DutFactory = std::function<std::unique_ptr<Dut>(const std::filesystem::path& fst_path)>;
 
 // Runs the co-simulation and prints the first mismatch (if any) and then exactly one line:
-//   cosim: N samples, M mismatches, C cycles/sample, L cycles latency
+//   cosim: N samples, M mismatches, C cycles/sample, L cycles latency[, K channels in turn]
+// A core with K > 1 channels gets sample i on channel i mod K.
 // where M counts the cycles in which some output pin differed. Returns 0, or 1 on a mismatch or
 // an RTL assertion. Throws std::invalid_argument / FilterJsonError on bad input.
 int run_cosim(const CosimOptions& options, const DutFactory& make, std::ostream& out,

@@ -42,6 +42,17 @@ TEST(CosimCommand, CleanRunEndsWithTheSummary) {
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << "exactly one line: " << r.out;
 }
 
+TEST(CosimCommand, TwelveChannelsTakeTheSamplesInTurn) {
+  const fs::path set = fs::path(FLANGE_SOURCE_DIR) / "tests/data/coeffs/loco_ch12/filter.json";
+  const FlangeOutcome r = run_flange_captured(
+      {"cosim", "--coeffs", set.string(), "--samples", "2400", "--stimulus", "fullscale"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(last_line(r.out),
+            "cosim: 2400 samples, 0 mismatches, 24 cycles/sample, 24 cycles latency, 12 channels "
+            "in turn")
+      << r.out << r.err;
+}
+
 TEST(CosimCommand, MismatchFailsWithTheFirstOne) {
   // The same package and ROM image, but the model reads one coefficient off by one LSB.
   const fs::path dir = fs::temp_directory_path() / "flange_cosim_mismatch";
