@@ -269,6 +269,35 @@ FloatDesign load_float_design(const std::filesystem::path& filter_json) {
   }
 }
 
+FloatDesign load_float_design(const std::filesystem::path& filter_json, int channel) {
+  FloatDesign design = load_float_design(filter_json);
+  const Reader reader(filter_json);
+  const auto sets = reader.root().find("channel_sets");
+  if (sets == reader.root().end()) return design;
+  if (!sets->is_array() || channel < 0 || channel >= static_cast<int>(sets->size())) {
+    reader.fail("channel_sets", fmt::format("no set for channel {}", channel));
+  }
+  try {
+    const json& set = (*sets)[static_cast<std::size_t>(channel)];
+    const std::string name = fmt::format("channel_sets[{}]", channel);
+    design.fc_hz = reader.number(reader.object(set, name, "fc_hz"), name + ".fc_hz");
+    design.leftover_gain =
+        reader.number(reader.object(set, name, "leftover_gain"), name + ".leftover_gain");
+    design.sos.clear();
+    for (const json& row : reader.object(set, name, "sos")) {
+      std::array<double, 6> values{};
+      for (std::size_t i = 0; i < 6; ++i) values[i] = reader.number(row.at(i), name + ".sos");
+      if (values[3] == 0.0) reader.fail(name + ".sos", "a0 must not be 0");
+      design.sos.push_back(values);
+    }
+    if (design.sos.empty()) reader.fail(name + ".sos", "expected a non-empty array of rows");
+  } catch (const nlohmann::json::exception& error) {
+    reader.fail(fmt::format("channel_sets[{}]", channel),
+                fmt::format("wrong type ({})", error.what()));
+  }
+  return design;
+}
+
 double dc_group_delay_samples(const FloatDesign& design) {
   double delay = 0.0;
   for (const auto& row : design.sos) {

@@ -66,6 +66,9 @@ struct FloatDesign {
 // Throws FilterJsonError; checks every rule of docs/fixed_point.md that the core relies on.
 CoreConfig load_core_config(const std::filesystem::path& filter_json);
 FloatDesign load_float_design(const std::filesystem::path& filter_json);
+// Channel c's float design: that of its own set (`channel_sets[c]`, written by
+// `flange design --channel-fc`), or the one design of a set shared by every channel.
+FloatDesign load_float_design(const std::filesystem::path& filter_json, int channel);
 
 // Group delay at DC in samples of the design's sections: sum n c_n / sum c_n of each numerator
 // minus its denominator's, summed (what the host uses to align a filtered trace with its input).

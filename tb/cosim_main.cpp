@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   bool stream = false;
   app.add_flag("--stream", stream,
                "serve sample blocks on stdin/stdout for flange run --engine rtl (tb/stream_run.h)");
+  int channel = 0;
+  app.add_option("--channel", channel, "with --stream: the channel every sample is strobed on");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -30,7 +32,7 @@ int main(int argc, char** argv) {
   try {
     if (stream) {
       const std::unique_ptr<flange::tb::Dut> dut = flange::tb::make_dut();
-      return flange::tb::serve_stream(options.coeffs, *dut, stdin, stdout);
+      return flange::tb::serve_stream(options.coeffs, *dut, stdin, stdout, channel);
     }
     return flange::tb::run_cosim(
         options, [](const std::filesystem::path& fst) { return flange::tb::make_dut(fst); },

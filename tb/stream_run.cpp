@@ -22,8 +22,13 @@ std::int32_t sign_extend(std::uint32_t bits, int width) {
 }  // namespace
 
 int serve_stream(const std::filesystem::path& filter_json, Dut& dut, std::FILE* in,
-                 std::FILE* out) {
+                 std::FILE* out, int channel) {
   model::IirCore core(model::load_core_config(filter_json));
+  if (channel < 0 || channel >= core.config().num_channels) {
+    std::cerr << "stream: channel " << channel << " outside 0 to " << core.config().num_channels - 1
+              << "\n";
+    return 2;
+  }
   const int width = core.config().sample_width;
   const std::uint32_t mask = width >= 32 ? ~0u : (1u << width) - 1u;
   DutInputs reset;
@@ -48,6 +53,7 @@ int serve_stream(const std::filesystem::path& filter_json, Dut& dut, std::FILE* 
       DutInputs strobe;
       strobe.sample_bits = static_cast<std::uint32_t>(samples[k]) & mask;
       strobe.sample_valid = true;
+      strobe.channel = static_cast<std::uint32_t>(channel);
       dut.clock(strobe);
       int cycles = 1;
       DutOutputs pins = dut.outputs();
@@ -56,7 +62,7 @@ int serve_stream(const std::filesystem::path& filter_json, Dut& dut, std::FILE* 
         ++cycles;
         pins = dut.outputs();
       }
-      const model::StepResult expected = core.step(samples[k]);
+      const model::StepResult expected = core.step(samples[k], channel);
       const std::int32_t rtl = sign_extend(pins.sample_bits, width);
       unsigned flags = expected.saturated ? kStreamSaturated : 0u;
       if (!pins.sample_valid || rtl != expected.sample || cycles != core.latency_cycles() ||

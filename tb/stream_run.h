@@ -19,8 +19,10 @@ namespace flange::tb {
 inline constexpr unsigned kStreamSaturated = 1u;
 inline constexpr unsigned kStreamMismatch = 2u;
 
-// Serves requests from `in` until a zero count or end of file; returns 0, or 2 on a malformed
-// request (a sample out of range).
-int serve_stream(const std::filesystem::path& filter_json, Dut& dut, std::FILE* in, std::FILE* out);
+// Serves requests from `in` until a zero count or end of file, every sample on `channel` of the
+// core; returns 0, or 2 on a malformed request (a sample out of range) or a channel the set does
+// not have.
+int serve_stream(const std::filesystem::path& filter_json, Dut& dut, std::FILE* in, std::FILE* out,
+                 int channel = 0);
 
 }  // namespace flange::tb

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "filter_engine.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -18,9 +20,9 @@ namespace {
 // every word and flag.
 class ModelEngine : public FilterEngine {
  public:
-  explicit ModelEngine(const std::filesystem::path& filter_json)
-      : core_(model::load_core_config(filter_json)),
-        gain_(model::load_float_design(filter_json).leftover_gain),
+  ModelEngine(const std::filesystem::path& filter_json, int channel)
+      : core_(model::load_core_config(filter_json).channel_config(channel)),
+        gain_(model::load_float_design(filter_json, channel).leftover_gain),
         full_scale_(std::ldexp(1.0, core_.config().sample_width - 1)) {}
 
   std::string name() const override { return "model"; }
@@ -47,8 +49,8 @@ class ModelEngine : public FilterEngine {
 // The double-precision second-order sections of the same design.
 class FloatEngine : public FilterEngine {
  public:
-  explicit FloatEngine(const std::filesystem::path& filter_json)
-      : filter_(model::load_float_design(filter_json)) {}
+  FloatEngine(const std::filesystem::path& filter_json, int channel)
+      : filter_(model::load_float_design(filter_json, channel)) {}
   std::string name() const override { return "float"; }
   void process(const std::vector<EngineSample>& in, std::vector<EngineOutput>& out) override {
     out.resize(in.size());
@@ -62,10 +64,16 @@ class FloatEngine : public FilterEngine {
 }  // namespace
 
 std::unique_ptr<FilterEngine> make_filter_engine(const std::string& engine,
-                                                 const std::filesystem::path& filter_json) {
-  if (engine == "model") return std::make_unique<ModelEngine>(filter_json);
-  if (engine == "float") return std::make_unique<FloatEngine>(filter_json);
-  if (engine == "rtl") return make_rtl_engine(filter_json);
+                                                 const std::filesystem::path& filter_json,
+                                                 int channel) {
+  const int channels = model::load_core_config(filter_json).num_channels;
+  if (channel < 0 || channel >= channels) {
+    throw std::out_of_range(fmt::format("{}: channel {} outside the set's 0 to {}",
+                                        filter_json.string(), channel, channels - 1));
+  }
+  if (engine == "model") return std::make_unique<ModelEngine>(filter_json, channel);
+  if (engine == "float") return std::make_unique<FloatEngine>(filter_json, channel);
+  if (engine == "rtl") return make_rtl_engine(filter_json, channel);
   throw std::invalid_argument("--engine " + engine + ": valid engines are model, rtl, float");
 }
 

@@ -34,9 +34,12 @@ class FilterEngine {
   virtual std::uint64_t mismatches() const { return 0; }
 };
 
-// engine: "model", "float" or "rtl". Throws std::invalid_argument for an unknown engine and
-// model::FilterJsonError for a bad filter.json.
+// engine: "model", "float" or "rtl". `channel` picks one channel of a multichannel set (its own
+// coefficient set when it has one; channels are independent, docs/core.md#channels). Throws
+// std::invalid_argument for an unknown engine, std::out_of_range for a channel the set does not
+// have and model::FilterJsonError for a bad filter.json.
 std::unique_ptr<FilterEngine> make_filter_engine(const std::string& engine,
-                                                 const std::filesystem::path& filter_json);
+                                                 const std::filesystem::path& filter_json,
+                                                 int channel = 0);
 
 }  // namespace flange::host

@@ -49,8 +49,8 @@ void read_all(int fd, void* data, std::size_t size) {
 
 class RtlEngine : public FilterEngine {
  public:
-  explicit RtlEngine(const std::filesystem::path& filter_json)
-      : gain_(model::load_float_design(filter_json).leftover_gain),
+  RtlEngine(const std::filesystem::path& filter_json, int channel)
+      : gain_(model::load_float_design(filter_json, channel).leftover_gain),
         full_scale_(std::ldexp(1.0, model::load_core_config(filter_json).sample_width - 1)) {
     const fs::path runner = tb::ensure_verilated_runner(filter_json, std::cerr);
     int to_child[2];
@@ -65,7 +65,8 @@ class RtlEngine : public FilterEngine {
     posix_spawn_file_actions_addclose(&actions, to_child[1]);
     posix_spawn_file_actions_addclose(&actions, from_child[0]);
     const std::string json = fs::absolute(filter_json).string();
-    std::vector<std::string> argv_strings = {runner.string(), "--coeffs", json, "--stream"};
+    std::vector<std::string> argv_strings = {runner.string(), "--coeffs", json, "--stream",
+                                             "--channel", std::to_string(channel)};
     std::vector<char*> argv;
     for (std::string& a : argv_strings) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -123,10 +124,11 @@ class RtlEngine : public FilterEngine {
 
 }  // namespace
 
-std::unique_ptr<FilterEngine> make_rtl_engine(const std::filesystem::path& filter_json) {
+std::unique_ptr<FilterEngine> make_rtl_engine(const std::filesystem::path& filter_json,
+                                              int channel) {
   // A runner that dies mid-run must surface as an error, not kill flange with SIGPIPE.
   ::signal(SIGPIPE, SIG_IGN);
-  return std::make_unique<RtlEngine>(filter_json);
+  return std::make_unique<RtlEngine>(filter_json, channel);
 }
 
 }  // namespace flange::host

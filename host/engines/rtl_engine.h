@@ -12,6 +12,7 @@ namespace flange::host {
 
 // Builds the set's runner on first use (verilated_runner.h) and starts it. Throws
 // std::invalid_argument (bad set) or std::runtime_error (build or start failed).
-std::unique_ptr<FilterEngine> make_rtl_engine(const std::filesystem::path& filter_json);
+std::unique_ptr<FilterEngine> make_rtl_engine(const std::filesystem::path& filter_json,
+                                              int channel = 0);
 
 }  // namespace flange::host
