@@ -17,8 +17,8 @@
 namespace flange::host {
 namespace {
 
-// Points per panel: enough for a 480-pixel-wide panel, small enough for 12 panels in one SVG.
-constexpr std::size_t kPanelPoints = 2000;
+// Points per panel: two per pixel of a 480-pixel-wide panel, few enough for 12 panels in one SVG.
+constexpr std::size_t kPanelPoints = 1000;
 
 std::string channel_folder(int channel) { return fmt::format("channel_{:02d}", channel); }
 
@@ -52,6 +52,15 @@ std::pair<double, double> shared_clearance_range(const LocomotiveRun& run, doubl
   return {std::floor(low - 0.5), std::ceil(high + 0.5)};
 }
 
+// The time axis every panel shares: to the latest sample of any channel.
+double last_time_s(const LocomotiveRun& run) {
+  double last = 0.0;
+  for (const ChannelRun& c : run.channels) {
+    if (!c.trace.t_s.empty()) last = std::max(last, c.trace.t_s.back());
+  }
+  return last > 0.0 ? last : 1.0;
+}
+
 const ChannelRun* channel_at(const LocomotiveRun& run, int axle, ManifestSide side) {
   for (const ChannelRun& c : run.channels) {
     if (c.channel.axle == axle && c.channel.side == side) return &c;
@@ -59,13 +68,11 @@ const ChannelRun* channel_at(const LocomotiveRun& run, int axle, ManifestSide si
   return nullptr;
 }
 
-// One panel of the small multiples: a wheel's filtered clearance and reference, or a note that
-// the wheel has no channel.
-std::string panel_script(const ChannelRun* c, bool worst, double warning_mm, double critical_mm) {
-  if (c == nullptr) {
-    return "set title 'no channel'\nset label 1 'no sensor' at graph 0.5,0.5 center\n"
-           "plot NaN notitle\nunset label 1\n";
-  }
+// One panel of the small multiples: a wheel's filtered clearance and reference, or an empty
+// panel where the wheel has no channel.
+std::string panel_script(const ChannelRun* c, const std::string& wheel, bool worst,
+                         double warning_mm, double critical_mm) {
+  if (c == nullptr) return fmt::format("set title '{}: no channel'\nplot NaN notitle\n", wheel);
   const std::string block = fmt::format("ch{}", c->channel.channel);
   std::string script = coeffs::gnuplot_data_block(block, panel_columns(c->trace));
   script +=
@@ -94,14 +101,15 @@ void plot_small_multiples(const std::filesystem::path& dir, const LocomotiveRun&
   script += fmt::format(
       "set multiplot layout {},2 title 'clearance by wheel (mm), axles down, left and right "
       "across: filtered (blue), reference (grey), warning and critical (dashed)'\n"
-      "set yrange [{}:{}]\nset ylabel 'clearance (mm)'\nunset key\n",
-      axles, low, high);
+      "set xrange [0:{}]\nset yrange [{}:{}]\nset ylabel 'clearance (mm)'\nunset key\n",
+      axles, last_time_s(run), low, high);
   for (int axle = 1; axle <= axles; ++axle) {
     if (axle == axles) script += "set xlabel 'time (s)'\n";  // on the bottom row only
     for (const ManifestSide side : {ManifestSide::kLeft, ManifestSide::kRight}) {
       const ChannelRun* c = channel_at(run, axle, side);
       const bool is_worst = c != nullptr && worst && &run.channels[*worst] == c;
-      script += panel_script(c, is_worst, t.warning_clearance_mm, critical_mm);
+      const std::string wheel = fmt::format("axle {} {}", axle, manifest_side_name(side));
+      script += panel_script(c, wheel, is_worst, t.warning_clearance_mm, critical_mm);
     }
   }
   script += "unset multiplot\n";

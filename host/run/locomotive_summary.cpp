@@ -134,6 +134,12 @@ std::string locomotive_table_text(const LocomotiveRun& run) {
   text << fmt::format(
       "  min_mm and max_mm leave out the first {} samples (the filter's start-up)\n",
       first.settle_samples);
+  if (first.engine == "rtl") {
+    std::uint64_t mismatches = 0;
+    for (const ChannelRun& c : run.channels) mismatches += c.summary.rtl_mismatches;
+    text << fmt::format("  rtl checked against the model on every channel: {} mismatches\n",
+                        mismatches);
+  }
   if (const std::optional<std::size_t> worst = worst_channel(run)) {
     const ChannelRun& c = run.channels[*worst];
     const AlarmDigest alarms = digest_alarms(c.summary);
