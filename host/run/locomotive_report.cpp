@@ -17,8 +17,9 @@
 namespace flange::host {
 namespace {
 
-// Points per panel: two per pixel of a 480-pixel-wide panel, few enough for 12 panels in one SVG.
-constexpr std::size_t kPanelPoints = 1000;
+// Points per panel: about one per pixel of a 480-pixel-wide panel, so that twelve panels make
+// an SVG of a few hundred kB.
+constexpr std::size_t kPanelPoints = 500;
 
 std::string channel_folder(int channel) { return fmt::format("channel_{:02d}", channel); }
 
