@@ -311,6 +311,7 @@ int simulate_locomotive(const SimulateOptions& options, const SimulationPlan& pl
       return kExitFailure;
     }
   }
+  streams.reserve(files.size());
   for (std::ofstream& file : files) streams.push_back(&file);
   const std::vector<SimulationSummary> summaries =
       run_locomotive_simulation(locomotive, twins, streams);

@@ -18,8 +18,8 @@ namespace {
 
 using nlohmann::json;
 
-const std::set<std::string> kTopKeys = {"generated_by", "channels"};
-const std::set<std::string> kChannelKeys = {"channel", "axle", "side", "file"};
+const std::set<std::string> top_level_fields = {"generated_by", "channels"};
+const std::set<std::string> channel_fields = {"channel", "axle", "side", "file"};
 
 // A value as a message may echo it.
 std::string shown(const json& value) { return printable_excerpt(value.dump()); }
@@ -86,7 +86,7 @@ ManifestChannel channel_entry(const std::string& path, const json& entry, std::s
                     "file",
                     path, where, shown(entry)));
   }
-  note_unknown_keys(path, entry, where + ".", kChannelKeys);
+  note_unknown_keys(path, entry, where + ".", channel_fields);
   ManifestChannel channel;
   channel.channel = whole_field(path, entry, where, "channel", 0, kManifestMaxChannels - 1);
   channel.axle = whole_field(path, entry, where, "axle", 1, kManifestAxles);
@@ -128,7 +128,7 @@ LocomotiveManifest manifest_from_json(const std::string& path, const json& docum
     throw InputError(
         fmt::format("{}: not a manifest: expected a JSON object with a channels array", path));
   }
-  note_unknown_keys(path, document, "", kTopKeys);
+  note_unknown_keys(path, document, "", top_level_fields);
   if (!document.contains("channels") || !document["channels"].is_array() ||
       document["channels"].empty() || document["channels"].size() > kManifestMaxChannels) {
     const json* channels = document.contains("channels") ? &document["channels"] : nullptr;

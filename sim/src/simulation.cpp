@@ -58,6 +58,7 @@ std::vector<SimulationSummary> run_locomotive_simulation(Locomotive& locomotive,
     for (std::size_t c = 0; c < wheels; ++c) recorders[c].record(truth[c]);
   }
   std::vector<SimulationSummary> summaries;
+  summaries.reserve(wheels);
   for (ChannelRecorder& recorder : recorders) summaries.push_back(recorder.finish());
   return summaries;
 }

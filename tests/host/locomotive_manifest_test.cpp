@@ -39,7 +39,7 @@ class LocomotiveManifestTest : public ::testing::Test {
     try {
       load_locomotive_manifest(path);
     } catch (const InputError& error) {
-      const std::string message = error.what();
+      std::string message = error.what();
       EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;  // names the file first
       EXPECT_EQ(message.find('\n'), std::string::npos) << message;
       return message;
