@@ -42,7 +42,7 @@ std::string explain_parse_error(const CLI::App& app, const CLI::ParseError& erro
 struct Subcommands {
   DesignOptions design_options;
   CalibrateOptions calibrate_options;
-  host::RunOptions run_options;
+  RunCommandOptions run_options;
   DemoOptions demo_options;
   SimulateOptions simulate_options;
   CosimCommandOptions cosim_options;
@@ -85,9 +85,9 @@ struct Subcommands {
   int run_parsed(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     if (design->parsed()) return run_design_command(design_options, args, out, err);
     if (calibrate->parsed()) return run_calibrate_command(calibrate_options, args, out, err);
-    if (run->parsed()) return run_run_command(run_options, out, err);
+    if (run->parsed()) return run_run_command(run_options, args, out, err);
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
-    if (simulate->parsed()) return run_simulate_command(simulate_options, out, err);
+    if (simulate->parsed()) return run_simulate_command(simulate_options, args, out, err);
     if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
     if (synth->parsed()) return run_synth_command(synth_options, out, err);
     if (stream->parsed()) return run_stream_command(stream_options, out, err);

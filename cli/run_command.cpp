@@ -5,29 +5,79 @@
 
 #include "cli.h"
 #include "input_error.h"
+#include "locomotive_manifest.h"
+#include "locomotive_report.h"
+#include "locomotive_run.h"
+#include "locomotive_summary.h"
 #include "run_report.h"
 
 namespace flange::cli {
 
-CLI::App* add_run_command(CLI::App& app, host::RunOptions& options) {
+namespace {
+
+int run_recording(const host::RunOptions& options, std::ostream& out) {
+  host::RunTrace trace;
+  const host::RunSummary summary =
+      host::run_pipeline(options, options.report_dir ? &trace : nullptr);
+  out << run_summary_text(options, summary);
+  if (options.out_csv) out << "  wrote " << *options.out_csv << "\n";
+  if (options.report_dir) {
+    write_run_report(*options.report_dir, options, summary, trace);
+    out << "  report " << *options.report_dir << "/index.html\n";
+  }
+  return summary.rtl_mismatches > 0 ? kExitFailure : kExitOk;
+}
+
+// Every channel of a manifest; with --out DIR, its CSVs, summary.json and report go there.
+int run_manifest(const RunCommandOptions& options, const std::vector<std::string>& command_line,
+                 std::ostream& out) {
+  if (options.run.report_dir) {
+    throw host::InputError("--report: with --manifest the report goes into the --out folder");
+  }
+  const host::LocomotiveManifest manifest = host::load_locomotive_manifest(*options.manifest);
+  std::optional<std::filesystem::path> out_dir;
+  if (options.run.out_csv) out_dir = *options.run.out_csv;
+  const host::LocomotiveRun run = host::run_locomotive(manifest, options.run, out_dir);
+  out << host::locomotive_table_text(run);
+  if (out_dir) {
+    std::string generated_by = "flange";
+    for (const std::string& word : command_line) generated_by += " " + word;
+    host::write_locomotive_summary_json(*out_dir / "summary.json", run, generated_by);
+    host::write_locomotive_report(*out_dir, run);
+    out << "  wrote " << out_dir->string() << "/channel_XX.csv, summary.json and index.html\n";
+  }
+  for (const host::ChannelRun& channel : run.channels) {
+    if (channel.summary.rtl_mismatches > 0) return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "run", "Run a recording through regression, the IIR filter and the wear thresholds");
-  cmd->add_option("--input", options.input, "recording CSV (t_s,clearance_mm,temp_c,voltage_v)")
-      ->required();
-  cmd->add_option("--calibration", options.calibration, "model.json from flange calibrate")
-      ->required();
-  cmd->add_option("--coeffs", options.coeffs, "filter.json from flange design")->required();
-  cmd->add_option("--engine", options.engine,
+  host::RunOptions& run = options.run;
+  CLI::Option* input =
+      cmd->add_option("--input", run.input, "recording CSV (t_s,clearance_mm,temp_c,voltage_v)");
+  CLI::Option* manifest = cmd->add_option(
+      "--manifest", options.manifest,
+      "locomotive.json: run every channel it names, each alone (docs/locomotive.md)");
+  input->excludes(manifest);
+  cmd->add_option("--calibration", run.calibration, "model.json from flange calibrate")->required();
+  cmd->add_option("--coeffs", run.coeffs, "filter.json from flange design")->required();
+  cmd->add_option("--engine", run.engine,
                   "model: bit-accurate model; rtl: Verilated RTL checked by the model; float: "
                   "double-precision design")
       ->check(CLI::IsMember({"model", "rtl", "float"}))
       ->default_str("model");
-  cmd->add_option("--out", options.out_csv,
-                  "output CSV: t_s,clearance_raw_mm,clearance_filt_mm,flange_mm,alarm,flags");
-  cmd->add_option("--report", options.report_dir, "folder for the HTML report");
-  cmd->add_flag("--lenient", options.lenient,
+  cmd->add_option("--out", run.out_csv,
+                  "output CSV: t_s,clearance_raw_mm,clearance_filt_mm,flange_mm,alarm,flags; with "
+                  "--manifest a folder for channel_XX.csv, summary.json and the report");
+  cmd->add_option("--report", run.report_dir, "folder for the HTML report");
+  cmd->add_flag("--lenient", run.lenient,
                 "flag bad rows (the filter holds its last input) instead of stopping");
-  host::ThresholdConfig& t = options.thresholds;
+  host::ThresholdConfig& t = run.thresholds;
   cmd->add_option("--warning-mm", t.warning_clearance_mm, "warning clearance (mm)")
       ->default_val(t.warning_clearance_mm);
   cmd->add_option("--critical-flange-mm", t.critical_flange_mm, "critical flange thickness (mm)")
@@ -43,18 +93,14 @@ CLI::App* add_run_command(CLI::App& app, host::RunOptions& options) {
   return cmd;
 }
 
-int run_run_command(const host::RunOptions& options, std::ostream& out, std::ostream& err) {
+int run_run_command(const RunCommandOptions& options, const std::vector<std::string>& command_line,
+                    std::ostream& out, std::ostream& err) {
   try {
-    host::RunTrace trace;
-    const host::RunSummary summary =
-        host::run_pipeline(options, options.report_dir ? &trace : nullptr);
-    out << run_summary_text(options, summary);
-    if (options.out_csv) out << "  wrote " << *options.out_csv << "\n";
-    if (options.report_dir) {
-      write_run_report(*options.report_dir, options, summary, trace);
-      out << "  report " << *options.report_dir << "/index.html\n";
+    if (options.manifest) return run_manifest(options, command_line, out);
+    if (options.run.input.empty()) {
+      throw host::InputError("--input REC.csv or --manifest locomotive.json is required");
     }
-    return summary.rtl_mismatches > 0 ? kExitFailure : kExitOk;
+    return run_recording(options.run, out);
   } catch (const host::InputError& error) {
     err << "flange run: " << error.what() << "\n";
     return kExitBadArgument;

@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <ostream>
@@ -16,6 +17,7 @@
 #include "effect_argument.h"
 #include "effect_catalogue.h"
 #include "loco_scenario.h"
+#include "locomotive_manifest.h"
 #include "sim_error.h"
 #include "simulation.h"
 #include "twin_file.h"
@@ -28,6 +30,7 @@ using sim::BadArgument;
 using sim::BenchProtocol;
 using sim::BenchScenario;
 using sim::EffectSettings;
+using sim::Locomotive;
 using sim::LocoRun;
 using sim::LocoScenario;
 using sim::Scenario;
@@ -76,6 +79,20 @@ CLI::Validator seed_range() {
         return text + " is not a whole number from 0 to 18446744073709551615";
       },
       "0 to 2^64-1");
+}
+
+// Checks a whole number in [low, high] as the user typed it ("3.5", "x" and "13" alike).
+CLI::Validator whole_number_in(int low, int high) {
+  return CLI::Validator(
+      [low, high](std::string& text) -> std::string {
+        int value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        const bool parsed = error == std::errc() && end == text.data() + text.size();
+        if (parsed && value >= low && value <= high) return "";
+        return fmt::format("{} is outside its valid range: a whole number {} to {}", text, low,
+                           high);
+      },
+      fmt::format("{} to {}", low, high));
 }
 
 std::string list_hz(const std::vector<double>& frequencies) {
@@ -134,7 +151,14 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
   cmd->add_option("--seed", options.seed, "seed of the twin's random numbers")
       ->required()
       ->check(seed_range());
-  cmd->add_option("--out", options.out, "recording to write (CSV)")->required();
+  cmd->add_option("--out", options.out,
+                  "recording to write (CSV); with --wheels above 1 a folder for channel_XX.csv "
+                  "and locomotive.json")
+      ->required();
+  cmd->add_option("--wheels", options.wheels,
+                  "loco: wheels of the six-axle locomotive to simulate, each with its own "
+                  "sensor (1 to 12; default 1, the leading left wheel)")
+      ->check(whole_number_in(1, sim::kMaxWheels));
   cmd->add_option("--twin", options.twin, "twin file (JSON) to start from");
   cmd->add_option("--save-twin", options.save_twin, "write the twin used to this JSON file");
   cmd->add_option("--calibration", options.calibration,
@@ -142,63 +166,187 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
   return cmd;
 }
 
-int run_simulate_command(const SimulateOptions& options, std::ostream& out, std::ostream& err) {
-  try {
-    const bool bench = options.scenario == "bench";
-    const BenchProtocol protocol;
-    const LocoRun loco;
-    const double fs_hz = options.fs_hz.value_or(bench ? kBenchSampleRateHz : kLocoSampleRateHz);
-    const double duration_s =
-        options.duration_s.value_or(bench ? protocol.duration_s : kLocoDurationS);
-    check_positive_finite(fs_hz, kMaxSampleRateHz, "--fs", "Hz");
-    check_positive_finite(duration_s, kMaxDurationS, "--duration", "s");
-    if (fs_hz * duration_s > kMaxSamples) {
-      throw BadArgument(
-          fmt::format("--fs x --duration = {:.3g} samples is above the limit of {:.0e}",
-                      fs_hz * duration_s, kMaxSamples));
-    }
-    const TwinConfig config =
-        sim::twin_with_effects(options.twin, options.calibration, options.effects);
-    if (options.save_twin) save_twin(config, *options.save_twin);
+namespace {
 
-    std::unique_ptr<Scenario> scenario;
-    if (bench) {
-      scenario = std::make_unique<BenchScenario>(protocol, fs_hz, duration_s);
-    } else {
-      scenario = std::make_unique<LocoScenario>(loco, fs_hz, duration_s);
-    }
-    SensorTwin twin(config, options.seed);
-    std::ofstream csv(options.out, std::ios::binary);
-    if (!csv) {
-      err << "flange simulate: " << options.out.string() << ": cannot write the recording\n";
-      return kExitFailure;
-    }
-    const SimulationSummary summary = run_simulation(*scenario, twin, csv);
-    csv.close();
-    if (!csv) {
-      err << "flange simulate: " << options.out.string() << ": writing the recording failed\n";
-      return kExitFailure;
-    }
+// The record every wheel shares: sample rate, length and twin, checked.
+struct SimulationPlan {
+  bool bench = false;
+  BenchProtocol protocol;
+  LocoRun loco;
+  double fs_hz = 0.0;
+  double duration_s = 0.0;
+  TwinConfig config;
+};
 
-    std::string effects;
-    for (const EffectSettings& effect : config.effects) {
-      effects += (effects.empty() ? "" : ", ") + effect.name;
-    }
-    out << fmt::format("simulate: {} scenario, {} samples at {:.6g} Hz over {:.6g} s, seed {}\n",
-                       options.scenario, summary.samples, fs_hz, duration_s, options.seed);
-    out << fmt::format("  twin: noise {:.6g} V, effects: {}\n", config.noise.voltage_std_v,
-                       effects.empty() ? "none" : effects);
+SimulationPlan plan_simulation(const SimulateOptions& options) {
+  SimulationPlan plan;
+  plan.bench = options.scenario == "bench";
+  if (plan.bench && options.wheels) {
+    throw BadArgument("--wheels: only the loco scenario has wheels; leave it out for bench");
+  }
+  plan.fs_hz = options.fs_hz.value_or(plan.bench ? kBenchSampleRateHz : kLocoSampleRateHz);
+  plan.duration_s =
+      options.duration_s.value_or(plan.bench ? plan.protocol.duration_s : kLocoDurationS);
+  check_positive_finite(plan.fs_hz, kMaxSampleRateHz, "--fs", "Hz");
+  check_positive_finite(plan.duration_s, kMaxDurationS, "--duration", "s");
+  if (plan.fs_hz * plan.duration_s > kMaxSamples) {
+    throw BadArgument(fmt::format("--fs x --duration = {:.3g} samples is above the limit of {:.0e}",
+                                  plan.fs_hz * plan.duration_s, kMaxSamples));
+  }
+  plan.config = sim::twin_with_effects(options.twin, options.calibration, options.effects);
+  return plan;
+}
+
+// The lines every simulate prints first: scenario, samples, twin.
+void print_header(const SimulateOptions& options, const SimulationPlan& plan, std::int64_t samples,
+                  std::ostream& out) {
+  std::string effects;
+  for (const EffectSettings& effect : plan.config.effects) {
+    effects += (effects.empty() ? "" : ", ") + effect.name;
+  }
+  out << fmt::format("simulate: {} scenario, {} samples at {:.6g} Hz over {:.6g} s, seed {}\n",
+                     options.scenario, samples, plan.fs_hz, plan.duration_s, options.seed);
+  out << fmt::format("  twin: noise {:.6g} V, effects: {}\n", plan.config.noise.voltage_std_v,
+                     effects.empty() ? "none" : effects);
+}
+
+// One recording, as every scenario has always written it.
+int simulate_recording(const SimulateOptions& options, const SimulationPlan& plan,
+                       std::ostream& out, std::ostream& err) {
+  std::unique_ptr<Scenario> scenario;
+  if (plan.bench) {
+    scenario = std::make_unique<BenchScenario>(plan.protocol, plan.fs_hz, plan.duration_s);
+  } else {
+    scenario = std::make_unique<LocoScenario>(plan.loco, plan.fs_hz, plan.duration_s);
+  }
+  SensorTwin twin(plan.config, options.seed);
+  std::ofstream csv(options.out, std::ios::binary);
+  if (!csv) {
+    err << "flange simulate: " << options.out.string() << ": cannot write the recording\n";
+    return kExitFailure;
+  }
+  const SimulationSummary summary = run_simulation(*scenario, twin, csv);
+  csv.close();
+  if (!csv) {
+    err << "flange simulate: " << options.out.string() << ": writing the recording failed\n";
+    return kExitFailure;
+  }
+  print_header(options, plan, summary.samples, out);
+  out << fmt::format(
+      "  reference clearance {:.3f} to {:.3f} mm, thermocouple {:.1f} to {:.1f} degC\n",
+      summary.min_clearance_mm, summary.max_clearance_mm, summary.min_temp_c, summary.max_temp_c);
+  out << fmt::format("  sensor output on a rail: {} samples at {:.6g} V, {} at {:.6g} V\n",
+                     summary.clips.low, plan.config.nominal.v_min_v(), summary.clips.high,
+                     plan.config.nominal.v_max_v());
+  report_aliasing(plan.config, options, plan.fs_hz, plan.loco, out);
+  out << "  wrote " << options.out.string();
+  if (options.save_twin) out << " and " << options.save_twin->string();
+  out << "\n";
+  return kExitOk;
+}
+
+// The manifest naming every wheel's file (host/recording/locomotive_manifest.h).
+void write_manifest(const std::filesystem::path& dir, int wheels,
+                    const std::vector<std::string>& command_line) {
+  std::vector<host::ManifestChannel> channels;
+  for (int channel = 0; channel < wheels; ++channel) {
+    const sim::WheelPosition position = sim::wheel_position(channel);
+    host::ManifestChannel entry;
+    entry.channel = channel;
+    entry.axle = position.axle;
+    entry.side = position.side == sim::WheelSide::kLeft ? host::ManifestSide::kLeft
+                                                        : host::ManifestSide::kRight;
+    entry.file = host::channel_file_name(channel);
+    channels.push_back(entry);
+  }
+  std::string generated_by = "flange";
+  for (const std::string& word : command_line) generated_by += " " + word;
+  host::write_locomotive_manifest(dir / "locomotive.json", channels, generated_by);
+}
+
+void print_wheels(const Locomotive& locomotive, const std::vector<SimulationSummary>& summaries,
+                  std::uint64_t seed, std::ostream& out) {
+  out << "  ch  wheel         twin seed             d0_mm  wear_mm  reference_mm      "
+         "rail_0V  rail_10V\n";
+  double min_temp_c = summaries.front().min_temp_c;
+  double max_temp_c = summaries.front().max_temp_c;
+  for (int c = 0; c < locomotive.wheels(); ++c) {
+    const SimulationSummary& s = summaries[static_cast<std::size_t>(c)];
+    const sim::WheelPosition position = sim::wheel_position(c);
     out << fmt::format(
-        "  reference clearance {:.3f} to {:.3f} mm, thermocouple {:.1f} to {:.1f} degC\n",
-        summary.min_clearance_mm, summary.max_clearance_mm, summary.min_temp_c, summary.max_temp_c);
-    out << fmt::format("  sensor output on a rail: {} samples at {:.6g} V, {} at {:.6g} V\n",
-                       summary.clips.low, config.nominal.v_min_v(), summary.clips.high,
-                       config.nominal.v_max_v());
-    report_aliasing(config, options, fs_hz, loco, out);
-    out << "  wrote " << options.out.string();
-    if (options.save_twin) out << " and " << options.save_twin->string();
-    out << "\n";
-    return kExitOk;
+        "  {:>2}  axle {} {:<5}  {:<20}  {:>5.3f}  {:>7.3f}  {:>6.3f} to {:>6.3f}  "
+        "{:>7}  {:>8}\n",
+        c, position.axle, sim::side_name(position.side), sim::wheel_seed(seed, c),
+        locomotive.flange(c).initial_clearance_mm, locomotive.flange(c).wear_over_run_mm,
+        s.min_clearance_mm, s.max_clearance_mm, s.clips.low, s.clips.high);
+    min_temp_c = std::min(min_temp_c, s.min_temp_c);
+    max_temp_c = std::max(max_temp_c, s.max_temp_c);
+  }
+  out << fmt::format("  thermocouples {:.1f} to {:.1f} degC (one brake heating for every wheel)\n",
+                     min_temp_c, max_temp_c);
+}
+
+// Every wheel of the locomotive, each through its own twin, into DIR/channel_XX.csv, and
+// DIR/locomotive.json naming them.
+int simulate_locomotive(const SimulateOptions& options, const SimulationPlan& plan,
+                        const std::vector<std::string>& command_line, std::ostream& out,
+                        std::ostream& err) {
+  const std::filesystem::path& dir = options.out;
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error || !std::filesystem::is_directory(dir)) {
+    err << "flange simulate: --out " << dir.string() << ": cannot create the folder\n";
+    return kExitFailure;
+  }
+  Locomotive locomotive(plan.loco, *options.wheels, plan.fs_hz, plan.duration_s);
+  std::vector<SensorTwin> twins;
+  std::vector<std::ofstream> files;
+  std::vector<std::ostream*> streams;
+  for (int c = 0; c < locomotive.wheels(); ++c) {
+    twins.emplace_back(plan.config, sim::wheel_seed(options.seed, c));
+    files.emplace_back(dir / host::channel_file_name(c), std::ios::binary);
+    if (!files.back()) {
+      err << "flange simulate: " << (dir / host::channel_file_name(c)).string()
+          << ": cannot write the recording\n";
+      return kExitFailure;
+    }
+  }
+  streams.reserve(files.size());
+  for (std::ofstream& file : files) streams.push_back(&file);
+  const std::vector<SimulationSummary> summaries =
+      run_locomotive_simulation(locomotive, twins, streams);
+  for (int c = 0; c < locomotive.wheels(); ++c) {
+    std::ofstream& file = files[static_cast<std::size_t>(c)];
+    file.close();
+    if (!file) {
+      err << "flange simulate: " << (dir / host::channel_file_name(c)).string()
+          << ": writing the recording failed\n";
+      return kExitFailure;
+    }
+  }
+  write_manifest(dir, locomotive.wheels(), command_line);
+  print_header(options, plan, locomotive.sample_count(), out);
+  print_wheels(locomotive, summaries, options.seed, out);
+  report_aliasing(plan.config, options, plan.fs_hz, plan.loco, out);
+  out << "  wrote " << (dir / "locomotive.json").string() << " and " << locomotive.wheels()
+      << " recordings beside it";
+  if (options.save_twin) out << ", and " << options.save_twin->string();
+  out << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_simulate_command(const SimulateOptions& options,
+                         const std::vector<std::string>& command_line, std::ostream& out,
+                         std::ostream& err) {
+  try {
+    const SimulationPlan plan = plan_simulation(options);
+    if (options.save_twin) save_twin(plan.config, *options.save_twin);
+    if (options.wheels.value_or(1) > 1) {
+      return simulate_locomotive(options, plan, command_line, out, err);
+    }
+    return simulate_recording(options, plan, out, err);
   } catch (const BadArgument& error) {
     err << "flange simulate: " << error.what() << "\n";
     return kExitBadArgument;

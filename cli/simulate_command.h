@@ -22,13 +22,19 @@ struct SimulateOptions {
   std::optional<std::filesystem::path> twin;         // start from this twin file
   std::optional<std::filesystem::path> save_twin;    // write the twin used, effects included
   std::optional<std::filesystem::path> calibration;  // model.json as the nominal model
+  // loco only: wheels 1 to 12 (channels 0..N-1: axle c/2 + 1, left then right). Above 1, out
+  // is a folder that gets channel_XX.csv and locomotive.json (docs/locomotive.md).
+  std::optional<int> wheels;
 };
 
 // Registers the subcommand on `app`; the returned pointer tells whether it was chosen.
 CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options);
 
 // Runs a parsed simulate command. Returns 0, 1 (a file could not be written) or 2 (a bad
-// argument, effect or twin file; one line names it and its valid range).
-int run_simulate_command(const SimulateOptions& options, std::ostream& out, std::ostream& err);
+// argument, effect or twin file; one line names it and its valid range). `command_line` goes
+// into a locomotive's manifest as the command that made it.
+int run_simulate_command(const SimulateOptions& options,
+                         const std::vector<std::string>& command_line, std::ostream& out,
+                         std::ostream& err);
 
 }  // namespace flange::cli

@@ -26,13 +26,14 @@ while [ $# -gt 0 ]; do
 done
 
 harnesses=(recording_csv_fuzz filter_json_fuzz calibration_json_fuzz twin_json_fuzz
-           effect_argument_fuzz frame_decoder_fuzz)
+           effect_argument_fuzz frame_decoder_fuzz locomotive_manifest_fuzz)
 # The unit tests that need no Verilated model: the project's own arithmetic, parsers and stages.
 unit_tests=(butterworth_reference_test quantize_test thesis_filters_test filter_json_test
             iir_core_test reference_filter_test staged_fixed_point_test iir_core_fidelity_test
             polynomial_sensor_model_test effect_settings_test effect_signatures_test
             sensor_twin_test twin_file_test bench_scenario_test loco_scenario_test
-            recording_csv_test regression_test thresholds_test yosys_synthesis_test)
+            recording_csv_test regression_test thresholds_test yosys_synthesis_test
+            locomotive_test locomotive_manifest_test)
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"

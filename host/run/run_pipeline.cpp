@@ -299,6 +299,7 @@ void Pipeline::finish_row(PendingRow& p, const EngineOutput& output) {
                alarm.flange_mm, alarm_name(alarm.level), p.flags);
   }
   const References references = add_errors(p, filt_mm);
+  summary_.filtered.add(filt_mm, references.settled);
   if (trace_ != nullptr && row.problem.empty()) add_to_trace(p, filt_mm, references);
 }
 

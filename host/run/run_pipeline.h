@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "filtered_extent.h"
 #include "thresholds.h"
 #include "welch_spectrum.h"
 
@@ -75,6 +76,7 @@ struct RunSummary {
   int delay_samples = 0;                      // ... rounded to samples, used to align
   std::uint64_t settle_samples = 0;           // start-up transient left out of the after errors
   std::vector<std::string> bad_row_messages;  // the first few, for the summary
+  FilteredExtent filtered;                    // the filter output, every row
 };
 
 // Throws InputError (bad input: exit status 2) and std::runtime_error (I/O: exit status 1).

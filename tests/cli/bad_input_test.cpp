@@ -51,6 +51,18 @@ struct InputFiles {
   std::string filter =
       (fs::path(FLANGE_SOURCE_DIR) / "coeffs/measurement_sos/filter.json").string();
   std::string out(const std::string& name) const { return (dir / name).string(); }
+  // Locomotive manifests naming good.csv: each wrong in one way.
+  std::string manifest(const std::string& name, const std::string& channels) const {
+    return write_file(dir / name, "{\"channels\": [" + channels + "]}").string();
+  }
+  std::string duplicate_channel = manifest(
+      "duplicate.json", R"({"channel": 1, "axle": 1, "side": "left", "file": "good.csv"},)"
+                        R"({"channel": 1, "axle": 1, "side": "right", "file": "header_only.csv"})");
+  std::string channel_12 = manifest(
+      "channel_12.json", R"({"channel": 12, "axle": 1, "side": "left", "file": "good.csv"})");
+  std::string missing_channel_file = manifest(
+      "missing_file.json", R"({"channel": 0, "axle": 1, "side": "left", "file": "gone.csv"})");
+  std::string bad_json = write_file(dir / "bad.json", "{\"channels\": [{\"channel\": 0,").string();
 };
 
 // Runs flange; its stderr in `err`.
@@ -102,6 +114,40 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
       {{"run", "--input", f.binary, "--calibration", f.out("none.json"), "--coeffs", f.filter},
        2,
        "none.json: cannot open the calibration"},
+      {{"run", "--manifest", f.out("none.json"), "--calibration", f.out("none.json"), "--coeffs",
+        f.filter},
+       2,
+       "none.json: cannot open the manifest"},
+      {{"run", "--manifest", f.duplicate_channel, "--calibration", f.out("none.json"), "--coeffs",
+        f.filter},
+       2,
+       "duplicate.json: field channels[1].channel: 1 is already channels[0]'s"},
+      {{"run", "--manifest", f.channel_12, "--calibration", f.out("none.json"), "--coeffs",
+        f.filter},
+       2,
+       "channel_12.json: field channels[0].channel: 12 is outside its valid range: a whole number "
+       "0 to 11"},
+      {{"run", "--manifest", f.missing_channel_file, "--calibration", f.out("none.json"),
+        "--coeffs", f.filter},
+       2,
+       "missing_file.json: field channels[0].file: "},
+      {{"run", "--manifest", f.bad_json, "--calibration", f.out("none.json"), "--coeffs", f.filter},
+       2,
+       "bad.json: not valid JSON"},
+      {{"run", "--manifest", f.channel_12, "--input", f.good, "--calibration", f.out("none.json"),
+        "--coeffs", f.filter},
+       2,
+       "--input excludes --manifest"},
+      {{"run", "--manifest", f.channel_12, "--report", f.out("r"), "--calibration",
+        f.out("none.json"), "--coeffs", f.filter},
+       2,
+       "--report: with --manifest the report goes into the --out folder"},
+      {{"run", "--calibration", f.out("none.json"), "--coeffs", f.filter},
+       2,
+       "--input REC.csv or --manifest locomotive.json is required"},
+      {{"simulate", "--scenario", "loco", "--seed", "1", "--wheels", "13", "--out", f.out("l")},
+       2,
+       "--wheels: 13 is outside its valid range: a whole number 1 to 12"},
       {{"stream", "--port", "/dev/null", "--input", f.header_only, "--out", f.out("b.csv")},
        2,
        ":2: no data rows"},

@@ -223,6 +223,13 @@ TEST(SimulateCommand, EveryBadArgumentExitsTwoWithOneLineAndNoRecording) {
        "effects[0]: rms_mm = 9"},
       {{"--scenario", "bench", "--seed", "1", "--twin", scratch("missing.json").string()},
        "missing.json"},
+      {{"--scenario", "loco", "--seed", "1", "--wheels", "0"}, "--wheels: 0 is outside"},
+      {{"--scenario", "loco", "--seed", "1", "--wheels", "13"}, "a whole number 1 to 12"},
+      {{"--scenario", "loco", "--seed", "1", "--wheels", "2.5"}, "--wheels: 2.5 is outside"},
+      {{"--scenario", "loco", "--seed", "1", "--wheels", "two"}, "--wheels: two is outside"},
+      {{"--scenario", "bench", "--seed", "1", "--wheels", "2"},
+       "--wheels: only the loco scenario has wheels"},
+      {{"--scenario", "loco", "--seed", "1", "--wheels", "3", "--fs", "0"}, "--fs"},
   };
   for (const BadInput& input : cases) {
     fs::remove(out);
