@@ -71,6 +71,11 @@ CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options) {
                   "double-precision design")
       ->check(CLI::IsMember({"model", "rtl", "float"}))
       ->default_str("model");
+  cmd->add_option("--channel", run.channel,
+                  "with --input and a multichannel set: the core channel to filter on (its own "
+                  "coefficient set, if it has one); --manifest uses each entry's channel")
+      ->default_val(0)
+      ->excludes(manifest);
   cmd->add_option("--out", run.out_csv,
                   "output CSV: t_s,clearance_raw_mm,clearance_filt_mm,flange_mm,alarm,flags; with "
                   "--manifest a folder for channel_XX.csv, summary.json and the report");

@@ -5,6 +5,7 @@
 
 #include <system_error>
 
+#include "filter_json.h"
 #include "input_error.h"
 
 namespace flange::host {
@@ -37,6 +38,15 @@ void check_outputs_spare_inputs(const LocomotiveManifest& manifest,
   }
 }
 
+// Channels of the core the set was designed for (1 for an ordinary set).
+int core_channel_count(const std::string& coeffs) {
+  try {
+    return model::load_core_config(coeffs).num_channels;
+  } catch (const model::FilterJsonError& error) {
+    throw InputError(error.what());
+  }
+}
+
 }  // namespace
 
 LocomotiveRun run_locomotive(const LocomotiveManifest& manifest, const RunOptions& shared,
@@ -48,11 +58,23 @@ LocomotiveRun run_locomotive(const LocomotiveManifest& manifest, const RunOption
     check_outputs_spare_inputs(manifest, *out_dir);
     std::filesystem::create_directories(*out_dir);
   }
+  const int core_channels = core_channel_count(shared.coeffs);
+  for (const ManifestChannel& channel : manifest.channels) {
+    if (core_channels > 1 && channel.channel >= core_channels) {
+      throw InputError(fmt::format("{}: channel {} ({}): {} has channels 0 to {} only",
+                                   manifest.path, channel.channel,
+                                   channel.path.filename().string(), shared.coeffs,
+                                   core_channels - 1));
+    }
+  }
   for (const ManifestChannel& channel : manifest.channels) {
     ChannelRun& channel_run = run.channels.emplace_back();
     channel_run.channel = channel;
     channel_run.options = shared;
     channel_run.options.input = channel.path.string();
+    // A set with a channel per sensor filters each on its own channel; a one-channel set is the
+    // same filter for every sensor.
+    channel_run.options.channel = core_channels > 1 ? channel.channel : 0;
     channel_run.options.out_csv.reset();
     channel_run.options.report_dir.reset();
     if (out_dir)

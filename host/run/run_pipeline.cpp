@@ -110,11 +110,16 @@ struct FilterFile {
   model::CoreConfig core;
 };
 
-FilterFile load_filter_file(const std::string& coeffs) {
+FilterFile load_filter_file(const std::string& coeffs, int channel) {
   FilterFile file;
   try {
-    file.design = model::load_float_design(coeffs);
     file.core = model::load_core_config(coeffs);
+    if (channel < 0 || channel >= file.core.num_channels) {
+      throw InputError(fmt::format("{}: channel {}: the set has channels 0 to {}", coeffs, channel,
+                                   file.core.num_channels - 1));
+    }
+    file.core = file.core.channel_config(channel);
+    file.design = model::load_float_design(coeffs, channel);
   } catch (const model::FilterJsonError& error) {
     throw InputError(error.what());
   }
@@ -123,7 +128,7 @@ FilterFile load_filter_file(const std::string& coeffs) {
 
 std::unique_ptr<FilterEngine> load_engine(const RunOptions& options) {
   try {
-    return make_filter_engine(options.engine, options.coeffs);
+    return make_filter_engine(options.engine, options.coeffs, options.channel);
   } catch (const std::invalid_argument& error) {
     throw InputError(error.what());
   }
@@ -188,7 +193,7 @@ Pipeline::Pipeline(const RunOptions& options, RunTrace* trace)
     : options_(options),
       trace_(trace),
       calibration_(load_calibration(options.calibration)),
-      filter_(load_filter_file(options.coeffs)),
+      filter_(load_filter_file(options.coeffs, options.channel)),
       engine_(load_engine(options)),
       thresholds_(options.thresholds),
       scaling_{filter_.core.sample_width},

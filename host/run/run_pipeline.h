@@ -21,6 +21,9 @@ struct RunOptions {
   std::string calibration;  // model.json from flange calibrate
   std::string coeffs;       // filter.json from flange design
   std::string engine = "model";
+  // The core's channel this recording is filtered on: its coefficient set when the set has one
+  // per channel (docs/core.md#channels); 0 for a one-channel set.
+  int channel = 0;
   std::optional<std::string> out_csv;
   std::optional<std::string> report_dir;
   bool lenient = false;  // flag bad rows instead of stopping at the first

@@ -201,6 +201,36 @@ TEST_F(LocomotiveCommands, TwelveWheelsRunEndToEndAsEachChannelAlone) {
   }
 }
 
+TEST_F(LocomotiveCommands, AMultichannelCoreFiltersEachWheelOnItsOwnChannel) {
+  // Three wheels on a core with a coefficient set per channel: channel c's output is that of
+  // `run --channel c` on its file, and the channels' different filters give different outputs.
+  const std::string sets = std::string(FLANGE_SOURCE_DIR) + "/tests/data/coeffs/loco_sets3/filter.json";
+  flange_ok({"simulate", "--scenario", "loco", "--wheels", "3", "--fs", "100", "--duration",
+             "20", "--seed", "4", "--out", path("three")});
+  flange_ok({"run", "--manifest", path("three/locomotive.json"), "--calibration",
+             path("model.json"), "--coeffs", sets, "--engine", "rtl", "--out", path("three_run")});
+  for (int c = 0; c < 3; ++c) {
+    const std::string alone_csv = path(fmt::format("three_alone_{}.csv", c));
+    flange_ok({"run", "--input", path("three/" + channel_csv(c)), "--channel",
+               std::to_string(c), "--calibration", path("model.json"), "--coeffs", sets,
+               "--out", alone_csv});
+    EXPECT_EQ(read(dir_ / "three_run" / channel_csv(c)), read(alone_csv)) << "channel " << c;
+  }
+  // Channel 1's file through channel 0's filter differs from its own channel's result.
+  const std::string on_zero = path("three_on_zero.csv");
+  flange_ok({"run", "--input", path("three/" + channel_csv(1)), "--channel", "0", "--calibration",
+             path("model.json"), "--coeffs", sets, "--out", on_zero});
+  EXPECT_NE(read(on_zero), read(dir_ / "three_run" / channel_csv(1)));
+  // More wheels than the core has channels: refused, one line.
+  flange_ok({"simulate", "--scenario", "loco", "--wheels", "4", "--fs", "100", "--duration", "2",
+             "--seed", "4", "--out", path("four")});
+  const FlangeOutcome refused =
+      run_flange_captured({"run", "--manifest", path("four/locomotive.json"), "--calibration",
+                           path("model.json"), "--coeffs", sets});
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("has channels 0 to 2 only"), std::string::npos) << refused.err;
+}
+
 TEST_F(LocomotiveCommands, AManifestRunRefusesToOverwriteItsInputs) {
   flange_ok({"simulate", "--scenario", "loco", "--wheels", "2", "--fs", "6", "--duration", "60",
              "--seed", "1", "--out", path("pair")});
