@@ -252,16 +252,29 @@ void diagnose_hardware_gap(Demo& demo, const std::string& measurement) {
             "diagnosing the thesis's printed eq. 4.20");
 }
 
-// 9. A whole locomotive: every wheel its own sensor, each channel through the filter alone.
-void run_whole_locomotive(Demo& demo, const std::string& measurement) {
-  demo.out << "\n== 9. A whole locomotive: twelve wheels, each with its own sensor, every channel "
-              "through the Verilated RTL on its own\n";
+// 9. A whole locomotive: twelve wheels, each with its own sensor, all on one core (one DSP48E1).
+void run_whole_locomotive(Demo& demo) {
+  demo.out << "\n== 9. A whole locomotive: twelve wheels, each with its own sensor, all filtered by "
+              "one core (one DSP48E1, twelve channels)\n";
+  const std::string set = demo.path("locomotive_sos");
+  if (!demo.must(demo.step({"design", "--fs", "6", "--order", "5", "--fc", "0.5742", "--structure",
+                            "sos", "--channels", "12", "--name", "locomotive", "--no-plot", "--out",
+                            set}),
+                 "designing the twelve-channel core")) {
+    return;
+  }
+  demo.must(demo.step({"cosim", "--coeffs", set + "/filter.json", "--samples", "12000"}),
+            "co-simulating the twelve-channel core");
+  demo.must(demo.step({"synth", "--coeffs", set, "--out", demo.path("locomotive_synthesis.md"),
+                       "--max-core-lut-percent", "5"}),
+            "synthesising the twelve-channel core");
   if (demo.must(demo.step({"simulate", "--scenario", "loco", "--wheels", "12", "--fs", "6",
                            "--seed", "3", "--out", demo.path("locomotive")}),
                 "simulating the twelve-wheel locomotive")) {
     demo.must(demo.step({"run", "--manifest", demo.path("locomotive/locomotive.json"),
-                         "--calibration", demo.path("model.json"), "--coeffs", measurement,
-                         "--engine", "rtl", "--out", demo.path("locomotive_run")}),
+                         "--calibration", demo.path("model.json"), "--coeffs",
+                         set + "/filter.json", "--engine", "rtl", "--out",
+                         demo.path("locomotive_run")}),
               "running every channel of the locomotive");
     demo.out
         << "  in the curve the wheelset sits 2.56 mm towards the left rail: the right (inner)\n"
@@ -296,7 +309,7 @@ int run_demo_command(const DemoOptions& options, std::ostream& out, std::ostream
   if (!show_lateral_mode_aliasing(demo, measurement)) return kExitFailure;
   diagnose_withheld_effect(demo);
   diagnose_hardware_gap(demo, measurement);
-  run_whole_locomotive(demo, measurement);
+  run_whole_locomotive(demo);
 
   if (demo.failures > 0) {
     err << "flange demo: " << demo.failures << " step(s) failed\n";
