@@ -13,7 +13,7 @@ root="$(cd "$here/../.." && pwd)"
 mutations=(
   "LatencyExact#measurement_sos#rtl/iir_core.sv#s/assign writeback = wb_pipe_q\[MacLatency-1\];/assign writeback = wb_pipe_q[MacLatency-2];/#RTL: the write-back reads the accumulator one cycle early"
   "LatencyExact#measurement_df1#tb/formal/iir_core_props.sv#s/(NumSections - 1) \* SectionPitch + 4;  \/\/ L/(NumSections - 1) * SectionPitch + 5;  \/\/ L/#property: a wrong latency constant (L + 1)"
-  "BusyOverrunAsDocumented#vehicle_sos#rtl/iir_core.sv#s/assign overrun_d    = (overrun_q \& ~flag_clear_i) | (sample_valid_i \& (state_q != StIdle));/assign overrun_d    = (overrun_q | (sample_valid_i \& (state_q != StIdle))) \& ~flag_clear_i;/#RTL: flag_clear_i wins over a same-cycle overrun"
+  "BusyOverrunAsDocumented#vehicle_sos#rtl/iir_core.sv#s/({NumChannels{sample_valid_i \& (state_q != StIdle)}} \&/({NumChannels{sample_valid_i \& (state_q == StIssue)}} \&/#RTL: a sample dropped while the core waits for its last write-back is not flagged"
   "BusyOverrunAsDocumented#measurement_sos#rtl/iir_core.sv#s/      StIdle: begin/      StIdle, StFinish: begin/#RTL: a sample offered while the core waits for its last write-back is taken"
   "ScheduleAsDocumented#measurement_sos#rtl/iir_core.sv#s/            state_d = StFinish;/            state_d = StIdle;/#RTL: the FSM skips StFinish (busy_o falls 3 cycles early)"
   "BtcWithinRom#measurement_sos#rtl/iir_core.sv#s/if (btc_q == BtcWidth'(RomDepth - 1)) begin/if (btc_q == BtcWidth'(RomDepth)) begin/#RTL: the BTC counts one term past the ROM"
@@ -21,6 +21,9 @@ mutations=(
   "AccumulatorNeverWraps#measurement_sos#rtl/iir_mac.sv#s/assign p_d    = p_base + AccWidth'(m_q);/assign p_d    = p_base + AccWidth'(\$unsigned(m_q));/#RTL: the product is zero-extended into the accumulator"
   "AccumulatorNeverWraps#vehicle_sos#rtl/iir_core.sv#s/    .first_i(issue \& term_first),/    .first_i(issue \& term_first \& (btc_q == '0)),/#RTL: only the first section restarts the sum"
   "AccumulatorWithinGeneratorBound#measurement_sos#rtl/iir_core.sv#s/                     term_feedback ? lr_word :/                     1'b1 ? lr_word :/#RTL: feed-forward terms take the unrounded (D+s)-bit history word"
+  "ChannelsIndependent#tests/data/coeffs/loco_sets3#rtl/iir_core.sv#s/    both         = {chan, addr};/    both         = {{ChannelWidth{1'b0}}, addr};/#RTL: every channel's load registers at channel 0's address"
+  "ChannelsIndependent#tests/data/coeffs/loco_sets3#rtl/iir_core.sv#s/                            channel_bit(channel_i));/                            channel_bit(chan_q));/#RTL: a dropped sample flags the overrun of the channel in flight"
+  "ChannelsIndependent#tests/data/coeffs/loco_ch4#rtl/iir_core.sv#s/        newest_mem_q\[newest_base(cur_chan) +: AgeWidth\]           <= newest_d;/        newest_mem_q[newest_base(cur_chan) +: AgeWidth] <= newest_d; newest_mem_q[0 +: AgeWidth] <= newest_d;/#RTL: every sample also moves channel 0's newest slot"
   "ValidOnlyWithMatchingCrc#-#rtl/board/crc8.sv#s/crc = {crc\[6:0\], 1'b0} ^ 8'h07;/crc = {crc[6:0], 1'b0} ^ 8'h0f;/#RTL: the CRC uses the wrong polynomial"
   "ValidOnlyWithMatchingCrc#-#rtl/board/frame_decoder.sv#s/ \&\& window_q\[7:0\] == crc;/;/#RTL: the decoder does not check the CRC byte"
 )
@@ -39,7 +42,9 @@ for entry in "${mutations[@]}"; do
   tree="$work/tree"
   rm -rf "$tree"
   mkdir -p "$tree/tb"
+  mkdir -p "$tree/tests/data"
   cp -r "$root/rtl" "$root/coeffs" "$tree/"
+  cp -r "$root/tests/data/coeffs" "$tree/tests/data/"
   cp -r "$root/tb/formal" "$tree/tb/"
   sed -i "$expression" "$tree/$file"
   if cmp -s "$root/$file" "$tree/$file"; then
@@ -47,7 +52,12 @@ for entry in "${mutations[@]}"; do
     exit 2
   fi
   args=("$property")
-  [ "$set" = "-" ] || args+=("$tree/coeffs/$set")
+  # A set is a checked-in one's name, or a path from the root (tests/data/coeffs/...).
+  if [[ "$set" == */* ]]; then
+    args+=("$tree/$set")
+  elif [ "$set" != "-" ]; then
+    args+=("$tree/coeffs/$set")
+  fi
   label="$property"
   [ "$set" = "-" ] || label="$property $set"
   if out="$(bash "$tree/tb/formal/prove.sh" "${args[@]}" 2>&1)"; then

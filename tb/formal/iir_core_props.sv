@@ -16,6 +16,7 @@ module iir_core_props #(
   input logic                                          clk_i,
   input logic                                          rst_ni,
   input logic signed [iir_coeffs_pkg::SampleWidth-1:0] sample_i,
+  input logic [iir_coeffs_pkg::ChannelWidth-1:0]       channel_i,
   input logic                                          sample_valid_i,
   input logic                                          flag_clear_i
 );
@@ -29,6 +30,8 @@ module iir_core_props #(
   localparam int FeedbackShift = iir_coeffs_pkg::FeedbackShift;  // s
   localparam int AccWidth      = iir_coeffs_pkg::AccWidth;       // P
   localparam int RomDepth      = iir_coeffs_pkg::RomDepth;
+  localparam int NumChannels   = iir_coeffs_pkg::NumChannels;    // N
+  localparam int ChannelWidth  = iir_coeffs_pkg::ChannelWidth;
   localparam int Terms         = 2 * SectionOrder + 1;           // T: MACs per section
   localparam int SectionPitch  = Terms > 4 ? Terms : 4;          // S = max(T, 4)
   localparam int LatencyCycles = Terms + (NumSections - 1) * SectionPitch + 4;  // L
@@ -39,6 +42,8 @@ module iir_core_props #(
   localparam int AgeWidth      = $clog2(SectionOrder + 1);
   localparam int LineWidth     = $clog2(NumSections + 1);
   localparam int LrAddrWidth   = LineWidth + AgeWidth;
+  localparam int LrFullWidth   = NumChannels * (1 << LrAddrWidth) > 1 ?
+                                 $clog2(NumChannels * (1 << LrAddrWidth)) : 1;
   localparam int SinceWidth    = $clog2(LatencyCycles + 1);
   localparam int PosWidth      = $clog2(Terms + 1);
 
@@ -54,21 +59,17 @@ module iir_core_props #(
   // sample_o and saturation_o carry data; no property here is about their values.
   /* verilator lint_off UNUSEDSIGNAL */
   logic signed [SampleWidth-1:0] sample_o;
-  logic                          saturation_o;
   /* verilator lint_on UNUSEDSIGNAL */
-  logic                          sample_valid_o, busy_o, overrun_o;
-  // The proofs cover a one-channel core (channel 0 in, channel_o always 0); the multichannel
-  // contract is co-simulated (docs/formal.md).
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [iir_coeffs_pkg::ChannelWidth-1:0] channel_o;
-  logic                                    channel_error_o;
-  /* verilator lint_on UNUSEDSIGNAL */
+  logic                          sample_valid_o, busy_o;
+  logic [NumChannels-1:0]        overrun_o, saturation_o;
+  logic [ChannelWidth-1:0]       channel_o;
+  logic                          channel_error_o;
 
   iir_core #(.RomFile(RomFile)) dut (
     .clk_i,
     .rst_ni,
     .sample_i,
-    .channel_i      ('0),
+    .channel_i,
     .sample_valid_i,
     .sample_o,
     .channel_o,
@@ -98,6 +99,10 @@ module iir_core_props #(
   logic signed [ProdWidth-1:0] dut_mac_m_q;
   logic signed [AccWidth-1:0]  dut_mac_p_q, dut_mac_p_d;
   logic                        dut_mac_first_a_q, dut_mac_first_m_q;
+  logic [ChannelWidth-1:0]     dut_chan_q, dut_cur_chan;
+  logic [LrFullWidth-1:0]      dut_lr_waddr_full, dut_lr_raddr_full;
+  logic [NumChannels*AgeWidth-1:0]     dut_newest_mem_q;
+  logic [NumChannels*(AgeWidth+1)-1:0] dut_filled_mem_q;
 `ifndef YOSYS
   assign dut_state_q       = dut.state_q;
   assign dut_btc_q         = dut.btc_q;
@@ -119,22 +124,46 @@ module iir_core_props #(
   assign dut_mac_p_d       = dut.u_mac.p_d;
   assign dut_mac_first_a_q = dut.u_mac.first_a_q;
   assign dut_mac_first_m_q = dut.u_mac.first_m_q;
+  assign dut_chan_q        = dut.chan_q;
+  assign dut_cur_chan      = dut.cur_chan;
+  assign dut_lr_waddr_full = dut.lr_waddr_full;
+  assign dut_lr_raddr_full = dut.lr_raddr_full;
+  assign dut_newest_mem_q  = dut.newest_mem_q;
+  assign dut_filled_mem_q  = dut.filled_mem_q;
 `endif
 
   // Shadow model: cycles since the accepted sample //
-  // A sample is accepted when sample_valid_i is high, busy_o low and rst_ni high. since_q is 1 in
-  // the next cycle, counts up to LatencyCycles (the cycle its output is due) and is 0 otherwise.
-  logic                  accept;
+  // A sample is accepted when sample_valid_i is high, busy_o low, rst_ni high and channel_i names
+  // a channel. since_q is 1 in the next cycle, counts up to LatencyCycles (the cycle its output is
+  // due) and is 0 otherwise.
+  logic                  accept, channel_ok;
   logic [SinceWidth-1:0] since_q, since_d;
-  assign accept  = rst_ni && sample_valid_i && !busy_o;
+  assign channel_ok = 32'(channel_i) < NumChannels;
+  assign accept  = rst_ni && sample_valid_i && !busy_o && channel_ok;
   assign since_d = accept ? SinceWidth'(1) :
                    (since_q != '0 && since_q != SinceWidth'(LatencyCycles)) ? since_q + 1'b1 : '0;
 
-  // Shadow model: the sticky overrun flag as documented //
-  // Set by sample_valid_i while busy_o; cleared by flag_clear_i unless an event lands at the same
-  // edge (the event wins); cleared by reset.
-  logic overrun_q, overrun_d;
-  assign overrun_d = (sample_valid_i && busy_o) || (overrun_q && !flag_clear_i);
+  // Shadow model: the sticky flags as documented //
+  // overrun bit c: set by sample_valid_i of channel c while busy_o; channel_error: set by
+  // sample_valid_i with a channel_i that names no channel. Cleared by flag_clear_i unless an event
+  // lands at the same edge (the event wins); cleared by reset.
+  logic [NumChannels-1:0] overrun_q, overrun_d, channel_bit;
+  logic                   channel_error_q, channel_error_d;
+  always_comb begin
+    channel_bit = '0;
+    for (int c = 0; c < NumChannels; c++) channel_bit[c] = 32'(channel_i) == c;
+  end
+  assign overrun_d = ({NumChannels{sample_valid_i && busy_o}} & channel_bit) |
+                     (overrun_q & ~{NumChannels{flag_clear_i}});
+  assign channel_error_d = (sample_valid_i && !channel_ok) || (channel_error_q && !flag_clear_i);
+
+  // Shadow model: the channel of the accepted sample, and the flags one cycle ago.
+  logic [ChannelWidth-1:0] served_q;
+  logic [NumChannels-1:0]  saturation_prev_q;
+  logic [NumChannels*AgeWidth-1:0]     newest_mem_prev_q;
+  logic [NumChannels*(AgeWidth+1)-1:0] filled_mem_prev_q;
+  logic                    accepted_prev_q;
+  logic                    prev_valid_q;  // the previous cycle was not a reset cycle
 
   // Products summed in the accumulator since its last restart (a first term restarts it at the
   // preload); the d value is set beside the properties below.
@@ -142,14 +171,23 @@ module iir_core_props #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      since_q     <= '0;
-      overrun_q   <= 1'b0;
-      acc_terms_q <= '0;
+      since_q         <= '0;
+      overrun_q       <= '0;
+      channel_error_q <= 1'b0;
+      acc_terms_q     <= '0;
+      served_q        <= '0;
     end else begin
-      since_q     <= since_d;
-      overrun_q   <= overrun_d;
-      acc_terms_q <= acc_terms_d;
+      since_q         <= since_d;
+      overrun_q       <= overrun_d;
+      channel_error_q <= channel_error_d;
+      acc_terms_q     <= acc_terms_d;
+      if (accept) served_q <= channel_i;
     end
+    saturation_prev_q <= saturation_o;
+    newest_mem_prev_q <= dut_newest_mem_q;
+    filled_mem_prev_q <= dut_filled_mem_q;
+    accepted_prev_q   <= accept;
+    prev_valid_q      <= rst_ni;
   end
 
   // The documented term schedule //
@@ -243,6 +281,62 @@ module iir_core_props #(
     end
     lr_newest_in_line: assert (dut_newest_q <= AgeWidth'(SectionOrder));
     lr_filled_bounded: assert (dut_filled_q <= (AgeWidth + 1)'(SectionOrder + 1));
+    // Every channel's pointer and count, not only the served one's (an idle channel's are read
+    // when its next sample comes).
+    lr_every_pointer_in_line: assert (every_pointer_in_line);
+  end
+
+  // 5. Channels are independent (docs/core.md#channels): while a sample is computed, the core
+  // serves its channel; every load-register read and write lies in that channel's lines; its
+  // output carries it; a flag bit of another channel never rises from it; another channel's
+  // pointer and count never move.
+  always_comb begin
+    if (sched_busy) begin
+      channel_served_while_busy: assert (dut_chan_q == served_q && dut_cur_chan == served_q);
+    end
+    if (sample_valid_o) begin
+      channel_of_output: assert (channel_o == served_q);
+    end
+    if (dut_lr_we) begin
+      channel_write_own_lines:
+        assert (32'(dut_lr_waddr_full) == 32'(dut_cur_chan) * (1 << LrAddrWidth) +
+                                          32'(dut_lr_waddr) && 32'(dut_cur_chan) < NumChannels);
+    end
+    if (dut_issue) begin
+      channel_read_own_lines:
+        assert (32'(dut_lr_raddr_full) == 32'(served_q) * (1 << LrAddrWidth) +
+                                          32'(dut_lr_raddr));
+    end
+    channel_overrun_as_documented: assert (overrun_o == overrun_q);
+    channel_error_as_documented: assert (channel_error_o == channel_error_q);
+    channel_served_in_range: assert (32'(served_q) < NumChannels);
+    // A saturation bit rises only for the channel being served (the write-back that clipped ended
+    // the cycle before, within the sample's computation).
+    // Pointers and counts move only on an accepted sample, and only the accepted channel's.
+    if (prev_valid_q) begin
+      channel_saturation_own: assert ((saturation_o & ~saturation_prev_q &
+                                       ~(NumChannels'(1) << served_q)) == '0);
+      channel_pointers_still: assert (other_pointers_still);
+    end
+  end
+
+  // The per-channel checks above, folded over the channels (one assertion each).
+  logic every_pointer_in_line, other_pointers_still;
+  always_comb begin
+    every_pointer_in_line = 1'b1;
+    other_pointers_still  = 1'b1;
+    for (int c = 0; c < NumChannels; c++) begin
+      every_pointer_in_line = every_pointer_in_line &&
+          dut_newest_mem_q[c*AgeWidth +: AgeWidth] <= AgeWidth'(SectionOrder) &&
+          dut_filled_mem_q[c*(AgeWidth+1) +: AgeWidth+1] <= (AgeWidth + 1)'(SectionOrder + 1);
+      if (!accepted_prev_q || 32'(served_q) != c) begin
+        other_pointers_still = other_pointers_still &&
+            dut_newest_mem_q[c*AgeWidth +: AgeWidth] ==
+            newest_mem_prev_q[c*AgeWidth +: AgeWidth] &&
+            dut_filled_mem_q[c*(AgeWidth+1) +: AgeWidth+1] ==
+            filled_mem_prev_q[c*(AgeWidth+1) +: AgeWidth+1];
+      end
+    end
   end
 
   always_comb begin

@@ -49,6 +49,7 @@ case "$property" in
   AccumulatorNeverWraps)    unit=core; labels="acc_* sched_*";        proof="induct 12" ;;
   AccumulatorWithinGeneratorBound)
                             unit=core; labels="gen_* acc_* sched_*";  proof="induct 8" ;;
+  ChannelsIndependent)      unit=core; labels="channel_* sched_* lr_*"; proof="induct 40" ;;
   ValidOnlyWithMatchingCrc) unit=decoder; labels="crc_* rx_*";        proof="induct 12" ;;
   *) echo "prove: unknown property $property" >&2; usage ;;
 esac
