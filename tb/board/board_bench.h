@@ -4,8 +4,9 @@
 // button, the LEDs and the multiplexed 7-segment display.
 //
 // Each board build (tb/CMakeLists.txt, flange_add_board) has its coefficient set
-// (kBoardFilterJson) and ClksPerBit (kSimClksPerBit: 8 for measurement_sos, so that a frame and
-// its reply take about 1000 cycles; 109, the real 921600 baud, for loco_ch12), and RefreshBits = 4
+// (kBoardFilterJson) and ClksPerBit (kSimClksPerBit: 8 for measurement_sos and loco_ch12, so that a
+// frame and its reply take about 1100 cycles; 109, the real 921600 baud, for the link-budget build
+// of loco_ch12), and RefreshBits = 4
 // (a display digit is lit for 4 cycles), DebounceBits = 3, HeartbeatBit = 6. Everything else is
 // the synthesised RTL.
 #pragma once

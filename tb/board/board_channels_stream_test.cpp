@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The multichannel stream library (host/board_link/channel_stream.h, stream_session.h) against the
-// Verilated 12-channel board top behind a pseudo-terminal (pty_board.h) at 921600 baud: channels
+// Verilated 12-channel board top behind a pseudo-terminal (pty_board.h): channels
 // interleaved on the one link, every reply checked against model::IirSampleBank by the library and
 // against model::IirCore here; a noisy cable; recordings on chosen channels with their output CSVs;
 // channels the board or the coefficient set lacks refused with one line. (A pty has no baud rate:
