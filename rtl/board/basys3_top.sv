@@ -205,6 +205,10 @@ module basys3_top #(
     reply_status[StChannelError] = chan_err_q;
   end
   assign reply_out = session_reset_q ? 16'(NumChannels) : chan_err_q ? '0 : out_q;
+  // The LEDs light at the event: a channel that is never answered again still shows its overrun.
+  assign sticky_d    = sticky_q | {state_q == StReply && chan_err_q, link_err_event,
+                                   |core_saturation, overrun_event || |core_overrun};
+  assign err_count_d = err_count_q + {15'd0, link_err_event && err_count_q != 16'hffff};
 
   always_comb begin
     state_d         = state_q;
@@ -220,9 +224,6 @@ module basys3_top #(
     pend_ovr_d      = ovr_now;
     pend_sat_d      = sat_now;
     link_err_d      = link_err_q || link_err_event;
-    sticky_d        = sticky_q | {state_q == StReply && chan_err_q, link_err_event,
-                                  |core_saturation, overrun_event || |core_overrun};
-    err_count_d     = err_count_q + {15'd0, link_err_event && err_count_q != 16'hffff};
     core_strobe     = 1'b0;
     core_reset      = 1'b0;
     send            = 1'b0;

@@ -49,6 +49,20 @@ std::int16_t wheel_word(int channel, int n, std::mt19937& rng) {
   return clearance_word(mm);
 }
 
+// The faults a noisy cable or a confused host brings, one drawn per request.
+enum class Fault { kNone, kDroppedByte, kFlippedBits, kGarbage, kBadStopBit, kLostReply, kNoChannel };
+
+Fault draw_fault(std::mt19937& rng) {
+  const int p = std::uniform_int_distribution<int>(0, 99)(rng);
+  if (p < 70) return Fault::kNone;
+  if (p < 76) return Fault::kDroppedByte;
+  if (p < 82) return Fault::kFlippedBits;
+  if (p < 88) return Fault::kGarbage;
+  if (p < 92) return Fault::kBadStopBit;
+  if (p < 97) return Fault::kLostReply;
+  return Fault::kNoChannel;
+}
+
 class Basys3TopChannels : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -86,11 +100,16 @@ class Basys3TopChannels : public ::testing::Test {
     const auto f = frame::encode_request({seq, static_cast<std::uint8_t>(channel), sample});
     return {f.begin(), f.end()};
   }
-  // Sends `sample` on `channel` and checks the one reply against that channel's model.
+  // Sends `sample` on `channel` (after `prefix`, bytes glued before the frame) and checks the one
+  // reply against that channel's model.
   frame::Reply expect_filtered(std::uint8_t seq, int channel, std::int16_t sample,
-                               std::uint8_t extra_status = 0) {
+                               std::uint8_t extra_status = 0,
+                               const std::vector<std::uint8_t>& prefix = {}) {
     const model::StepResult want = model_->step(sample, channel);
-    const std::vector<frame::Reply> got = exchange(request(seq, channel, sample));
+    std::vector<std::uint8_t> bytes = prefix;
+    const std::vector<std::uint8_t> f = request(seq, channel, sample);
+    bytes.insert(bytes.end(), f.begin(), f.end());
+    const std::vector<frame::Reply> got = exchange(bytes);
     EXPECT_EQ(got.size(), 1u) << "seq " << int{seq} << " channel " << channel;
     if (got.size() != 1u) return {};
     const auto status =
@@ -100,6 +119,12 @@ class Basys3TopChannels : public ::testing::Test {
         << "seq " << int{seq} << " channel " << channel << " sample " << sample;
     return got[0];
   }
+
+  // What a damaged copy of `frame_bytes` costs: it is sent (and must get no reply), or for garbage
+  // returned in `prefix` to be glued before the intact frame. Returns the bytes the board counts
+  // as link errors (discarded, or with a bad stop bit).
+  int send_damaged(Fault fault, const std::vector<std::uint8_t>& frame_bytes, std::mt19937& rng,
+                   std::vector<std::uint8_t>& prefix);
 
   std::unique_ptr<BoardBench> bench_;
   std::unique_ptr<model::IirCore> model_;
@@ -159,113 +184,43 @@ TEST_F(Basys3TopChannels, SaturationIsReportedOnItsOwnChannelOnly) {
   EXPECT_TRUE(bench_->leds() & kLedSaturation);
 }
 
-// The faults a noisy cable or a confused host brings, one drawn per request.
-enum class Fault { kNone, kDroppedByte, kFlippedBits, kGarbage, kBadStopBit, kLostReply, kNoChannel };
-
-Fault draw_fault(std::mt19937& rng) {
-  const int p = std::uniform_int_distribution<int>(0, 99)(rng);
-  if (p < 70) return Fault::kNone;
-  if (p < 76) return Fault::kDroppedByte;
-  if (p < 82) return Fault::kFlippedBits;
-  if (p < 88) return Fault::kGarbage;
-  if (p < 92) return Fault::kBadStopBit;
-  if (p < 97) return Fault::kLostReply;
-  return Fault::kNoChannel;
-}
-
 TEST_F(Basys3TopChannels, CorruptedFramesWithChannelsInterleaved) {
   // Like a real host: a damaged request gets no reply and is sent again intact (same SEQ and
   // CHANNEL); a lost reply is asked for again with the same frame and comes back with RETRANSMIT.
   // Every answered reply must equal its channel's model, with LINK_ERROR exactly when bytes were
   // discarded or had a bad stop bit since the previous reply; the error count must add up.
   std::mt19937 rng(14);
-  std::uniform_int_distribution<int> byte_value(0, 255);
   std::vector<int> order(kChannels);
   std::iota(order.begin(), order.end(), 0);
   std::vector<int> n(kChannels, 0);
   std::uint8_t seq = 0;
-  int link_errors = 0;  // discarded bytes plus bytes with a bad stop bit, as the board counts them
+  int link_errors = 0;
   std::map<Fault, int> seen;
   for (int round = 0; round < 130; ++round) {
     std::shuffle(order.begin(), order.end(), rng);
     for (int c : order) {
       const std::int16_t word = wheel_word(c, n[c]++, rng);
-      std::vector<std::uint8_t> frame_bytes = request(seq, c, word);
       const Fault fault = draw_fault(rng);
       ++seen[fault];
-      std::uint8_t status = 0;
-      switch (fault) {
-        case Fault::kNone:
-          break;
-        case Fault::kDroppedByte: {
-          std::vector<std::uint8_t> broken = frame_bytes;
-          broken.erase(broken.begin() + std::uniform_int_distribution<int>(0, 5)(rng));
-          EXPECT_TRUE(exchange(broken).empty()) << "a frame with a lost byte was answered";
-          link_errors += 5;
-          status = frame::kStatusLinkError;
-          break;
-        }
-        case Fault::kFlippedBits: {
-          std::vector<std::uint8_t> broken = frame_bytes;
-          const int bits = std::uniform_int_distribution<int>(1, 3)(rng);
-          for (int b = 0; b < bits; ++b) {
-            broken[std::uniform_int_distribution<std::size_t>(0, 5)(rng)] ^=
-                static_cast<std::uint8_t>(1u << std::uniform_int_distribution<int>(0, 7)(rng));
-          }
-          if (broken == frame_bytes) break;  // two flips of one bit cancelled
-          EXPECT_TRUE(exchange(broken).empty()) << "a frame with flipped bits was answered";
-          link_errors += 6;
-          status = frame::kStatusLinkError;
-          break;
-        }
-        case Fault::kGarbage: {
-          // Glued to the frame, with SYNC bytes among it.
-          const int length = std::uniform_int_distribution<int>(1, 8)(rng);
-          std::vector<std::uint8_t> garbage;
-          for (int g = 0; g < length; ++g) {
-            garbage.push_back(g % 3 == 0 ? frame::kSync : static_cast<std::uint8_t>(byte_value(rng)));
-          }
-          frame_bytes.insert(frame_bytes.begin(), garbage.begin(), garbage.end());
-          link_errors += length;
-          status = frame::kStatusLinkError;
-          break;
-        }
-        case Fault::kBadStopBit:
-          bench_->send({static_cast<std::uint8_t>(byte_value(rng))}, /*bad_stop=*/true);
-          link_errors += 1;
-          status = frame::kStatusLinkError;
-          break;
-        case Fault::kLostReply: {
-          const frame::Reply first = expect_filtered(seq, c, word);
-          const std::vector<frame::Reply> again = exchange(frame_bytes);
-          ASSERT_EQ(again.size(), 1u);
-          frame::Reply want = first;
-          want.status = static_cast<std::uint8_t>(want.status | frame::kStatusRetransmit);
-          EXPECT_EQ(again[0], want) << "the stored reply, not a second filtering";
-          ++seq;
-          continue;
-        }
-        case Fault::kNoChannel: {
-          const int bad = std::uniform_int_distribution<int>(kChannels, 255)(rng);
-          const std::vector<frame::Reply> got = exchange(request(seq, bad, word));
-          ASSERT_EQ(got.size(), 1u);
-          EXPECT_EQ(got[0], (frame::Reply{seq, static_cast<std::uint8_t>(bad), 0,
-                                          frame::kStatusChannelError}));
-          ++seq;
-          break;
-        }
+      if (fault == Fault::kLostReply) {
+        frame::Reply want = expect_filtered(seq, c, word);
+        want.status = static_cast<std::uint8_t>(want.status | frame::kStatusRetransmit);
+        const std::vector<frame::Reply> again = exchange(request(seq++, c, word));
+        ASSERT_EQ(again.size(), 1u);
+        EXPECT_EQ(again[0], want) << "the stored reply, not a second filtering";
+        continue;
       }
-      if (fault == Fault::kGarbage) {
-        const model::StepResult want = model_->step(word, c);
-        const std::vector<frame::Reply> got = exchange(frame_bytes);
-        ASSERT_EQ(got.size(), 1u) << "the frame after the garbage";
-        EXPECT_EQ(got[0], (frame::Reply{seq, static_cast<std::uint8_t>(c),
-                                        static_cast<std::int16_t>(want.sample),
-                                        static_cast<std::uint8_t>(frame::kStatusLinkError)}));
-      } else {
-        expect_filtered(seq, c, word, status);
+      if (fault == Fault::kNoChannel) {
+        const int bad = std::uniform_int_distribution<int>(kChannels, 255)(rng);
+        const std::vector<frame::Reply> got = exchange(request(seq, bad, word));
+        ASSERT_EQ(got.size(), 1u);
+        EXPECT_EQ(got[0], (frame::Reply{seq++, static_cast<std::uint8_t>(bad), 0,
+                                        frame::kStatusChannelError}));
       }
-      ++seq;
+      std::vector<std::uint8_t> prefix;
+      const int errors = send_damaged(fault, request(seq, c, word), rng, prefix);
+      link_errors += errors;
+      expect_filtered(seq++, c, word, errors > 0 ? frame::kStatusLinkError : 0, prefix);
     }
   }
   for (Fault f : {Fault::kDroppedByte, Fault::kFlippedBits, Fault::kGarbage, Fault::kBadStopBit,
@@ -278,6 +233,36 @@ TEST_F(Basys3TopChannels, CorruptedFramesWithChannelsInterleaved) {
   char hex[8];
   std::snprintf(hex, sizeof hex, "%04X", link_errors);
   EXPECT_EQ(bench_->display(), std::string(hex));
+}
+
+int Basys3TopChannels::send_damaged(Fault fault, const std::vector<std::uint8_t>& frame_bytes,
+                                    std::mt19937& rng, std::vector<std::uint8_t>& prefix) {
+  std::uniform_int_distribution<int> byte_value(0, 255);
+  std::vector<std::uint8_t> broken = frame_bytes;
+  switch (fault) {
+    case Fault::kDroppedByte:
+      broken.erase(broken.begin() + std::uniform_int_distribution<int>(0, 5)(rng));
+      break;
+    case Fault::kFlippedBits:
+      for (int b = std::uniform_int_distribution<int>(1, 3)(rng); b > 0; --b) {
+        broken[std::uniform_int_distribution<std::size_t>(0, 5)(rng)] ^=
+            static_cast<std::uint8_t>(1u << std::uniform_int_distribution<int>(0, 7)(rng));
+      }
+      if (broken == frame_bytes) return 0;  // two flips of one bit cancelled
+      break;
+    case Fault::kGarbage:  // glued to the frame, with SYNC bytes among it
+      for (int g = std::uniform_int_distribution<int>(1, 8)(rng); g > 0; --g) {
+        prefix.push_back(g % 3 == 0 ? frame::kSync : static_cast<std::uint8_t>(byte_value(rng)));
+      }
+      return static_cast<int>(prefix.size());
+    case Fault::kBadStopBit:
+      bench_->send({static_cast<std::uint8_t>(byte_value(rng))}, /*bad_stop=*/true);
+      return 1;
+    default:
+      return 0;
+  }
+  EXPECT_TRUE(exchange(broken).empty()) << "a damaged frame was answered";
+  return static_cast<int>(broken.size());
 }
 
 TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
