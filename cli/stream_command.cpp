@@ -27,8 +27,8 @@ CLI::App* add_stream_command(CLI::App& app, host::StreamSettings& options) {
   cmd->add_option("--baud", options.baud,
                   "baud rate: the bitstream's, 100 MHz / ClksPerBit (115200, 921600, ...)")
       ->default_val(options.baud)
-      ->check(CLI::IsMember(std::vector<int>(std::begin(host::kSerialBauds),
-                                             std::end(host::kSerialBauds))));
+      ->check(CLI::IsMember(
+          std::vector<int>(std::begin(host::kSerialBauds), std::end(host::kSerialBauds))));
   cmd->add_option("--timeout-ms", options.timeout_ms, "wait for each reply (1-60000 ms)")
       ->default_val(options.timeout_ms)
       ->check(CLI::Range(1, 60000));

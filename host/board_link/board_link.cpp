@@ -14,16 +14,16 @@ BoardLink::BoardLink(SerialPort& port, const LinkSettings& settings)
 
 int BoardLink::reset_session() {
   const board::Request expected{0, 0, 0};
-  const board::Reply reply = exchange_frame(board::encode_command(0, board::kCommandReset),
-                                            expected, "the session reset");
+  const board::Reply reply =
+      exchange_frame(board::encode_command(0, board::kCommandReset), expected, "the session reset");
   if (!(reply.status & board::kStatusSessionReset)) {
     throw std::runtime_error("the board on " + port_.device() +
                              " did not confirm the session reset (an older bitstream?)");
   }
   if (reply.sample < 1 || reply.sample > 255) {
-    throw std::runtime_error(fmt::format(
-        "the board on {} reports {} channels (expected 1 to 255: an older bitstream?)",
-        port_.device(), reply.sample));
+    throw std::runtime_error(
+        fmt::format("the board on {} reports {} channels (expected 1 to 255: an older bitstream?)",
+                    port_.device(), reply.sample));
   }
   next_seq_ = 1;
   return reply.sample;

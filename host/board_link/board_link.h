@@ -22,9 +22,9 @@ struct LinkSettings {
 };
 
 struct LinkCounts {
-  std::uint64_t exchanges = 0;       // sample requests answered
-  std::uint64_t resent = 0;          // requests sent again after a timeout
-  std::uint64_t stray_replies = 0;   // intact replies with another SEQ or CHANNEL (late or stale)
+  std::uint64_t exchanges = 0;        // sample requests answered
+  std::uint64_t resent = 0;           // requests sent again after a timeout
+  std::uint64_t stray_replies = 0;    // intact replies with another SEQ or CHANNEL (late or stale)
   std::uint64_t discarded_bytes = 0;  // received bytes that were part of no intact reply
 };
 

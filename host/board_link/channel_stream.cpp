@@ -43,8 +43,10 @@ int check_channel_numbers(std::span<const int> channels, const ReplyChecker* che
     highest = std::max(highest, channels[i]);
   }
   if (checker && highest >= checker->channels()) {
-    throw InputError(fmt::format("{}: channel {} is not in the coefficient set, which has channels "
-                                 "0 to {}", source, highest, checker->channels() - 1));
+    throw InputError(
+        fmt::format("{}: channel {} is not in the coefficient set, which has channels "
+                    "0 to {}",
+                    source, highest, checker->channels() - 1));
   }
   return highest;
 }
@@ -55,8 +57,10 @@ ChannelSession::ChannelSession(BoardLink& link, std::span<const int> channels,
   const int highest = check_channel_numbers(channels, checker, source);
   board_channels_ = link_.reset_session();
   if (highest >= board_channels_) {
-    throw InputError(fmt::format("{}: channel {} is not on the board on {}, which serves channels "
-                                 "0 to {}", source, highest, link_.device(), board_channels_ - 1));
+    throw InputError(
+        fmt::format("{}: channel {} is not on the board on {}, which serves channels "
+                    "0 to {}",
+                    source, highest, link_.device(), board_channels_ - 1));
   }
   if (checker_ && checker_->channels() != board_channels_) {
     throw std::runtime_error(fmt::format(
@@ -70,8 +74,9 @@ ChannelSession::ChannelSession(BoardLink& link, std::span<const int> channels,
 
 board::Reply ChannelSession::send(int channel, std::int16_t word) {
   const auto index = static_cast<std::size_t>(channel);
-  const std::string what = several_ ? fmt::format("sample {} of channel {}", sent_.at(index), channel)
-                                    : fmt::format("sample {}", sent_.at(index));
+  const std::string what = several_
+                               ? fmt::format("sample {} of channel {}", sent_.at(index), channel)
+                               : fmt::format("sample {}", sent_.at(index));
   const board::Reply reply = link_.exchange(static_cast<std::uint8_t>(channel), word, what);
   ++sent_[index];
   ++counts_.samples;

@@ -29,10 +29,10 @@ struct StreamCounts {
   std::uint64_t bypassed = 0;        // replies with the unfiltered input (sw[0] up)
   std::uint64_t clipped_inputs = 0;  // clearances outside the sample word's range
   std::uint64_t discarded_bytes = 0;
-  bool checked = false;              // replies were compared with the model
-  std::uint64_t mismatches = 0;      // replies that differ from the model (word or SATURATION)
-  std::string first_mismatch;        // one line on the first of them
-  double seconds = 0.0;              // wall time of the session
+  bool checked = false;          // replies were compared with the model
+  std::uint64_t mismatches = 0;  // replies that differ from the model (word or SATURATION)
+  std::string first_mismatch;    // one line on the first of them
+  double seconds = 0.0;          // wall time of the session
 };
 
 // The model's view of each reply: the sample bank of the board's coefficient set.
@@ -76,8 +76,8 @@ class ChannelSession {
   BoardLink& link_;
   ReplyChecker* checker_;
   int board_channels_ = 0;
-  bool several_ = false;                     // name the channel in error messages
-  std::vector<std::uint64_t> sent_;          // samples sent per channel
+  bool several_ = false;             // name the channel in error messages
+  std::vector<std::uint64_t> sent_;  // samples sent per channel
   StreamCounts counts_;
 };
 

@@ -16,9 +16,9 @@ namespace {
 
 speed_t baud_constant(int baud) {
   // The termios constants of kSerialBauds, in the same order.
-  static constexpr speed_t kConstants[] = {B9600,    B19200,   B38400,   B57600,   B115200,
-                                           B230400,  B460800,  B921600,  B1000000, B2000000,
-                                           B3000000, B4000000};
+  static constexpr speed_t kConstants[] = {B9600,    B19200,   B38400,   B57600,
+                                           B115200,  B230400,  B460800,  B921600,
+                                           B1000000, B2000000, B3000000, B4000000};
   static_assert(std::size(kConstants) == std::size(kSerialBauds));
   for (std::size_t i = 0; i < std::size(kSerialBauds); ++i) {
     if (kSerialBauds[i] == baud) return kConstants[i];

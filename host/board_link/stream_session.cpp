@@ -57,11 +57,17 @@ std::string source_of(const ChannelStreamSettings& settings) {
 
 // Everything that can be wrong with the input is found before the port is opened: the channel
 // list, every row of every recording, the coefficient set.
+std::vector<int> channel_numbers(const ChannelStreamSettings& settings) {
+  std::vector<int> numbers;
+  numbers.reserve(settings.channels.size());
+  for (const ChannelFiles& files : settings.channels) numbers.push_back(files.channel);
+  return numbers;
+}
+
 // Everything that can be wrong with the input is found before the port is opened: the channel
 // list, every row of every recording, the coefficient set.
 std::optional<ReplyChecker> check_input(const ChannelStreamSettings& settings) {
-  std::vector<int> numbers;
-  for (const ChannelFiles& files : settings.channels) numbers.push_back(files.channel);
+  const std::vector<int> numbers = channel_numbers(settings);
   check_channel_numbers(numbers, nullptr, source_of(settings));
   // A first pass, so that a bad row cannot stop a session half-way and memory stays flat.
   for (const ChannelFiles& files : settings.channels) {
@@ -114,8 +120,7 @@ StreamCounts stream_channel_recordings(const ChannelStreamSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<ReplyChecker> checker = check_input(settings);
   std::vector<ChannelRun> runs = open_channels(settings);
-  std::vector<int> numbers;
-  for (const ChannelRun& run : runs) numbers.push_back(run.channel);
+  const std::vector<int> numbers = channel_numbers(settings);
 
   SerialPort port(settings.port, settings.link.baud);
   port.discard_input();

@@ -50,7 +50,15 @@ std::int16_t wheel_word(int channel, int n, std::mt19937& rng) {
 }
 
 // The faults a noisy cable or a confused host brings, one drawn per request.
-enum class Fault { kNone, kDroppedByte, kFlippedBits, kGarbage, kBadStopBit, kLostReply, kNoChannel };
+enum class Fault {
+  kNone,
+  kDroppedByte,
+  kFlippedBits,
+  kGarbage,
+  kBadStopBit,
+  kLostReply,
+  kNoChannel
+};
 
 Fault draw_fault(std::mt19937& rng) {
   const int p = std::uniform_int_distribution<int>(0, 99)(rng);
@@ -277,15 +285,16 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
   for (int k = 0; k < 96; ++k) {
     const int c = any_channel(rng);
     sent.emplace_back(c, wheel_word(c, n[c]++, rng));
-    const std::vector<std::uint8_t> f = request(static_cast<std::uint8_t>(k), c, sent.back().second);
+    const std::vector<std::uint8_t> f =
+        request(static_cast<std::uint8_t>(k), c, sent.back().second);
     burst.insert(burst.end(), f.begin(), f.end());
   }
   std::vector<frame::Reply> got = exchange(burst);
   // Then one frame per channel, each waited for: they report what the burst's end dropped.
   for (int c = 0; c < kChannels; ++c) {
     sent.emplace_back(c, wheel_word(c, n[c]++, rng));
-    for (const frame::Reply& r : exchange(request(static_cast<std::uint8_t>(sent.size() - 1), c,
-                                                  sent.back().second))) {
+    for (const frame::Reply& r :
+         exchange(request(static_cast<std::uint8_t>(sent.size() - 1), c, sent.back().second))) {
       got.push_back(r);
     }
   }
@@ -296,9 +305,9 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
     const auto [c, word] = sent[k];
     if (next < got.size() && static_cast<std::size_t>(got[next].seq) == k) {
       const model::StepResult want = model_->step(word, c);
-      const auto status = static_cast<std::uint8_t>(
-          (want.saturated ? frame::kStatusSaturation : 0) |
-          (dropped_since_reply[c] ? frame::kStatusOverrun : 0));
+      const auto status =
+          static_cast<std::uint8_t>((want.saturated ? frame::kStatusSaturation : 0) |
+                                    (dropped_since_reply[c] ? frame::kStatusOverrun : 0));
       EXPECT_EQ(got[next], (frame::Reply{static_cast<std::uint8_t>(k), static_cast<std::uint8_t>(c),
                                          static_cast<std::int16_t>(want.sample), status}))
           << "frame " << k;

@@ -54,10 +54,11 @@ TEST(Basys3TopLinkBudget, OneSecondOfTwelveChannelsAt100HzFitsWhenTheFormulaSays
   const double cycles = static_cast<double>(bench.cycle() - start);
   const double per_exchange = cycles / exchanges;
   const double seconds = cycles / kClockHz;
-  std::printf("[link budget] ClksPerBit %d (%.0f baud): %d exchanges in %.0f cycles, %.1f cycles "
-              "(%.2f us) per exchange, %.0f samples/s; one second of 12 x 100 Hz took %.3f s\n",
-              kSimClksPerBit, kClockHz / kSimClksPerBit, exchanges, cycles, per_exchange,
-              per_exchange / kClockHz * 1e6, kClockHz / per_exchange, seconds);
+  std::printf(
+      "[link budget] ClksPerBit %d (%.0f baud): %d exchanges in %.0f cycles, %.1f cycles "
+      "(%.2f us) per exchange, %.0f samples/s; one second of 12 x 100 Hz took %.3f s\n",
+      kSimClksPerBit, kClockHz / kSimClksPerBit, exchanges, cycles, per_exchange,
+      per_exchange / kClockHz * 1e6, kClockHz / per_exchange, seconds);
   const auto formula = static_cast<double>(exchange_cycles(kSimClksPerBit, model.latency_cycles()));
   EXPECT_NEAR(per_exchange, formula, 1.0) << "the formula of docs/board.md (link_budget.h)";
   const bool fits = formula * kChannels * kRate < kClockHz;

@@ -91,12 +91,13 @@ class BoardChannelsStream : public ::testing::Test {
     std::filesystem::create_directories(dir_);
     for (int seed : {0, 1, 2, 3}) {
       const std::string duration = seed == 0 ? "60" : "20";
-      const Outcome sim = run({"simulate", "--scenario", "bench", "--duration", duration, "--seed",
-                               std::to_string(seed), "--out", path("bench_" + std::to_string(seed))});
+      const Outcome sim =
+          run({"simulate", "--scenario", "bench", "--duration", duration, "--seed",
+               std::to_string(seed), "--out", path("bench_" + std::to_string(seed))});
       ASSERT_EQ(sim.status, 0) << sim.err;
     }
-    const Outcome cal = run({"calibrate", "--data", path("bench_0"), "--out",
-                             (dir_ / "model.json").string()});
+    const Outcome cal =
+        run({"calibrate", "--data", path("bench_0"), "--out", (dir_ / "model.json").string()});
     ASSERT_EQ(cal.status, 0) << cal.err;
   }
   static void TearDownTestSuite() {
@@ -104,14 +105,13 @@ class BoardChannelsStream : public ::testing::Test {
   }
   static std::string path(const std::string& name) { return (dir_ / (name + ".csv")).string(); }
 
-  static host::ChannelStreamSettings recordings(const Pty& pty,
-                                                const std::vector<int>& channels) {
+  static host::ChannelStreamSettings recordings(const Pty& pty, const std::vector<int>& channels) {
     host::ChannelStreamSettings s;
     s.port = pty.slave_name();
     for (std::size_t i = 0; i < channels.size(); ++i) {
       const int c = channels[i];
-      s.channels.push_back({c, path("bench_" + std::to_string(i % 3 + 1)),
-                            path("out_ch" + std::to_string(c)), ""});
+      s.channels.push_back(
+          {c, path("bench_" + std::to_string(i % 3 + 1)), path("out_ch" + std::to_string(c)), ""});
     }
     s.calibration = (dir_ / "model.json").string();
     s.coeffs = kBoardFilterJson;

@@ -83,7 +83,7 @@ class PtyBoard {
         ++index;
       }
       if (!bytes.empty()) bench.send(bytes);
-      bench.run(32u * kSimClksPerBit);
+      bench.run(std::uint64_t{32} * kSimClksPerBit);
       forward(bench);
       if (n <= 0 && !bench.sending()) {
         pollfd pfd{pty_.master(), POLLIN, 0};
