@@ -175,7 +175,8 @@ module basys3_top #(
   // Per-channel flags //
   // The core's sticky flags move into the board's pending bits as soon as they rise (and are
   // cleared in the core), so that a reply can clear its own channel's bits and keep the others.
-  // A frame dropped because the board is busy marks the channel its CHANNEL byte names.
+  // A sample frame dropped because the board is busy marks the channel its CHANNEL byte names (a
+  // dropped command marks none: its CHANNEL is only echoed).
   function automatic logic [NumChannels-1:0] channel_bit(logic [7:0] chan);
     channel_bit = '0;
     for (int c = 0; c < NumChannels; c++) channel_bit[c] = (32'(chan) == c);
@@ -188,7 +189,7 @@ module basys3_top #(
   assign overrun_event  = frame_valid && state_q != StIdle;
   assign link_err_event = frame_discard || rx_frame_err;
   assign ovr_now        = pend_ovr_q | core_overrun |
-                          (overrun_event ? channel_bit(frame_channel) : '0);
+                          (overrun_event && !frame_command ? channel_bit(frame_channel) : '0);
   assign sat_now        = pend_sat_q | core_saturation;
   assign reply_bit      = channel_bit(chan_q);
   assign core_clear     = |{core_overrun, core_saturation};

@@ -322,6 +322,27 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
   EXPECT_FALSE(bench_->leds() & kLedLinkError);
 }
 
+TEST_F(Basys3TopChannels, DroppedCommandMarksNoChannel) {
+  // A session reset that arrives while the board answers a sample is dropped like any frame: no
+  // reply, no reset (channel 0's filter goes on), led[1]; its CHANNEL byte (0) is only an echo,
+  // so channel 0's next reply has no OVERRUN.
+  std::mt19937 rng(6);
+  std::uint8_t seq = 0;
+  for (int n = 0; n < 60; ++n) expect_filtered(seq++, 0, wheel_word(0, n, rng));
+  const std::int16_t word = wheel_word(0, 60, rng);
+  const model::StepResult want = model_->step(word, 0);
+  std::vector<std::uint8_t> two = request(seq, 0, word);
+  const auto cmd = frame::encode_command(static_cast<std::uint8_t>(seq + 1), frame::kCommandReset);
+  const std::vector<std::uint8_t> command(cmd.begin(), cmd.end());
+  two.insert(two.end(), command.begin(), command.end());
+  const std::vector<frame::Reply> got = exchange(two);
+  ASSERT_EQ(got.size(), 1u) << "the command arrives during the reply: dropped";
+  EXPECT_EQ(got[0], (frame::Reply{seq, 0, static_cast<std::int16_t>(want.sample), 0}));
+  EXPECT_TRUE(bench_->leds() & kLedOverrun);
+  seq = static_cast<std::uint8_t>(seq + 2);
+  for (int n = 61; n < 80; ++n) expect_filtered(seq++, 0, wheel_word(0, n, rng));
+}
+
 TEST_F(Basys3TopChannels, ChannelsTheCoreLacksAreAnsweredAndNeverFiltered) {
   // 12 and 15 are beyond the core's channels in its 4-bit channel_i; 16 and 255 would alias to
   // channels 0 and 15 in four bits. None may reach the filter; the real channels stay exact.
