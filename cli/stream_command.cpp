@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "stream_command.h"
 
+#include <iterator>
 #include <ostream>
 #include <stdexcept>
+#include <vector>
 
 #include "cli.h"
 #include "input_error.h"
+#include "serial_port.h"
 
 namespace flange::cli {
 
@@ -21,8 +24,11 @@ CLI::App* add_stream_command(CLI::App& app, host::StreamSettings& options) {
   cmd->add_option("--out", options.out,
                   "output CSV: t_s,clearance_raw_mm,word_in,word_out,clearance_filt_mm,status")
       ->required();
-  cmd->add_option("--baud", options.baud, "baud rate (the bitstream's: 115200)")
-      ->default_val(options.baud);
+  cmd->add_option("--baud", options.baud,
+                  "baud rate: the bitstream's, 100 MHz / ClksPerBit (115200, 921600, ...)")
+      ->default_val(options.baud)
+      ->check(CLI::IsMember(
+          std::vector<int>(std::begin(host::kSerialBauds), std::end(host::kSerialBauds))));
   cmd->add_option("--timeout-ms", options.timeout_ms, "wait for each reply (1-60000 ms)")
       ->default_val(options.timeout_ms)
       ->check(CLI::Range(1, 60000));

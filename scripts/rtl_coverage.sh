@@ -32,14 +32,14 @@ if [[ ! -f $cache ]]; then
 fi
 
 # The test binaries: the co-simulation tests of every coefficient set tb/CMakeLists.txt adds, and
-# the two board tests.
+# the board tests (one channel and twelve; the link-budget test adds no coverage, only time).
 mapfile -t cosim < <(ninja -C "$build" -t targets all |
                      sed -n 's/^\(iir_core_cosim_[a-z0-9_]*_test\): .*/\1/p' | sort -u)
 if [[ ${#cosim[@]} -eq 0 ]]; then
   echo "rtl_coverage: no iir_core_cosim_*_test target in $build (a Ninja build is needed)" >&2
   exit 1
 fi
-targets=("${cosim[@]}" basys3_top_cosim_test board_stream_test)
+targets=("${cosim[@]}" basys3_top_cosim_test board_stream_test basys3_top_channels_test)
 echo "rtl_coverage: building ${#targets[@]} test binaries in $build (-j$jobs)"
 build_log=$build/rtl_coverage_build.log
 cmake --build "$build" --parallel "$jobs" --target "${targets[@]}" >"$build_log" ||

@@ -8,32 +8,22 @@
 
 #include <cerrno>
 #include <cstring>
+#include <iterator>
 #include <stdexcept>
 
 namespace flange::host {
 namespace {
 
 speed_t baud_constant(int baud) {
-  switch (baud) {
-    case 9600:
-      return B9600;
-    case 19200:
-      return B19200;
-    case 38400:
-      return B38400;
-    case 57600:
-      return B57600;
-    case 115200:
-      return B115200;
-    case 230400:
-      return B230400;
-    case 460800:
-      return B460800;
-    case 921600:
-      return B921600;
-    default:
-      throw std::runtime_error("unsupported baud rate " + std::to_string(baud));
+  // The termios constants of kSerialBauds, in the same order.
+  static constexpr speed_t kConstants[] = {B9600,    B19200,   B38400,   B57600,
+                                           B115200,  B230400,  B460800,  B921600,
+                                           B1000000, B2000000, B3000000, B4000000};
+  static_assert(std::size(kConstants) == std::size(kSerialBauds));
+  for (std::size_t i = 0; i < std::size(kSerialBauds); ++i) {
+    if (kSerialBauds[i] == baud) return kConstants[i];
   }
+  throw std::runtime_error("unsupported baud rate " + std::to_string(baud));
 }
 
 std::runtime_error system_error(const std::string& what, const std::string& device) {

@@ -11,10 +11,15 @@
 
 namespace flange::host {
 
+// The baud rates a SerialPort opens (termios constants; the Basys-3's FT2232HQ does all of them).
+// The board's rate is its bitstream's ClksPerBit: 100 MHz / baud (docs/board.md, "Link budget").
+inline constexpr int kSerialBauds[] = {9600,   19200,  38400,   57600,   115200,  230400,
+                                       460800, 921600, 1000000, 2000000, 3000000, 4000000};
+
 class SerialPort {
  public:
-  // Opens `device` (e.g. /dev/ttyUSB1) raw, 8N1, no flow control, at `baud` (one of the standard
-  // rates 9600..921600). Throws std::runtime_error naming the device and the system error.
+  // Opens `device` (e.g. /dev/ttyUSB1) raw, 8N1, no flow control, at `baud` (one of
+  // kSerialBauds). Throws std::runtime_error naming the device and the system error.
   SerialPort(const std::string& device, int baud);
   ~SerialPort();
   SerialPort(const SerialPort&) = delete;

@@ -2,24 +2,28 @@
 // Basys-3 top: the IIR core fed with samples over the USB-UART (framed, checked, resynchronised),
 // the filtered clearance on the 7-segment display, flags on the LEDs (docs/board.md).
 //
-// Link (docs/board.md): host -> board SYNC 0xA5, SEQ, SAMPLE_HI, SAMPLE_LO, CRC-8; board -> host
-// SYNC 0xA5, SEQ (echo), OUT_HI, OUT_LO, STATUS, CRC-8. The board handles one frame at a time:
-// it is busy from an accepted frame until the last stop bit of its reply. A frame accepted while
-// busy is dropped like the core drops an EN while busy (docs/core.md): it never enters the filter,
-// gets no reply, and the next reply's STATUS has the overrun bit. A frame that repeats the last
-// accepted SEQ is a retransmission: its stored reply is sent again and the filter does not run.
-// A command frame (CMD_SYNC 0x5A) with command 0x0001 restarts the session: the core is reset
-// (history, flags), the last SEQ forgotten, and the reply has STATUS bit 5 (session reset).
+// Link (docs/board.md): host -> board SYNC 0xA5, SEQ, CHANNEL, SAMPLE_HI, SAMPLE_LO, CRC-8;
+// board -> host SYNC 0xA5, SEQ (echo), CHANNEL (echo), OUT_HI, OUT_LO, STATUS, CRC-8. The board
+// handles one frame at a time: it is busy from an accepted frame until the last stop bit of its
+// reply. A frame accepted while busy is dropped like the core drops an EN while busy (docs/core.md):
+// it never enters the filter, gets no reply, and the next reply on its channel has the overrun bit.
+// A frame that repeats the last accepted SEQ and CHANNEL is a retransmission: its stored reply is
+// sent again and the filter does not run. A frame whose CHANNEL the core does not have is answered
+// with OUT = 0 and the channel-error bit and never enters the filter. OVERRUN and SATURATION in a
+// reply are those of its channel. A command frame (CMD_SYNC 0x5A) with command 0x0001 restarts
+// the session: the core is reset (every channel's history and flags), the last SEQ forgotten, and
+// the reply has STATUS bit 5 (session reset) and OUT = the number of channels.
 //
 // Controls: btnC resets everything; sw[0] = 1 bypasses the filter (the reply is the input sample,
 // the filter history is left alone); sw[1] = 1 shows the link-error count (hex) instead of the
-// clearance. LEDs: led[0] heartbeat, led[1] overrun, led[2] saturation, led[3] link error (all
-// three sticky since reset), led[4] bypass.
+// clearance. LEDs: led[0] heartbeat, led[1] overrun, led[2] saturation, led[3] link error, led[4]
+// bypass, led[5] channel error (led[1-3] and led[5] sticky since reset).
 `default_nettype none
 
 module basys3_top #(
   parameter RomFile          = "coeffs.mem",  // the coefficient set's coeffs.mem
-  parameter int ClksPerBit   = 868,           // 100 MHz / 115200 baud
+  // 100 MHz / baud, >= 4: 868 for 115200 baud, 109 for 921600 (docs/board.md, "Link budget").
+  parameter int ClksPerBit   = 868,
   parameter int RefreshBits  = 18,            // display: 655 us per digit
   parameter int DebounceBits = 20,            // button: 10.5 ms stable
   parameter int HeartbeatBit = 25             // led[0] toggles every 2^25 cycles (0.34 s)
@@ -35,9 +39,14 @@ module basys3_top #(
   output logic [3:0]  an_no
 );
 
-  localparam int SampleWidth = iir_coeffs_pkg::SampleWidth;
+  localparam int SampleWidth  = iir_coeffs_pkg::SampleWidth;
+  localparam int NumChannels  = iir_coeffs_pkg::NumChannels;
+  localparam int ChannelWidth = iir_coeffs_pkg::ChannelWidth;
   if (SampleWidth != 16) begin : g_bad_width
     $error("basys3_top: the link carries 16-bit samples");
+  end
+  if (NumChannels > 255) begin : g_bad_channels
+    $error("basys3_top: the session-reset reply reports the channel count in one byte (<= 255)");
   end
 
   // STATUS byte bits (docs/board.md).
@@ -47,6 +56,7 @@ module basys3_top #(
   localparam int StBypass     = 3;
   localparam int StRetransmit = 4;
   localparam int StSessionReset = 5;
+  localparam int StChannelError = 6;
   localparam logic [15:0] CMD_RESET = 16'h0001;
 
   // Reset: a power-on count (registers start at 0 in the FPGA), then the debounced button //
@@ -77,7 +87,7 @@ module basys3_top #(
   // UART and framing //
   logic [7:0]  rx_byte;
   logic        rx_valid, rx_frame_err;
-  logic [7:0]  frame_seq;
+  logic [7:0]  frame_seq, frame_channel;
   logic [15:0] frame_sample;
   logic        frame_valid, frame_command, frame_discard;
   logic [7:0]  tx_byte;
@@ -98,6 +108,7 @@ module basys3_top #(
     .byte_i       (rx_byte),
     .byte_valid_i (rx_valid),
     .seq_o        (frame_seq),
+    .channel_o    (frame_channel),
     .sample_o     (frame_sample),
     .frame_valid_o(frame_valid),
     .command_o    (frame_command),
@@ -105,26 +116,31 @@ module basys3_top #(
   );
 
   // The filter //
-  logic signed [15:0] core_out;
-  logic               core_valid, core_busy, core_overrun, core_saturation;
-  logic               core_strobe, core_clear, core_reset;
-  logic               core_rst_n_q;
+  logic signed [15:0]      core_out;
+  logic                    core_valid, core_busy, core_channel_error;
+  logic [ChannelWidth-1:0] core_channel;
+  logic [NumChannels-1:0]  core_overrun, core_saturation;
+  logic                    core_strobe, core_clear, core_reset;
+  logic                    core_rst_n_q;
+  logic                    frame_channel_ok;  // the frame's CHANNEL is one of the core's
 
   // The core's reset from a flip-flop: a reset decoded from a frame straight into the core's
   // synchronous resets costs about 250 LUTs (Yosys cannot use the plain FDRE reset pin then).
   always_ff @(posedge clk_i) core_rst_n_q <= rst_n && !core_reset;
 
-  // The board serves channel 0 of the core: its frames carry no channel number yet.
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [iir_coeffs_pkg::ChannelWidth-1:0] core_channel;
-  logic                                    core_channel_error;
-  /* verilator lint_on UNUSEDSIGNAL */
+  // All eight bits count: channel 16 must not reach channel 0 through a 4-bit channel_i.
+  assign frame_channel_ok = 32'(frame_channel) < NumChannels;
+  // The core is strobed only for a channel it has: with one channel that is 0, and a constant
+  // channel_i lets synthesis drop the core's channel logic (measurement_sos: 47 LUT6 sites, 18
+  // CARRY4).
+  logic [ChannelWidth-1:0] core_channel_in;
+  assign core_channel_in = NumChannels == 1 ? '0 : frame_channel[ChannelWidth-1:0];
 
   iir_core #(.RomFile(RomFile)) u_core (
     .clk_i,
     .rst_ni         (core_rst_n_q),
     .sample_i       (frame_sample),
-    .channel_i      ('0),
+    .channel_i      (core_channel_in),
     .sample_valid_i (core_strobe),
     .sample_o       (core_out),
     .channel_o      (core_channel),
@@ -140,40 +156,78 @@ module basys3_top #(
   typedef enum logic [1:0] {StIdle, StCore, StReply, StWait} state_e;
 
   state_e      state_q, state_d;
-  logic [7:0]  seq_q, seq_d;          // the SEQ being answered (and the last accepted one)
+  logic [7:0]  seq_q, seq_d;            // the SEQ being answered (and the last accepted one)
+  logic [7:0]  chan_q, chan_d;          // its CHANNEL
   logic        have_seq_q, have_seq_d;
-  logic [15:0] out_q, out_d;          // OUT of the reply being formed or sent
+  logic [15:0] out_q, out_d;            // the last filtered or bypassed sample: OUT, display
   logic [7:0]  status_q, status_d;
-  logic        bypass_q, bypass_d;    // the frame being answered was bypassed
-  logic        overrun_q, overrun_d;  // pending: reported in the next reply
-  logic        link_err_q, link_err_d;
-  logic [2:0]  sticky_q, sticky_d;    // LEDs: overrun, saturation, link error since reset
+  logic [7:0]  reply_status;            // STATUS of a new reply
+  logic [15:0] reply_out;               // OUT of the reply
+  logic        bypass_q, bypass_d;      // the frame being answered was bypassed
+  logic        chan_err_q, chan_err_d;  // the frame being answered names no channel of the core
+  logic        link_err_q, link_err_d;  // pending: reported in the next reply
+  logic [3:0]  sticky_q, sticky_d;      // LEDs: overrun, saturation, link and channel error
   logic [15:0] err_count_q, err_count_d;
   logic        send, send_q, retransmit_q, retransmit_d;
   logic        session_reset_q, session_reset_d;  // the reply being formed answers a reset
   logic        enc_busy;
-  logic        overrun_event, link_err_event;
+
+  // Per-channel flags //
+  // The core's sticky flags move into the board's pending bits as soon as they rise (and are
+  // cleared in the core), so that a reply can clear its own channel's bits and keep the others.
+  // A sample frame dropped because the board is busy marks the channel its CHANNEL byte names (a
+  // dropped command marks none: its CHANNEL is only echoed).
+  function automatic logic [NumChannels-1:0] channel_bit(logic [7:0] chan);
+    channel_bit = '0;
+    for (int c = 0; c < NumChannels; c++) channel_bit[c] = (32'(chan) == c);
+  endfunction
+
+  logic                   overrun_event, link_err_event;
+  logic [NumChannels-1:0] ovr_now, sat_now, reply_bit;
+  logic [NumChannels-1:0] pend_ovr_q, pend_ovr_d, pend_sat_q, pend_sat_d;
 
   assign overrun_event  = frame_valid && state_q != StIdle;
   assign link_err_event = frame_discard || rx_frame_err;
+  assign ovr_now        = pend_ovr_q | core_overrun |
+                          (overrun_event && !frame_command ? channel_bit(frame_channel) : '0);
+  assign sat_now        = pend_sat_q | core_saturation;
+  assign reply_bit      = channel_bit(chan_q);
+  assign core_clear     = |{core_overrun, core_saturation};
+
+  // A new reply's STATUS: its channel's flags (every channel's for a session reset, which clears
+  // them all), the link errors since the previous reply, and what this reply is.
+  always_comb begin
+    reply_status                 = '0;
+    reply_status[StOverrun]      = session_reset_q ? |ovr_now : |(ovr_now & reply_bit);
+    reply_status[StSaturation]   = session_reset_q ? |sat_now : |(sat_now & reply_bit);
+    reply_status[StLinkError]    = link_err_q || link_err_event;
+    reply_status[StBypass]       = bypass_q;
+    reply_status[StSessionReset] = session_reset_q;
+    reply_status[StChannelError] = chan_err_q;
+  end
+  assign reply_out = session_reset_q ? 16'(NumChannels) : chan_err_q ? '0 : out_q;
+  // The LEDs light at the event: a channel that is never answered again still shows its overrun.
+  assign sticky_d    = sticky_q | {state_q == StReply && chan_err_q, link_err_event,
+                                   |core_saturation, overrun_event || |core_overrun};
+  assign err_count_d = err_count_q + {15'd0, link_err_event && err_count_q != 16'hffff};
 
   always_comb begin
-    state_d      = state_q;
-    seq_d        = seq_q;
-    have_seq_d   = have_seq_q;
-    out_d        = out_q;
-    status_d     = status_q;
-    bypass_d     = bypass_q;
-    retransmit_d = retransmit_q;
+    state_d         = state_q;
+    seq_d           = seq_q;
+    chan_d          = chan_q;
+    have_seq_d      = have_seq_q;
+    out_d           = out_q;
+    status_d        = status_q;
+    bypass_d        = bypass_q;
+    chan_err_d      = chan_err_q;
+    retransmit_d    = retransmit_q;
     session_reset_d = session_reset_q;
-    overrun_d    = overrun_q || overrun_event;
-    link_err_d   = link_err_q || link_err_event;
-    sticky_d     = sticky_q;
-    err_count_d  = err_count_q + {15'd0, link_err_event && err_count_q != 16'hffff};
-    core_strobe  = 1'b0;
-    core_clear   = 1'b0;
-    core_reset   = 1'b0;
-    send         = 1'b0;
+    pend_ovr_d      = ovr_now;
+    pend_sat_d      = sat_now;
+    link_err_d      = link_err_q || link_err_event;
+    core_strobe     = 1'b0;
+    core_reset      = 1'b0;
+    send            = 1'b0;
     unique case (state_q)
       StIdle: begin
         if (frame_valid && frame_command) begin
@@ -181,24 +235,30 @@ module basys3_top #(
           if (frame_sample == CMD_RESET) begin
             core_reset      = 1'b1;  // the core is idle with zero history from the next cycle
             seq_d           = frame_seq;
+            chan_d          = frame_channel;
             have_seq_d      = 1'b0;  // the next sample frame is new whatever its SEQ
             out_d           = '0;
             bypass_d        = 1'b0;
+            chan_err_d      = 1'b0;
             retransmit_d    = 1'b0;
             session_reset_d = 1'b1;
             state_d         = StReply;
           end
         end else if (frame_valid) begin
           session_reset_d = 1'b0;
-          if (have_seq_q && frame_seq == seq_q) begin
-            retransmit_d = 1'b1;  // the reply of this SEQ went missing: send it again
+          if (have_seq_q && frame_seq == seq_q && frame_channel == chan_q) begin
+            retransmit_d = 1'b1;  // the reply of this frame went missing: send it again
             state_d      = StReply;
           end else begin
             seq_d        = frame_seq;
+            chan_d       = frame_channel;
             have_seq_d   = 1'b1;
-            bypass_d     = bypass;
+            bypass_d     = frame_channel_ok && bypass;
+            chan_err_d   = !frame_channel_ok;
             retransmit_d = 1'b0;
-            if (bypass) begin
+            if (!frame_channel_ok) begin
+              state_d = StReply;  // answered with the channel-error bit, never filtered
+            end else if (bypass) begin
               out_d   = frame_sample;
               state_d = StReply;
             end else begin
@@ -220,16 +280,10 @@ module basys3_top #(
         if (retransmit_q) begin
           status_d = status_q | 8'(1 << StRetransmit);  // pending flags wait for a new reply
         end else begin
-          status_d = '0;
-          status_d[StOverrun]    = overrun_q || overrun_event || core_overrun;
-          status_d[StSaturation] = core_saturation;
-          status_d[StLinkError]  = link_err_q || link_err_event;
-          status_d[StBypass]     = bypass_q;
-          status_d[StSessionReset] = session_reset_q;
-          overrun_d              = 1'b0;
-          link_err_d             = 1'b0;
-          core_clear             = 1'b1;  // a core flag event at this edge survives the clear
-          sticky_d               = sticky_q | status_d[2:0];
+          status_d   = reply_status;
+          link_err_d = 1'b0;
+          pend_ovr_d = session_reset_q ? '0 : ovr_now & ~reply_bit;
+          pend_sat_d = session_reset_q ? '0 : sat_now & ~reply_bit;
         end
       end
       StWait: begin
@@ -241,35 +295,42 @@ module basys3_top #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_n) begin
-      state_q      <= StIdle;
-      seq_q        <= '0;
-      have_seq_q   <= 1'b0;
-      out_q        <= '0;
-      status_q     <= '0;
-      bypass_q     <= 1'b0;
-      retransmit_q <= 1'b0;
+      state_q         <= StIdle;
+      seq_q           <= '0;
+      chan_q          <= '0;
+      have_seq_q      <= 1'b0;
+      out_q           <= '0;
+      status_q        <= '0;
+      bypass_q        <= 1'b0;
+      chan_err_q      <= 1'b0;
+      retransmit_q    <= 1'b0;
       session_reset_q <= 1'b0;
-      overrun_q    <= 1'b0;
-      link_err_q   <= 1'b0;
-      sticky_q     <= '0;
-      err_count_q  <= '0;
+      pend_ovr_q      <= '0;
+      pend_sat_q      <= '0;
+      link_err_q      <= 1'b0;
+      sticky_q        <= '0;
+      err_count_q     <= '0;
     end else begin
-      state_q      <= state_d;
-      seq_q        <= seq_d;
-      have_seq_q   <= have_seq_d;
-      out_q        <= out_d;
-      status_q     <= status_d;
-      bypass_q     <= bypass_d;
-      retransmit_q <= retransmit_d;
+      state_q         <= state_d;
+      seq_q           <= seq_d;
+      chan_q          <= chan_d;
+      have_seq_q      <= have_seq_d;
+      out_q           <= out_d;
+      status_q        <= status_d;
+      bypass_q        <= bypass_d;
+      chan_err_q      <= chan_err_d;
+      retransmit_q    <= retransmit_d;
       session_reset_q <= session_reset_d;
-      overrun_q    <= overrun_d;
-      link_err_q   <= link_err_d;
-      sticky_q     <= sticky_d;
-      err_count_q  <= err_count_d;
+      pend_ovr_q      <= pend_ovr_d;
+      pend_sat_q      <= pend_sat_d;
+      link_err_q      <= link_err_d;
+      sticky_q        <= sticky_d;
+      err_count_q     <= err_count_d;
     end
   end
 
-  // The encoder latches SEQ, OUT and STATUS in the cycle after StReply (send is registered).
+  // The encoder latches SEQ, CHANNEL, OUT and STATUS in the cycle after StReply (send is
+  // registered).
   always_ff @(posedge clk_i) begin
     if (!rst_n) send_q <= 1'b0;
     else        send_q <= send;
@@ -279,7 +340,8 @@ module basys3_top #(
     .clk_i,
     .rst_ni    (rst_n),
     .seq_i     (seq_q),
-    .sample_i  (out_q),
+    .channel_i (chan_q),
+    .sample_i  (reply_out),
     .status_i  (status_q),
     .send_i    (send_q),
     .busy_o    (enc_busy),
@@ -330,16 +392,21 @@ module basys3_top #(
     else        beat_q <= beat_d;
   end
 
-  assign led_o = {11'd0, bypass, sticky_q, beat_q[HeartbeatBit]};
+  assign led_o = {10'd0, sticky_q[3], bypass, sticky_q[2:0], beat_q[HeartbeatBit]};
 
-  // sw[15:2] are unused; core_busy only feeds the assertion.
+  // sw[15:2] are unused; core_busy, core_channel and core_channel_error only feed the assertions.
   logic unused_sw;
-  assign unused_sw = ^{sw_i[15:2], core_busy};
+  assign unused_sw = ^{sw_i[15:2], core_busy, core_channel, core_channel_error};
 
 `ifndef SYNTHESIS
-  // The control FSM strobes the core only in StIdle, after the previous output: never while busy.
+  // The control FSM strobes the core only in StIdle, after the previous output: never while busy,
+  // and only with a channel the core has; the output it waits for is of the frame's channel.
   always @(posedge clk_i) begin
     if (rst_n && core_strobe && core_busy) $error("basys3_top: core strobed while busy");
+    if (rst_n && core_channel_error) $error("basys3_top: core strobed with a channel it lacks");
+    if (rst_n && state_q == StCore && core_valid && core_channel != chan_q[ChannelWidth-1:0]) begin
+      $error("basys3_top: core output of another channel");
+    end
   end
 `endif
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Host -> board frame decoder: a sliding window over the last five received bytes, accepted when
-// it reads SYNC, SEQ, SAMPLE_HI, SAMPLE_LO, CRC-8(SEQ, SAMPLE_HI, SAMPLE_LO) (docs/board.md).
-// A command frame has CMD_SYNC in place of SYNC and a 16-bit command in place of the sample.
+// Host -> board frame decoder: a sliding window over the last six received bytes, accepted when
+// it reads SYNC, SEQ, CHANNEL, SAMPLE_HI, SAMPLE_LO, CRC-8(SEQ, CHANNEL, SAMPLE_HI, SAMPLE_LO)
+// (docs/board.md). A command frame has CMD_SYNC in place of SYNC and a 16-bit command in place of
+// the sample.
 //
 // The window is checked after every byte, so the decoder resynchronises on the first intact
 // frame after a lost, extra or corrupted byte. An accepted frame empties the window (its bytes
@@ -15,6 +16,7 @@ module frame_decoder (
   input  logic [7:0]  byte_i,
   input  logic        byte_valid_i,
   output logic [7:0]  seq_o,         // valid with frame_valid_o
+  output logic [7:0]  channel_o,     // valid with frame_valid_o (any value: the top checks it)
   output logic [15:0] sample_o,      // valid with frame_valid_o
   output logic        frame_valid_o, // one cycle per accepted frame
   output logic        command_o,     // with frame_valid_o: a command frame (sample_o: the command)
@@ -23,9 +25,9 @@ module frame_decoder (
 
   localparam logic [7:0] SYNC     = 8'hA5;
   localparam logic [7:0] CMD_SYNC = 8'h5A;
-  localparam int FrameBytes = 5;
+  localparam int FrameBytes = 6;
 
-  // window_q[39:32] is the oldest byte, window_q[7:0] the newest.
+  // window_q[47:40] is the oldest byte, window_q[7:0] the newest.
   logic [8*FrameBytes-1:0] window_q, window_d;
   logic [2:0]              fill_q, fill_d;     // bytes in the window that may still be used
   logic                    fresh_q, fresh_d;   // a byte arrived in the previous cycle
@@ -33,13 +35,13 @@ module frame_decoder (
   logic [7:0]              crc;
   logic                    match;
 
-  crc8 #(.NumBytes(3)) u_crc (
-    .data_i(window_q[31:8]),
+  crc8 #(.NumBytes(4)) u_crc (
+    .data_i(window_q[39:8]),
     .crc_o (crc)
   );
 
   assign match = fresh_q && fill_q == 3'(FrameBytes) &&
-                 (window_q[39:32] == SYNC || window_q[39:32] == CMD_SYNC) && window_q[7:0] == crc;
+                 (window_q[47:40] == SYNC || window_q[47:40] == CMD_SYNC) && window_q[7:0] == crc;
 
   always_comb begin
     window_d  = window_q;
@@ -70,10 +72,11 @@ module frame_decoder (
     end
   end
 
-  assign seq_o         = window_q[31:24];
+  assign seq_o         = window_q[39:32];
+  assign channel_o     = window_q[31:24];
   assign sample_o      = window_q[23:8];
   assign frame_valid_o = match;
-  assign command_o     = window_q[39:32] == CMD_SYNC;
+  assign command_o     = window_q[47:40] == CMD_SYNC;
   assign discard_o     = discard_q;
 
 `ifndef SYNTHESIS

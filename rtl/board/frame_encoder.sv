@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Board -> host frame encoder: SYNC, SEQ, OUT_HI, OUT_LO, STATUS, CRC-8(SEQ..STATUS), handed
-// byte by byte to the UART transmitter (docs/board.md).
+// Board -> host frame encoder: SYNC, SEQ, CHANNEL, OUT_HI, OUT_LO, STATUS, CRC-8(SEQ..STATUS),
+// handed byte by byte to the UART transmitter (docs/board.md).
 `default_nettype none
 
 module frame_encoder (
   input  logic        clk_i,
   input  logic        rst_ni,        // synchronous, active low
   input  logic [7:0]  seq_i,
+  input  logic [7:0]  channel_i,
   input  logic [15:0] sample_i,
   input  logic [7:0]  status_i,
   input  logic        send_i,        // one cycle; taken only while busy_o is low
@@ -17,15 +18,15 @@ module frame_encoder (
 );
 
   localparam logic [7:0] SYNC = 8'hA5;
-  localparam int FrameBytes = 6;
+  localparam int FrameBytes = 7;
 
-  logic [8*FrameBytes-1:0] frame_q, frame_d;  // next byte to send in [47:40]
+  logic [8*FrameBytes-1:0] frame_q, frame_d;  // next byte to send in [55:48]
   logic [2:0]              left_q, left_d;    // bytes still to hand over
   logic                    draining_q, draining_d;  // last byte handed over, not yet sent
   logic [7:0]              crc;
 
-  crc8 #(.NumBytes(4)) u_crc (
-    .data_i({seq_i, sample_i, status_i}),
+  crc8 #(.NumBytes(5)) u_crc (
+    .data_i({seq_i, channel_i, sample_i, status_i}),
     .crc_o (crc)
   );
 
@@ -35,7 +36,7 @@ module frame_encoder (
     draining_d = draining_q;
     if (left_q == '0 && !draining_q) begin
       if (send_i) begin
-        frame_d = {SYNC, seq_i, sample_i, status_i, crc};
+        frame_d = {SYNC, seq_i, channel_i, sample_i, status_i, crc};
         left_d  = 3'(FrameBytes);
       end
     end else if (left_q != '0) begin

@@ -2,17 +2,22 @@
 # Builds the Basys-3 bitstream with Vivado in batch mode (non-project flow) from the same sources
 # and constraints the Verilator and Yosys flows use (docs/board.md, "Program the board").
 #
-#   vivado -mode batch -source rtl/board/vivado_build.tcl -tclargs [COEFF_DIR] [OUT_DIR]
+#   vivado -mode batch -source rtl/board/vivado_build.tcl -tclargs [COEFF_DIR] [OUT_DIR] [CLKS_PER_BIT]
 #
-# COEFF_DIR: coefficient set folder (default coeffs/measurement_sos); OUT_DIR: where the
-# bitstream and reports go (default build/vivado). Run from the repository root. Writes
-# OUT_DIR/basys3_top.bit, utilisation and timing reports; exits non-zero when timing fails.
+# COEFF_DIR: coefficient set folder (default coeffs/measurement_sos; a multichannel set such as
+# tests/data/coeffs/loco_ch12 gives a board with that many channels); OUT_DIR: where the bitstream
+# and reports go (default build/vivado); CLKS_PER_BIT: 100 MHz / baud, the UART's rate (default 868,
+# 115200 baud; 109 for 921600: docs/board.md, "Link budget"; `flange stream --baud` must match).
+# Run from the repository root. Writes OUT_DIR/basys3_top.bit, utilisation and timing reports;
+# exits non-zero when timing fails.
 
 set root [file normalize [file join [file dirname [info script]] .. ..]]
 set coeffs [file normalize [file join $root coeffs measurement_sos]]
 set out [file normalize [file join $root build vivado]]
 if {$argc >= 1} { set coeffs [file normalize [lindex $argv 0]] }
 if {$argc >= 2} { set out [file normalize [lindex $argv 1]] }
+set clks_per_bit 868
+if {$argc >= 3} { set clks_per_bit [lindex $argv 2] }
 file mkdir $out
 
 set part xc7a35tcpg236-1
@@ -27,7 +32,7 @@ read_xdc [file join $root rtl board basys3.xdc]
 
 # The ROM image is read by $readmemh at elaboration: pass its absolute path.
 synth_design -top basys3_top -part $part \
-  -generic "RomFile=\"[file join $coeffs coeffs.mem]\""
+  -generic "RomFile=\"[file join $coeffs coeffs.mem]\"" -generic "ClksPerBit=$clks_per_bit"
 report_utilization -file [file join $out utilization_synth.rpt]
 opt_design
 place_design

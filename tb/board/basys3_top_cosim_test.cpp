@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The whole Basys-3 top in Verilator, driven through its pins: frames go in bit by bit on the RX
 // pin, replies are decoded bit by bit from the TX pin, and every returned sample must equal the
-// bit-accurate model (model::IirCore::step) of the measurement_sos filter. Clean, corrupted
-// (dropped byte, flipped bit, garbage, framing error), burst and retransmitted streams; bypass,
-// reset, display and LEDs. Reproduce one case with
+// bit-accurate model (model::IirCore::step) of the measurement_sos filter (one channel). Clean,
+// corrupted (dropped byte, flipped bit, garbage, framing error), burst and retransmitted streams;
+// channels the core lacks; bypass, reset, display and LEDs. The 12-channel board:
+// basys3_top_channels_test.cpp. Reproduce one case with
 //   build/tb/basys3_top_cosim_test --gtest_filter='Basys3Top.<Name>'
 // (FLANGE_TRACE=1 writes logs/basys3_<Name>.fst).
 #include <gtest/gtest.h>
@@ -32,6 +33,7 @@ constexpr std::uint16_t kLedOverrun = 1u << 1;
 constexpr std::uint16_t kLedSaturation = 1u << 2;
 constexpr std::uint16_t kLedLinkError = 1u << 3;
 constexpr std::uint16_t kLedBypass = 1u << 4;
+constexpr std::uint16_t kLedChannelError = 1u << 5;
 
 // What the display must show for a Q1.15 word: mm = 6 + 8 word / 2^15 to two decimals, rounded
 // half up; computed in double (every value involved is exact in binary), independently of the
@@ -63,8 +65,7 @@ class Basys3Top : public ::testing::Test {
              ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".fst");
     }
     bench_ = std::make_unique<BoardBench>(fst);
-    model_ = std::make_unique<model::IirCore>(
-        model::load_core_config(FLANGE_SOURCE_DIR "/coeffs/measurement_sos/filter.json"));
+    model_ = std::make_unique<model::IirCore>(model::load_core_config(kBoardFilterJson));
   }
   void TearDown() override { EXPECT_FALSE(bench_->assertion_failed()) << "an RTL assertion fired"; }
 
@@ -89,8 +90,9 @@ class Basys3Top : public ::testing::Test {
     return replies();
   }
 
-  static std::vector<std::uint8_t> request(std::uint8_t seq, std::int16_t sample) {
-    const auto f = frame::encode_request(seq, sample);
+  static std::vector<std::uint8_t> request(std::uint8_t seq, std::int16_t sample,
+                                           std::uint8_t channel = 0) {
+    const auto f = frame::encode_request({seq, channel, sample});
     return {f.begin(), f.end()};
   }
 
@@ -102,6 +104,7 @@ class Basys3Top : public ::testing::Test {
     EXPECT_EQ(got.size(), 1u) << "seq " << int{seq};
     if (got.size() != 1u) return want.saturated;
     EXPECT_EQ(got[0].seq, seq);
+    EXPECT_EQ(got[0].channel, 0);
     EXPECT_EQ(got[0].sample, want.sample) << "seq " << int{seq} << " sample " << sample;
     const std::uint8_t status =
         static_cast<std::uint8_t>((want.saturated ? frame::kStatusSaturation : 0) | extra_status);
@@ -139,11 +142,20 @@ TEST(Basys3TopLink, Crc8IsTheSmbusCrc) {
   const std::string check = "123456789";  // the CRC catalogue's check input
   const std::vector<std::uint8_t> bytes(check.begin(), check.end());
   EXPECT_EQ(frame::crc8(bytes), 0xF4);
-  const frame::Reply reply{7, -12345, frame::kStatusOverrun};
+  const frame::Reply reply{7, 11, -12345, frame::kStatusOverrun};
   auto encoded = frame::encode_reply(reply);
   EXPECT_EQ(frame::decode_reply(encoded), reply);
-  encoded[3] ^= 0x10;
-  EXPECT_FALSE(frame::decode_reply(encoded));
+  for (std::size_t byte = 1; byte < encoded.size(); ++byte) {  // the CRC covers CHANNEL too
+    auto damaged = encoded;
+    damaged[byte] ^= 0x10;
+    EXPECT_FALSE(frame::decode_reply(damaged)) << "byte " << byte;
+  }
+  // Request: SYNC, SEQ, CHANNEL, SAMPLE_HI, SAMPLE_LO, CRC-8 of the four between.
+  const auto request = frame::encode_request({0x12, 0x03, -2});
+  const std::vector<std::uint8_t> middle = {0x12, 0x03, 0xFF, 0xFE};
+  EXPECT_EQ(request[0], frame::kSync);
+  EXPECT_TRUE(std::equal(middle.begin(), middle.end(), request.begin() + 1));
+  EXPECT_EQ(request[5], frame::crc8(middle));
 }
 
 TEST_F(Basys3Top, CleanStreamMatchesModelBitForBit) {
@@ -174,22 +186,22 @@ TEST_F(Basys3Top, FullScaleSaturatesAndTheStatusSaysSo) {
 TEST_F(Basys3Top, DroppedByteLosesOnlyThatFrame) {
   for (int n = 0; n < 10; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(7.5));
   std::vector<std::uint8_t> broken = request(10, clearance_word(9.0));
-  broken.erase(broken.begin() + 2);  // SAMPLE_HI lost on the wire
+  broken.erase(broken.begin() + 3);  // SAMPLE_HI lost on the wire
   EXPECT_TRUE(exchange(broken).empty()) << "a broken frame must get no reply";
   // The next intact frame is answered at once; its STATUS reports the link error.
   expect_filtered(11, clearance_word(7.6), frame::kStatusLinkError);
   expect_filtered(12, clearance_word(7.7));
   EXPECT_TRUE(bench_->leds() & kLedLinkError);
-  // sw[1]: the display shows the link-error count: the 4 bytes of the broken frame.
+  // sw[1]: the display shows the link-error count: the 5 bytes of the broken frame.
   bench_->set_switches(0x2);
   bench_->run(4u << kSimRefreshBits);
   bench_->run(4u << kSimRefreshBits);
-  EXPECT_EQ(bench_->display(), "0004");
+  EXPECT_EQ(bench_->display(), "0005");
 }
 
 TEST_F(Basys3Top, FlippedBitsAreNeverReturnedAsValid) {
   std::mt19937 rng(9);
-  std::uniform_int_distribution<int> byte_pick(0, 4);
+  std::uniform_int_distribution<int> byte_pick(0, 5);
   std::uniform_int_distribution<int> bit_pick(0, 7);
   std::uint8_t seq = 0;
   int corrupted = 0;
@@ -234,7 +246,7 @@ TEST_F(Basys3Top, GarbageBetweenFramesIncludingSyncBytes) {
 }
 
 TEST_F(Basys3Top, BurstFasterThanTheBoardIsDroppedAndReported) {
-  // Back-to-back frames: a reply (6 bytes) takes longer than a request (5 bytes), so frames
+  // Back-to-back frames: a reply (7 bytes) takes longer than a request (6 bytes), so frames
   // arrive while the board is still answering the previous one; those are dropped, as the core
   // drops an EN while busy, and the next reply carries the overrun bit.
   std::vector<std::uint8_t> burst;
@@ -268,6 +280,33 @@ TEST_F(Basys3Top, BurstFasterThanTheBoardIsDroppedAndReported) {
   EXPECT_EQ(got.back().seq, 24);
   EXPECT_TRUE(bench_->leds() & kLedOverrun);
   EXPECT_FALSE(bench_->leds() & kLedLinkError);
+}
+
+TEST_F(Basys3Top, ChannelTheCoreLacksIsAnsweredAndNeverFiltered) {
+  // The measurement filter has one channel. Channel 2 would be channel 0 in the core's 1-bit
+  // channel_i: the board compares all eight bits of CHANNEL.
+  for (int n = 0; n < 5; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(8.0));
+  expect_display_shows(last_out_);
+  std::uint8_t seq = 5;
+  for (const int c : {1, 2, 128, 255}) {
+    const auto channel = static_cast<std::uint8_t>(c);
+    const std::vector<frame::Reply> got = exchange(request(seq, clearance_word(12.0), channel));
+    ASSERT_EQ(got.size(), 1u) << "channel " << int{channel};
+    EXPECT_EQ(got[0], (frame::Reply{seq, channel, 0, frame::kStatusChannelError}));
+    ++seq;
+  }
+  EXPECT_TRUE(bench_->leds() & kLedChannelError);
+  expect_display_shows(last_out_);  // the display keeps the last filtered sample
+  // A lost reply to it is sent again like any other; the filter never sees the sample.
+  const std::vector<frame::Reply> again = exchange(request(8, clearance_word(12.0), 255));
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_EQ(again[0].status, frame::kStatusChannelError | frame::kStatusRetransmit);
+  // The last SEQ with another CHANNEL is a new frame, not a retransmission.
+  expect_filtered(8, clearance_word(8.0));
+  for (int n = 9; n < 14; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(8.0));
+  EXPECT_EQ(bench_->leds() & (kLedOverrun | kLedSaturation | kLedLinkError), 0);
+  bench_->press_reset();
+  EXPECT_FALSE(bench_->leds() & kLedChannelError);
 }
 
 TEST_F(Basys3Top, RetransmissionRepeatsTheReplyWithoutFilteringAgain) {
@@ -328,8 +367,7 @@ TEST_F(Basys3Top, CentreButtonResetsFilterFlagsAndDisplay) {
   bench_->press_reset();
   EXPECT_EQ(bench_->leds() & (kLedOverrun | kLedSaturation | kLedLinkError), 0);
   expect_display_shows(0);  // " 6.00": the output register is 0 after reset
-  model_ = std::make_unique<model::IirCore>(
-      model::load_core_config(FLANGE_SOURCE_DIR "/coeffs/measurement_sos/filter.json"));
+  model_ = std::make_unique<model::IirCore>(model::load_core_config(kBoardFilterJson));
   // After reset the board has no last SEQ: 20 again is a new sample, not a retransmission.
   for (int n = 20; n < 30; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(9.0));
 }
@@ -366,12 +404,12 @@ TEST_F(Basys3Top, SessionResetCommandRestartsTheFilter) {
   const std::vector<frame::Reply> got = exchange({cmd.begin(), cmd.end()});
   ASSERT_EQ(got.size(), 1u);
   EXPECT_EQ(got[0].seq, 29);
-  EXPECT_EQ(got[0].sample, 0);
+  EXPECT_EQ(got[0].channel, 0);
+  EXPECT_EQ(got[0].sample, 1) << "OUT of a session reset: the core's channel count";
   EXPECT_EQ(got[0].status, frame::kStatusSessionReset);
   expect_display_shows(0);
   // A fresh model from here; SEQ 29 again is a new sample after the reset.
-  model_ = std::make_unique<model::IirCore>(
-      model::load_core_config(FLANGE_SOURCE_DIR "/coeffs/measurement_sos/filter.json"));
+  model_ = std::make_unique<model::IirCore>(model::load_core_config(kBoardFilterJson));
   for (int n = 29; n < 40; ++n) expect_filtered(static_cast<std::uint8_t>(n), clearance_word(7.0));
   // An unknown command, or a reset with a bad CRC, is not answered and changes nothing.
   auto unknown = frame::encode_command(40, 0x1234);

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
-// The Verilated Basys-3 top (rtl/board/basys3_top.sv, measurement_sos) with its pins driven and
-// read like the board's: the UART RX pin bit by bit, the TX pin decoded bit by bit, the switches,
-// the centre button, the LEDs and the multiplexed 7-segment display.
+// The Verilated Basys-3 top (rtl/board/basys3_top.sv) with its pins driven and read like the
+// board's: the UART RX pin bit by bit, the TX pin decoded bit by bit, the switches, the centre
+// button, the LEDs and the multiplexed 7-segment display.
 //
-// Simulation parameters (tb/CMakeLists.txt): ClksPerBit = 8 (a UART bit is 8 cycles instead of
-// 868, so a frame and its reply take about 900 cycles), RefreshBits = 4 (a display digit is lit
-// for 4 cycles), DebounceBits = 3, HeartbeatBit = 6. Everything else is the synthesised RTL.
+// Each board build (tb/CMakeLists.txt, flange_add_board) has its coefficient set
+// (kBoardFilterJson) and ClksPerBit (kSimClksPerBit: 8 for measurement_sos and loco_ch12, so that a
+// frame and its reply take about 1100 cycles; 109, the real 921600 baud, for the link-budget build
+// of loco_ch12), and RefreshBits = 4
+// (a display digit is lit for 4 cycles), DebounceBits = 3, HeartbeatBit = 6. Everything else is
+// the synthesised RTL.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +20,9 @@
 
 namespace flange::tb::board {
 
-inline constexpr int kSimClksPerBit = 8;
+inline constexpr int kSimClksPerBit = FLANGE_BOARD_CLKS_PER_BIT;
+inline constexpr const char* kBoardSet = FLANGE_BOARD_SET;
+inline constexpr const char* kBoardFilterJson = FLANGE_BOARD_FILTER_JSON;
 inline constexpr int kSimRefreshBits = 4;
 inline constexpr int kSimHeartbeatBit = 6;
 

@@ -1,29 +1,23 @@
 // SPDX-License-Identifier: MIT
-// `flange stream` end to end against the Verilated Basys-3 top attached to a pseudo-terminal: the
-// command opens the pty's slave with the same termios code it uses for /dev/ttyUSB1, and a thread
-// moves bytes between the pty's master and the board's RX/TX pins (bit by bit in the simulation).
+// `flange stream` end to end against the Verilated Basys-3 top attached to a pseudo-terminal
+// (pty_board.h): the command opens the pty's slave with the same termios code it uses for
+// /dev/ttyUSB1.
 // Every filtered word that comes back must equal model::IirCore::step on the word sent.
 // Reproduce: build/tb/board_stream_test --gtest_filter='BoardStream.<Name>'
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <poll.h>
-#include <termios.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
-#include <cstdlib>
 #include <fstream>
-#include <functional>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
-#include "board_bench.h"
+#include "board_frame.h"
 #include "cli.h"
 #include "filter_json.h"
 #include "iir_core.h"
+#include "pty_board.h"
 
 namespace flange::tb::board {
 namespace {
@@ -38,88 +32,6 @@ Outcome run(const std::vector<std::string>& args) {
   const int status = cli::run_flange(args, out, err);
   return {status, out.str(), err.str()};
 }
-
-// A pseudo-terminal; the slave stays open (raw) for the test's lifetime so that the master never
-// sees a hang-up between the command's open and close.
-class Pty {
- public:
-  Pty() {
-    master_ = ::posix_openpt(O_RDWR | O_NOCTTY);
-    if (master_ < 0 || ::grantpt(master_) != 0 || ::unlockpt(master_) != 0) {
-      throw std::runtime_error("posix_openpt failed");
-    }
-    slave_name_ = ::ptsname(master_);
-    slave_ = ::open(slave_name_.c_str(), O_RDWR | O_NOCTTY);
-    termios tio{};
-    ::tcgetattr(slave_, &tio);
-    ::cfmakeraw(&tio);
-    ::tcsetattr(slave_, TCSANOW, &tio);
-    ::fcntl(master_, F_SETFL, O_NONBLOCK);
-  }
-  ~Pty() {
-    ::close(slave_);
-    ::close(master_);
-  }
-  int master() const { return master_; }
-  const std::string& slave_name() const { return slave_name_; }
-
- private:
-  int master_ = -1, slave_ = -1;
-  std::string slave_name_;
-};
-
-// The board behind the pty, in a thread. `mangle` may alter host -> board bytes (the n-th byte
-// overall) to model a noisy cable: return false to drop the byte.
-class PtyBoard {
- public:
-  using Mangle = std::function<bool(std::uint64_t index, std::uint8_t& byte)>;
-  explicit PtyBoard(const Pty& pty, Mangle mangle = {})
-      : pty_(pty), mangle_(std::move(mangle)), thread_([this] { loop(); }) {}
-  ~PtyBoard() {
-    stop_ = true;
-    thread_.join();
-  }
-  bool assertion_failed() const { return assertion_failed_; }
-
- private:
-  void loop() {
-    BoardBench bench;
-    std::uint64_t index = 0;
-    while (!stop_) {
-      std::uint8_t buffer[256];
-      const ssize_t n = ::read(pty_.master(), buffer, sizeof buffer);
-      std::vector<std::uint8_t> bytes;
-      for (ssize_t i = 0; i < n; ++i) {
-        std::uint8_t byte = buffer[i];
-        if (!mangle_ || mangle_(index, byte)) bytes.push_back(byte);
-        ++index;
-      }
-      if (!bytes.empty()) bench.send(bytes);
-      bench.run(256);
-      std::vector<std::uint8_t> reply;
-      for (const TxByte& b : bench.received()) reply.push_back(b.value);
-      bench.received().clear();
-      if (!reply.empty()) {
-        std::size_t done = 0;
-        while (done < reply.size() && !stop_) {
-          const ssize_t w = ::write(pty_.master(), reply.data() + done, reply.size() - done);
-          if (w > 0) done += static_cast<std::size_t>(w);
-        }
-      }
-      if (n <= 0 && !bench.sending()) {
-        pollfd pfd{pty_.master(), POLLIN, 0};
-        ::poll(&pfd, 1, 1);
-      }
-    }
-    assertion_failed_ = bench.assertion_failed();
-  }
-
-  const Pty& pty_;
-  Mangle mangle_;
-  std::atomic<bool> stop_{false};
-  std::atomic<bool> assertion_failed_{false};
-  std::thread thread_;
-};
 
 // A short bench recording (simulated, 6 Hz) and its calibration, made once.
 class BoardStream : public ::testing::Test {
@@ -236,9 +148,10 @@ TEST_F(BoardStream, SecondSessionStartsFromAFreshFilter) {
 TEST_F(BoardStream, NoisyCableIsRecoveredBitExact) {
   Pty pty;
   // Flip a bit in one request, drop a byte of another: both get no reply, the host resends.
+  constexpr std::uint64_t board_request_bytes = host::board::kRequestBytes;
   PtyBoard board(pty, [](std::uint64_t index, std::uint8_t& byte) {
-    if (index == 5 * 40 + 3) byte ^= 0x04;
-    return index != 5 * 100 + 1;
+    if (index == board_request_bytes * 40 + 3) byte ^= 0x04;
+    return index != board_request_bytes * 100 + 1;
   });
   const Outcome r = run(args(pty, "noisy.csv", "400"));
   ASSERT_EQ(r.status, 0) << r.err;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Formal wrapper of the board's receive path, uart_rx (u_rx) into frame_decoder (the DUT, `dut`):
-// a frame is reported valid only when it is the last five bytes received, none of them used by
-// an earlier frame, starting with SYNC or CMD_SYNC and ending with the CRC-8 of the middle three
+// a frame is reported valid only when it is the last six bytes received, none of them used by
+// an earlier frame, starting with SYNC or CMD_SYNC and ending with the CRC-8 of the middle four
 // (docs/formal.md, docs/board.md). Proven by tb/formal/prove.sh with Yosys.
 //
 // The serial line rx_i is free in every cycle (any bit pattern, glitches, bad stop bits); prove.sh
@@ -18,13 +18,13 @@ module frame_decoder_props #(
   input logic rx_i
 );
 
-  localparam int         FrameBytes = 5;
+  localparam int         FrameBytes = 6;
   localparam logic [7:0] SYNC       = 8'hA5;
   localparam logic [7:0] CMD_SYNC   = 8'h5A;
 
   logic [7:0]  rx_byte;
   logic        rx_byte_valid;
-  logic [7:0]  seq_o;
+  logic [7:0]  seq_o, channel_o;
   logic [15:0] sample_o;
   logic        frame_valid_o, command_o;
   // Stop-bit errors and discards are counted on the board; no property here is about them.
@@ -47,6 +47,7 @@ module frame_decoder_props #(
     .byte_i      (rx_byte),
     .byte_valid_i(rx_byte_valid),
     .seq_o,
+    .channel_o,
     .sample_o,
     .frame_valid_o,
     .command_o,
@@ -69,8 +70,8 @@ module frame_decoder_props #(
 `endif
 
   // Shadow model of the byte stream //
-  // The last five bytes the UART delivered (shadow_q[39:32] the oldest), how many of them arrived
-  // since the last reported frame (a reported frame uses its five bytes up), and whether one
+  // The last six bytes the UART delivered (shadow_q[47:40] the oldest), how many of them arrived
+  // since the last reported frame (a reported frame uses its six bytes up), and whether one
   // arrived in the previous cycle.
   logic [8*FrameBytes-1:0] shadow_q, shadow_d;
   logic [2:0]              unused_q, unused_d;
@@ -95,27 +96,28 @@ module frame_decoder_props #(
   end
 
   // CRC-8/SMBUS by its definition, independent of crc8.sv: the remainder of M(x) * x^8 divided by
-  // G(x) = x^8 + x^2 + x + 1 (0x107), M the three bytes MSB first, no initial value, no final XOR.
-  function automatic logic [7:0] crc8_by_division(logic [23:0] message);
-    logic [31:0] rem;
+  // G(x) = x^8 + x^2 + x + 1 (0x107), M the four bytes MSB first, no initial value, no final XOR.
+  function automatic logic [7:0] crc8_by_division(logic [31:0] message);
+    logic [39:0] rem;
     rem = {message, 8'h00};
-    for (int i = 31; i >= 8; i--) begin
-      if (rem[i]) rem = rem ^ (32'h107 << (i - 8));
+    for (int i = 39; i >= 8; i--) begin
+      if (rem[i]) rem = rem ^ (40'h107 << (i - 8));
     end
     crc8_by_division = rem[7:0];
   endfunction
 
   always_comb begin
     if (frame_valid_o) begin
-      // The frame is the last five bytes received, none of them part of an earlier frame, and
+      // The frame is the last six bytes received, none of them part of an earlier frame, and
       // arrived with the last one in the previous cycle.
       crc_frame_is_fresh: assert (unused_q == 3'(FrameBytes) && arrived_q);
-      crc_frame_starts_with_sync: assert (shadow_q[39:32] == SYNC || shadow_q[39:32] == CMD_SYNC);
-      // Its last byte is the CRC-8 of the three bytes between.
-      crc_matches: assert (shadow_q[7:0] == crc8_by_division(shadow_q[31:8]));
+      crc_frame_starts_with_sync: assert (shadow_q[47:40] == SYNC || shadow_q[47:40] == CMD_SYNC);
+      // Its last byte is the CRC-8 of the four bytes between.
+      crc_matches: assert (shadow_q[7:0] == crc8_by_division(shadow_q[39:8]));
       // The decoder reports those bytes.
-      crc_reports_frame: assert (seq_o == shadow_q[31:24] && sample_o == shadow_q[23:8] &&
-                                 command_o == (shadow_q[39:32] == CMD_SYNC));
+      crc_reports_frame: assert (seq_o == shadow_q[39:32] && channel_o == shadow_q[31:24] &&
+                                 sample_o == shadow_q[23:8] &&
+                                 command_o == (shadow_q[47:40] == CMD_SYNC));
       // No byte lands in the cycle of a reported frame (it would be lost).
       crc_no_byte_during_frame: assert (!rx_byte_valid);
     end

@@ -21,7 +21,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (i + 1 < board::kReplyBytes) std::abort();
     const std::span<const std::uint8_t> frame(data + i + 1 - board::kReplyBytes,
                                               board::kReplyBytes);
-    if (frame[0] != board::kSync || board::crc8(frame.subspan(1, 4)) != frame[5]) std::abort();
+    if (frame[0] != board::kSync ||
+        board::crc8(frame.subspan(1, board::kReplyBytes - 2)) != frame[board::kReplyBytes - 1]) {
+      std::abort();
+    }
     const auto encoded = board::encode_reply(*reply);  // the reply says what the bytes say
     if (!std::equal(encoded.begin(), encoded.end(), frame.begin())) std::abort();
     in_replies += board::kReplyBytes;
