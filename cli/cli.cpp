@@ -47,7 +47,7 @@ struct Subcommands {
   SimulateOptions simulate_options;
   CosimCommandOptions cosim_options;
   SynthOptions synth_options;
-  host::StreamSettings stream_options;
+  StreamOptions stream_options;
   DiagnoseCommandOptions diagnose_options;
   HwDiagnoseOptions hw_diagnose_options;    // --hw: the float design against the Verilated RTL
   SelftestCommandOptions selftest_options;  // --selftest: the blind check of the data layer

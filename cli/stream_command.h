@@ -10,10 +10,18 @@
 
 namespace flange::cli {
 
-CLI::App* add_stream_command(CLI::App& app, host::StreamSettings& options);
+// One recording (--input) on channel 0, or every channel of a locomotive manifest (--manifest),
+// each on its own channel of the board's core.
+struct StreamOptions {
+  host::StreamSettings single;  // port, input, calibration, out and link settings
+  std::string manifest;         // locomotive.json; then --out is a folder
+  std::string coeffs;           // the board's filter.json: check every reply (manifest only)
+};
 
-// Returns 0; 1 when the board does not answer or the port fails (one line naming the port);
-// 2 for bad input (file, line, column).
-int run_stream_command(const host::StreamSettings& options, std::ostream& out, std::ostream& err);
+CLI::App* add_stream_command(CLI::App& app, StreamOptions& options);
+
+// Returns 0; 1 when the board does not answer or the port fails (one line naming the port), or a
+// reply differs from the model; 2 for bad input (file, line, column).
+int run_stream_command(const StreamOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace flange::cli

@@ -149,7 +149,9 @@ void plot_spectra(const std::filesystem::path& dir, const RunTrace& trace) {
   if (raw.empty()) {
     script +=
         "set label 'recording shorter than one 256-sample segment: no spectrum' at graph "
-        "0.5,0.5 center\nplot NaN notitle\n";
+        "0.5,0.5 center\n"
+        // gnuplot refuses a plot with no defined point unless both ranges are given.
+        "set xrange [0:1]\nset yrange [0:1]\nunset tics\nplot NaN notitle\n";
   } else {
     std::vector<double> f = trace.spectrum_raw->frequencies_hz();
     std::vector<double> raw_db, filt_db;

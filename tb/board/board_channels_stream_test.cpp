@@ -6,9 +6,11 @@
 // channels the board or the coefficient set lacks refused with one line. (A pty has no baud rate:
 // the host sets 921600 as for a real board, the simulated board runs at its ClksPerBit.)
 // Reproduce: build/tb/basys3_top_channels_test --gtest_filter='BoardChannelsStream.<Name>'
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <numeric>
 #include <random>
@@ -273,6 +275,65 @@ TEST_F(BoardChannelsStream, WrongCoefficientSetOrChannelListIsRefused) {
     EXPECT_NE(std::string(e.what()).find("serves 12 channels, the coefficient set 1"),
               std::string::npos)
         << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace flange::tb::board
+
+namespace flange::tb::board {
+namespace {
+
+// Column `name` of a CSV, every data row.
+std::vector<std::string> csv_column(const std::string& csv, const std::string& name) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::istringstream head(line);
+  for (std::string field; std::getline(head, field, ',');) header.push_back(field);
+  const auto column = std::find(header.begin(), header.end(), name) - header.begin();
+  std::vector<std::string> values;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string field;
+    for (std::ptrdiff_t k = 0; k <= column; ++k) std::getline(fields, field, ',');
+    values.push_back(field);
+  }
+  return values;
+}
+
+TEST_F(BoardChannelsStream, TwelveWheelLocomotiveStreamsAndRunsAsTheModel) {
+  // A whole locomotive as a user streams it: flange simulate --wheels 12, then flange stream
+  // --manifest through the simulated 12-channel board (each wheel on its own channel, rows
+  // interleaved in time), then flange run --manifest with the model: every channel's filtered
+  // clearance from the board equals the run's, row for row.
+  const std::string loco = (dir_ / "loco").string();
+  const Outcome sim = run({"simulate", "--scenario", "loco", "--wheels", "12", "--fs", "100",
+                           "--duration", "1.2", "--seed", "8", "--out", loco});
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const std::string manifest = loco + "/locomotive.json";
+  const std::string calibration = (dir_ / "model.json").string();
+  Pty pty;
+  PtyBoard board(pty);
+  const Outcome streamed =
+      run({"stream", "--port", pty.slave_name(), "--manifest", manifest, "--calibration",
+           calibration, "--coeffs", kBoardFilterJson, "--baud", std::to_string(kBaud), "--out",
+           (dir_ / "loco_streamed").string()});
+  ASSERT_EQ(streamed.status, 0) << streamed.err;
+  EXPECT_NE(streamed.out.find("samples of 12 channels"), std::string::npos) << streamed.out;
+  EXPECT_NE(streamed.out.find("; 0 mismatches against the model"), std::string::npos)
+      << streamed.out;
+  const Outcome ran = run({"run", "--manifest", manifest, "--calibration", calibration,
+                           "--coeffs", kBoardFilterJson, "--out", (dir_ / "loco_run").string()});
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  for (int c = 0; c < kChannels; ++c) {
+    const std::string file = fmt::format("channel_{:02d}.csv", c);
+    const auto board_mm = csv_column((dir_ / "loco_streamed" / file).string(), "clearance_filt_mm");
+    const auto model_mm = csv_column((dir_ / "loco_run" / file).string(), "clearance_filt_mm");
+    ASSERT_EQ(board_mm.size(), 121u) << "channel " << c;
+    EXPECT_EQ(board_mm, model_mm) << "channel " << c;
+    expect_csv_matches_model((dir_ / "loco_streamed" / file).string(), c);
   }
 }
 
