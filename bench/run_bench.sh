@@ -4,8 +4,8 @@
 #   bash bench/run_bench.sh [FLANGE]     (FLANGE defaults to build/flange)
 # Prints samples/s per engine beside the float engine (the baseline, same run), calibration
 # time, and the peak memory at 100 k and 1 M rows (flat memory = streaming). seconds are wall
-# seconds (what the rate is computed from); CPU s is user + system time of all the process's
-# threads (flange run reads the recording on a second thread), less disturbed by other load.
+# seconds (what the rate is computed from); CPU s is the process's user + system time, less
+# disturbed by other load than the wall seconds.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 flange="${1:-$here/../build/flange}"

@@ -5,18 +5,14 @@
 
 #include <charconv>
 #include <cmath>
-#include <condition_variable>
 #include <cstring>
-#include <exception>
 #include <fstream>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -428,100 +424,13 @@ RunSummary Pipeline::finish(std::size_t rows_read) {
   return std::move(summary_);
 }
 
-// Reads and checks the rows on a second thread, one block ahead of the pipeline: reading and
-// parsing take about half of a run's time, and this overlaps them with the filter, the thresholds
-// and the output. Blocks come back in file order and hold kBlock rows, like the pipeline's, so the
-// output written before an error is the same as without read-ahead; the reader's error comes back
-// after the rows read before it. Memory: two blocks of rows.
-class ReadAhead {
- public:
-  explicit ReadAhead(RecordingReader& reader) : reader_(reader) {
-    for (Block& block : blocks_) block.rows.resize(kBlock);
-    thread_ = std::thread([this] { read_blocks(); });
-  }
-  ~ReadAhead() {
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      stop_ = true;
-    }
-    changed_.notify_all();
-    thread_.join();
-  }
-  ReadAhead(const ReadAhead&) = delete;
-  ReadAhead& operator=(const ReadAhead&) = delete;
-
-  // Hands each row of the file to `take` in order; rethrows the reader's error after the rows
-  // before it.
-  template <class Take>
-  void for_each_row(Take take) {
-    for (std::size_t index = 0;; ++index) {
-      Block& block = blocks_[index % 2];
-      {
-        std::unique_lock<std::mutex> lock(mutex_);
-        changed_.wait(lock, [&] { return block.full; });
-      }
-      for (std::size_t k = 0; k < block.count; ++k) take(block.rows[k]);
-      if (block.error) std::rethrow_exception(block.error);
-      if (block.last) return;
-      {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        block.full = false;
-      }
-      changed_.notify_all();
-    }
-  }
-
- private:
-  struct Block {
-    std::vector<RecordingRow> rows;  // kBlock rows, their strings reused
-    std::size_t count = 0;           // rows filled
-    std::exception_ptr error;        // what stopped the reader after `count` rows
-    bool last = false;               // the end of the file, or the error
-    bool full = false;               // filled and not yet taken (guarded by mutex_)
-  };
-
-  void read_blocks() {
-    for (std::size_t index = 0;; ++index) {
-      Block& block = blocks_[index % 2];
-      {
-        std::unique_lock<std::mutex> lock(mutex_);
-        changed_.wait(lock, [&] { return stop_ || !block.full; });
-        if (stop_) return;
-      }
-      block.count = 0;
-      try {
-        while (block.count < kBlock && reader_.next(block.rows[block.count])) ++block.count;
-        block.last = block.count < kBlock;
-      } catch (...) {
-        block.error = std::current_exception();
-        block.last = true;
-      }
-      {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        block.full = true;
-      }
-      changed_.notify_all();
-      if (block.last) return;
-    }
-  }
-
-  RecordingReader& reader_;
-  Block blocks_[2];
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  bool stop_ = false;  // guarded by mutex_
-  std::thread thread_;
-};
-
 }  // namespace
 
 RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
   Pipeline pipeline(options, trace);
   RecordingReader reader(options.input, options.lenient);
-  {
-    ReadAhead read_ahead(reader);
-    read_ahead.for_each_row([&](const RecordingRow& row) { pipeline.add(row); });
-  }
+  RecordingRow row;
+  while (reader.next(row)) pipeline.add(row);
   return pipeline.finish(reader.rows_read());
 }
 

@@ -143,8 +143,8 @@ TEST_F(RunCommand, BadRowsStopAStrictRunAndAreCountedInALenientOne) {
 }
 
 TEST_F(RunCommand, ABadRowPastTheFirstBlockStopsTheRunAtItsLine) {
-  // The rows are read a block (4096 rows) ahead on a second thread: an error there must come back
-  // as the same one line, after the rows before it, and only then.
+  // Past the first block of 4096 rows (the pipeline's unit of work) the error is still the one
+  // line naming the file, the line and the column.
   std::istringstream lines(read(dir_ / "bench.csv"));
   std::string line, corrupted;
   for (int n = 1; std::getline(lines, line); ++n) {
