@@ -8,6 +8,8 @@
 // - co-simulation throughput (Verilated RTL and model in lockstep, every pin compared in every
 //   cycle, as `flange cosim` does) beside the model alone;
 // - the fixed-point output's SNR against the double reference for a passband sine at -1 dBFS,
+//   split into its two causes (the arithmetic alone: against the quantised coefficients in
+//   double; the coefficients alone: the quantised response's error at the sine's frequency),
 //   beside the output-rounding floor 6.02 D + 1.76 dB and a floor that adds every section's
 //   rounding noise through the sections after it.
 // Throughputs are Google Benchmark timings; the tables after them are printed from the same run.
@@ -21,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -107,9 +110,12 @@ CoreSet generated_sos_set(int order, const std::filesystem::path& scratch) {
           {}};
 }
 
-// A sine at fc / 4 (well inside the passband) at -1 dBFS, in LSB.
+// The SNR test sine's frequency: fc / 4, well inside the passband.
+double sine_hz(const CoreSet& set) { return set.design.fc_hz.value() / 4; }
+
+// A sine at sine_hz at -1 dBFS, in LSB.
 std::vector<std::int32_t> passband_sine(const CoreSet& set, std::size_t n) {
-  const double f = set.design.fc_hz.value() / 4;
+  const double f = sine_hz(set);
   const double amplitude =
       std::pow(10.0, kSineLevelDbfs / 20) * std::ldexp(1.0, set.config.sample_width - 1);
   std::vector<std::int32_t> x(n);
@@ -182,7 +188,9 @@ double section_noise_gain(const CoreConfig& config) {
 }
 
 struct SnrFigures {
-  double snr_db = 0.0;
+  double snr_db = 0.0;                    // the model against the float design: both causes
+  double arith_snr_db = 0.0;              // the model against the quantised coefficients in double
+  double coef_snr_db = 0.0;               // -20 log10 |H_q - H| / |H| at the sine's frequency
   double output_rounding_floor_db = 0.0;  // 6.02 D + 1.76 + level: one rounding, at the output
   double section_noise_floor_db = 0.0;    // every section's rounding through the later sections
 };
@@ -191,18 +199,27 @@ SnrFigures passband_sine_snr(const CoreSet& set) {
   const std::vector<std::int32_t> x = passband_sine(set, kSnrSamples);
   flange::model::IirCore core(set.config);
   flange::model::ReferenceFilter reference(set.design);
+  flange::model::ReferenceFilter quantized =
+      flange::model::ReferenceFilter::quantized(set.config, set.design.leftover_gain);
   const double scale = full_scale_lsb(set);
-  std::vector<double> want, got;
+  std::vector<double> want, want_quantized, got;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    // Both get the same quantised input: only the core's own arithmetic is measured.
+    // All get the same quantised input: the input's own rounding is not measured.
     const double y_reference = reference.step(x[i] / scale);
+    const double y_quantized = quantized.step(x[i] / scale);
     const double y_core = core.step(x[i]).sample * set.design.leftover_gain / scale;
     if (i < kSnrSettle) continue;
     want.push_back(y_reference);
+    want_quantized.push_back(y_quantized);
     got.push_back(y_core);
   }
   SnrFigures figures;
   figures.snr_db = flange::model::snr_db(want, got);
+  figures.arith_snr_db = flange::model::snr_db(want_quantized, got);
+  const double f_over_fs = sine_hz(set) / set.design.fs_hz;
+  const std::complex<double> h = reference.response(f_over_fs);
+  figures.coef_snr_db =
+      -20.0 * std::log10(std::abs(quantized.response(f_over_fs) - h) / std::abs(h));
   const int d = set.config.sample_width;
   figures.output_rounding_floor_db = 6.02 * d + 1.76 + kSineLevelDbfs;
   double signal_power = 0.0;
@@ -357,20 +374,25 @@ void print_tables(const std::vector<CoreSet>& sets, const std::vector<SetFigures
       "\nSNR of the fixed-point output against the double reference: passband sine (fc/4) at "
       "{:g} dBFS, {} samples after {} settling\n",
       kSineLevelDbfs, kSnrSamples - kSnrSettle, kSnrSettle);
+  std::cout << "SNR: against the float design; arith SNR: against the quantised coefficients in "
+               "double (the arithmetic alone); coef SNR: -20 log10 |H_q - H| / |H| at the sine's "
+               "frequency (the coefficients alone)\n";
   std::cout << "floor A: 6.02 D + 1.76 dB - 1 dB, one uniform rounding at the output; floor B: "
                "each section's rounding through 1/A_k and the sections after it\n";
-  std::cout << fmt::format("{:<16} {:>3} {:>9} {:>9} {:>9} {:>10} {:>8}\n", "set", "D", "SNR dB",
-                           "floor A", "floor B", "SNR - B", "aim");
+  std::cout << fmt::format("{:<16} {:>3} {:>9} {:>10} {:>9} {:>9} {:>9} {:>10} {:>8}\n", "set", "D",
+                           "SNR dB", "arith SNR", "coef SNR", "floor A", "floor B", "SNR - B",
+                           "aim");
   for (std::size_t i = 0; i < sets.size(); ++i) {
     const SnrFigures& snr = figures[i].snr;
     std::string aim = "-";
     if (sets[i].name == "measurement_sos") {
       aim = fmt::format(">= {:g}: {}", kSnrAimDb, snr.snr_db >= kSnrAimDb ? "met" : "NOT met");
     }
-    std::cout << fmt::format("{:<16} {:>3} {:>9.1f} {:>9.1f} {:>9.1f} {:>+10.1f} {:>8}\n",
-                             sets[i].name, sets[i].config.sample_width, snr.snr_db,
-                             snr.output_rounding_floor_db, snr.section_noise_floor_db,
-                             snr.snr_db - snr.section_noise_floor_db, aim);
+    std::cout << fmt::format(
+        "{:<16} {:>3} {:>9.1f} {:>10.1f} {:>9.1f} {:>9.1f} {:>9.1f} {:>+10.1f} {:>8}\n",
+        sets[i].name, sets[i].config.sample_width, snr.snr_db, snr.arith_snr_db, snr.coef_snr_db,
+        snr.output_rounding_floor_db, snr.section_noise_floor_db,
+        snr.snr_db - snr.section_noise_floor_db, aim);
   }
   std::cout << "\nGenerated sets: flange design --fs 6 --order N --fc 0.5 --structure sos, made "
                "in this run.\n";

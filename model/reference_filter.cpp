@@ -2,6 +2,9 @@
 #include "reference_filter.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
 
 namespace flange::model {
 
@@ -22,6 +25,42 @@ ReferenceFilter::ReferenceFilter(const FloatDesign& design, Form form)
     a_.push_back(a);
   }
   reset();
+}
+
+ReferenceFilter::ReferenceFilter(std::vector<std::vector<double>> b,
+                                 std::vector<std::vector<double>> a, double gain)
+    : form_(Form::kSos), gain_(gain), b_(std::move(b)), a_(std::move(a)) {
+  reset();
+}
+
+ReferenceFilter ReferenceFilter::quantized(const CoreConfig& config, double leftover_gain) {
+  const int m = config.section_order;
+  std::vector<std::vector<double>> b(static_cast<std::size_t>(config.num_sections));
+  std::vector<std::vector<double>> a(b.size());
+  const auto terms = static_cast<std::size_t>(config.terms());
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    // ROM order per section: b[0..M], then -a[1..M].
+    const auto word = [&](int i) {
+      return static_cast<double>(config.rom[k * terms + static_cast<std::size_t>(i)]);
+    };
+    for (int i = 0; i <= m; ++i) b[k].push_back(std::ldexp(word(i), -config.num_frac_bits));
+    a[k].push_back(1.0);
+    for (int j = 1; j <= m; ++j) a[k].push_back(-std::ldexp(word(m + j), -config.coef_frac_bits));
+  }
+  return ReferenceFilter(std::move(b), std::move(a), leftover_gain);
+}
+
+std::complex<double> ReferenceFilter::response(double f_over_fs) const {
+  // Each stage's b(z) / a(z) at z = e^(j 2 pi f / fs), in powers of z^-1.
+  const std::complex<double> z_inverse = std::polar(1.0, -2.0 * std::numbers::pi * f_over_fs);
+  const auto polynomial = [&](const std::vector<double>& c) {
+    std::complex<double> sum = 0.0;
+    for (auto it = c.rbegin(); it != c.rend(); ++it) sum = sum * z_inverse + *it;
+    return sum;
+  };
+  std::complex<double> h = gain_;
+  for (std::size_t k = 0; k < b_.size(); ++k) h *= polynomial(b_[k]) / polynomial(a_[k]);
+  return h;
 }
 
 void ReferenceFilter::reset() {

@@ -18,7 +18,8 @@ struct SampleScaling {
   static constexpr double kHalfRangeMm = 8.0;
   int data_bits = 16;
 
-  double full_scale() const { return std::ldexp(1.0, data_bits - 1); }
+  // 2^(D-1), exactly (a shift: this runs for every sample).
+  double full_scale() const { return static_cast<double>(std::int64_t{1} << (data_bits - 1)); }
   // In full-scale units, unclipped: the float engine's input.
   double to_unit(double clearance_mm) const { return (clearance_mm - kCenterMm) / kHalfRangeMm; }
   // The sample word; `clipped` is set when the clearance lies outside the representable range.

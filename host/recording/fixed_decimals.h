@@ -3,37 +3,56 @@
 // and flange stream print the same clearance identically, ties included).
 #pragma once
 
-#include <fmt/format.h>
-
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 namespace flange::host {
 
-// `value` with six decimals, through an integer count of millionths: several times faster
-// than formatting the double at a fixed precision, and the same digits away from exact ties.
-inline void append_fixed6(fmt::memory_buffer& buffer, double value) {
-  const long long millionths = std::llround(value * 1e6);
-  const unsigned long long magnitude =
-      static_cast<unsigned long long>(millionths < 0 ? -millionths : millionths);
-  char text[32];
-  char* at = text;
-  if (millionths < 0) *at++ = '-';
-  at = std::to_chars(at, text + sizeof text, magnitude / 1000000).ptr;
-  *at++ = '.';
-  unsigned long long fraction = magnitude % 1000000;
-  for (int digit = 5; digit >= 0; --digit) {
-    at[digit] = static_cast<char>('0' + fraction % 10);
-    fraction /= 10;
+// The most characters write_fixed6 writes: a sign, the integer part (a count of millionths is at
+// most 2^63, so at most 13 digits), the point and six decimals.
+inline constexpr int kMaxFixed6IntegerDigits = 13;
+inline constexpr std::size_t kMaxFixed6Chars = 1 + kMaxFixed6IntegerDigits + 1 + 6;
+
+namespace detail {
+// "00" "01" ... "99": two decimal digits per lookup.
+inline constexpr std::array<char, 200> kDigitPairs = [] {
+  std::array<char, 200> pairs{};
+  for (int i = 0; i < 100; ++i) {
+    pairs[static_cast<std::size_t>(2 * i)] = static_cast<char>('0' + i / 10);
+    pairs[static_cast<std::size_t>(2 * i + 1)] = static_cast<char>('0' + i % 10);
   }
-  buffer.append(text, at + 6);
+  return pairs;
+}();
+}  // namespace detail
+
+// Writes `value` with six decimals at `at`, which has room for kMaxFixed6Chars, and returns the
+// end. Through an integer count of millionths: several times faster than formatting the double
+// at a fixed precision, and the same digits away from exact ties.
+inline char* write_fixed6(char* at, double value) {
+  const long long millionths = std::llround(value * 1e6);
+  // The magnitude in unsigned arithmetic, where negating the most negative count is defined.
+  const unsigned long long magnitude = millionths < 0
+                                           ? 0ULL - static_cast<unsigned long long>(millionths)
+                                           : static_cast<unsigned long long>(millionths);
+  if (millionths < 0) *at++ = '-';
+  at = std::to_chars(at, at + kMaxFixed6IntegerDigits, magnitude / 1000000).ptr;
+  *at++ = '.';
+  auto fraction = static_cast<unsigned>(magnitude % 1000000);
+  for (int pair = 2; pair >= 0; --pair) {
+    const std::size_t two = 2 * (fraction % 100);
+    at[2 * pair] = detail::kDigitPairs[two];
+    at[2 * pair + 1] = detail::kDigitPairs[two + 1];
+    fraction /= 100;
+  }
+  return at + 6;
 }
 
 inline std::string fixed6(double value) {
-  fmt::memory_buffer buffer;
-  append_fixed6(buffer, value);
-  return fmt::to_string(buffer);
+  char text[kMaxFixed6Chars];
+  return std::string(text, write_fixed6(text, value));
 }
 
 }  // namespace flange::host

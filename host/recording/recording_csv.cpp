@@ -3,8 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 #include "input_error.h"
 #include "input_notes.h"
@@ -33,21 +35,28 @@ void split_fields(std::string_view line, std::vector<std::string_view>& fields) 
   }
 }
 
-// Refuses a file that is not text: a NUL byte in its first 4 KiB (a spreadsheet's binary format,
-// a compressed log, a ROM image).
-void refuse_binary(std::ifstream& file, const std::string& path) {
-  char block[4096];
-  file.read(block, sizeof block);
-  const std::string_view head(block, static_cast<std::size_t>(file.gcount()));
-  const std::size_t nul = head.find('\0');
-  if (nul != std::string_view::npos) {
-    throw InputError(fmt::format(
-        "{}: not a text file (a zero byte at offset {}); expected a CSV recording with the header "
-        "{}",
-        path, nul, kExpectedHeader));
-  }
-  file.clear();
-  file.seekg(0);
+// Bytes read from the file at a time: few system calls, and a fixed block of memory however long
+// the recording is (a single longer line grows it).
+constexpr std::size_t kBlockBytes = std::size_t{1} << 20;
+// A file with a NUL byte in its first 4 KiB is not text (a spreadsheet's binary format, a
+// compressed log, a ROM image).
+constexpr std::size_t kBinaryProbeBytes = 4096;
+
+// parse_number into `out`; false (and `out` untouched) when the field is not a finite number.
+bool parse_into(std::string_view field, double& out) {
+  double value = 0.0;
+  const char* begin = field.data();
+  const char* end = begin + field.size();
+  if (begin != end && *begin == '+') ++begin;  // from_chars does not take a leading '+'
+  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  if (ec != std::errc() || ptr != end || !std::isfinite(value)) return false;
+  out = value;
+  return true;
+}
+
+std::string not_a_number(std::size_t column, const char* name, std::string_view field) {
+  return fmt::format("column {} ({}): '{}' is not a finite number", column + 1, name,
+                     printable_excerpt(field));
 }
 
 }  // namespace
@@ -70,23 +79,28 @@ std::string printable_excerpt(std::string_view text, std::size_t max_chars) {
 
 std::optional<double> parse_number(std::string_view field) {
   double value = 0.0;
-  const char* begin = field.data();
-  const char* end = begin + field.size();
-  if (begin != end && *begin == '+') ++begin;  // from_chars does not take a leading '+'
-  const auto [ptr, ec] = std::from_chars(begin, end, value);
-  if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
+  if (!parse_into(field, value)) return std::nullopt;
   return value;
 }
 
 RecordingReader::RecordingReader(const std::string& path, bool lenient)
-    : path_(path), lenient_(lenient), file_(path) {
+    : path_(path), lenient_(lenient), file_(path, std::ios::binary), block_(kBlockBytes) {
   if (!file_) throw InputError(fmt::format("{}: cannot open the recording", path));
-  refuse_binary(file_, path);
-  std::string header;
-  if (!std::getline(file_, header)) {
+  refill();
+  const std::string_view head(block_.data(), std::min(block_end_, kBinaryProbeBytes));
+  const std::size_t nul = head.find('\0');
+  if (nul != std::string_view::npos) {
+    throw InputError(fmt::format(
+        "{}: not a text file (a zero byte at offset {}); expected a CSV recording with the header "
+        "{}",
+        path, nul, kExpectedHeader));
+  }
+  std::string_view header_line;
+  if (!next_line(header_line)) {
     throw InputError(
         fmt::format("{}:1: empty file; expected the header {}", path, kExpectedHeader));
   }
+  std::string header(header_line);
   // A spreadsheet saving "CSV UTF-8" puts a byte-order mark before the first column name.
   if (header.rfind("\xEF\xBB\xBF", 0) == 0) header.erase(0, 3);
   std::vector<std::string_view> name_views;
@@ -131,26 +145,71 @@ RecordingReader::RecordingReader(const std::string& path, bool lenient)
   voltage_column_ = *voltage;
 }
 
+void RecordingReader::refill() {
+  const std::size_t unread = block_end_ - block_begin_;
+  if (block_begin_ > 0) {
+    std::copy(block_.begin() + static_cast<std::ptrdiff_t>(block_begin_),
+              block_.begin() + static_cast<std::ptrdiff_t>(block_end_), block_.begin());
+    block_begin_ = 0;
+  }
+  block_end_ = unread;
+  if (block_end_ == block_.size()) block_.resize(2 * block_.size());  // one line fills the block
+  file_.read(block_.data() + block_end_, static_cast<std::streamsize>(block_.size() - block_end_));
+  block_end_ += static_cast<std::size_t>(file_.gcount());
+  if (!file_) file_done_ = true;  // the end of the file (or a read error, which ends it too)
+}
+
+bool RecordingReader::next_line(std::string_view& line) {
+  for (;;) {
+    const char* begin = block_.data() + block_begin_;
+    const std::size_t available = block_end_ - block_begin_;
+    if (const void* newline = std::memchr(begin, '\n', available)) {
+      const auto length = static_cast<std::size_t>(static_cast<const char*>(newline) - begin);
+      line = std::string_view(begin, length);
+      block_begin_ += length + 1;
+      return true;
+    }
+    if (file_done_) {
+      if (available == 0) return false;
+      line = std::string_view(begin, available);  // the last line, without a final '\n'
+      block_begin_ = block_end_;
+      return true;
+    }
+    refill();
+  }
+}
+
 std::optional<RecordingRow> RecordingReader::next() {
-  while (std::getline(file_, line_buffer_)) {
+  RecordingRow row;
+  if (!next(row)) return std::nullopt;
+  return row;
+}
+
+bool RecordingReader::next(RecordingRow& row) {
+  std::string_view line;
+  while (next_line(line)) {
     ++line_;
-    if (line_buffer_.empty() || line_buffer_ == "\r") continue;  // blank lines carry no row
-    RecordingRow row;
+    if (line.empty() || line == "\r") continue;  // blank lines carry no row
+    // A fresh row, but with the strings' storage kept.
     row.line = line_;
-    split_fields(line_buffer_, fields_);
+    row.t_s = row.temp_c = row.voltage_v = 0.0;
+    row.clearance_mm.reset();
+    row.run.clear();
+    row.problem.clear();
+    split_fields(line, fields_);
     std::string problem = check_row(row, fields_);
     ++rows_read_;
     if (!problem.empty()) {
       if (!lenient_) throw InputError(fmt::format("{}:{}: {}", path_, line_, problem));
       row.problem = std::move(problem);
     }
-    return row;
+    return true;
   }
   if (rows_read_ == 0) {
     throw InputError(fmt::format("{}:{}: no data rows (the file holds only the header {})", path_,
                                  line_ + 1, kExpectedHeader));
   }
-  return std::nullopt;
+  return false;
 }
 
 std::string RecordingReader::check_row(RecordingRow& row,
@@ -158,23 +217,20 @@ std::string RecordingReader::check_row(RecordingRow& row,
   if (fields.size() != column_count_) {
     return fmt::format("expected {} fields, found {}", column_count_, fields.size());
   }
-  auto number = [&](std::size_t column, const char* name, double& out) -> std::string {
-    const std::optional<double> value = parse_number(fields[column]);
-    if (!value) {
-      return fmt::format("column {} ({}): '{}' is not a finite number", column + 1, name,
-                         printable_excerpt(fields[column]));
-    }
-    out = *value;
-    return "";
-  };
-  std::string problem = number(t_column_, "t_s", row.t_s);
-  if (problem.empty()) problem = number(temp_column_, "temp_c", row.temp_c);
-  if (problem.empty()) problem = number(voltage_column_, "voltage_v", row.voltage_v);
-  if (!problem.empty()) return problem;
+  if (!parse_into(fields[t_column_], row.t_s)) {
+    return not_a_number(t_column_, "t_s", fields[t_column_]);
+  }
+  if (!parse_into(fields[temp_column_], row.temp_c)) {
+    return not_a_number(temp_column_, "temp_c", fields[temp_column_]);
+  }
+  if (!parse_into(fields[voltage_column_], row.voltage_v)) {
+    return not_a_number(voltage_column_, "voltage_v", fields[voltage_column_]);
+  }
   if (!fields[clearance_column_].empty()) {
     double clearance = 0.0;
-    problem = number(clearance_column_, "clearance_mm", clearance);
-    if (!problem.empty()) return problem;
+    if (!parse_into(fields[clearance_column_], clearance)) {
+      return not_a_number(clearance_column_, "clearance_mm", fields[clearance_column_]);
+    }
     row.clearance_mm = clearance;
   }
   if (run_column_) row.run = fields[*run_column_];

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The recording format every command reads: CSV with header t_s,clearance_mm,temp_c,voltage_v
-// (any column order) and an optional run column. Rows are read one at a time, so memory stays
-// flat however long the recording is.
+// (any column order) and an optional run column. Rows are read one at a time from a fixed block
+// of the file, so memory stays flat however long the recording is.
 #pragma once
 
 #include <cstddef>
@@ -38,17 +38,28 @@ class RecordingReader {
 
   // Next row, or nullopt at the end of the file.
   std::optional<RecordingRow> next();
+  // The same into `row`, reusing its strings (no allocation per row); false at the end of the file.
+  bool next(RecordingRow& row);
 
   bool has_run_column() const { return run_column_.has_value(); }
   const std::string& path() const { return path_; }
   std::size_t rows_read() const { return rows_read_; }
 
  private:
+  // The next line without its '\n' (as std::getline splits), a view into block_ valid until the
+  // next call; false at the end of the file.
+  bool next_line(std::string_view& line);
+  // Moves the unread rest of block_ to its front and reads more of the file behind it.
+  void refill();
+  // "" for a good row, else what is wrong with it (file and line are added by the caller).
   std::string check_row(RecordingRow& row, const std::vector<std::string_view>& fields);
 
   std::string path_;
   bool lenient_;
   std::ifstream file_;
+  std::vector<char> block_;  // file bytes [block_begin_, block_end_) not yet split into lines
+  std::size_t block_begin_ = 0, block_end_ = 0;
+  bool file_done_ = false;
   std::size_t line_ = 1;
   std::size_t rows_read_ = 0;
   std::size_t column_count_ = 0;
@@ -56,8 +67,7 @@ class RecordingReader {
   std::optional<std::size_t> run_column_;
   std::optional<double> last_time_;
   std::string last_run_;
-  std::string line_buffer_;               // reused: no allocation per row
-  std::vector<std::string_view> fields_;  // views into line_buffer_
+  std::vector<std::string_view> fields_;  // views into block_, reused: no allocation per row
 };
 
 // Parses a whole field as a finite double; nullopt otherwise.

@@ -5,13 +5,15 @@
 
 #include <charconv>
 #include <cmath>
-#include <deque>
+#include <cstring>
 #include <fstream>
-#include <iterator>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "calibration.h"
@@ -74,35 +76,72 @@ int region_index(double clearance_mm, double temp_c) {
   return t * RunTrace::kClearanceBins + c;
 }
 
-// One output row; a bad row has no raw clearance.
-void format_row(fmt::memory_buffer& buffer, double t, const double* raw, double filt, double flange,
-                const char* alarm, const std::string& flags) {
-  append_fixed6(buffer, t);
-  buffer.push_back(',');
-  if (raw != nullptr) append_fixed6(buffer, *raw);
-  buffer.push_back(',');
-  append_fixed6(buffer, filt);
-  buffer.push_back(',');
-  append_fixed6(buffer, flange);
-  buffer.push_back(',');
-  buffer.append(std::string_view(alarm));
-  buffer.push_back(',');
-  buffer.append(flags);
-  buffer.push_back('\n');
+// A row's flags, a bit each; the flags column lists them in this order, joined by '|'.
+enum RowFlag : unsigned {
+  kBadRow = 1u << 0,
+  kOutsideCalibration = 1u << 1,
+  kClipped = 1u << 2,
+  kSaturated = 1u << 3,
+};
+constexpr std::pair<RowFlag, std::string_view> kFlagNames[] = {
+    {kBadRow, "bad_row"},
+    {kOutsideCalibration, "outside_calibration"},
+    {kClipped, "clipped"},
+    {kSaturated, "saturated"},
+};
+constexpr std::size_t kMaxFlagsChars = [] {
+  std::size_t chars = 0;
+  for (const auto& flag : kFlagNames) chars += flag.second.size() + 1;  // a name and its '|'
+  return chars;
+}();
+constexpr std::size_t kMaxAlarmChars = 8;  // "critical", the longest alarm_name()
+// The longest output row: four numbers, the alarm, every flag, five commas and the newline.
+constexpr std::size_t kMaxRowChars = 4 * kMaxFixed6Chars + kMaxAlarmChars + kMaxFlagsChars + 6;
+
+char* append(char* at, std::string_view text) {
+  std::memcpy(at, text.data(), text.size());
+  return at + text.size();
+}
+
+// One output row at `at` (room for kMaxRowChars); a bad row has no raw clearance.
+char* format_row(char* at, double t, const double* raw, double filt, double flange,
+                 std::string_view alarm, unsigned flags) {
+  at = write_fixed6(at, t);
+  *at++ = ',';
+  if (raw != nullptr) at = write_fixed6(at, *raw);
+  *at++ = ',';
+  at = write_fixed6(at, filt);
+  *at++ = ',';
+  at = write_fixed6(at, flange);
+  *at++ = ',';
+  at = append(at, alarm);
+  *at++ = ',';
+  bool first = true;
+  for (const auto& [flag, name] : kFlagNames) {
+    if ((flags & flag) == 0) continue;
+    if (!first) *at++ = '|';
+    at = append(at, name);
+    first = false;
+  }
+  *at++ = '\n';
+  return at;
 }
 
 // Rows wait in a block for the engine; everything after the filter runs once it returns.
 constexpr std::size_t kBlock = 4096;
+// The output buffer: a block's rows at their usual length (about 50 characters), written once the
+// block is done or the buffer is full.
+constexpr std::size_t kOutputChunkBytes = std::size_t{1} << 18;
 
+// What the stages after the filter need of a row.
 struct PendingRow {
-  RecordingRow row;
-  std::string flags;
+  double t_s = 0.0;
+  double temp_c = 0.0;
+  std::optional<double> reference;  // the row's clearance_mm; none for a bad row
   double raw_mm = 0.0;
+  unsigned flags = 0;  // RowFlag bits
+  bool good() const { return (flags & kBadRow) == 0; }
 };
-
-void add_flag(std::string& flags, const char* name) {
-  flags += flags.empty() ? name : std::string("|") + name;
-}
 
 // The coefficient file's float design and core format; its errors are bad input.
 struct FilterFile {
@@ -149,7 +188,7 @@ class Pipeline {
   Pipeline(const RunOptions& options, RunTrace* trace);
 
   // Calibrates one row and queues it for the engine; a full block goes through at once.
-  void add(RecordingRow row);
+  void add(const RecordingRow& row);
   // Filters what is still queued and completes the summary.
   RunSummary finish(std::size_t rows_read);
 
@@ -161,6 +200,7 @@ class Pipeline {
   void convert_to_sample(const RecordingRow& row, PendingRow& p);
   void finish_block();
   void finish_row(PendingRow& p, const EngineOutput& output);
+  void flush_output();
   ThresholdOutput raise_alarms(double t_s, double filt_mm);
   References add_errors(const PendingRow& p, double filt_mm);
   void add_to_trace(const PendingRow& p, double filt_mm, const References& references);
@@ -175,8 +215,11 @@ class Pipeline {
 
   RunSummary summary_;
   std::ofstream out_;
-  fmt::memory_buffer out_buffer_;
-  std::deque<std::optional<double>> recent_reference_;  // for delay-aligned errors
+  std::vector<char> out_buffer_;  // output rows not yet written: [0, out_size_)
+  std::size_t out_size_ = 0;
+  // The last delay_samples + 1 references (NaN for none), a ring: for delay-aligned errors.
+  std::vector<double> recent_reference_;
+  std::size_t recent_next_ = 0;  // where the next reference goes
   EngineSample last_input_;
   std::optional<double> previous_t_;
   std::string previous_run_;
@@ -204,6 +247,10 @@ Pipeline::Pipeline(const RunOptions& options, RunTrace* trace)
     trace_->spectrum_filt.emplace(256, filter_.design.fs_hz);
   }
   open_output_csv();
+  if (summary_.delay_samples >= 0) {
+    recent_reference_.assign(static_cast<std::size_t>(summary_.delay_samples) + 1,
+                             std::numeric_limits<double>::quiet_NaN());
+  }
   pending_.reserve(kBlock);
   inputs_.reserve(kBlock);
 }
@@ -222,25 +269,27 @@ void Pipeline::open_output_csv() {
   out_.open(*options_.out_csv, std::ios::binary);
   if (!out_) throw std::runtime_error("cannot write " + *options_.out_csv);
   out_ << "t_s,clearance_raw_mm,clearance_filt_mm,flange_mm,alarm,flags\n";
+  out_buffer_.resize(kOutputChunkBytes + kMaxRowChars);
 }
 
-void Pipeline::add(RecordingRow row) {
-  PendingRow p;
+void Pipeline::add(const RecordingRow& row) {
+  PendingRow& p = pending_.emplace_back();
+  p.t_s = row.t_s;
+  p.temp_c = row.temp_c;
   if (!row.problem.empty()) {
     flag_bad_row(row, p);
   } else {
+    p.reference = row.clearance_mm;
     check_sample_rate(row);
     convert_to_sample(row, p);
   }
-  p.row = std::move(row);
-  pending_.push_back(std::move(p));
   inputs_.push_back(last_input_);
   if (pending_.size() == kBlock) finish_block();
 }
 
 // Lenient: the filter holds its last valid input, so its timing stays intact.
 void Pipeline::flag_bad_row(const RecordingRow& row, PendingRow& p) {
-  add_flag(p.flags, "bad_row");
+  p.flags |= kBadRow;
   ++summary_.bad_rows;
   if (summary_.bad_row_messages.size() < 5) {
     summary_.bad_row_messages.push_back(
@@ -250,7 +299,8 @@ void Pipeline::flag_bad_row(const RecordingRow& row, PendingRow& p) {
 
 // The filter was designed for fs: a recording at another rate would move its cut-off.
 void Pipeline::check_sample_rate(const RecordingRow& row) {
-  if (previous_t_ && row.run == previous_run_ && !rate_checked_) {
+  if (rate_checked_) return;  // once per run is enough
+  if (previous_t_ && row.run == previous_run_) {
     const double dt = row.t_s - *previous_t_;
     if (std::abs(dt * filter_.design.fs_hz - 1.0) > 0.02) {
       throw InputError(fmt::format(
@@ -269,14 +319,14 @@ void Pipeline::convert_to_sample(const RecordingRow& row, PendingRow& p) {
   const Calibration::Estimate estimate = calibration_.estimate(row.voltage_v, row.temp_c);
   p.raw_mm = estimate.clearance_mm;
   if (estimate.outside_calibration) {
-    add_flag(p.flags, "outside_calibration");
+    p.flags |= kOutsideCalibration;
     ++summary_.outside_calibration;
   }
   bool clipped = false;
   last_input_.word = scaling_.to_word(p.raw_mm, clipped);
   last_input_.unit = scaling_.to_unit(p.raw_mm);
   if (clipped) {
-    add_flag(p.flags, "clipped");
+    p.flags |= kClipped;
     ++summary_.clipped_samples;
   }
 }
@@ -286,26 +336,32 @@ void Pipeline::finish_block() {
   for (std::size_t k = 0; k < pending_.size(); ++k) finish_row(pending_[k], outputs_[k]);
   pending_.clear();
   inputs_.clear();
-  out_.write(out_buffer_.data(), static_cast<std::streamsize>(out_buffer_.size()));
-  out_buffer_.clear();
+  if (out_.is_open()) flush_output();  // block by block, as far as the run got
+}
+
+void Pipeline::flush_output() {
+  out_.write(out_buffer_.data(), static_cast<std::streamsize>(out_size_));
+  out_size_ = 0;
 }
 
 void Pipeline::finish_row(PendingRow& p, const EngineOutput& output) {
-  const RecordingRow& row = p.row;
   if (output.saturated) {
-    add_flag(p.flags, "saturated");
+    p.flags |= kSaturated;
     ++summary_.saturated_outputs;
   }
   const double filt_mm = scaling_.unit_to_mm(output.unit);
-  const ThresholdOutput alarm = raise_alarms(row.t_s, filt_mm);
-  if (!p.flags.empty()) ++summary_.rows_flagged;
+  const ThresholdOutput alarm = raise_alarms(p.t_s, filt_mm);
+  if (p.flags != 0) ++summary_.rows_flagged;
   if (out_.is_open()) {
-    format_row(out_buffer_, row.t_s, row.problem.empty() ? &p.raw_mm : nullptr, filt_mm,
-               alarm.flange_mm, alarm_name(alarm.level), p.flags);
+    char* const end =
+        format_row(out_buffer_.data() + out_size_, p.t_s, p.good() ? &p.raw_mm : nullptr, filt_mm,
+                   alarm.flange_mm, alarm_name(alarm.level), p.flags);
+    out_size_ = static_cast<std::size_t>(end - out_buffer_.data());
+    if (out_size_ >= kOutputChunkBytes) flush_output();
   }
   const References references = add_errors(p, filt_mm);
   summary_.filtered.add(filt_mm, references.settled);
-  if (trace_ != nullptr && row.problem.empty()) add_to_trace(p, filt_mm, references);
+  if (trace_ != nullptr && p.good()) add_to_trace(p, filt_mm, references);
 }
 
 ThresholdOutput Pipeline::raise_alarms(double t_s, double filt_mm) {
@@ -323,44 +379,45 @@ ThresholdOutput Pipeline::raise_alarms(double t_s, double filt_mm) {
 // Errors against the reference: before filtering sample by sample, after filtering against
 // the reference delay_samples earlier (the filter's lag is not an error).
 References Pipeline::add_errors(const PendingRow& p, double filt_mm) {
-  const bool good = p.row.problem.empty();
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   References references;
-  references.reference = good ? p.row.clearance_mm : std::nullopt;
-  recent_reference_.push_back(references.reference);
-  if (recent_reference_.size() > static_cast<std::size_t>(summary_.delay_samples) + 1) {
-    recent_reference_.pop_front();
-  }
+  references.reference = p.reference;
   if (references.reference) {
     summary_.has_reference = true;
     summary_.before.add(p.raw_mm - *references.reference);
   }
   // NaN when there is no aligned reference (start of the run, or a row without one).
-  references.aligned =
-      recent_reference_.size() == static_cast<std::size_t>(summary_.delay_samples) + 1
-          ? recent_reference_.front().value_or(std::nan(""))
-          : std::nan("");
+  references.aligned = kNone;
+  if (!recent_reference_.empty()) {
+    recent_reference_[recent_next_] = references.reference.value_or(kNone);
+    if (++recent_next_ == recent_reference_.size()) recent_next_ = 0;
+    // The oldest of the ring, once it has filled: this row's reference delay_samples ago.
+    if (rows_done_ + 1 >= recent_reference_.size()) {
+      references.aligned = recent_reference_[recent_next_];
+    }
+  }
   ++rows_done_;
   references.settled = rows_done_ > summary_.settle_samples;
-  if (!std::isnan(references.aligned) && good && references.settled) {
+  if (!std::isnan(references.aligned) && p.good() && references.settled) {
     summary_.after.add(filt_mm - references.aligned);
   }
   return references;
 }
 
 void Pipeline::add_to_trace(const PendingRow& p, double filt_mm, const References& references) {
-  const RecordingRow& row = p.row;
   const std::optional<double>& reference = references.reference;
   const double aligned = references.aligned;
-  trace_->add(row.t_s, p.raw_mm, filt_mm, reference.value_or(std::nan("")), row.temp_c);
+  trace_->add(p.t_s, p.raw_mm, filt_mm,
+              reference.value_or(std::numeric_limits<double>::quiet_NaN()), p.temp_c);
   trace_->spectrum_raw->push(p.raw_mm);
   trace_->spectrum_filt->push(filt_mm);
   if (reference) {
-    trace_->region_before[static_cast<std::size_t>(region_index(*reference, row.temp_c))].add(
+    trace_->region_before[static_cast<std::size_t>(region_index(*reference, p.temp_c))].add(
         p.raw_mm - *reference);
   }
   if (!std::isnan(aligned) && references.settled) {
-    trace_->region_after[static_cast<std::size_t>(region_index(aligned, row.temp_c))].add(filt_mm -
-                                                                                          aligned);
+    trace_->region_after[static_cast<std::size_t>(region_index(aligned, p.temp_c))].add(filt_mm -
+                                                                                        aligned);
   }
 }
 
@@ -378,7 +435,8 @@ RunSummary Pipeline::finish(std::size_t rows_read) {
 RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
   Pipeline pipeline(options, trace);
   RecordingReader reader(options.input, options.lenient);
-  while (std::optional<RecordingRow> row = reader.next()) pipeline.add(std::move(*row));
+  RecordingRow row;
+  while (reader.next(row)) pipeline.add(row);
   return pipeline.finish(reader.rows_read());
 }
 

@@ -142,6 +142,27 @@ TEST_F(RunCommand, BadRowsStopAStrictRunAndAreCountedInALenientOne) {
   EXPECT_NE(csv.find(",bad_row\n"), std::string::npos);
 }
 
+TEST_F(RunCommand, ABadRowPastTheFirstBlockStopsTheRunAtItsLine) {
+  // Past the first block of 4096 rows (the pipeline's unit of work) the error is still the one
+  // line naming the file, the line and the column.
+  std::istringstream lines(read(dir_ / "bench.csv"));
+  std::string line, corrupted;
+  for (int n = 1; std::getline(lines, line); ++n) {
+    if (n == 6001) line = line.substr(0, line.rfind(',')) + ",abc";
+    corrupted += line + "\n";
+  }
+  const auto bad = write_file(dir_ / "bad_late.csv", corrupted);
+  std::vector<std::string> args = run_args(bad.string(), "model");
+  args.insert(args.end(), {"--out", (dir_ / "bad_late_out.csv").string()});
+  const FlangeOutcome strict = run_flange_captured(args);
+  EXPECT_EQ(strict.status, 2);
+  EXPECT_NE(
+      strict.err.find("bad_late.csv:6001: column 4 (voltage_v): 'abc' is not a finite number"),
+      std::string::npos)
+      << strict.err;
+  EXPECT_EQ(std::count(strict.err.begin(), strict.err.end(), '\n'), 1) << strict.err;
+}
+
 TEST_F(RunCommand, ARecordingAtTheWrongRateIsRefused) {
   const FlangeOutcome sim =
       run_flange_captured({"simulate", "--scenario", "bench", "--fs", "100", "--duration", "5",

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: MIT
 // The double-precision reference: the SOS cascade and the direct form agree where the direct form
-// is well conditioned, and both match scipy's design of the thesis's measurement filter.
+// is well conditioned, and both match scipy's design of the thesis's measurement filter; the
+// quantised cascade is the ROM's section values; the frequency response is the impulse
+// response's transform.
 #include "reference_filter.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "filter_json.h"
 
@@ -80,6 +84,46 @@ TEST(ReferenceFilter, ResetClearsTheState) {
   const auto first = impulse_response(f, 100);
   f.reset();
   EXPECT_EQ(impulse_response(f, 100), first);
+}
+
+TEST(ReferenceFilter, QuantizedIsTheSectionValuesOfFilterJson) {
+  for (const std::string set : {"measurement_sos", "measurement_df1", "vehicle_sos"}) {
+    // filter.json's quantized.section_values, written by the generator beside the ROM words.
+    std::ifstream in(set_json(set));
+    const nlohmann::json json = nlohmann::json::parse(in);
+    FloatDesign values = load_float_design(set_json(set));
+    values.sos.clear();
+    for (const auto& section : json["quantized"]["section_values"]) {
+      const auto b = section["b"].get<std::vector<double>>();
+      const auto a = section["a"].get<std::vector<double>>();
+      if (b.size() == 3 && a.size() == 3)
+        values.sos.push_back({b[0], b[1], b[2], a[0], a[1], a[2]});
+      values.b = b;  // a single section (measurement_df1) as one direct form
+      values.a = a;
+    }
+    const bool one_section = json["quantized"]["section_values"].size() == 1;
+    ReferenceFilter expected(
+        values, one_section ? ReferenceFilter::Form::kDirect : ReferenceFilter::Form::kSos);
+    ReferenceFilter quantized =
+        ReferenceFilter::quantized(load_core_config(set_json(set)), values.leftover_gain);
+    EXPECT_EQ(impulse_response(quantized, 500), impulse_response(expected, 500)) << set;
+  }
+}
+
+TEST(ReferenceFilter, ResponseIsTheTransformOfTheImpulseResponse) {
+  const std::filesystem::path json = set_json("measurement_sos");
+  ReferenceFilter design(load_float_design(json));
+  ReferenceFilter quantized = ReferenceFilter::quantized(load_core_config(json), 1.0);
+  for (ReferenceFilter* filter : {&design, &quantized}) {
+    const auto h = impulse_response(*filter, 2000);  // decayed far below 1e-12 by then
+    for (const double f : {0.0, 0.01, 0.1, 0.25, 0.5}) {
+      std::complex<double> sum = 0.0;
+      for (std::size_t n = 0; n < h.size(); ++n) {
+        sum += h[n] * std::polar(1.0, -2.0 * std::numbers::pi * f * static_cast<double>(n));
+      }
+      EXPECT_NEAR(std::abs(filter->response(f) - sum), 0.0, 1e-12) << "f/fs = " << f;
+    }
+  }
 }
 
 }  // namespace
