@@ -185,6 +185,32 @@ TEST(DiagnoseCommand, WritesJsonAndReportWithVerdictFirst) {
   }
 }
 
+// A 6-bit converter over 0-10.24 V (none of the usual ranges): the grid is estimated from the
+// data, reported, and the analog noise behind it is found, where the median of lag-2
+// differences would read the quantisation's staircase.
+TEST(DiagnoseCommand, ACoarseGridIsEstimatedReportedAndTheNoiseSurvivesIt) {
+  const auto dir = fresh_test_dir("diagnose_coarse_grid");
+  const std::vector<sim::EffectSettings> effects = {sim::make_effect_settings(
+      "adc_quantization", {{"bits", 6}, {"v_min", 0.0}, {"v_max", 10.24}}, "test")};
+  write_csv(dir / "real.csv", twin_recording(effects, 61, 0.0));
+  write_csv(dir / "heldout.csv", twin_recording(effects, 62, 70.0));
+  const FlangeOutcome o = run_flange_captured({"diagnose", "--real", (dir / "real.csv").string(),
+                                               "--holdout", (dir / "heldout.csv").string(), "--out",
+                                               (dir / "out").string(), "--bootstrap", "20"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("converter grid: LSB 160 mV"), std::string::npos) << o.out;
+  std::ifstream in(dir / "out" / "diagnosis.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j["adc_grid"].is_object()) << j.dump(1);
+  EXPECT_NEAR(j["adc_grid"]["lsb_v"].get<double>(), 0.16, 1e-4);
+  EXPECT_FALSE(j["adc_grid"]["usual_range"].get<bool>());
+  EXPECT_NEAR(j["noise"]["analog_std_v"].get<double>(), kNoiseV, 0.2 * kNoiseV);
+  EXPECT_TRUE(j["noise"]["grid_aware"].get<bool>());
+  EXPECT_EQ(j["verdict"]["status"], "explained") << o.out;
+  const auto& named = j["verdict"]["effects"];
+  EXPECT_NE(std::find(named.begin(), named.end(), "adc_quantization"), named.end()) << o.out;
+}
+
 TEST(DiagnoseCommand, BadInputsGiveOneLineAndStatusTwo) {
   const auto dir = fresh_test_dir("diagnose_bad");
   const RecordingSeries good = twin_recording({}, 51, 0.0);
