@@ -67,8 +67,14 @@ AltScore score_alt_pair(const AltPairSpec& spec, const Diagnosis& diagnosis,
   if (diagnosis.status == "explained") {
     for (const EffectFinding& f : diagnosis.effects) score.claimed.push_back(class_of_finding(f));
   }
-  if (diagnosis.status == "unexplained" && !partial.empty()) {
-    score.nearest = class_of_finding(partial.front());
+  if (diagnosis.status == "unexplained") {
+    const EffectFinding* nearest = diagnosis.nearest  ? &*diagnosis.nearest
+                                   : !partial.empty() ? &partial.front()
+                                                      : nullptr;
+    if (nearest != nullptr) {
+      score.nearest = class_of_finding(*nearest);
+      score.nearest_shrink_pct = nearest->shrink_pct;
+    }
   }
   for (const std::string& c : score.claimed) score.spurious += holds_class(spec, c) ? 0 : 1;
   if (in_library(spec)) {

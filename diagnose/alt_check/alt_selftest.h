@@ -18,6 +18,7 @@ namespace flange::diagnose {
 struct AltScore {
   std::vector<std::string> claimed;  // the classes an "explained" verdict names, in its order
   std::string nearest;               // "unexplained": the class it came nearest to ("" if none)
+  double nearest_shrink_pct = 0.0;   // how far that class alone shrank the held-out gap
   bool verdict_correct = false;      // in-library: explained; null: none; outside: unexplained
   bool top_correct = false;        // in-library: explained and the first class named is a true one
   bool all_found = false;          // in-library: every true class is named
@@ -28,8 +29,8 @@ struct AltScore {
   double excess_shrink_pct = 0.0;  // the part of it above the pair's true noise
 };
 
-// Scores one pair. `nearest` is the class of the candidate an unexplained verdict came nearest
-// to (the first partial finding when the diagnosis gives none itself).
+// Scores one pair. An "unexplained" verdict's nearest class is the diagnosis's nearest effect
+// (the first of `partial` when it gives none).
 AltScore score_alt_pair(const alt_reality::AltPairSpec& spec, const Diagnosis& diagnosis,
                         const std::vector<EffectFinding>& partial);
 

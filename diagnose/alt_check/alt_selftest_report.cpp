@@ -38,7 +38,8 @@ const char* yes_no(bool applies, bool value) {
 
 std::string nearest_cell(const AltPairResult& r) {
   if (r.diagnosis.status != "unexplained" || r.score.nearest.empty()) return "";
-  return r.score.nearest + (in_library(r) ? (r.score.nearest_correct ? " (yes)" : " (no)") : "");
+  return fmt::format("{} {:.0f}%{}", r.score.nearest, r.score.nearest_shrink_pct,
+                     in_library(r) ? (r.score.nearest_correct ? " (yes)" : " (no)") : "");
 }
 
 std::string percent(int part, int whole) {
@@ -61,6 +62,7 @@ nlohmann::json pair_json(const AltPairResult& r) {
   j["verdict"] = r.diagnosis.status;
   j["claimed_classes"] = r.score.claimed;
   j["nearest_class"] = r.score.nearest;
+  j["nearest_shrink_pct"] = r.score.nearest_shrink_pct;
   j["verdict_correct"] = r.score.verdict_correct;
   if (in_library(r)) {
     j["top_correct"] = r.score.top_correct;

@@ -194,6 +194,7 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   nlohmann::ordered_json partial = nlohmann::ordered_json::array();
   for (const EffectFinding& f : d.partial) partial.push_back(finding_json(f));
   j["partial_effects"] = partial;
+  j["nearest"] = g.nearest ? finding_json(*g.nearest) : nlohmann::ordered_json();
   const HowFar& h = d.how_far;
   j["how_far"] = {
       {"heldout_rms_before_v", h.rms_before},       {"heldout_rms_after_v", h.rms_after},
@@ -237,6 +238,9 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
         g.effects.empty() ? "partial" : "effect", f.name, params, f.heldout_rms_before,
         f.heldout_rms_after, f.shrink_pct, f.inclusion, f.noise_type ? " (noise-type)" : "");
   }
+  if (g.nearest) {
+    text << fmt::format("  nearest: {} ({})\n", g.nearest->name, g.nearest->evidence);
+  }
   text << fmt::format(
       "  how far: held-out RMS {:.4f} -> {:.4f} V, max {:.4f} -> {:.4f} V; noise {:.4f} V\n",
       d.how_far.rms_before, d.how_far.rms_after, d.how_far.max_before, d.how_far.max_after,
@@ -270,6 +274,11 @@ void write_diagnosis_report(const std::filesystem::path& dir, const DiagnosisRes
        << "</pre>\n";
   html << "<h2>Verdict</h2><ul>";
   for (const std::string& r : d.reasons) html << "<li>" << coeffs::html_escape(r) << "</li>";
+  if (result.diagnosis.nearest) {
+    const EffectFinding& n = *result.diagnosis.nearest;
+    html << "<li>nearest library effect: <b>" << coeffs::html_escape(n.name) << "</b>, "
+         << coeffs::html_escape(n.evidence) << "</li>";
+  }
   html << "</ul>\n<h2>The gap at each stage</h2><table><tr><th>stage</th><th>gap RMS</th>"
           "<th>noise floor</th><th>real error</th><th>sim error</th><th>significant</th></tr>\n";
   for (const StageGap& s : d.stages) {

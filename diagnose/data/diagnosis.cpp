@@ -416,6 +416,8 @@ struct Selection {
   std::vector<Step> steps;                          // one per bias-type pick
   std::vector<EffectFinding> findings;              // in selection order
   std::optional<AdcGrid> quantised_on;              // the converter grid, once recognised
+  bool quantisation_as_noise = false;               // its codes not reproduced: taken as noise
+  std::optional<EffectFinding> nearest_unpicked;    // the best candidate when none was significant
 };
 
 // What the held-out gap that is left is compared with, and why when it is not the white noise.
@@ -504,10 +506,9 @@ struct Pick {
   double lower = 0.0;    // its block-bootstrap 5 % quantile, V^2
 };
 
-// The candidate that lowers the held-out mean square most, if the gain is significant: a real
-// share of the noise variance, and its block-bootstrap 95 % lower bound above zero.
-std::optional<Pick> pick_next_effect(const std::vector<Candidate>& candidates,
-                                     const Selection& selection) {
+// The candidate that lowers the held-out mean square most, with its gain and the gain's
+// block-bootstrap 5 % quantile.
+Pick best_candidate(const std::vector<Candidate>& candidates, const Selection& selection) {
   const std::vector<double>& current_error = selection.current_error;
   const double mse_now = rms_of(current_error) * rms_of(current_error);
   Pick pick;
@@ -525,9 +526,14 @@ std::optional<Pick> pick_next_effect(const std::vector<Candidate>& candidates,
                     mean_square_on(candidates[pick.best].heldout_error, set));
   }
   pick.lower = quantile(gains, 0.05);
-  const double sigma = selection.sigma;
-  if (pick.gain < kMinGainOfNoiseVariance * sigma * sigma || pick.lower <= 0.0) return std::nullopt;
   return pick;
+}
+
+// A gain is significant when it is a real share of the noise variance and its block-bootstrap
+// 95 % lower bound is above zero.
+bool significant(const Pick& pick, const Selection& selection) {
+  const double sigma = selection.sigma;
+  return pick.gain >= kMinGainOfNoiseVariance * sigma * sigma && pick.lower > 0.0;
 }
 
 // The finding for a picked candidate: its fit and how far it shrinks the held-out gap.
@@ -592,9 +598,16 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
     std::vector<Candidate> candidates =
         score_candidates(parts, selection.modelled, selection.first_selected);
     if (candidates.empty()) break;
-    const std::optional<Pick> pick = pick_next_effect(candidates, selection);
-    if (!pick) break;
-    take_pick(std::move(candidates), *pick, selection);
+    const Pick pick = best_candidate(candidates, selection);
+    if (!significant(pick, selection)) {
+      // Nothing significant at all: what came nearest is kept for an "unexplained" verdict.
+      if (selection.findings.empty()) {
+        selection.nearest_unpicked =
+            finding_for_pick(candidates[pick.best], pick, selection.current_error);
+      }
+      break;
+    }
+    take_pick(std::move(candidates), pick, selection);
     if (options.estimate_noise) reestimate_noise(parts, selection, result);
   }
 }
@@ -650,8 +663,12 @@ std::string grid_evidence(const AdcGrid& grid) {
           : fmt::format("modelled as a {}-bit converter from {:.6g} V", grid.bits, grid.v_min));
 }
 
-// adc_quantization, recognised when the voltages of both parts lie on one converter grid.
-void recognise_quantization(const Parts& parts, Selection& selection) {
+// adc_quantization, recognised when the voltages of both parts lie on one converter grid. The
+// twin's converter on that grid is kept when it reproduces the recorded codes (what it leaves
+// is within what the noise alone would leave); when it does not (the thresholds sit elsewhere:
+// a truncating converter, a gain or offset calibration in the DAQ software), the quantisation is
+// taken as noise of LSB / sqrt(12), which the effective white noise already holds.
+void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selection& selection) {
   const auto cal_grid = estimate_adc_grid(parts.calibration.voltage_v);
   const auto ho_grid = estimate_adc_grid(parts.heldout.voltage_v);
   if (!cal_grid || !ho_grid || !same_grid(*cal_grid, *ho_grid)) return;
@@ -669,11 +686,22 @@ void recognise_quantization(const Parts& parts, Selection& selection) {
   std::vector<sim::EffectSettings> with = selection.modelled;
   with.push_back(grid->as_effect());
   finding.heldout_rms_before = rms_of(selection.current_error);
-  selection.current_error = minus(parts.heldout.voltage_v, parts.ho_replay.voltage(with));
+  std::vector<double> replayed = minus(parts.heldout.voltage_v, parts.ho_replay.voltage(with));
+  const double null_rms = quantised_null_rms(white.analog_std_v, grid->lsb_v);
+  if (rms_of(replayed) <= kExplainedRatio * null_rms) {
+    selection.current_error = std::move(replayed);
+    selection.modelled = with;
+  } else {
+    selection.quantisation_as_noise = true;
+    finding.evidence += fmt::format(
+        "; the twin's converter on it does not reproduce the recorded codes ({:.4g} V left where "
+        "the noise alone leaves {:.4g} V: the thresholds sit elsewhere), so the quantisation is "
+        "taken as noise of LSB / sqrt(12) = {:.4g} V",
+        rms_of(replayed), null_rms, grid->lsb_v / std::sqrt(12.0));
+  }
   finding.heldout_rms_after = rms_of(selection.current_error);
   finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
                        std::max(finding.heldout_rms_before, 1e-30);
-  selection.modelled = with;
   selection.findings.push_back(finding);
   selection.quantised_on = grid;
 }
@@ -738,6 +766,13 @@ VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
 VerdictNoise with_converter_grid(const Selection& selection, const WhiteNoise& white,
                                  VerdictNoise noise) {
   if (!selection.quantised_on) return noise;
+  if (selection.quantisation_as_noise) {
+    const std::string why = fmt::format(
+        "the quantisation taken as noise: what is left is compared with the white noise with the "
+        "grid's LSB^2/12 in it ({:.4g} V)",
+        white.effective_std_v);
+    return {noise.rms_v, noise.why.empty() ? why : noise.why + "; " + why};
+  }
   const double null_rms = quantised_null_rms(white.analog_std_v, selection.quantised_on->lsb_v);
   const std::string why = fmt::format(
       "with the converter grid modelled, what is left is compared with {:.4g} V: what quantising "
@@ -745,6 +780,23 @@ VerdictNoise with_converter_grid(const Selection& selection, const WhiteNoise& w
       null_rms, white.analog_std_v, 1e3 * selection.quantised_on->lsb_v);
   if (noise.why.empty()) return {null_rms, why};
   return null_rms > noise.rms_v ? VerdictNoise{null_rms, noise.why + "; " + why} : noise;
+}
+
+// The library effect an "unexplained" verdict came nearest to: the first it selected, or, when
+// none was significant, the candidate that lowered the held-out gap most; with how far it went.
+std::optional<EffectFinding> nearest_effect(const Selection& selection, double verdict_noise) {
+  const bool picked = !selection.findings.empty();
+  if (!picked && !selection.nearest_unpicked) return std::nullopt;
+  EffectFinding nearest = picked ? selection.findings.front() : *selection.nearest_unpicked;
+  nearest.evidence = fmt::format(
+      "{}: it takes the held-out gap RMS from {:.4g} to {:.4g} V ({:.1f} %){}; {:.4g} V is left "
+      "where the noise allows {:.4g} V",
+      picked ? "selected, but the effects selected leave too much"
+             : "the nearest candidate, not significant",
+      nearest.heldout_rms_before, nearest.heldout_rms_after, nearest.shrink_pct,
+      picked && selection.findings.size() > 1 ? " on its own" : "", rms_of(selection.current_error),
+      kExplainedRatio * verdict_noise);
+  return nearest;
 }
 
 // The status, "explained", "unexplained" or "none", and the reasons for it.
@@ -774,6 +826,7 @@ void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisRes
   } else if (gap_exists) {
     diagnosis.status = "unexplained";
     result.detail.partial = findings;
+    diagnosis.nearest = nearest_effect(selection, verdict_noise);
     reasons.push_back(findings.empty()
                           ? "no library effect shrinks the held-out gap significantly"
                           : "the effects that help leave more than the noise: something outside "
@@ -855,7 +908,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   select_bias_effects(parts, options, selection, result);
   measure_inclusion(selection);
   // Noise-type effects, recognised from their signatures in both parts.
-  recognise_quantization(parts, selection);
+  recognise_quantization(parts, result.detail.white_noise, selection);
   const VerdictNoise verdict_noise = with_converter_grid(selection, result.detail.white_noise,
                                                          recognise_vibration(parts, selection));
   verdict(selection, verdict_noise, result);

@@ -69,6 +69,13 @@ TEST(AltSelftest, ScoringCountsTopNearestAndTheGapAboveTheTrueNoise) {
   EXPECT_FALSE(u.top_correct);
   EXPECT_EQ(u.nearest, "temperature_reading_lag");
   EXPECT_FALSE(u.nearest_correct);  // the sensor lagged, not the reading
+  Diagnosis with_nearest = unexplained;
+  with_nearest.nearest = finding("thermal_lag", {{"tau_s", 400}});
+  with_nearest.nearest->shrink_pct = 35.0;
+  const AltScore w = score_alt_pair(pair, with_nearest, {});
+  EXPECT_EQ(w.nearest, "sensor_thermal_lag");  // the diagnosis's own nearest effect
+  EXPECT_TRUE(w.nearest_correct);
+  EXPECT_EQ(w.nearest_shrink_pct, 35.0);
 
   Diagnosis none;
   none.status = "none";

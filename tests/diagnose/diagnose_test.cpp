@@ -128,6 +128,10 @@ TEST(Diagnose, GainStepOutsideTheLibraryIsUnexplained) {
   EXPECT_EQ(d.status, "unexplained");
   EXPECT_EQ(d.stage, "voltage");
   EXPECT_TRUE(d.effects.empty());
+  // Still the effect it came nearest to, and how far that went.
+  ASSERT_TRUE(d.nearest.has_value());
+  EXPECT_LT(d.nearest->heldout_rms_after, d.nearest->heldout_rms_before);
+  EXPECT_NE(d.nearest->evidence.find("V is left"), std::string::npos) << d.nearest->evidence;
 }
 
 TEST(Diagnose, ReplayMatchesTheTwinSampleForSample) {
@@ -209,6 +213,27 @@ TEST(DiagnoseCommand, ACoarseGridIsEstimatedReportedAndTheNoiseSurvivesIt) {
   EXPECT_EQ(j["verdict"]["status"], "explained") << o.out;
   const auto& named = j["verdict"]["effects"];
   EXPECT_NE(std::find(named.begin(), named.end(), "adc_quantization"), named.end()) << o.out;
+}
+
+TEST(DiagnoseCommand, AnUnexplainedVerdictNamesTheNearestEffectInTextJsonAndHtml) {
+  const auto dir = fresh_test_dir("diagnose_nearest");
+  write_csv(dir / "real.csv", twin_recording({}, 71, 0.0, 0.94));
+  write_csv(dir / "heldout.csv", twin_recording({}, 72, 70.0, 0.94));
+  const FlangeOutcome o = run_flange_captured({"diagnose", "--real", (dir / "real.csv").string(),
+                                               "--holdout", (dir / "heldout.csv").string(), "--out",
+                                               (dir / "out").string(), "--bootstrap", "20"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("verdict: unexplained", 0), 0u) << o.out;
+  EXPECT_NE(o.out.find("  nearest: "), std::string::npos) << o.out;
+  std::ifstream in(dir / "out" / "diagnosis.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j["nearest"].is_object()) << j.dump(1);
+  EXPECT_FALSE(j["nearest"]["name"].get<std::string>().empty());
+  EXPECT_GT(j["nearest"]["shrink_pct"].get<double>(), 0.0);
+  std::ifstream html(dir / "out" / "report.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("nearest library effect: <b>" + j["nearest"]["name"].get<std::string>()),
+            std::string::npos);
 }
 
 TEST(DiagnoseCommand, BadInputsGiveOneLineAndStatusTwo) {
