@@ -11,6 +11,7 @@
 
 #include "bench_scenario.h"
 #include "cli.h"
+#include "diagnose_alt_selftest_command.h"
 #include "input_error.h"
 #include "selftest_report.h"
 
@@ -48,7 +49,15 @@ void write_selftest_files(const SelftestCommandOptions& options, const std::stri
 void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
   diagnose.add_flag("--selftest", options.selftest,
                     "blind check: simulated bench sessions with random, undisclosed effects");
-  diagnose.add_option("--cases", options.run.cases, "--selftest: number of cases, 1 to 1000")
+  diagnose
+      .add_option("--reality", options.reality,
+                  "--selftest: whose sessions: twin (the sensor twin's) or alt (the alternative "
+                  "reality's, diagnose/alt_reality/)")
+      ->default_val("twin")
+      ->check(CLI::IsMember({"twin", "alt"}));
+  diagnose
+      .add_option("--cases,--pairs", options.run.cases,
+                  "--selftest: number of cases (pairs of sessions), 1 to 1000")
       ->default_val(10)
       ->check(CLI::Range(1, 1000));
   diagnose
@@ -58,7 +67,7 @@ void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
   diagnose
       .add_option("--duration", options.run.duration_s,
                   "--selftest: seconds per bench session, 600 to 6600 (default: the protocol's "
-                  "6600)")
+                  "own; --reality alt: a cap on its 3600-6600)")
       ->check(CLI::Range(600.0, 6600.0));
   diagnose.add_option("--jobs", options.run.jobs, "--selftest: worker threads, 1 to 64")
       ->check(CLI::Range(1, 64));
@@ -66,6 +75,7 @@ void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
 
 int run_selftest_command(const SelftestCommandOptions& options, std::ostream& out,
                          std::ostream& err) {
+  if (options.reality == "alt") return run_alt_selftest_command(options, out, err);
   const auto start = std::chrono::steady_clock::now();
   std::vector<diagnose::SelftestCaseResult> results;
   try {

@@ -2,7 +2,8 @@
 // `flange diagnose --selftest --cases N --seed S`: the blind check of the data layer
 // (diagnose/data/diagnose_selftest.h). Prints one row per case and the summary against the aims;
 // with --out writes DIR/selftest.json and DIR/selftest.md (the table as docs/diagnose.md records
-// it).
+// it). `--reality alt [--pairs N]` runs it on the alternative reality instead
+// (diagnose/alt_check/, diagnose_alt_selftest_command.h).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -17,10 +18,12 @@ namespace flange::cli {
 struct SelftestCommandOptions {
   bool selftest = false;
   diagnose::SelftestOptions run;   // cases, duration, jobs; seed and bootstrap from the data layer
+  std::string reality = "twin";    // "twin": the sensor twin's sessions; "alt": the alternative
   std::optional<std::string> out;  // folder for selftest.json and selftest.md
 };
 
-// --selftest --cases --duration --jobs (--seed, --out and --bootstrap are the data layer's).
+// --selftest --reality --cases (--pairs) --case --duration --jobs (--seed, --out and --bootstrap
+// are the data layer's).
 void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options);
 
 // 0 when every aim is met, 1 when one is missed (the summary says which) or a file cannot be

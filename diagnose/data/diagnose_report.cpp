@@ -41,6 +41,20 @@ nlohmann::ordered_json region_json(const RegionCell& c) {
           {"rms_ci95_v", {c.rms_lo, c.rms_hi}}};
 }
 
+nlohmann::ordered_json adc_grid_json(const AdcGrid& g) {
+  return {{"lsb_v", g.lsb_v},
+          {"lowest_v", g.lowest_v},
+          {"highest_v", g.highest_v},
+          {"codes_used", g.codes_used},
+          {"codes_spanned", g.codes_spanned},
+          {"share_on_grid", g.share_on_grid},
+          {"bits", g.bits},
+          {"v_min", g.v_min},
+          {"v_max", g.v_max},
+          {"usual_range", g.usual_range},
+          {"quantisation_std_v", g.lsb_v / std::sqrt(12.0)}};
+}
+
 // At most about 4000 points per trace: every k-th sample.
 std::vector<std::vector<double>> decimated(const std::vector<std::vector<double>>& columns) {
   const std::size_t n = columns.front().size();
@@ -119,8 +133,8 @@ void plot_time(const std::filesystem::path& dir, const DiagnosisDetail& d) {
 
 void plot_heldout(const std::filesystem::path& dir, const DiagnosisDetail& d) {
   std::string script = coeffs::gnuplot_svg_terminal(dir / "heldout.svg", 1000, 450);
-  script +=
-      coeffs::gnuplot_data_block("ho", decimated({d.heldout_t_s, d.heldout_gap_before_v, d.heldout_gap_after_v}));
+  script += coeffs::gnuplot_data_block(
+      "ho", decimated({d.heldout_t_s, d.heldout_gap_before_v, d.heldout_gap_after_v}));
   script +=
       "set xlabel 'time (s)'\nset ylabel 'voltage gap on held-out data (V)'\nset key outside "
       "bottom center horizontal\nplot $ho using 1:2 with lines lc rgb '#bbbbbb' title 'before "
@@ -180,6 +194,7 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   nlohmann::ordered_json partial = nlohmann::ordered_json::array();
   for (const EffectFinding& f : d.partial) partial.push_back(finding_json(f));
   j["partial_effects"] = partial;
+  j["nearest"] = g.nearest ? finding_json(*g.nearest) : nlohmann::ordered_json();
   const HowFar& h = d.how_far;
   j["how_far"] = {
       {"heldout_rms_before_v", h.rms_before},       {"heldout_rms_after_v", h.rms_after},
@@ -189,7 +204,11 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   nlohmann::ordered_json regions = nlohmann::ordered_json::array();
   for (const RegionCell& c : d.regions) regions.push_back(region_json(c));
   j["regions"] = regions;
-  j["noise"] = {{"voltage_std_v", d.noise_std_v}, {"source", d.noise_source}};
+  j["noise"] = {{"voltage_std_v", d.noise_std_v},
+                {"source", d.noise_source},
+                {"analog_std_v", d.white_noise.analog_std_v},
+                {"grid_aware", d.white_noise.grid_aware}};
+  j["adc_grid"] = d.adc_grid ? adc_grid_json(*d.adc_grid) : nlohmann::ordered_json();
   j["fs_hz"] = d.fs_hz;
   return j;
 }
@@ -219,10 +238,21 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
         g.effects.empty() ? "partial" : "effect", f.name, params, f.heldout_rms_before,
         f.heldout_rms_after, f.shrink_pct, f.inclusion, f.noise_type ? " (noise-type)" : "");
   }
+  if (g.nearest) {
+    text << fmt::format("  nearest: {} ({})\n", g.nearest->name, g.nearest->evidence);
+  }
   text << fmt::format(
       "  how far: held-out RMS {:.4f} -> {:.4f} V, max {:.4f} -> {:.4f} V; noise {:.4f} V\n",
       d.how_far.rms_before, d.how_far.rms_after, d.how_far.max_before, d.how_far.max_after,
       d.noise_std_v);
+  if (d.adc_grid) {
+    text << fmt::format(
+        "  converter grid: LSB {:.4g} mV, codes {:.6g} to {:.6g} V ({} used); analog noise {:.4f} "
+        "V{}\n",
+        1e3 * d.adc_grid->lsb_v, d.adc_grid->lowest_v, d.adc_grid->highest_v,
+        d.adc_grid->codes_used, d.white_noise.analog_std_v,
+        d.white_noise.grid_aware ? " (fitted on the grid)" : "");
+  }
   return text.str();
 }
 
@@ -236,12 +266,19 @@ void write_diagnosis_report(const std::filesystem::path& dir, const DiagnosisRes
   std::ofstream html(dir / "report.html", std::ios::binary);
   if (!html) throw std::runtime_error("cannot write " + (dir / "report.html").string());
   html << "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>flange diagnose: "
-       << coeffs::html_escape(title) << "</title>\n<style>body{font-family:sans-serif;max-width:1050px;"
+       << coeffs::html_escape(title)
+       << "</title>\n<style>body{font-family:sans-serif;max-width:1050px;"
        << "margin:1em auto}pre{background:#f4f4f4;padding:.8em}img{max-width:100%}"
        << "td,th{padding:2px 8px;text-align:right}</style></head><body>\n";
-  html << "<h1>flange diagnose</h1>\n<pre>" << coeffs::html_escape(diagnosis_summary(result)) << "</pre>\n";
+  html << "<h1>flange diagnose</h1>\n<pre>" << coeffs::html_escape(diagnosis_summary(result))
+       << "</pre>\n";
   html << "<h2>Verdict</h2><ul>";
   for (const std::string& r : d.reasons) html << "<li>" << coeffs::html_escape(r) << "</li>";
+  if (result.diagnosis.nearest) {
+    const EffectFinding& n = *result.diagnosis.nearest;
+    html << "<li>nearest library effect: <b>" << coeffs::html_escape(n.name) << "</b>, "
+         << coeffs::html_escape(n.evidence) << "</li>";
+  }
   html << "</ul>\n<h2>The gap at each stage</h2><table><tr><th>stage</th><th>gap RMS</th>"
           "<th>noise floor</th><th>real error</th><th>sim error</th><th>significant</th></tr>\n";
   for (const StageGap& s : d.stages) {

@@ -4,16 +4,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
-#include <mutex>
 #include <random>
-#include <thread>
 
 #include "bench_scenario.h"
 #include "diagnosis_detail.h"
+#include "parallel_cases.h"
 #include "sensor_twin.h"
 
 namespace flange::diagnose {
@@ -293,41 +290,22 @@ SelftestSummary summarise_selftest(const std::vector<SelftestCaseResult>& result
 std::vector<SelftestCaseResult> run_selftest(const SelftestOptions& options) {
   const int count = options.only_case > 0 ? 1 : options.cases;
   std::vector<SelftestCaseResult> results(static_cast<std::size_t>(count));
-  std::atomic<int> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto worker = [&] {
-    for (int i = next++; i < count; i = next++) {
-      try {
-        const auto start = std::chrono::steady_clock::now();
-        SelftestCaseResult& r = results[static_cast<std::size_t>(i)];
-        const int index = options.only_case > 0 ? options.only_case : i + 1;
-        r.spec = draw_selftest_case(index, options.seed);
-        SelftestRecordings rec = make_selftest_recordings(r.spec, options.duration_s);
-        DiagnoseOptions diagnose_options;  // blind: the default twin, noise estimated
-        diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
-        diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
-        DiagnosisResult detailed =
-            diagnose_in_detail(rec.calibration, rec.heldout, diagnose_options);
-        r.diagnosis = std::move(detailed.diagnosis);
-        r.partial = std::move(detailed.detail.partial);
-        r.score = score_selftest_case(r.spec, r.diagnosis, rec.noise_std_v);
-        if (options.only_case > 0) r.recordings = std::move(rec);
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  const int jobs = std::clamp(
-      options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency()), 1,
-      count);
-  std::vector<std::thread> threads;
-  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
-  worker();
-  for (std::thread& t : threads) t.join();
-  if (failure) std::rethrow_exception(failure);
+  run_in_parallel(count, options.jobs, [&](int i) {
+    const auto start = std::chrono::steady_clock::now();
+    SelftestCaseResult& r = results[static_cast<std::size_t>(i)];
+    const int index = options.only_case > 0 ? options.only_case : i + 1;
+    r.spec = draw_selftest_case(index, options.seed);
+    SelftestRecordings rec = make_selftest_recordings(r.spec, options.duration_s);
+    DiagnoseOptions diagnose_options;  // blind: the default twin, noise estimated
+    diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
+    diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
+    DiagnosisResult detailed = diagnose_in_detail(rec.calibration, rec.heldout, diagnose_options);
+    r.diagnosis = std::move(detailed.diagnosis);
+    r.partial = std::move(detailed.detail.partial);
+    r.score = score_selftest_case(r.spec, r.diagnosis, rec.noise_std_v);
+    if (options.only_case > 0) r.recordings = std::move(rec);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  });
   return results;
 }
 

@@ -11,11 +11,13 @@
 #include <random>
 #include <string>
 
+#include "adc_grid.h"
 #include "diagnosis_detail.h"
 #include "effect_fit.h"
 #include "float_design.h"
 #include "gaussian_source.h"
 #include "input_error.h"
+#include "quantised_noise.h"
 #include "thresholds.h"
 #include "twin_replay.h"
 
@@ -38,10 +40,6 @@ constexpr double kGapRatio = 1.05;
 constexpr double kExplainedRatio = 1.10;
 // A candidate must remove at least this share of the noise variance from the held-out MSE.
 constexpr double kMinGainOfNoiseVariance = 0.02;
-// The white-noise estimate differences the gap at lag 2: as free of slow bias as lag 1, and
-// unbiased also when neighbouring samples share noise (a channel interpolated between samples
-// by a skew), which lag 1 under-reads.
-constexpr std::size_t kNoiseLag = 2;
 
 std::vector<double> minus(const std::vector<double>& a, const std::vector<double>& b) {
   std::vector<double> d(a.size());
@@ -141,13 +139,14 @@ std::vector<double> clearance_of(const sim::PolynomialSensorModel& model,
 }
 
 std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<double>& sim_v,
-                                 double noise_std_v, const sim::PolynomialSensorModel& model,
+                                 const WhiteNoise& white, const sim::PolynomialSensorModel& model,
                                  double fs_hz, std::uint64_t seed) {
-  // The noisy twin: the noise floor every stage's gap is compared with.
+  // The noisy twin (on the recording's converter grid, if it has one): the noise floor every
+  // stage's gap is compared with.
   sim::GaussianSource noise(sim::derive_seed(seed, 77));
   std::vector<double> noisy_v(sim_v.size());
   for (std::size_t i = 0; i < sim_v.size(); ++i) {
-    noisy_v[i] = sim_v[i] + noise_std_v * noise.standard_normal();
+    noisy_v[i] = white.noisy(sim_v[i], noise.standard_normal());
   }
   std::vector<StageGap> stages;
   const std::vector<double> gap_v = minus(real.voltage_v, sim_v);
@@ -270,7 +269,8 @@ void locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double
   const std::vector<double> gap = minus(cal.voltage_v, sim_v);
   detail.t_s = cal.t_s;
   detail.gap_v = gap;
-  detail.stages = stage_gaps(cal, sim_v, sigma, options.twin.nominal, fs_hz, options.seed);
+  detail.stages =
+      stage_gaps(cal, sim_v, detail.white_noise, options.twin.nominal, fs_hz, options.seed);
   detail.regions = region_cells(cal, gap, grid_for(cal), options.bootstrap_rounds, options.seed);
   // The cell where the gap stands out most above the noise, among cells with enough samples.
   double worst = 0.0;
@@ -415,19 +415,27 @@ struct Selection {
   std::vector<std::vector<std::size_t>> resamples;  // held-out block-bootstrap index sets
   std::vector<Step> steps;                          // one per bias-type pick
   std::vector<EffectFinding> findings;              // in selection order
+  std::optional<AdcGrid> quantised_on;              // the converter grid, once recognised
+  bool quantisation_as_noise = false;               // its codes not reproduced: taken as noise
+  std::optional<EffectFinding> nearest_unpicked;    // the best candidate when none was significant
 };
 
-// The twin's white voltage noise: estimated from the calibration gap, or the twin's own.
-void estimate_noise(const std::vector<double>& cal_gap, const DiagnoseOptions& options,
-                    DiagnosisDetail& detail) {
-  if (options.estimate_noise) {
-    detail.noise_std_v = white_noise_std(cal_gap, kNoiseLag);
-    detail.noise_source =
-        "estimated from the calibration gap: 1.4826 MAD(differences at lag 2) / sqrt(2)";
-  } else {
-    detail.noise_std_v = options.twin.noise.voltage_std_v;
-    detail.noise_source = "given by the twin (noise.voltage_std_v)";
-  }
+// What the held-out gap that is left is compared with, and why when it is not the white noise.
+struct VerdictNoise {
+  double rms_v = 0.0;
+  std::string why;
+};
+
+// The twin's white voltage noise: estimated from the calibration part (on its converter grid,
+// if it has one), or the twin's own.
+void estimate_noise(const RecordingSeries& calibration, const std::vector<double>& cal_base,
+                    const DiagnoseOptions& options, DiagnosisDetail& detail) {
+  detail.adc_grid = estimate_adc_grid(calibration.voltage_v);
+  detail.white_noise = options.estimate_noise
+                           ? estimate_white_noise(calibration.voltage_v, cal_base, detail.adc_grid)
+                           : given_white_noise(options.twin.noise.voltage_std_v, detail.adc_grid);
+  detail.noise_std_v = detail.white_noise.effective_std_v;
+  detail.noise_source = detail.white_noise.source;
 }
 
 // The first stage whose gap stands above its noise floor; empty when none does.
@@ -448,10 +456,9 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   selection.modelled = options.twin.effects;
   const std::vector<double> cal_base = parts.cal_replay.voltage(selection.modelled);
   const std::vector<double> ho_base = parts.ho_replay.voltage(selection.modelled);
-  const std::vector<double> cal_gap = minus(parts.calibration.voltage_v, cal_base);
   selection.ho_gap = minus(parts.heldout.voltage_v, ho_base);
 
-  estimate_noise(cal_gap, options, detail);
+  estimate_noise(parts.calibration, cal_base, options, detail);
   selection.sigma = std::max(detail.noise_std_v, 1e-9);
   diagnosis.noise_std_v = selection.sigma;
   locate(parts.calibration, cal_base, detail.fs_hz, options, detail);
@@ -499,10 +506,9 @@ struct Pick {
   double lower = 0.0;    // its block-bootstrap 5 % quantile, V^2
 };
 
-// The candidate that lowers the held-out mean square most, if the gain is significant: a real
-// share of the noise variance, and its block-bootstrap 95 % lower bound above zero.
-std::optional<Pick> pick_next_effect(const std::vector<Candidate>& candidates,
-                                     const Selection& selection) {
+// The candidate that lowers the held-out mean square most, with its gain and the gain's
+// block-bootstrap 5 % quantile.
+Pick best_candidate(const std::vector<Candidate>& candidates, const Selection& selection) {
   const std::vector<double>& current_error = selection.current_error;
   const double mse_now = rms_of(current_error) * rms_of(current_error);
   Pick pick;
@@ -520,9 +526,14 @@ std::optional<Pick> pick_next_effect(const std::vector<Candidate>& candidates,
                     mean_square_on(candidates[pick.best].heldout_error, set));
   }
   pick.lower = quantile(gains, 0.05);
-  const double sigma = selection.sigma;
-  if (pick.gain < kMinGainOfNoiseVariance * sigma * sigma || pick.lower <= 0.0) return std::nullopt;
   return pick;
+}
+
+// A gain is significant when it is a real share of the noise variance and its block-bootstrap
+// 95 % lower bound is above zero.
+bool significant(const Pick& pick, const Selection& selection) {
+  const double sigma = selection.sigma;
+  return pick.gain >= kMinGainOfNoiseVariance * sigma * sigma && pick.lower > 0.0;
 }
 
 // The finding for a picked candidate: its fit and how far it shrinks the held-out gap.
@@ -562,15 +573,16 @@ void take_pick(std::vector<Candidate> candidates, const Pick& pick, Selection& s
 // A deterministic effect in the gap (a mains tone, a lag on the clearance steps) inflates the
 // difference-based noise estimate; estimate it again from what the picks leave, kept if lower.
 void reestimate_noise(const Parts& parts, Selection& selection, DiagnosisResult& result) {
-  const double left = white_noise_std(
-      minus(parts.calibration.voltage_v, parts.cal_replay.voltage(selection.modelled)), kNoiseLag);
-  if (left < selection.sigma) {
-    selection.sigma = std::max(left, 1e-9);
-    result.detail.noise_std_v = selection.sigma;
+  DiagnosisDetail& detail = result.detail;
+  WhiteNoise left = estimate_white_noise(
+      parts.calibration.voltage_v, parts.cal_replay.voltage(selection.modelled), detail.adc_grid);
+  if (left.effective_std_v < selection.sigma) {
+    left.source = "re-estimated on the calibration gap the selected effects leave: " + left.source;
+    selection.sigma = std::max(left.effective_std_v, 1e-9);
+    detail.white_noise = left;
+    detail.noise_std_v = selection.sigma;
+    detail.noise_source = left.source;
     result.diagnosis.noise_std_v = selection.sigma;
-    result.detail.noise_source =
-        "estimated from the calibration gap left by the selected effects: 1.4826 "
-        "MAD(differences at lag 2) / sqrt(2)";
   }
 }
 
@@ -586,9 +598,16 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
     std::vector<Candidate> candidates =
         score_candidates(parts, selection.modelled, selection.first_selected);
     if (candidates.empty()) break;
-    const std::optional<Pick> pick = pick_next_effect(candidates, selection);
-    if (!pick) break;
-    take_pick(std::move(candidates), *pick, selection);
+    const Pick pick = best_candidate(candidates, selection);
+    if (!significant(pick, selection)) {
+      // Nothing significant at all: what came nearest is kept for an "unexplained" verdict.
+      if (selection.findings.empty()) {
+        selection.nearest_unpicked =
+            finding_for_pick(candidates[pick.best], pick, selection.current_error);
+      }
+      break;
+    }
+    take_pick(std::move(candidates), pick, selection);
     if (options.estimate_noise) reestimate_noise(parts, selection, result);
   }
 }
@@ -624,31 +643,67 @@ void measure_inclusion(Selection& selection) {
   }
 }
 
-// adc_quantization, recognised when every voltage of both parts lies on one LSB grid.
-void recognise_quantization(const Parts& parts, Selection& selection) {
-  const auto cal_grid = find_lsb_grid(parts.calibration.voltage_v);
-  const auto ho_grid = find_lsb_grid(parts.heldout.voltage_v);
-  if (!cal_grid || !ho_grid || *cal_grid != *ho_grid) return;
+// Two parts' grids are one converter's: the same LSB, codes on one lattice.
+bool same_grid(const AdcGrid& a, const AdcGrid& b) {
+  const double codes_apart = (b.lowest_v - a.lowest_v) / a.lsb_v;
+  return std::abs(a.lsb_v - b.lsb_v) <= 1e-3 * a.lsb_v &&
+         std::abs(codes_apart - std::round(codes_apart)) < 0.05;
+}
+
+std::string grid_evidence(const AdcGrid& grid) {
+  return fmt::format(
+      "the recorded voltages of both parts lie on one converter grid (estimated from their "
+      "spacing): LSB {:.4g} mV, codes {:.6g} to {:.6g} V ({} of {} used, {:.1f} % of samples on "
+      "it); {}",
+      1e3 * grid.lsb_v, grid.lowest_v, grid.highest_v, grid.codes_used, grid.codes_spanned,
+      100.0 * grid.share_on_grid,
+      grid.usual_range
+          ? fmt::format("the {}-bit grid of the [{}, {}] V range", grid.bits, grid.v_min,
+                        grid.v_max)
+          : fmt::format("modelled as a {}-bit converter from {:.6g} V", grid.bits, grid.v_min));
+}
+
+// adc_quantization, recognised when the voltages of both parts lie on one converter grid. The
+// twin's converter on that grid is kept when it reproduces the recorded codes (what it leaves
+// is within what the noise alone would leave); when it does not (the thresholds sit elsewhere:
+// a truncating converter, a gain or offset calibration in the DAQ software), the quantisation is
+// taken as noise of LSB / sqrt(12), which the effective white noise already holds.
+void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selection& selection) {
+  const auto cal_grid = estimate_adc_grid(parts.calibration.voltage_v);
+  const auto ho_grid = estimate_adc_grid(parts.heldout.voltage_v);
+  if (!cal_grid || !ho_grid || !same_grid(*cal_grid, *ho_grid)) return;
+  std::vector<double> both = parts.calibration.voltage_v;
+  both.insert(both.end(), parts.heldout.voltage_v.begin(), parts.heldout.voltage_v.end());
+  const auto grid = estimate_adc_grid(both);
+  if (!grid) return;
   EffectFinding finding;
   finding.name = "adc_quantization";
-  finding.params = cal_grid->params;
+  finding.params = grid->as_effect().params;
+  finding.params["lsb_v"] = grid->lsb_v;
   finding.noise_type = true;
   finding.inclusion = 1.0;
-  finding.evidence = fmt::format(
-      "every recorded voltage of both parts lies on a {}-bit grid over [{}, {}] V (LSB {:.4g} "
-      "mV)",
-      cal_grid->params.at("bits"), cal_grid->params.at("v_min"), cal_grid->params.at("v_max"),
-      1e3 * (cal_grid->params.at("v_max") - cal_grid->params.at("v_min")) /
-          std::ldexp(1.0, static_cast<int>(cal_grid->params.at("bits"))));
+  finding.evidence = grid_evidence(*grid);
   std::vector<sim::EffectSettings> with = selection.modelled;
-  with.push_back(*cal_grid);
+  with.push_back(grid->as_effect());
   finding.heldout_rms_before = rms_of(selection.current_error);
-  selection.current_error = minus(parts.heldout.voltage_v, parts.ho_replay.voltage(with));
+  std::vector<double> replayed = minus(parts.heldout.voltage_v, parts.ho_replay.voltage(with));
+  const double null_rms = quantised_null_rms(white.analog_std_v, grid->lsb_v);
+  if (rms_of(replayed) <= kExplainedRatio * null_rms) {
+    selection.current_error = std::move(replayed);
+    selection.modelled = with;
+  } else {
+    selection.quantisation_as_noise = true;
+    finding.evidence += fmt::format(
+        "; the twin's converter on it does not reproduce the recorded codes ({:.4g} V left where "
+        "the noise alone leaves {:.4g} V: the thresholds sit elsewhere), so the quantisation is "
+        "taken as noise of LSB / sqrt(12) = {:.4g} V",
+        rms_of(replayed), null_rms, grid->lsb_v / std::sqrt(12.0));
+  }
   finding.heldout_rms_after = rms_of(selection.current_error);
   finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
                        std::max(finding.heldout_rms_before, 1e-30);
-  selection.modelled = with;
   selection.findings.push_back(finding);
+  selection.quantised_on = grid;
 }
 
 // The share of `resamples` of the held-out gap on which the vibration signature still shows.
@@ -670,7 +725,7 @@ double vibration_inclusion(const std::vector<double>& gap, const TwinReplay& rep
 // compares what is left with: the white voltage noise, or, with mount motion found, that plus
 // the motion's share, whose variance follows the sensitivity and so escapes the median-based
 // estimate: the held-out gap's mean squared difference / 2.
-double recognise_vibration(const Parts& parts, Selection& selection) {
+VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
   const std::vector<double>& current_error = selection.current_error;
   const std::vector<double> cal_after =
       minus(parts.calibration.voltage_v, parts.cal_replay.voltage(selection.modelled));
@@ -679,7 +734,7 @@ double recognise_vibration(const Parts& parts, Selection& selection) {
   const VibrationSignature ho_vibration =
       vibration_signature(current_error, parts.ho_replay.sensitivity_v_per_mm());
   const double sigma = selection.sigma;
-  if (!cal_vibration.present || !ho_vibration.present) return sigma;
+  if (!cal_vibration.present || !ho_vibration.present) return {sigma, ""};
   double sum = 0.0;
   for (std::size_t i = 0; i + 1 < current_error.size(); ++i) {
     sum += std::pow(current_error[i + 1] - current_error[i], 2);
@@ -698,11 +753,55 @@ double recognise_vibration(const Parts& parts, Selection& selection) {
       "random phases cannot be fitted, so it adds no shrink (held-out rms_mm {:.3g})",
       cal_vibration.slope_t, ho_vibration.slope_t, ho_vibration.rms_mm);
   selection.findings.push_back(finding);
-  return verdict_noise;
+  if (verdict_noise <= sigma) return {sigma, ""};
+  return {verdict_noise,
+          fmt::format("with the mount motion, the noise what is left is compared with is {:.4g} V "
+                      "(the held-out gap's mean squared difference / 2), not the white {:.4g} V",
+                      verdict_noise, sigma)};
+}
+
+// With the converter's grid modelled, what is left is compared with what the noisy twin leaves
+// once quantised on that grid (quantised_noise.h): less than the white noise when the noise is
+// below the LSB, sqrt(sigma^2 + LSB^2 / 6) when it is far above.
+VerdictNoise with_converter_grid(const Selection& selection, const WhiteNoise& white,
+                                 VerdictNoise noise) {
+  if (!selection.quantised_on) return noise;
+  if (selection.quantisation_as_noise) {
+    const std::string why = fmt::format(
+        "the quantisation taken as noise: what is left is compared with the white noise with the "
+        "grid's LSB^2/12 in it ({:.4g} V)",
+        white.effective_std_v);
+    return {noise.rms_v, noise.why.empty() ? why : noise.why + "; " + why};
+  }
+  const double null_rms = quantised_null_rms(white.analog_std_v, selection.quantised_on->lsb_v);
+  const std::string why = fmt::format(
+      "with the converter grid modelled, what is left is compared with {:.4g} V: what quantising "
+      "the twin with {:.4g} V of analog noise on the {:.4g} mV grid leaves",
+      null_rms, white.analog_std_v, 1e3 * selection.quantised_on->lsb_v);
+  if (noise.why.empty()) return {null_rms, why};
+  return null_rms > noise.rms_v ? VerdictNoise{null_rms, noise.why + "; " + why} : noise;
+}
+
+// The library effect an "unexplained" verdict came nearest to: the first it selected, or, when
+// none was significant, the candidate that lowered the held-out gap most; with how far it went.
+std::optional<EffectFinding> nearest_effect(const Selection& selection, double verdict_noise) {
+  const bool picked = !selection.findings.empty();
+  if (!picked && !selection.nearest_unpicked) return std::nullopt;
+  EffectFinding nearest = picked ? selection.findings.front() : *selection.nearest_unpicked;
+  nearest.evidence = fmt::format(
+      "{}: it takes the held-out gap RMS from {:.4g} to {:.4g} V ({:.1f} %){}; {:.4g} V is left "
+      "where the noise allows {:.4g} V",
+      picked ? "selected, but the effects selected leave too much"
+             : "the nearest candidate, not significant",
+      nearest.heldout_rms_before, nearest.heldout_rms_after, nearest.shrink_pct,
+      picked && selection.findings.size() > 1 ? " on its own" : "", rms_of(selection.current_error),
+      kExplainedRatio * verdict_noise);
+  return nearest;
 }
 
 // The status, "explained", "unexplained" or "none", and the reasons for it.
-void verdict(const Selection& selection, double verdict_noise, DiagnosisResult& result) {
+void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisResult& result) {
+  const double verdict_noise = noise.rms_v;
   Diagnosis& diagnosis = result.diagnosis;
   const std::vector<EffectFinding>& findings = selection.findings;
   const double sigma = selection.sigma;
@@ -718,12 +817,7 @@ void verdict(const Selection& selection, double verdict_noise, DiagnosisResult& 
   reasons.push_back(fmt::format(
       "held-out gap RMS {:.4g} V before, {:.4g} V after the selected effects; white noise {:.4g} V",
       diagnosis.heldout_rms_before, diagnosis.heldout_rms_after, sigma));
-  if (verdict_noise > sigma) {
-    reasons.push_back(fmt::format(
-        "with the mount motion, the noise what is left is compared with is {:.4g} V (the held-out "
-        "gap's mean squared difference / 2), not the white {:.4g} V",
-        verdict_noise, sigma));
-  }
+  if (!noise.why.empty()) reasons.push_back(noise.why);
   if (!findings.empty() && left_within_noise) {
     diagnosis.status = "explained";
     diagnosis.effects = findings;
@@ -732,6 +826,7 @@ void verdict(const Selection& selection, double verdict_noise, DiagnosisResult& 
   } else if (gap_exists) {
     diagnosis.status = "unexplained";
     result.detail.partial = findings;
+    diagnosis.nearest = nearest_effect(selection, verdict_noise);
     reasons.push_back(findings.empty()
                           ? "no library effect shrinks the held-out gap significantly"
                           : "the effects that help leave more than the noise: something outside "
@@ -813,8 +908,9 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   select_bias_effects(parts, options, selection, result);
   measure_inclusion(selection);
   // Noise-type effects, recognised from their signatures in both parts.
-  recognise_quantization(parts, selection);
-  const double verdict_noise = recognise_vibration(parts, selection);
+  recognise_quantization(parts, result.detail.white_noise, selection);
+  const VerdictNoise verdict_noise = with_converter_grid(selection, result.detail.white_noise,
+                                                         recognise_vibration(parts, selection));
   verdict(selection, verdict_noise, result);
   measure_how_far(heldout, selection, result);
   return result;

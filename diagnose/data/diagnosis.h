@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ struct Diagnosis {
   double heldout_rms_before = 0.0;     // V, nominal twin against the held-out recording
   double heldout_rms_after = 0.0;      // V, with every selected effect
   double noise_std_v = 0.0;            // V, the twin's white noise the verdict compares with
+  // "unexplained": the library effect the diagnosis came nearest to (the first it selected, or
+  // the candidate that lowered the held-out gap most when none was significant), with its
+  // held-out RMS before and after it and a sentence on how far that is from explained.
+  std::optional<EffectFinding> nearest;
 };
 
 // Fits on `calibration`, scores on `heldout`; both must share a sample rate and carry the

@@ -8,8 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "adc_grid.h"
 #include "diagnosis.h"
 #include "residual_tests.h"
+#include "white_noise.h"
 
 namespace flange::diagnose {
 
@@ -52,6 +54,8 @@ struct DiagnosisDetail {
   double fs_hz = 0.0;
   double noise_std_v = 0.0;  // the twin's white voltage noise, estimated or given
   std::string noise_source;  // how it was obtained
+  WhiteNoise white_noise;    // the same, with the analog part and the grid it was estimated on
+  std::optional<AdcGrid> adc_grid;  // the calibration part's converter grid, if it has one
   std::vector<StageGap> stages;
   std::vector<RegionCell> regions;
   std::optional<std::size_t> where_region;  // index into regions

@@ -383,34 +383,6 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
   return best;
 }
 
-std::optional<sim::EffectSettings> find_lsb_grid(const std::vector<double>& voltage_v) {
-  if (voltage_v.empty()) return std::nullopt;
-  const std::vector<std::pair<double, double>> ranges = {{-10, 10}, {0, 10}, {-5, 5}, {0, 5}};
-  constexpr double kTolerance = 1.5e-6;  // the CSV's 0.5 uV rounding plus the grid's own
-  const auto [lowest, highest] = std::minmax_element(voltage_v.begin(), voltage_v.end());
-  for (int bits = 4; bits <= 24; ++bits) {
-    for (const auto& [v_min, v_max] : ranges) {
-      const double lsb = (v_max - v_min) / std::ldexp(1.0, bits);
-      // A range that does not hold every recorded value cannot be the converter's.
-      if (lsb < 20e-6 || *lowest < v_min || *highest > v_max) continue;
-      bool on_grid = true;
-      for (double v : voltage_v) {
-        const double code = (v - v_min) / lsb;
-        if (std::abs(code - std::round(code)) * lsb > kTolerance) {
-          on_grid = false;
-          break;
-        }
-      }
-      if (on_grid) {
-        return sim::make_effect_settings("adc_quantization",
-                                         {{"bits", bits}, {"v_min", v_min}, {"v_max", v_max}},
-                                         "diagnose grid");
-      }
-    }
-  }
-  return std::nullopt;
-}
-
 VibrationSignature vibration_signature(const std::vector<double>& gap_v,
                                        const std::vector<double>& sensitivity_v_per_mm) {
   VibrationSignature signature;

@@ -32,11 +32,6 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
 // Which parameters a fit varies (others stay at the catalogue's defaults).
 std::vector<std::string> fitted_keys(const std::string& name);
 
-// adc_quantization: every recorded voltage sits on the grid v_min + k (v_max - v_min) / 2^bits
-// of one of the usual converter ranges (to the recording's 1 uV). The coarsest such grid, with
-// LSB above 20 uV (finer grids hide in the CSV's six decimals).
-std::optional<sim::EffectSettings> find_lsb_grid(const std::vector<double>& voltage_v);
-
 // vibration: mount motion reaches the voltage through the sensor's sensitivity dV/dd, so the
 // squared first differences of the gap grow with (dV/dd)^2 while white voltage noise does not.
 // Fits E[diff^2] = a + b (dV/dd)^2 by least squares.

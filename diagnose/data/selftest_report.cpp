@@ -87,6 +87,11 @@ nlohmann::json case_json(const SelftestCaseResult& r) {
         {{"name", f.name}, {"params", f.params}, {"heldout_rms_after", f.heldout_rms_after}});
   }
   j["partial"] = partial;
+  if (r.diagnosis.nearest) {
+    j["nearest"] = {{"name", r.diagnosis.nearest->name},
+                    {"params", r.diagnosis.nearest->params},
+                    {"shrink_pct", r.diagnosis.nearest->shrink_pct}};
+  }
   return j;
 }
 

@@ -128,6 +128,10 @@ TEST(Diagnose, GainStepOutsideTheLibraryIsUnexplained) {
   EXPECT_EQ(d.status, "unexplained");
   EXPECT_EQ(d.stage, "voltage");
   EXPECT_TRUE(d.effects.empty());
+  // Still the effect it came nearest to, and how far that went.
+  ASSERT_TRUE(d.nearest.has_value());
+  EXPECT_LT(d.nearest->heldout_rms_after, d.nearest->heldout_rms_before);
+  EXPECT_NE(d.nearest->evidence.find("V is left"), std::string::npos) << d.nearest->evidence;
 }
 
 TEST(Diagnose, ReplayMatchesTheTwinSampleForSample) {
@@ -183,6 +187,53 @@ TEST(DiagnoseCommand, WritesJsonAndReportWithVerdictFirst) {
        {"report.html", "region.svg", "spectrum.svg", "time.svg", "heldout.svg"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / "out" / file)) << file;
   }
+}
+
+// A 6-bit converter over 0-10.24 V (none of the usual ranges): the grid is estimated from the
+// data, reported, and the analog noise behind it is found, where the median of lag-2
+// differences would read the quantisation's staircase.
+TEST(DiagnoseCommand, ACoarseGridIsEstimatedReportedAndTheNoiseSurvivesIt) {
+  const auto dir = fresh_test_dir("diagnose_coarse_grid");
+  const std::vector<sim::EffectSettings> effects = {sim::make_effect_settings(
+      "adc_quantization", {{"bits", 6}, {"v_min", 0.0}, {"v_max", 10.24}}, "test")};
+  write_csv(dir / "real.csv", twin_recording(effects, 61, 0.0));
+  write_csv(dir / "heldout.csv", twin_recording(effects, 62, 70.0));
+  const FlangeOutcome o = run_flange_captured({"diagnose", "--real", (dir / "real.csv").string(),
+                                               "--holdout", (dir / "heldout.csv").string(), "--out",
+                                               (dir / "out").string(), "--bootstrap", "20"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("converter grid: LSB 160 mV"), std::string::npos) << o.out;
+  std::ifstream in(dir / "out" / "diagnosis.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j["adc_grid"].is_object()) << j.dump(1);
+  EXPECT_NEAR(j["adc_grid"]["lsb_v"].get<double>(), 0.16, 1e-4);
+  EXPECT_FALSE(j["adc_grid"]["usual_range"].get<bool>());
+  EXPECT_NEAR(j["noise"]["analog_std_v"].get<double>(), kNoiseV, 0.2 * kNoiseV);
+  EXPECT_TRUE(j["noise"]["grid_aware"].get<bool>());
+  EXPECT_EQ(j["verdict"]["status"], "explained") << o.out;
+  const auto& named = j["verdict"]["effects"];
+  EXPECT_NE(std::find(named.begin(), named.end(), "adc_quantization"), named.end()) << o.out;
+}
+
+TEST(DiagnoseCommand, AnUnexplainedVerdictNamesTheNearestEffectInTextJsonAndHtml) {
+  const auto dir = fresh_test_dir("diagnose_nearest");
+  write_csv(dir / "real.csv", twin_recording({}, 71, 0.0, 0.94));
+  write_csv(dir / "heldout.csv", twin_recording({}, 72, 70.0, 0.94));
+  const FlangeOutcome o = run_flange_captured({"diagnose", "--real", (dir / "real.csv").string(),
+                                               "--holdout", (dir / "heldout.csv").string(), "--out",
+                                               (dir / "out").string(), "--bootstrap", "20"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("verdict: unexplained", 0), 0u) << o.out;
+  EXPECT_NE(o.out.find("  nearest: "), std::string::npos) << o.out;
+  std::ifstream in(dir / "out" / "diagnosis.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j["nearest"].is_object()) << j.dump(1);
+  EXPECT_FALSE(j["nearest"]["name"].get<std::string>().empty());
+  EXPECT_GT(j["nearest"]["shrink_pct"].get<double>(), 0.0);
+  std::ifstream html(dir / "out" / "report.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("nearest library effect: <b>" + j["nearest"]["name"].get<std::string>()),
+            std::string::npos);
 }
 
 TEST(DiagnoseCommand, BadInputsGiveOneLineAndStatusTwo) {

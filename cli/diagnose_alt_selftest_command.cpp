@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+#include "diagnose_alt_selftest_command.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <stdexcept>
+
+#include "alt_selftest_report.h"
+#include "alt_truth.h"
+#include "cli.h"
+#include "input_error.h"
+
+namespace flange::cli {
+namespace fs = std::filesystem;
+
+namespace {
+
+// selftest.json, selftest.md and, for one pair, its sessions and truth; throws
+// std::runtime_error.
+void write_alt_files(const SelftestCommandOptions& options, const std::string& header,
+                     const std::vector<diagnose::AltPairResult>& results,
+                     const diagnose::AltSummary& summary, std::ostream& out) {
+  const fs::path dir(*options.out);
+  fs::create_directories(dir);
+  const diagnose::AltPairResult& first = results.front();
+  if (first.pair) {
+    for (const fs::path& path : alt_reality::write_alt_pair(dir, first.spec, *first.pair)) {
+      out << "  wrote " << path.string() << "\n";
+    }
+  }
+  std::ofstream json(dir / "selftest.json", std::ios::binary);
+  json << diagnose::alt_selftest_json(options.run, results, summary).dump(2) << "\n";
+  std::ofstream md(dir / "selftest.md", std::ios::binary);
+  md << diagnose::alt_selftest_markdown(header, results, summary);
+  json.close();
+  md.close();
+  if (!json || !md) throw std::runtime_error(dir.string() + ": cannot write");
+  out << "  wrote " << (dir / "selftest.json").string() << " and " << (dir / "selftest.md").string()
+      << "\n";
+}
+
+}  // namespace
+
+int run_alt_selftest_command(const SelftestCommandOptions& options, std::ostream& out,
+                             std::ostream& err) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<diagnose::AltPairResult> results;
+  try {
+    results = diagnose::run_alt_selftest(options.run);
+  } catch (const host::InputError& error) {
+    err << "flange diagnose --selftest --reality alt: " << error.what() << "\n";
+    return kExitBadArgument;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const diagnose::AltSummary summary = diagnose::summarise_alt_selftest(results);
+  const std::string header = diagnose::alt_selftest_header(summary, options.run);
+  out << header << "\n"
+      << diagnose::alt_terminal_table(results) << "\n"
+      << diagnose::alt_class_table(summary) << "\n";
+  for (const std::string& line : diagnose::alt_summary_lines(summary)) out << line << "\n";
+  out << fmt::format("seed {}: aims {} ({:.0f} s)\n", options.run.seed,
+                     summary.aims_met() ? "met" : "MISSED", seconds);
+  if (options.out) {
+    try {
+      write_alt_files(options, header, results, summary, out);
+    } catch (const std::runtime_error& error) {
+      err << "flange diagnose --selftest --reality alt: " << error.what() << "\n";
+      return kExitFailure;
+    }
+  }
+  return summary.aims_met() ? kExitOk : kExitFailure;
+}
+
+}  // namespace flange::cli

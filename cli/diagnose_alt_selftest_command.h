@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// `flange diagnose --selftest --reality alt [--pairs N] [--seed S]`: the blind check on the
+// alternative reality (diagnose/alt_check/). Prints the seed, one row per pair, the table by
+// class and the summary against the aims; with --out writes DIR/selftest.json and
+// DIR/selftest.md, and with --case K the pair's two sessions and its truth sidecar.
+#pragma once
+
+#include <iosfwd>
+
+#include "diagnose_selftest_command.h"
+
+namespace flange::cli {
+
+// 0 when every aim is met, 1 when one is missed or a file cannot be written, 2 on a bad argument.
+int run_alt_selftest_command(const SelftestCommandOptions& options, std::ostream& out,
+                             std::ostream& err);
+
+}  // namespace flange::cli

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+#include "alt_truth.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+namespace flange::alt_reality {
+namespace {
+
+void write_csv(const std::filesystem::path& path, const AltRecording& r) {
+  std::ofstream csv(path, std::ios::binary);
+  csv << "t_s,clearance_mm,temp_c,voltage_v\n";
+  std::string line;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    line = fmt::format("{:.6f},{:.6f},{:.6f},{:.6f}\n", r.t_s[i], r.clearance_mm[i], r.temp_c[i],
+                       r.voltage_v[i]);
+    csv << line;
+  }
+  csv.close();
+  if (!csv) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+}  // namespace
+
+nlohmann::json alt_truth_json(const AltPairSpec& spec) {
+  nlohmann::json truth = nlohmann::json::array();
+  for (const TruthEffect& e : spec.truth) {
+    truth.push_back({{"class", e.draw.class_name},
+                     {"shape", e.draw.shape},
+                     {"params", e.draw.params},
+                     {"rms_v", e.rms_v},
+                     {"rms_over_noise", e.rms_v / spec.fit.noise_v}});
+  }
+  return {
+      {"generated_by", fmt::format("flange diagnose --selftest --reality alt --case {} --seed {}",
+                                   spec.index, spec.seed)},
+      {"note", "the truth of an alternative-reality pair; never read by the diagnosis"},
+      {"pair", spec.index},
+      {"seed", spec.seed},
+      {"kind", alt_pair_kind_name(spec.kind)},
+      {"truth", truth},
+      {"fit_session", session_plan_json(spec.fit)},
+      {"heldout_session", session_plan_json(spec.heldout)}};
+}
+
+std::vector<std::filesystem::path> write_alt_pair(const std::filesystem::path& dir,
+                                                  const AltPairSpec& spec, const AltPair& pair) {
+  const auto name = [&](const char* what) {
+    return dir / fmt::format("pair_{}_{}", spec.index, what);
+  };
+  const std::vector<std::filesystem::path> paths = {name("fit.csv"), name("heldout.csv"),
+                                                    name("truth.json")};
+  write_csv(paths[0], pair.fit);
+  write_csv(paths[1], pair.heldout);
+  std::ofstream json(paths[2], std::ios::binary);
+  json << alt_truth_json(spec).dump(2) << "\n";
+  json.close();
+  if (!json) throw std::runtime_error(paths[2].string() + ": cannot write");
+  return paths;
+}
+
+}  // namespace flange::alt_reality
