@@ -171,6 +171,8 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
        "not a text file"},
       {{"diagnose", "--hw", "--coeffs", f.out("missing.json")}, 2, "missing.json"},
       {{"diagnose", "--selftest", "--cases", "0"}, 2, "--cases"},
+      {{"diagnose", "--selftest", "--reality", "moon"}, 2, "--reality: moon not in {twin,alt}"},
+      {{"diagnose", "--selftest", "--reality", "alt", "--pairs", "0"}, 2, "not in range 1 to 1000"},
       {{"demo", "--out", f.good + "/inside_a_file"}, 1, "cannot create directories"},
   };
   for (const BadInput& c : table) {
