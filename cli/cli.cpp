@@ -74,7 +74,8 @@ struct Subcommands {
     add_hw_diagnose_options(*diagnose, hw_diagnose_options);
     add_selftest_options(*diagnose, selftest_options);
     // The three layers of diagnose take different inputs: say so rather than ignore one.
-    for (const char* data_option : {"--real", "--holdout", "--holdout-fraction", "--twin"}) {
+    for (const char* data_option :
+         {"--real", "--holdout", "--holdout-fraction", "--real-start", "--holdout-start", "--twin"}) {
       diagnose->get_option("--selftest")->excludes(data_option);
       diagnose->get_option("--hw")->excludes(data_option);
     }

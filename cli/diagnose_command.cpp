@@ -11,6 +11,7 @@
 #include "input_error.h"
 #include "sim_error.h"
 #include "twin_file.h"
+#include "utc_time.h"
 
 namespace flange::cli {
 
@@ -26,6 +27,15 @@ CLI::App* add_diagnose_command(CLI::App& app, DiagnoseCommandOptions& options) {
                   "hold out the last fraction of --real instead, 0.05 to 0.5")
       ->excludes(holdout)
       ->check(CLI::Range(0.05, 0.5));
+  CLI::Option* real_start = cmd->add_option(
+      "--real-start", options.real_start,
+      "when --real's t_s = 0 was, UTC (2026-11-21T09:30:00Z); with --holdout-start it carries "
+      "the sensor's age from one session to the other");
+  cmd->add_option("--holdout-start", options.holdout_start,
+                  "when --holdout's t_s = 0 was, UTC; needs --real-start")
+      ->needs(holdout)
+      ->needs(real_start);
+  real_start->needs(holdout);
   cmd->add_option("--twin", options.twin, "twin file (JSON); default: thesis eq. 3.14");
   cmd->add_option("--out", options.out, "folder for diagnosis.json and report.html");
   cmd->add_option("--seed", options.seed, "seed of the bootstrap resampling")->default_val(1);
@@ -51,11 +61,18 @@ int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& ou
     diagnose_options.seed = options.seed;
     diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
 
-    const diagnose::RecordingSeries real = diagnose::read_recording_series(options.real);
+    if (options.real_start.has_value() != options.holdout_start.has_value()) {
+      throw host::InputError("--real-start and --holdout-start go together: give both or neither");
+    }
+    diagnose::RecordingSeries real = diagnose::read_recording_series(options.real);
+    if (options.real_start) real.start_utc_s = parse_utc_time(*options.real_start, "--real-start");
     diagnose::HoldoutSplit split;
     if (options.holdout) {
       split.calibration = real;
       split.heldout = diagnose::read_recording_series(*options.holdout);
+      if (options.holdout_start) {
+        split.heldout.start_utc_s = parse_utc_time(*options.holdout_start, "--holdout-start");
+      }
       split.heldout_name = *options.holdout;
     } else {
       split = diagnose::split_holdout(real, *options.holdout_fraction);

@@ -16,6 +16,8 @@ struct DiagnoseCommandOptions {
   std::string real;                        // recording CSV (required for the data layer)
   std::optional<std::string> holdout;      // a separate held-out recording ...
   std::optional<double> holdout_fraction;  // ... or the last fraction of `real`, [0.05, 0.5]
+  // When each session's t_s = 0 was (ISO 8601 UTC), for a separate held-out recording.
+  std::optional<std::string> real_start, holdout_start;
   std::optional<std::string> twin;         // twin.json; default: nominal eq. 3.14
   std::string out;                         // output folder
   std::uint64_t seed = 1;

@@ -35,9 +35,17 @@ std::string fmt_label(int index, const char* part) {
   return fmt::format("alt pair {} ({})", index, part);
 }
 
-RecordingSeries as_series(const alt_reality::AltRecording& r, const std::string& label) {
+// When the calibration of the alternative reality's sensor happened (its age 0), as a UTC time:
+// any date serves, only the difference between two sessions' starts is used.
+constexpr double kSensorCalibratedUtcS = 1767225600.0;  // 2026-01-01T00:00:00Z
+
+// The session as `flange diagnose` reads it, with its start time (as a DAQ's file header or a lab
+// book gives it; the clock itself restarts at 0 in every session).
+RecordingSeries as_series(const alt_reality::AltRecording& r, const alt_reality::SessionPlan& plan,
+                          const std::string& label) {
   RecordingSeries s;
   s.path = label;
+  s.start_utc_s = kSensorCalibratedUtcS + plan.start_age_s;
   s.t_s = r.t_s;
   s.clearance_mm = r.clearance_mm;
   s.temp_c = r.temp_c;
@@ -102,13 +110,15 @@ std::vector<AltPairResult> run_alt_selftest(const SelftestOptions& options) {
     const int index = options.only_case > 0 ? options.only_case : i + 1;
     r.spec = alt_reality::draw_alt_pair(index, options.seed, options.duration_s);
     alt_reality::AltPair pair = alt_reality::render_alt_pair(r.spec);
-    // Blind: the two recordings only, as `flange diagnose --real A --holdout B` reads them.
+    // Blind: the two recordings and their start times only, as `flange diagnose --real A
+    // --holdout B --real-start S --holdout-start S` reads them.
     DiagnoseOptions diagnose_options;
     diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
     diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
     DiagnosisResult detailed =
-        diagnose_in_detail(as_series(pair.fit, fmt_label(index, "fit")),
-                           as_series(pair.heldout, fmt_label(index, "held-out")), diagnose_options);
+        diagnose_in_detail(as_series(pair.fit, r.spec.fit, fmt_label(index, "fit")),
+                           as_series(pair.heldout, r.spec.heldout, fmt_label(index, "held-out")),
+                           diagnose_options);
     r.diagnosis = std::move(detailed.diagnosis);
     r.partial = std::move(detailed.detail.partial);
     r.score = score_alt_pair(r.spec, r.diagnosis, r.partial);

@@ -383,6 +383,41 @@ double shared_sample_rate_hz(const RecordingSeries& calibration, const Recording
   return fs_hz;
 }
 
+// How much later the held-out session's t_s = 0 is than the calibration's, and how that is known.
+struct SessionClock {
+  std::string kind;           // Diagnosis::clock
+  double age_offset_s = 0.0;  // 0 unless the start times say otherwise
+};
+
+SessionClock session_clock(const RecordingSeries& calibration, const RecordingSeries& heldout) {
+  if (calibration.start_utc_s && heldout.start_utc_s) {
+    return {"start times", *heldout.start_utc_s - *calibration.start_utc_s};
+  }
+  if (heldout.t_s.front() > calibration.t_s.back()) return {"one clock", 0.0};
+  return {"unknown", 0.0};
+}
+
+// The reason line on the clocks, when it bears on the verdict: the start times were used, or they
+// were missing and an age effect was weighed.
+std::optional<std::string> clock_reason(const Diagnosis& diagnosis,
+                                        const std::vector<EffectFinding>& partial) {
+  if (diagnosis.clock == "start times") {
+    return fmt::format(
+        "the held-out session starts {:.4g} days after the calibration session (the start times "
+        "given): effects of the sensor's age are replayed that much older",
+        *diagnosis.heldout_starts_after_s / 86400.0);
+  }
+  const auto ageing = [](const EffectFinding& f) { return f.name == "ageing_drift"; };
+  const bool weighed = std::any_of(diagnosis.effects.begin(), diagnosis.effects.end(), ageing) ||
+                       std::any_of(partial.begin(), partial.end(), ageing) ||
+                       (diagnosis.nearest && ageing(*diagnosis.nearest));
+  if (diagnosis.clock != "unknown" || !weighed) return std::nullopt;
+  return "the held-out clock restarts at 0 and the sessions' start times are unknown: ageing is "
+         "a trend within each session, and each session is taken to start at the same age, so a "
+         "drift that ran on between the sessions is left as an offset on the held-out part (give "
+         "--real-start and --holdout-start)";
+}
+
 // The two parts of the data, each with the twin replayed on its inputs.
 struct Parts {
   const RecordingSeries& calibration;
@@ -902,8 +937,11 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
 
   DiagnosisResult result;
   result.detail.fs_hz = fs_hz;
+  const SessionClock clock = session_clock(calibration, heldout);
+  result.diagnosis.clock = clock.kind;
+  if (clock.kind != "unknown") result.diagnosis.heldout_starts_after_s = clock.age_offset_s;
   const Parts parts{calibration, heldout, TwinReplay(calibration, options.twin.nominal),
-                    TwinReplay(heldout, options.twin.nominal)};
+                    TwinReplay(heldout, options.twin.nominal, clock.age_offset_s)};
   Selection selection = replay_nominal_twin(parts, options, result);
   select_bias_effects(parts, options, selection, result);
   measure_inclusion(selection);
@@ -912,6 +950,9 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   const VerdictNoise verdict_noise = with_converter_grid(selection, result.detail.white_noise,
                                                          recognise_vibration(parts, selection));
   verdict(selection, verdict_noise, result);
+  if (auto why = clock_reason(result.diagnosis, result.detail.partial)) {
+    result.detail.reasons.push_back(*why);
+  }
   measure_how_far(heldout, selection, result);
   return result;
 }

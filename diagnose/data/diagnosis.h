@@ -46,6 +46,12 @@ struct Diagnosis {
   // the candidate that lowered the held-out gap most when none was significant), with its
   // held-out RMS before and after it and a sentence on how far that is from explained.
   std::optional<EffectFinding> nearest;
+  // How the two parts' clocks relate (docs/diagnose.md, "Sessions and time"): "one clock" (the
+  // held-out times continue the calibration part's), "start times" (both sessions' starts given)
+  // or "unknown" (the held-out clock restarts and no start times: each session is taken to start
+  // at the same age). heldout_starts_after_s: the held-out t_s = 0 less the calibration's.
+  std::string clock = "unknown";
+  std::optional<double> heldout_starts_after_s;
 };
 
 // Fits on `calibration`, scores on `heldout`; both must share a sample rate and carry the

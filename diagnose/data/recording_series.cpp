@@ -51,6 +51,7 @@ RecordingSeries slice_recording_series(const RecordingSeries& series, std::size_
   part.clearance_mm = cut(series.clearance_mm);
   part.temp_c = cut(series.temp_c);
   part.voltage_v = cut(series.voltage_v);
+  part.start_utc_s = series.start_utc_s;  // the same clock: t_s is kept as it was
   return part;
 }
 

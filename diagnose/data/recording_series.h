@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,10 @@ namespace flange::diagnose {
 struct RecordingSeries {
   std::string path;  // where it came from, for messages ("" when built in memory)
   std::vector<double> t_s, clearance_mm, temp_c, voltage_v;
+  // When t_s = 0 was, in UTC seconds since 1970, if known (flange diagnose --real-start and
+  // --holdout-start): it puts two sessions whose clocks each restart at 0 on one time line, so
+  // that an effect of the sensor's age is carried from one session to the other.
+  std::optional<double> start_utc_s;
   std::size_t size() const { return t_s.size(); }
 };
 

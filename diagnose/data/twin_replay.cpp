@@ -9,6 +9,8 @@
 namespace flange::diagnose {
 namespace {
 
+constexpr double kSecondsPerDay = 86400.0;
+
 using sim::ChainStage;
 
 ChainStage stage_of(const std::string& name) {
@@ -58,8 +60,9 @@ std::vector<double> ambient_from_recorded(const RecordingSeries& series,
   return ambient;
 }
 
-TwinReplay::TwinReplay(const RecordingSeries& series, const sim::PolynomialSensorModel& nominal)
-    : series_(series), nominal_(nominal) {
+TwinReplay::TwinReplay(const RecordingSeries& series, const sim::PolynomialSensorModel& nominal,
+                       double age_offset_s)
+    : series_(series), nominal_(nominal), age_offset_s_(age_offset_s) {
   const std::size_t n = series.size();
   nominal_v_.resize(n);
   nominal_clip_.resize(n);
@@ -79,8 +82,15 @@ TwinReplay::TwinReplay(const RecordingSeries& series, const sim::PolynomialSenso
 
 std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& effects,
                                         std::uint64_t seed) const {
+  // The sensor's age at this series' t_s = 0, for the effects fitted on another session.
+  std::vector<sim::EffectSettings> aged = effects;
+  for (sim::EffectSettings& effect : aged) {
+    if (effect.name == "ageing_drift") {
+      effect.params["start_age_days"] += age_offset_s_ / kSecondsPerDay;
+    }
+  }
   std::vector<const sim::EffectSettings*> ordered;
-  for (const sim::EffectSettings& effect : effects) ordered.push_back(&effect);
+  for (const sim::EffectSettings& effect : aged) ordered.push_back(&effect);
   std::sort(ordered.begin(), ordered.end(),
             [](const sim::EffectSettings* a, const sim::EffectSettings* b) {
               return sim::catalogue_index(a->name) < sim::catalogue_index(b->name);

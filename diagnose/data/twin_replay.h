@@ -22,8 +22,12 @@ std::vector<double> ambient_from_recorded(const RecordingSeries& series,
 
 class TwinReplay {
  public:
-  // `series` must outlive the replay; `nominal` is the twin's nominal model.
-  TwinReplay(const RecordingSeries& series, const sim::PolynomialSensorModel& nominal);
+  // `series` must outlive the replay; `nominal` is the twin's nominal model. `age_offset_s`: how
+  // much older the sensor is at the series' t_s = 0 than at the t_s = 0 of the session its
+  // effects were fitted on; effects of the sensor's age (ageing_drift) are replayed that much
+  // later. The other effects depend on the time only through its differences.
+  TwinReplay(const RecordingSeries& series, const sim::PolynomialSensorModel& nominal,
+             double age_offset_s = 0.0);
 
   // The voltage the twin with `effects` (noise off) records for every sample. `seed` seeds the
   // random effects (vibration's tone phases), as the twin's seed does.
@@ -35,10 +39,12 @@ class TwinReplay {
   // dV/dd of the nominal model at every sample (V/mm): how clearance motion shows in volts.
   const std::vector<double>& sensitivity_v_per_mm() const { return sensitivity_; }
   const std::vector<double>& times() const { return series_.t_s; }
+  double age_offset_s() const { return age_offset_s_; }
 
  private:
   const RecordingSeries& series_;
   sim::PolynomialSensorModel nominal_;
+  double age_offset_s_;
   std::vector<double> nominal_v_;
   std::vector<sim::RailClip> nominal_clip_;
   std::vector<double> sensitivity_;

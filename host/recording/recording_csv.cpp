@@ -243,9 +243,11 @@ std::string RecordingReader::check_row(RecordingRow& row,
   last_time_ = row.t_s;
   last_run_ = row.run;
   if (row.voltage_v < kMinVoltageV || row.voltage_v > kMaxVoltageV) {
-    return fmt::format("column {} (voltage_v): {} is outside the sensor's range {} to {} V",
-                       voltage_column_ + 1, printable_excerpt(fields[voltage_column_]),
-                       kMinVoltageV, kMaxVoltageV);
+    return fmt::format(
+        "column {} (voltage_v): {} is outside the valid range {} to {} V (the sensor's {} to {} V "
+        "and 1 V either side for noise)",
+        voltage_column_ + 1, printable_excerpt(fields[voltage_column_]), kMinVoltageV,
+        kMaxVoltageV, kSensorMinVoltageV, kSensorMaxVoltageV);
   }
   if (row.temp_c < kMinTempC || row.temp_c > kMaxTempC) {
     return fmt::format("column {} (temp_c): {} is outside the valid range {} to {} C",

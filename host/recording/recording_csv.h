@@ -14,7 +14,12 @@
 namespace flange::host {
 
 // Valid ranges of the recorded quantities.
-inline constexpr double kMinVoltageV = 0.0, kMaxVoltageV = 10.0;  // the sensor's output range
+// The sensor's output is 0 to 10 V; a recording may hold up to 1 V beyond either end, where the
+// wiring's noise and the converter's offset carry a sample near the rails (a 0.15 V noise reaches
+// 0.7 V in a long session). Further out it is not this sensor's signal.
+inline constexpr double kSensorMinVoltageV = 0.0, kSensorMaxVoltageV = 10.0;
+inline constexpr double kMinVoltageV = kSensorMinVoltageV - 1.0;
+inline constexpr double kMaxVoltageV = kSensorMaxVoltageV + 1.0;
 inline constexpr double kMinTempC = -40.0, kMaxTempC = 200.0;     // type-K range in use
 
 struct RecordingRow {

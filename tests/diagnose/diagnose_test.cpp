@@ -4,6 +4,7 @@
 // and exit status 2. Recordings are short synthetic sweeps made with the twin itself.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 
 #include "cli.h"
 #include "diagnosis.h"
+#include "diagnosis_detail.h"
 #include "effect_catalogue.h"
 #include "flange_in_process.h"
 #include "sensor_twin.h"
@@ -45,20 +47,21 @@ double sweep_temperature(double t) {
 // A recording of the twin with `effects`; `gain_step` multiplies the voltage from half-way on
 // (an effect the library does not have).
 RecordingSeries twin_recording(const std::vector<sim::EffectSettings>& effects, std::uint64_t seed,
-                               double phase_s, double gain_step = 1.0) {
+                               double phase_s, double gain_step = 1.0,
+                               double duration_s = kDurationS) {
   sim::TwinConfig config;
   config.noise.voltage_std_v = kNoiseV;
   config.effects = effects;
   sim::SensorTwin twin(config, seed);
   RecordingSeries series;
-  const int n = static_cast<int>(kDurationS * kFsHz);
+  const int n = static_cast<int>(duration_s * kFsHz);
   for (int i = 0; i <= n; ++i) {
     const double t = i / kFsHz;
     const sim::Reading r = twin.step({t, sweep_clearance(t, phase_s), sweep_temperature(t)});
     series.t_s.push_back(t);
     series.clearance_mm.push_back(sweep_clearance(t, phase_s));
     series.temp_c.push_back(r.temp_c);
-    series.voltage_v.push_back(t > kDurationS / 2 ? r.voltage_v * gain_step : r.voltage_v);
+    series.voltage_v.push_back(t > duration_s / 2 ? r.voltage_v * gain_step : r.voltage_v);
   }
   return series;
 }
@@ -120,6 +123,49 @@ TEST(Diagnose, NullRecordingGivesNone) {
   EXPECT_EQ(d.status, "none") << d.heldout_rms_before << " vs noise " << d.noise_std_v;
   EXPECT_TRUE(d.effects.empty());
   EXPECT_NEAR(d.noise_std_v, kNoiseV, 0.1 * kNoiseV);
+}
+
+// Two bench sessions of 6600 s a day and a half apart, each clock restarting at 0, with a sensor
+// that ages: the held-out session starts 1.5 days older. With the start times the drift is carried
+// across and explains the gap; without them the held-out offset is left and the reasons say why.
+// (A session must be long enough for its own trend to show the rate: 0.07 V here.)
+TEST(Diagnose, AgeingAcrossSessionsNeedsTheirStartTimes) {
+  const auto aged = [](double start_age_days) {
+    return std::vector<sim::EffectSettings>{
+        {"ageing_drift", {{"rate_v_per_day", 0.8}, {"start_age_days", start_age_days}}}};
+  };
+  constexpr double kSessionS = 6600.0;
+  RecordingSeries first = twin_recording(aged(0.2), 41, 0.0, 1.0, kSessionS);
+  RecordingSeries later = twin_recording(aged(1.7), 42, 70.0, 1.0, kSessionS);
+
+  const DiagnosisResult blind = diagnose_in_detail(first, later, {});
+  EXPECT_EQ(blind.diagnosis.clock, "unknown");
+  EXPECT_FALSE(blind.diagnosis.heldout_starts_after_s.has_value());
+  EXPECT_NE(blind.diagnosis.status, "explained");
+  const auto says = [](const DiagnosisResult& r, const std::string& text) {
+    return std::any_of(r.detail.reasons.begin(), r.detail.reasons.end(),
+                       [&](const std::string& s) { return s.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(says(blind, "start times are unknown")) << blind.detail.reasons.back();
+
+  first.start_utc_s = 1.7e9;
+  later.start_utc_s = 1.7e9 + 1.5 * 86400.0;
+  const DiagnosisResult timed = diagnose_in_detail(first, later, {});
+  EXPECT_EQ(timed.diagnosis.clock, "start times");
+  ASSERT_TRUE(timed.diagnosis.heldout_starts_after_s.has_value());
+  EXPECT_DOUBLE_EQ(*timed.diagnosis.heldout_starts_after_s, 1.5 * 86400.0);
+  EXPECT_EQ(timed.diagnosis.status, "explained");
+  ASSERT_FALSE(timed.diagnosis.effects.empty());
+  EXPECT_EQ(timed.diagnosis.effects.front().name, "ageing_drift");
+  EXPECT_GT(timed.diagnosis.effects.front().shrink_pct, 80.0);
+  EXPECT_TRUE(says(timed, "1.5 days after the calibration session"));
+}
+
+// The held-out part of one recording continues its clock: no start times are needed.
+TEST(Diagnose, AHeldOutFractionSharesTheRecordingsClock) {
+  const RecordingSeries whole = twin_recording({}, 51, 0.0);
+  const HoldoutSplit split = split_holdout(whole, 0.3);
+  EXPECT_EQ(diagnose(split.calibration, split.heldout, {}).clock, "one clock");
 }
 
 TEST(Diagnose, GainStepOutsideTheLibraryIsUnexplained) {

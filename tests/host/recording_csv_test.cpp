@@ -69,9 +69,10 @@ TEST(RecordingCsv, EveryBadInputNamesFileLineAndColumn) {
       {header + "0,1,inf,5\n", ":2: column 3 (temp_c): 'inf' is not a finite number"},
       {header + "0,1,20,5\n0,1,20,5\n", ":3: column 1 (t_s): 0 is not after the previous time 0"},
       {header + "1,1,20,5\n0.5,1,20,5\n", ":3: column 1 (t_s): 0.5 is not after"},
-      {header + "0,1,20,10.5\n",
-       ":2: column 4 (voltage_v): 10.5 is outside the sensor's range 0 to 10 V"},
-      {header + "0,1,20,-0.1\n", ":2: column 4 (voltage_v): -0.1 is outside"},
+      {header + "0,1,20,11.5\n",
+       ":2: column 4 (voltage_v): 11.5 is outside the valid range -1 to 11 V (the sensor's 0 to 10 "
+       "V and 1 V either side for noise)"},
+      {header + "0,1,20,-1.1\n", ":2: column 4 (voltage_v): -1.1 is outside"},
       {header + "0,1,250,5\n",
        ":2: column 3 (temp_c): 250 is outside the valid range -40 to 200 C"},
       {header + "0,x,20,5\n", ":2: column 2 (clearance_mm): 'x' is not a finite number"},
