@@ -15,6 +15,7 @@
 #include "diagnosis_detail.h"
 #include "effect_fit.h"
 #include "float_design.h"
+#include "free_shape_fit.h"
 #include "gaussian_source.h"
 #include "input_error.h"
 #include "quantised_noise.h"
@@ -431,6 +432,9 @@ struct Candidate {
   EffectFit fit;
   std::vector<sim::EffectSettings> with;  // modelled + the candidate, refitted
   std::vector<double> heldout_error;      // the held-out gap `with` leaves
+  // A free-shape candidate (free_shape_fit.h): its curve, added to the voltage beside `with`
+  // (then the modelled effects as they were).
+  std::optional<FreeShapeFit> free_shape;
 };
 
 // One round of the greedy selection that picked an effect: every candidate it weighed (their
@@ -453,7 +457,27 @@ struct Selection {
   std::optional<AdcGrid> quantised_on;              // the converter grid, once recognised
   bool quantisation_as_noise = false;               // its codes not reproduced: taken as noise
   std::optional<EffectFinding> nearest_unpicked;    // the best candidate when none was significant
+  // What the free-shape picks add to the twin's voltage, per part (zeros without any), and for
+  // each finding the index of its effect in `modelled` (-1: a free shape, or a noise type).
+  std::vector<double> cal_free_v, ho_free_v;
+  std::vector<int> modelled_index;
 };
+
+// The recorded voltage less what the free-shape picks add: what the replayed effects must meet.
+std::vector<double> cal_target(const Parts& parts, const Selection& selection) {
+  return minus(parts.calibration.voltage_v, selection.cal_free_v);
+}
+std::vector<double> ho_target(const Parts& parts, const Selection& selection) {
+  return minus(parts.heldout.voltage_v, selection.ho_free_v);
+}
+
+// Whether `name`'s class is already modelled: by the library effect or by its free shape.
+bool class_taken(const std::string& name, const Selection& selection) {
+  return std::any_of(selection.modelled.begin(), selection.modelled.end(),
+                     [&](const auto& m) { return m.name == name; }) ||
+         std::any_of(selection.findings.begin(), selection.findings.end(),
+                     [&](const EffectFinding& f) { return f.name == name; });
+}
 
 // What the held-out gap that is left is compared with, and why when it is not the white noise.
 struct VerdictNoise {
@@ -492,6 +516,8 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   const std::vector<double> cal_base = parts.cal_replay.voltage(selection.modelled);
   const std::vector<double> ho_base = parts.ho_replay.voltage(selection.modelled);
   selection.ho_gap = minus(parts.heldout.voltage_v, ho_base);
+  selection.cal_free_v.assign(parts.calibration.size(), 0.0);
+  selection.ho_free_v.assign(parts.heldout.size(), 0.0);
 
   estimate_noise(parts.calibration, cal_base, options, detail);
   selection.sigma = std::max(detail.noise_std_v, 1e-9);
@@ -503,14 +529,16 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
 
 // Every bias-type effect of the catalogue not yet modelled, fitted on top of `modelled` and
 // scored on the held-out part, in catalogue order.
-std::vector<Candidate> score_candidates(const Parts& parts,
-                                        const std::vector<sim::EffectSettings>& modelled,
-                                        std::size_t first_selected) {
+std::vector<Candidate> score_candidates(const Parts& parts, const Selection& selection) {
+  const std::vector<sim::EffectSettings>& modelled = selection.modelled;
+  const std::size_t first_selected = selection.first_selected;
+  const std::vector<double> cal_v = cal_target(parts, selection);
+  const std::vector<double> ho_v = ho_target(parts, selection);
   std::vector<std::string> names;
   for (const sim::EffectSpec& spec : sim::effect_catalogue()) {
-    const bool taken = std::any_of(modelled.begin(), modelled.end(),
-                                   [&](const auto& m) { return m.name == spec.name; });
-    if (fitted_by_bias(spec.name) && !taken) names.push_back(spec.name);
+    if (fitted_by_bias(spec.name) && !class_taken(spec.name, selection)) {
+      names.push_back(spec.name);
+    }
   }
   // Candidates are independent of each other: each is fitted in its own thread (the replays
   // are read-only), and the results are taken in catalogue order, so the outcome does not
@@ -519,19 +547,32 @@ std::vector<Candidate> score_candidates(const Parts& parts,
   for (const std::string& name : names) {
     pending.push_back(std::async(std::launch::async, [&, name] {
       Candidate c;
-      c.fit = fit_effect(name, parts.cal_replay, parts.calibration.voltage_v, modelled);
+      c.fit = fit_effect(name, parts.cal_replay, cal_v, modelled);
       c.with = modelled;
       c.with.push_back(c.fit.settings);
       // Each candidate is scored with the effects chosen before it refitted around it.
       if (c.with.size() > first_selected + 1) {
-        backfit(c.with, first_selected, parts.cal_replay, parts.calibration.voltage_v);
+        backfit(c.with, first_selected, parts.cal_replay, cal_v);
       }
-      c.heldout_error = minus(parts.heldout.voltage_v, parts.ho_replay.voltage(c.with));
+      c.heldout_error = minus(ho_v, parts.ho_replay.voltage(c.with));
       return c;
     }));
   }
   std::vector<Candidate> candidates;
   for (std::size_t i = 0; i < names.size(); ++i) candidates.push_back(pending[i].get());
+  // The free shapes of the classes not yet modelled: least squares on the gap left, no refit.
+  const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
+  for (const std::string& name : free_shape_effects()) {
+    if (class_taken(name, selection)) continue;
+    Candidate c;
+    c.free_shape = fit_free_shape(name, parts.calibration, parts.cal_replay, parts.heldout,
+                                  parts.ho_replay, cal_gap, parts.cal_replay.v_min_v());
+    c.fit.settings = sim::make_effect_settings(name, {}, "diagnose free shape");
+    c.fit.rms_v = rms_of(minus(cal_gap, c.free_shape->cal_voltage_v));
+    c.with = modelled;
+    c.heldout_error = minus(selection.current_error, c.free_shape->heldout_voltage_v);
+    candidates.push_back(std::move(c));
+  }
   return candidates;
 }
 
@@ -564,6 +605,41 @@ Pick best_candidate(const std::vector<Candidate>& candidates, const Selection& s
   return pick;
 }
 
+// The held-out mean-square gain of candidate `c` over what the selection leaves now.
+double gain_of(const Candidate& c, const Selection& selection) {
+  const double now = rms_of(selection.current_error), after = rms_of(c.heldout_error);
+  return now * now - after * after;
+}
+
+// When the best candidate is a free shape whose library formula fits as well, the library one.
+// "As well": what the free curve gains over the library's formula on held-out data is below the
+// least gain a pick must make (kMinGainOfNoiseVariance of sigma^2), so the shape's departure is
+// not significant by the selection's own measure.
+Pick prefer_library_formula(const std::vector<Candidate>& candidates, Pick pick,
+                            const Selection& selection) {
+  const Candidate& best = candidates[pick.best];
+  if (!best.free_shape) return pick;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (candidates[c].free_shape || candidates[c].fit.settings.name != best.fit.settings.name) {
+      continue;
+    }
+    const double sigma = selection.sigma;
+    if (pick.gain - gain_of(candidates[c], selection) < kMinGainOfNoiseVariance * sigma * sigma) {
+      Pick library = pick;
+      library.best = c;
+      library.gain = gain_of(candidates[c], selection);
+      std::vector<double> gains;
+      for (const auto& set : selection.resamples) {
+        gains.push_back(mean_square_on(selection.current_error, set) -
+                        mean_square_on(candidates[c].heldout_error, set));
+      }
+      library.lower = quantile(gains, 0.05);
+      return library;
+    }
+  }
+  return pick;
+}
+
 // A gain is significant when it is a real share of the noise variance and its block-bootstrap
 // 95 % lower bound is above zero.
 bool significant(const Pick& pick, const Selection& selection) {
@@ -576,7 +652,7 @@ EffectFinding finding_for_pick(const Candidate& chosen, const Pick& pick,
                                const std::vector<double>& current_error) {
   EffectFinding finding;
   finding.name = chosen.fit.settings.name;
-  finding.params = chosen.fit.settings.params;
+  finding.params = chosen.free_shape ? chosen.free_shape->params() : chosen.fit.settings.params;
   finding.heldout_rms_before = rms_of(current_error);
   finding.heldout_rms_after = rms_of(chosen.heldout_error);
   finding.shrink_pct =
@@ -589,18 +665,55 @@ EffectFinding finding_for_pick(const Candidate& chosen, const Pick& pick,
     finding.noise_type = true;
     finding.evidence += "; a tone: the mains line aliased by the sampling";
   }
+  if (chosen.free_shape) {
+    finding.evidence += "; not the library's formula: " + chosen.free_shape->describe();
+  }
   return finding;
+}
+
+// For a free-shape pick: how far the library's own formula of the class went in the same round,
+// so the report says how the shape departs from it.
+void compare_with_library(const std::vector<Candidate>& candidates, const Pick& pick,
+                          const Selection& selection, EffectFinding& finding) {
+  const Candidate& chosen = candidates[pick.best];
+  if (!chosen.free_shape) return;
+  for (const Candidate& c : candidates) {
+    if (c.free_shape || c.fit.settings.name != chosen.fit.settings.name) continue;
+    std::string params;
+    for (const auto& [key, value] : c.fit.settings.params) {
+      params += fmt::format("{}{}={:.4g}", params.empty() ? "" : ", ", key, value);
+    }
+    finding.evidence += fmt::format(
+        " (the library's formula, best at {}, lowers the held-out mean square by {:.3g} V^2 "
+        "only, {:.0f} % of the free curve's)",
+        params, gain_of(c, selection), 100.0 * gain_of(c, selection) / std::max(pick.gain, 1e-30));
+  }
 }
 
 // Adds the pick to the model. The earlier findings carry their parameters as refitted with it.
 void take_pick(std::vector<Candidate> candidates, const Pick& pick, Selection& selection) {
   const Candidate& chosen = candidates[pick.best];
-  const EffectFinding finding = finding_for_pick(chosen, pick, selection.current_error);
+  EffectFinding finding = finding_for_pick(chosen, pick, selection.current_error);
+  compare_with_library(candidates, pick, selection, finding);
   selection.modelled = chosen.with;
   selection.current_error = chosen.heldout_error;
   selection.findings.push_back(finding);
+  if (chosen.free_shape) {
+    for (std::size_t i = 0; i < selection.cal_free_v.size(); ++i) {
+      selection.cal_free_v[i] += chosen.free_shape->cal_voltage_v[i];
+    }
+    for (std::size_t i = 0; i < selection.ho_free_v.size(); ++i) {
+      selection.ho_free_v[i] += chosen.free_shape->heldout_voltage_v[i];
+    }
+    selection.modelled_index.push_back(-1);
+  } else {
+    selection.modelled_index.push_back(static_cast<int>(selection.modelled.size()) - 1);
+  }
   for (std::size_t j = 0; j < selection.findings.size(); ++j) {
-    selection.findings[j].params = selection.modelled[selection.first_selected + j].params;
+    const int index = selection.modelled_index[j];
+    if (index >= 0) {
+      selection.findings[j].params = selection.modelled[static_cast<std::size_t>(index)].params;
+    }
   }
   selection.steps.push_back({std::move(candidates), pick.best});
 }
@@ -609,8 +722,9 @@ void take_pick(std::vector<Candidate> candidates, const Pick& pick, Selection& s
 // difference-based noise estimate; estimate it again from what the picks leave, kept if lower.
 void reestimate_noise(const Parts& parts, Selection& selection, DiagnosisResult& result) {
   DiagnosisDetail& detail = result.detail;
-  WhiteNoise left = estimate_white_noise(
-      parts.calibration.voltage_v, parts.cal_replay.voltage(selection.modelled), detail.adc_grid);
+  WhiteNoise left =
+      estimate_white_noise(cal_target(parts, selection),
+                           parts.cal_replay.voltage(selection.modelled), detail.adc_grid);
   if (left.effective_std_v < selection.sigma) {
     left.source = "re-estimated on the calibration gap the selected effects leave: " + left.source;
     selection.sigma = std::max(left.effective_std_v, 1e-9);
@@ -630,10 +744,10 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
       block_resamples(parts.heldout.size(), options.bootstrap_rounds, options.seed);
   selection.first_selected = options.twin.effects.size();
   for (int round = 0; round < kMaxSelected; ++round) {
-    std::vector<Candidate> candidates =
-        score_candidates(parts, selection.modelled, selection.first_selected);
+    std::vector<Candidate> candidates = score_candidates(parts, selection);
     if (candidates.empty()) break;
-    const Pick pick = best_candidate(candidates, selection);
+    const Pick pick =
+        prefer_library_formula(candidates, best_candidate(candidates, selection), selection);
     if (!significant(pick, selection)) {
       // Nothing significant at all: what came nearest is kept for an "unexplained" verdict.
       if (selection.findings.empty()) {
@@ -721,7 +835,7 @@ void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selecti
   std::vector<sim::EffectSettings> with = selection.modelled;
   with.push_back(grid->as_effect());
   finding.heldout_rms_before = rms_of(selection.current_error);
-  std::vector<double> replayed = minus(parts.heldout.voltage_v, parts.ho_replay.voltage(with));
+  std::vector<double> replayed = minus(ho_target(parts, selection), parts.ho_replay.voltage(with));
   const double null_rms = quantised_null_rms(white.analog_std_v, grid->lsb_v);
   if (rms_of(replayed) <= kExplainedRatio * null_rms) {
     selection.current_error = std::move(replayed);
@@ -763,7 +877,7 @@ double vibration_inclusion(const std::vector<double>& gap, const TwinReplay& rep
 VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
   const std::vector<double>& current_error = selection.current_error;
   const std::vector<double> cal_after =
-      minus(parts.calibration.voltage_v, parts.cal_replay.voltage(selection.modelled));
+      minus(cal_target(parts, selection), parts.cal_replay.voltage(selection.modelled));
   const VibrationSignature cal_vibration =
       vibration_signature(cal_after, parts.cal_replay.sensitivity_v_per_mm());
   const VibrationSignature ho_vibration =

@@ -40,6 +40,7 @@ class TwinReplay {
   const std::vector<double>& sensitivity_v_per_mm() const { return sensitivity_; }
   const std::vector<double>& times() const { return series_.t_s; }
   double age_offset_s() const { return age_offset_s_; }
+  double v_min_v() const { return nominal_.v_min_v(); }
 
  private:
   const RecordingSeries& series_;

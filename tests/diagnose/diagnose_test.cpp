@@ -168,6 +168,32 @@ TEST(Diagnose, AHeldOutFractionSharesTheRecordingsClock) {
   EXPECT_EQ(diagnose(split.calibration, split.heldout, {}).clock, "one clock");
 }
 
+// A temperature offset that is not the library's straight line (a parabola in T, 0.24 V at the
+// hottest): named by its class through the free curve of T, with the curve's values and a
+// sentence on how the library's formula fell short. A straight-line offset (DiagnoseRecovers)
+// still reports the library's parameters.
+TEST(Diagnose, AnOffsetOfAnotherShapeIsNamedByItsClassWithAFreeCurve) {
+  const auto bent = [](RecordingSeries s) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      s.voltage_v[i] += 4e-5 * (s.temp_c[i] - 20.0) * (s.temp_c[i] - 20.0);
+    }
+    return s;
+  };
+  const Diagnosis d =
+      diagnose(bent(twin_recording({}, 61, 0.0)), bent(twin_recording({}, 62, 70.0)), {});
+  EXPECT_EQ(d.status, "explained");
+  ASSERT_FALSE(d.effects.empty());
+  const EffectFinding& top = d.effects.front();
+  EXPECT_EQ(top.name, "temp_offset_drift");
+  EXPECT_LT(top.heldout_rms_after, 1.1 * d.noise_std_v);  // the curve alone leaves the noise
+  EXPECT_EQ(top.params.count("offset_v_per_c"), 0u);
+  EXPECT_EQ(top.params.size(), 7u);  // the curve at its 7 knots
+  EXPECT_NE(top.evidence.find("not the library's formula: a free curve of T"), std::string::npos)
+      << top.evidence;
+  EXPECT_NE(top.evidence.find("the library's formula, best at"), std::string::npos)
+      << top.evidence;
+}
+
 TEST(Diagnose, GainStepOutsideTheLibraryIsUnexplained) {
   const Diagnosis d =
       diagnose(twin_recording({}, 31, 0.0, 1.08), twin_recording({}, 32, 70.0, 1.08), {});
