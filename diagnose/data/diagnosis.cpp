@@ -461,6 +461,7 @@ struct Selection {
   // each finding the index of its effect in `modelled` (-1: a free shape, or a noise type).
   std::vector<double> cal_free_v, ho_free_v;
   std::vector<int> modelled_index;
+  bool free_shapes = false;  // whether the free-shape families compete (the second pass)
 };
 
 // The recorded voltage less what the free-shape picks add: what the replayed effects must meet.
@@ -563,7 +564,7 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
   // The free shapes of the classes not yet modelled: least squares on the gap left, no refit.
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
   for (const std::string& name : free_shape_effects()) {
-    if (class_taken(name, selection)) continue;
+    if (!selection.free_shapes || class_taken(name, selection)) continue;
     Candidate c;
     c.free_shape = fit_free_shape(name, parts.calibration, parts.cal_replay, parts.heldout,
                                   parts.ho_replay, cal_gap, parts.cal_replay.v_min_v());
@@ -759,6 +760,35 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
     take_pick(std::move(candidates), pick, selection);
     if (options.estimate_noise) reestimate_noise(parts, selection, result);
   }
+}
+
+// The library's formulas first; only when what they leave is above the noise, a second pass
+// with the free-shape families competing too, kept when it leaves significantly less on held-out
+// data. A free curve fitted early is not refitted around later picks, so letting it compete
+// from the start would let it take part of an effect the library explains exactly (an offset
+// curve of T takes the hysteresis of a thermal lag).
+Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& options,
+                               const Selection& start, DiagnosisResult& result) {
+  Selection library = start;
+  DiagnosisResult library_result = result;
+  select_bias_effects(parts, options, library, library_result);
+  const double left = rms_of(library.current_error);
+  if (left <= kExplainedRatio * library.sigma) {
+    result = std::move(library_result);
+    return library;
+  }
+  Selection free = start;
+  free.free_shapes = true;
+  DiagnosisResult free_result = result;
+  select_bias_effects(parts, options, free, free_result);
+  const double free_left = rms_of(free.current_error);
+  const double sigma = std::min(library.sigma, free.sigma);
+  if (left * left - free_left * free_left >= kMinGainOfNoiseVariance * sigma * sigma) {
+    result = std::move(free_result);
+    return free;
+  }
+  result = std::move(library_result);
+  return library;
 }
 
 // The share of `resamples` on which `step`'s choice still wins and gains over `before`.
@@ -1056,8 +1086,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   if (clock.kind != "unknown") result.diagnosis.heldout_starts_after_s = clock.age_offset_s;
   const Parts parts{calibration, heldout, TwinReplay(calibration, options.twin.nominal),
                     TwinReplay(heldout, options.twin.nominal, clock.age_offset_s)};
-  Selection selection = replay_nominal_twin(parts, options, result);
-  select_bias_effects(parts, options, selection, result);
+  Selection selection = select_in_two_passes(parts, options,
+                                             replay_nominal_twin(parts, options, result), result);
   measure_inclusion(selection);
   // Noise-type effects, recognised from their signatures in both parts.
   recognise_quantization(parts, result.detail.white_noise, selection);
