@@ -88,7 +88,7 @@ TEST(CalibrateCommand, BadInputExitsTwoAndLeavesTheDatabaseAlone) {
   const std::string original = "t_s,clearance_mm,temp_c,voltage_v\n" + bench_rows(300, 0.0, "");
   const auto db = write_file(dir / "db.csv", original);
   const auto broken =
-      write_file(dir / "broken.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,2,20,1\n1,2,20,11\n");
+      write_file(dir / "broken.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,2,20,1\n1,2,20,12\n");
   FlangeOutcome outcome =
       run_flange_captured({"calibrate", "--data", db.string(), "--append", broken.string(), "--out",
                            (dir / "m.json").string()});
