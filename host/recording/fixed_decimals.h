@@ -28,11 +28,21 @@ inline constexpr std::array<char, 200> kDigitPairs = [] {
 }();
 }  // namespace detail
 
+// std::llround(x), ties away from zero, inline: the library call was a tenth of `flange run`'s
+// output time. Below 2^52 the truncated part and the rest are exact, so the halves compare
+// exactly; beyond (and for NaN) the library decides.
+inline long long round_half_away(double x) {
+  if (!(std::abs(x) < 0x1p52)) return std::llround(x);
+  const auto whole = static_cast<long long>(x);  // toward zero
+  const double rest = x - static_cast<double>(whole);
+  return whole + (rest >= 0.5 ? 1 : 0) - (rest <= -0.5 ? 1 : 0);
+}
+
 // Writes `value` with six decimals at `at`, which has room for kMaxFixed6Chars, and returns the
 // end. Through an integer count of millionths: several times faster than formatting the double
 // at a fixed precision, and the same digits away from exact ties.
 inline char* write_fixed6(char* at, double value) {
-  const long long millionths = std::llround(value * 1e6);
+  const long long millionths = round_half_away(value * 1e6);
   // The magnitude in unsigned arithmetic, where negating the most negative count is defined.
   const unsigned long long magnitude = millionths < 0
                                            ? 0ULL - static_cast<unsigned long long>(millionths)

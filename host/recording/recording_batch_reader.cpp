@@ -129,9 +129,9 @@ std::span<const RecordingRow> RecordingBatchReader::next_rows() {
 std::size_t RecordingBatchReader::check_in_order(RecordingBatch& batch) {
   for (std::size_t k = 0; k < batch.size; ++k) {
     RecordingRow& row = batch.rows[k];
-    if (!batch.t_texts[k].empty()) {
-      std::string problem = time_order_.check(row, batch.t_texts[k], columns_.t_column());
-      if (!problem.empty()) row.problem = std::move(problem);  // the time order comes first
+    // Only a row that read has its time order checked; it comes before the range problems.
+    if (!batch.t_texts[k].empty() && !time_order_.passes(row)) {
+      row.problem = time_order_.problem(batch.t_texts[k], columns_.t_column());
     }
     ++rows_read_;
     if (!lenient_ && !row.problem.empty()) {

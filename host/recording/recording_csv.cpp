@@ -65,8 +65,8 @@ bool RecordingReader::next(RecordingRow& row) {
 std::string RecordingReader::check_row(RecordingRow& row,
                                        const std::vector<std::string_view>& fields) {
   std::string problem = columns_.read_fields(row, fields);
-  if (problem.empty()) {
-    problem = time_order_.check(row, fields[columns_.t_column()], columns_.t_column());
+  if (problem.empty() && !time_order_.passes(row)) {
+    problem = time_order_.problem(fields[columns_.t_column()], columns_.t_column());
   }
   if (problem.empty()) problem = columns_.range_problem(row, fields);
   return problem;
