@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 // A recording's rows in batches, read, parsed and checked on a second thread while the caller
 // works on the batch before: the reading and number parsing are about half of `flange run`'s
-// time. The caller gets the same rows, problems, errors and line numbers as RecordingReader
+// time. When the next batch is not ready and the second thread has not started it (it is behind,
+// or the machine's other work has it waiting), the caller reads that batch itself rather than
+// wait. The caller gets the same rows, problems, errors and line numbers as RecordingReader
 // gives, in file order (docs/benchmarks.md, `flange run`). Memory stays flat: a few batches of a
 // fixed size go round between the two threads.
 #pragma once
 
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <mutex>
@@ -51,37 +54,42 @@ class RecordingBatchReader {
   std::size_t rows_read() const { return rows_read_; }
 
  private:
-  // The next block's rows into `batch` (on the second thread when reading ahead).
-  void fill(RecordingBatch& batch);
+  // Gives `batch` the next block of the file and its sequence number (mutex_ held: the file is
+  // read in order); marks the file done at its end or on an error.
+  void claim_next_block(RecordingBatch& batch);
   void read_ahead();  // the second thread's loop
-  // The next filled batch in file order; the one before goes back to be filled again.
-  std::unique_ptr<RecordingBatch> take_filled(std::unique_ptr<RecordingBatch> done);
-  // Checks the time order of `batch`'s rows and counts them; the number of rows to return (fewer
-  // when a strict read stops at a bad row, whose error then waits in pending_error_).
+  // The next batch in file order; `done` (the rows returned before) goes back to be refilled.
+  std::unique_ptr<RecordingBatch> take_in_order(std::unique_ptr<RecordingBatch> done);
+  // Numbers the lines of `batch`'s rows, checks their time order and counts them; the number of
+  // rows to return (fewer when a strict read stops at a bad row, whose error then waits in
+  // pending_error_).
   std::size_t check_in_order(RecordingBatch& batch);
 
   const std::string path_;
   const bool lenient_;
 
-  // Filling batches: the second thread's alone once it runs.
+  // Claiming blocks: under mutex_.
   FileLineBlocks blocks_;
   std::unique_ptr<RecordingBatch> first_batch_;  // holds the header's block
-  std::optional<std::string_view> first_lines_;  // its lines after the header, until read
+  std::optional<std::string_view> first_lines_;  // its lines after the header, until claimed
+  std::uint64_t next_sequence_ = 0;              // of the next block claimed
+  bool file_done_ = false;                       // no block is left to claim
   const RecordingColumns columns_;
-  std::size_t line_ = 1;  // the last line read (the header is line 1)
-  std::vector<std::string_view> fields_;
 
   // Checking in order: the caller's.
   TimeOrder time_order_;
   std::unique_ptr<RecordingBatch> current_;  // the rows last returned
+  std::uint64_t expected_sequence_ = 0;      // of the next batch to return
+  std::size_t last_line_ = 1;                // the last line returned (the header is line 1)
   std::size_t rows_read_ = 0;
   std::optional<InputError> pending_error_;
   bool at_end_ = false;
 
-  // Batches going round: empty ones to the filler, filled ones to the caller, in order.
+  // Batches going round: empty ones to be claimed, filled ones (in any order) to the caller.
   std::mutex mutex_;
   std::condition_variable empty_ready_, filled_ready_;
-  std::deque<std::unique_ptr<RecordingBatch>> empty_, filled_;
+  std::deque<std::unique_ptr<RecordingBatch>> empty_;
+  std::vector<std::unique_ptr<RecordingBatch>> filled_;
   bool stopping_ = false;
   std::thread read_ahead_thread_;
 };
