@@ -74,6 +74,8 @@ class RecordingBatchReader {
   std::optional<std::string_view> first_lines_;  // its lines after the header, until claimed
   std::uint64_t next_sequence_ = 0;              // of the next block claimed
   bool file_done_ = false;                       // no block is left to claim
+  // From the header (read with the members above, so declared after them); const, so both threads
+  // read rows with it.
   const RecordingColumns columns_;
 
   // Checking in order: the caller's.
