@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <string>
 
 namespace flange::host {
@@ -28,25 +29,43 @@ inline constexpr std::array<char, 200> kDigitPairs = [] {
 }();
 }  // namespace detail
 
+// std::llround(x), ties away from zero, inline: the library call was a tenth of `flange run`'s
+// output time. Below 2^52 the truncated part and the rest are exact, so the halves compare
+// exactly; beyond (and for NaN) the library decides.
+inline long long round_half_away(double x) {
+  if (!(std::abs(x) < 0x1p52)) return std::llround(x);
+  const auto whole = static_cast<long long>(x);  // toward zero
+  const double rest = x - static_cast<double>(whole);
+  return whole + (rest >= 0.5 ? 1 : 0) - (rest <= -0.5 ? 1 : 0);
+}
+
 // Writes `value` with six decimals at `at`, which has room for kMaxFixed6Chars, and returns the
 // end. Through an integer count of millionths: several times faster than formatting the double
 // at a fixed precision, and the same digits away from exact ties.
 inline char* write_fixed6(char* at, double value) {
-  const long long millionths = std::llround(value * 1e6);
+  const long long millionths = round_half_away(value * 1e6);
   // The magnitude in unsigned arithmetic, where negating the most negative count is defined.
   const unsigned long long magnitude = millionths < 0
                                            ? 0ULL - static_cast<unsigned long long>(millionths)
                                            : static_cast<unsigned long long>(millionths);
   if (millionths < 0) *at++ = '-';
-  at = std::to_chars(at, at + kMaxFixed6IntegerDigits, magnitude / 1000000).ptr;
-  *at++ = '.';
-  auto fraction = static_cast<unsigned>(magnitude % 1000000);
-  for (int pair = 2; pair >= 0; --pair) {
-    const std::size_t two = 2 * (fraction % 100);
-    at[2 * pair] = detail::kDigitPairs[two];
-    at[2 * pair + 1] = detail::kDigitPairs[two + 1];
-    fraction /= 100;
+  // Clearances, temperatures and voltages have one or two digits before the point: a lookup.
+  const unsigned long long whole = magnitude / 1000000;
+  if (whole < 10) {
+    *at++ = static_cast<char>('0' + whole);
+  } else if (whole < 100) {
+    std::memcpy(at, &detail::kDigitPairs[2 * whole], 2);
+    at += 2;
+  } else {
+    at = std::to_chars(at, at + kMaxFixed6IntegerDigits, whole).ptr;
   }
+  *at++ = '.';
+  // The six decimals as three pairs, each computed apart (no chain of divisions).
+  const auto fraction = static_cast<unsigned>(magnitude % 1000000);
+  const unsigned low_four = fraction % 10000;
+  std::memcpy(at, &detail::kDigitPairs[2 * (fraction / 10000)], 2);
+  std::memcpy(at + 2, &detail::kDigitPairs[2 * (low_four / 100)], 2);
+  std::memcpy(at + 4, &detail::kDigitPairs[2 * (low_four % 100)], 2);
   return at + 6;
 }
 

@@ -6,13 +6,16 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -21,7 +24,7 @@
 #include "filter_json.h"
 #include "fixed_decimals.h"
 #include "input_error.h"
-#include "recording_csv.h"
+#include "recording_batch_reader.h"
 #include "sample_scaling.h"
 
 namespace flange::host {
@@ -430,13 +433,24 @@ RunSummary Pipeline::finish(std::size_t rows_read) {
   return std::move(summary_);
 }
 
+// Whether a second thread should read the recording ahead: not for a small file, where starting
+// it costs more than it saves, nor on one core.
+bool read_ahead(const RunOptions& options) {
+  if (options.threads != 0) return options.threads >= 2;
+  constexpr std::uintmax_t kSmallRecordingBytes = std::uintmax_t{1} << 20;
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(options.input, error);
+  return std::thread::hardware_concurrency() >= 2 && !error && bytes > kSmallRecordingBytes;
+}
+
 }  // namespace
 
 RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
   Pipeline pipeline(options, trace);
-  RecordingReader reader(options.input, options.lenient);
-  RecordingRow row;
-  while (reader.next(row)) pipeline.add(row);
+  RecordingBatchReader reader(options.input, options.lenient, read_ahead(options));
+  for (std::span<const RecordingRow> rows; !(rows = reader.next_rows()).empty();) {
+    for (const RecordingRow& row : rows) pipeline.add(row);
+  }
   return pipeline.finish(reader.rows_read());
 }
 
