@@ -183,7 +183,7 @@ TEST_F(BoardStream, BadRowIsRefusedBeforeTheBoardSeesASample) {
   std::ofstream bad(dir_ / "bad.csv");
   std::string line;
   for (int n = 1; std::getline(in, line); ++n) {
-    if (n == 200) line = line.substr(0, line.rfind(',')) + ",10.5";
+    if (n == 200) line = line.substr(0, line.rfind(',')) + ",12.5";
     bad << line << "\n";
   }
   bad.close();

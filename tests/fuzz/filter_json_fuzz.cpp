@@ -12,7 +12,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const flange::model::CoreConfig config = flange::model::load_core_config(path);
     // A configuration that passed every check must run: a few samples through the model.
     flange::model::IirCore core(config);
-    for (const std::int32_t x : {0, 1, -1, 12345}) core.step(x);
+    // Samples within the set's own D-bit range (a valid set may have any width from 2 bits).
+    for (const std::int32_t x : {0, 1, -1, core.sample_max(), core.sample_min()}) core.step(x);
   } catch (const flange::model::FilterJsonError&) {
   }
   try {
