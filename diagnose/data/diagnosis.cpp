@@ -458,7 +458,7 @@ struct Selection {
   bool quantisation_as_noise = false;               // its codes not reproduced: taken as noise
   std::optional<EffectFinding> nearest_unpicked;    // the best candidate when none was significant
   // What the free-shape picks add to the twin's voltage, per part (zeros without any), and for
-  // each finding the index of its effect in `modelled` (-1: a free shape, or a noise type).
+  // each bias-type pick the index of its effect in `modelled` (-1: a free shape, which has none).
   std::vector<double> cal_free_v, ho_free_v;
   std::vector<int> modelled_index;
   bool free_shapes = false;  // whether the free-shape families compete (the second pass)
@@ -583,33 +583,39 @@ struct Pick {
   double lower = 0.0;    // its block-bootstrap 5 % quantile, V^2
 };
 
-// The candidate that lowers the held-out mean square most, with its gain and the gain's
-// block-bootstrap 5 % quantile.
-Pick best_candidate(const std::vector<Candidate>& candidates, const Selection& selection) {
-  const std::vector<double>& current_error = selection.current_error;
-  const double mse_now = rms_of(current_error) * rms_of(current_error);
+// The held-out mean-square gain of candidate `c` over what the selection leaves now.
+double gain_of(const Candidate& c, const Selection& selection) {
+  const double now = rms_of(selection.current_error), after = rms_of(c.heldout_error);
+  return now * now - after * after;
+}
+
+// Candidate `index` as a pick: its gain and the gain's block-bootstrap 5 % quantile.
+Pick pick_of(const std::vector<Candidate>& candidates, std::size_t index,
+             const Selection& selection) {
   Pick pick;
-  pick.gain = -std::numeric_limits<double>::infinity();
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    const double r = rms_of(candidates[c].heldout_error);
-    if (mse_now - r * r > pick.gain) {
-      pick.gain = mse_now - r * r;
-      pick.best = c;
-    }
-  }
+  pick.best = index;
+  pick.gain = gain_of(candidates[index], selection);
   std::vector<double> gains;
   for (const auto& set : selection.resamples) {
-    gains.push_back(mean_square_on(current_error, set) -
-                    mean_square_on(candidates[pick.best].heldout_error, set));
+    gains.push_back(mean_square_on(selection.current_error, set) -
+                    mean_square_on(candidates[index].heldout_error, set));
   }
   pick.lower = quantile(gains, 0.05);
   return pick;
 }
 
-// The held-out mean-square gain of candidate `c` over what the selection leaves now.
-double gain_of(const Candidate& c, const Selection& selection) {
-  const double now = rms_of(selection.current_error), after = rms_of(c.heldout_error);
-  return now * now - after * after;
+// The candidate that lowers the held-out mean square most, with its gain and the gain's
+// block-bootstrap 5 % quantile.
+Pick best_candidate(const std::vector<Candidate>& candidates, const Selection& selection) {
+  std::size_t best = 0;
+  double best_gain = -std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (gain_of(candidates[c], selection) > best_gain) {
+      best_gain = gain_of(candidates[c], selection);
+      best = c;
+    }
+  }
+  return pick_of(candidates, best, selection);
 }
 
 // When the best candidate is a free shape whose library formula fits as well, the library one.
@@ -626,16 +632,7 @@ Pick prefer_library_formula(const std::vector<Candidate>& candidates, Pick pick,
     }
     const double sigma = selection.sigma;
     if (pick.gain - gain_of(candidates[c], selection) < kMinGainOfNoiseVariance * sigma * sigma) {
-      Pick library = pick;
-      library.best = c;
-      library.gain = gain_of(candidates[c], selection);
-      std::vector<double> gains;
-      for (const auto& set : selection.resamples) {
-        gains.push_back(mean_square_on(selection.current_error, set) -
-                        mean_square_on(candidates[c].heldout_error, set));
-      }
-      library.lower = quantile(gains, 0.05);
-      return library;
+      return pick_of(candidates, c, selection);
     }
   }
   return pick;
