@@ -109,16 +109,19 @@ void validate_core_config(const CoreConfig& c) {
   }
   if (c.sample_width < 2 || c.sample_width > 32) bad("sample_width", "must lie in [2, 32]");
   if (c.coef_width < 2 || c.coef_width > 32) bad("coef_width", "must lie in [2, 32]");
-  if (c.coef_frac_bits < 1) bad("coef_frac_bits", "must be >= 1 (rounding constant 2^(Fa-1))");
-  if (c.num_frac_bits < 1) bad("num_frac_bits", "must be >= 1");
-  if (c.feedback_shift != c.num_frac_bits - c.coef_frac_bits || c.feedback_shift < 0) {
-    bad("feedback_shift", "must equal num_frac_bits - coef_frac_bits >= 0");
+  if (c.feedback_shift < 0) bad("feedback_shift", "must be >= 0");
+  if (c.coef_frac_bits < 1 || c.coef_frac_bits > c.sample_width + c.feedback_shift) {
+    bad("coef_frac_bits", "must lie in [1, sample_width + feedback_shift] (rounding constant "
+                          "2^(F-1); the error word fits the history's width)");
   }
-  if (c.acc_width > 64 || c.acc_width < c.num_frac_bits + c.sample_width) {
-    bad("acc_width", "must lie in [num_frac_bits + sample_width, 64]");
+  if (c.acc_width > 64 || c.acc_width < c.coef_frac_bits + c.sample_width + c.feedback_shift) {
+    bad("acc_width", "must lie in [coef_frac_bits + sample_width + feedback_shift, 64]");
   }
   if (c.sample_width + c.feedback_shift + c.coef_width > c.acc_width) {
     bad("acc_width", "the product (sample_width + feedback_shift + coef_width) does not fit");
+  }
+  if (c.coef_frac_bits + c.split_shift() > c.acc_width) {
+    bad("acc_width", "the lo phase's rounding constant 2^(F-1+L) does not fit");
   }
   if (c.num_channels < 1 || c.num_channels > kMaxCoreChannels) {
     bad("num_channels", fmt::format("must lie in [1, {}]", kMaxCoreChannels));
@@ -129,7 +132,7 @@ void validate_core_config(const CoreConfig& c) {
   if (static_cast<std::int64_t>(c.rom.size()) !=
       std::int64_t{c.coef_sets} * c.rom_depth()) {
     bad("rom", fmt::format("holds {} words, expected coef_sets * num_sections * "
-                           "(2 * section_order + 1) = {}",
+                           "(5 * section_order + 2) = {}",
                            c.rom.size(), std::int64_t{c.coef_sets} * c.rom_depth()));
   }
   const std::int64_t hi = (std::int64_t{1} << (c.coef_width - 1)) - 1;
@@ -137,6 +140,19 @@ void validate_core_config(const CoreConfig& c) {
     if (c.rom[i] < -hi - 1 || c.rom[i] > hi) {
       bad(fmt::format("rom[{}]", i),
           fmt::format("{} does not fit {} bits", c.rom[i], c.coef_width));
+    }
+  }
+  // Lo words are the low L bits of a split coefficient: in [0, 2^L).
+  for (int set = 0; set < c.coef_sets; ++set) {
+    for (int k = 0; k < c.num_sections; ++k) {
+      const int base = set * c.rom_depth() + k * c.terms();
+      for (int i = c.lo_b(0); i <= c.lo_a(c.section_order); ++i) {
+        if (c.rom[static_cast<std::size_t>(base + i)] < 0) {
+          bad(fmt::format("rom[{}]", base + i),
+              fmt::format("{} is a lo word and must lie in [0, 2^{})",
+                          c.rom[static_cast<std::size_t>(base + i)], c.split_shift()));
+        }
+      }
     }
   }
 }
@@ -155,15 +171,18 @@ static CoreConfig load_core_config_unguarded(const std::filesystem::path& filter
   c.num_sections = static_cast<int>(reader.integer(q, p, "sections", 1, 1024));
   c.section_order = static_cast<int>(reader.integer(q, p, "section_order", 1, 64));
   c.coef_frac_bits = static_cast<int>(reader.integer(q, p, "coef_frac_bits", 1, 63));
-  c.num_frac_bits = static_cast<int>(reader.integer(q, p, "b_frac_bits", 1, 63));
   c.feedback_shift = static_cast<int>(reader.integer(q, p, "feedback_shift", 0, 63));
   c.filter_order = static_cast<int>(reader.integer(reader.root(), "", "order", 1, 1024));
-
-  if (c.feedback_shift != c.num_frac_bits - c.coef_frac_bits) {
-    reader.fail("quantized.feedback_shift", "must equal b_frac_bits - coef_frac_bits");
+  const std::int64_t split = reader.integer(q, p, "split_shift", 1, 63);
+  if (split != c.split_shift()) {
+    reader.fail("quantized.split_shift",
+                fmt::format("{} is not coef_bits - 1 = {}", split, c.split_shift()));
   }
-  if (c.acc_width < c.num_frac_bits + c.sample_width) {
-    reader.fail("quantized.acc_bits", "must be at least b_frac_bits + data_bits");
+  if (c.coef_frac_bits > c.sample_width + c.feedback_shift) {
+    reader.fail("quantized.coef_frac_bits", "must be at most data_bits + feedback_shift");
+  }
+  if (c.acc_width < c.coef_frac_bits + c.sample_width + c.feedback_shift) {
+    reader.fail("quantized.acc_bits", "must be at least coef_frac_bits + data_bits + feedback_shift");
   }
   if (c.sample_width + c.feedback_shift + c.coef_width > c.acc_width) {
     reader.fail("quantized.acc_bits", "data_bits + feedback_shift + coef_bits does not fit");
@@ -175,7 +194,7 @@ static CoreConfig load_core_config_unguarded(const std::filesystem::path& filter
   if (depth != c.rom_depth()) {
     reader.fail(
         "quantized.rom_depth",
-        fmt::format("{} is not sections * (2 * section_order + 1) = {}", depth, c.rom_depth()));
+        fmt::format("{} is not sections * (5 * section_order + 2) = {}", depth, c.rom_depth()));
   }
   // Written since multichannel cores; a set without them is one channel.
   if (q.contains("channels")) {

@@ -28,19 +28,27 @@ struct CoreConfig {
   int section_order = 0;   // SectionOrder (M), >= 1
   int sample_width = 0;    // SampleWidth (D), 2..32
   int coef_width = 0;      // CoefWidth (C), 2..32
-  int coef_frac_bits = 0;  // CoefFracBits (Fa), >= 1 (rounding constant 2^(Fa-1))
-  int num_frac_bits = 0;   // NumFracBits (Fb), >= 1
-  int feedback_shift = 0;  // FeedbackShift (s) = Fb - Fa, >= 0
-  int acc_width = 0;       // AccWidth (P), Fb + D <= P <= 64, D + s + C <= P
+  int coef_frac_bits = 0;  // CoefFracBits (F), 1 <= F <= D + s (rounding constant 2^(F-1))
+  int feedback_shift = 0;  // FeedbackShift (s) >= 0: the history's extra fractional bits
+  int acc_width = 0;       // AccWidth (P), F + D + s <= P <= 64, D + s + C <= P, F + L <= P
   // Channels sharing the core (NumChannels, 1 to kMaxCoreChannels) and coefficient sets in the ROM
   // (CoefSets: 1, shared by every channel, or num_channels, set c for channel c).
   int num_channels = 1;
   int coef_sets = 1;
-  // ROM words in ROM order (per section b[0..M], then -a[1..M]), each a signed C-bit integer;
-  // coef_sets sets of rom_depth() words one after another.
+  // ROM words in ROM order, each a signed C-bit integer; coef_sets sets of rom_depth() words one
+  // after another. Per section (docs/fixed_point.md): lo words W_b[0..M] and W_a[1..M] (of b and
+  // -a, in [0, 2^L)), hi words H_b[0..M] and H_a[1..M], error-feedback words E[1..M].
   std::vector<std::int64_t> rom;
 
-  int terms() const { return 2 * section_order + 1; }
+  // L: the lo words' shift, C - 1 (17 for the DSP48E1's P >>> 17).
+  int split_shift() const { return coef_width - 1; }
+  int terms() const { return 5 * section_order + 2; }
+  // Offsets of a section's words within its terms() words.
+  int lo_b(int i) const { return i; }                          // W_b[i], i = 0..M
+  int lo_a(int j) const { return section_order + j; }          // W_a[j], j = 1..M
+  int hi_b(int i) const { return 2 * section_order + 1 + i; }  // H_b[i]
+  int hi_a(int j) const { return 3 * section_order + 1 + j; }  // H_a[j]
+  int err(int j) const { return 4 * section_order + 1 + j; }   // E[j]
   int rom_depth() const { return num_sections * terms(); }  // words of one set
   // The first word of channel c's set.
   const std::int64_t* channel_words(int channel) const {

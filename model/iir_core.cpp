@@ -22,8 +22,8 @@ IirCore::IirCore(CoreConfig config) : config_(std::move(config)) {
   channel_width_ = 1;
   while ((1 << channel_width_) < config_.num_channels) ++channel_width_;
   lr_.assign(static_cast<std::size_t>(config_.num_channels),
-             std::vector<std::int64_t>(static_cast<std::size_t>((config_.num_sections + 1) * (m + 1)),
-                                       0));
+             std::vector<std::int64_t>(
+                 static_cast<std::size_t>((2 * config_.num_sections + 1) * (m + 1)), 0));
 }
 
 IirCore::Rounded IirCore::round_to_sample(std::int64_t y_ext) const {
@@ -39,43 +39,52 @@ IirCore::Rounded IirCore::round_to_sample(std::int64_t y_ext) const {
 void IirCore::compute(std::int32_t sample, int channel, StepResult& result,
                       std::vector<bool>& clipped) {
   const int m = config_.section_order;
+  const int sections = config_.num_sections;
   std::vector<std::int64_t>& lr = lr_[static_cast<std::size_t>(channel)];
   const std::int64_t* const rom = config_.channel_words(channel);
   const int line = m + 1;
   const int terms = config_.terms();
+  const int f = config_.coef_frac_bits;
+  const int split = config_.split_shift();
   const auto at = [line](int l, int age) { return static_cast<std::size_t>(l * line + age); };
 
-  // EN: every history line moves one place older; x[n] enters line 0, in the D + s-bit format of
-  // the load registers (s zero LSBs).
-  for (int l = 0; l <= config_.num_sections; ++l) {
+  // EN: every line (history and error) moves one place older; x[n] enters line 0, in the D + s-bit
+  // format of the load registers (s zero LSBs).
+  for (int l = 0; l <= 2 * sections; ++l) {
     for (int age = m; age > 0; --age) lr[at(l, age)] = lr[at(l, age - 1)];
   }
   lr[0] = std::int64_t{sample} * (std::int64_t{1} << config_.feedback_shift);
 
-  clipped.assign(static_cast<std::size_t>(config_.num_sections), false);
+  clipped.assign(static_cast<std::size_t>(sections), false);
   result.saturated = false;
-  Rounded y;
-  for (int k = 0; k < config_.num_sections; ++k) {
-    // Rounding constant preloaded, as the DSP48E1 does through its C port.
-    std::uint64_t p = std::uint64_t{1} << (config_.coef_frac_bits - 1);
-    for (int i = 0; i < terms; ++i) {
-      const std::int64_t word = rom[k * terms + i];
-      // b[i] x_k[n-i], x_k rounded to D bits from line k; -a[j] y_ext_k[n-j], j = i - M, from
-      // line k + 1 as it is.
-      const std::int64_t operand =
-          i <= m ? std::int64_t{round_to_sample(lr[at(k, i)]).sample} : lr[at(k + 1, i - m)];
-      p = mac(p, operand, word);
-    }
+  std::int64_t y_ext = 0;
+  for (int k = 0; k < sections; ++k) {
+    const std::int64_t* const words = rom + k * terms;
+    const auto u = [&](int age) { return lr[at(k, age)]; };      // the section's input
+    const auto w = [&](int age) { return lr[at(k + 1, age)]; };  // its output history
+    const auto e = [&](int age) { return lr[at(sections + 1 + k, age)]; };  // its errors
+    // Lo phase: the rounding constant preloaded (2^(F-1) once shifted), the lo words.
+    std::uint64_t p = std::uint64_t{1} << (f - 1 + split);
+    for (int i = 0; i <= m; ++i) p = mac(p, u(i), words[config_.lo_b(i)]);
+    for (int j = 1; j <= m; ++j) p = mac(p, w(j), words[config_.lo_a(j)]);
+    // P >>> L (the DSP48E1's Z = P >>> 17), then the hi words and the error feedback.
+    p = static_cast<std::uint64_t>(wrap_to_width(p, config_.acc_width) >> split);
+    for (int i = 0; i <= m; ++i) p = mac(p, u(i), words[config_.hi_b(i)]);
+    for (int j = 1; j <= m; ++j) p = mac(p, w(j), words[config_.hi_a(j)]);
+    for (int j = 1; j <= m; ++j) p = mac(p, e(j), words[config_.err(j)]);
     const std::int64_t acc = wrap_to_width(p, config_.acc_width);
-    const std::int64_t shifted = acc >> config_.coef_frac_bits;  // arithmetic (C++20)
-    const std::int64_t y_ext = std::clamp(shifted, ext_min_, ext_max_);
-    y = round_to_sample(y_ext);
-    if (y_ext != shifted || y.clipped) {
-      clipped[static_cast<std::size_t>(k)] = true;
-      result.saturated = true;
-    }
+    const std::int64_t shifted = acc >> f;  // arithmetic (C++20)
+    y_ext = std::clamp(shifted, ext_min_, ext_max_);
+    if (y_ext != shifted) clipped[static_cast<std::size_t>(k)] = true;
     lr[at(k + 1, 0)] = y_ext;
+    // The low F bits of the sum, less the preload's 2^(F-1): what the rounding dropped.
+    lr[at(sections + 1 + k, 0)] =
+        static_cast<std::int64_t>(static_cast<std::uint64_t>(acc) & ((std::uint64_t{1} << f) - 1)) -
+        (std::int64_t{1} << (f - 1));
   }
+  const Rounded y = round_to_sample(y_ext);
+  if (y.clipped) clipped.back() = true;
+  for (bool c : clipped) result.saturated = result.saturated || c;
   result.sample = y.sample;
   result.channel = channel;
 }

@@ -3,34 +3,43 @@
 // that a co-simulation can demand equality of every output word and of the cycle it appears in.
 //
 // Fixed-point contract (docs/fixed_point.md; the same paragraph heads rtl/iir_core.sv).
-// D = SampleWidth, C = CoefWidth, P = AccWidth, Fb = NumFracBits, Fa = CoefFracBits,
-// s = FeedbackShift = Fb - Fa, K = NumSections, M = SectionOrder.
-// - Formats: samples in, out and between sections are Q1.(D-1) (Q1.15 by default). The ROM holds
-//   C-bit words: b as Q(C-Fb).Fb, the negated denominator -a as Q(C-Fa).Fa. Extended-precision
-//   feedback: each section keeps its own output history y_ext with s more fractional bits,
-//   Q1.(D-1+s) in D + s <= 25 bits (the DSP48E1 A port), and feeds it back as it is. Every product
-//   is then Q.(D-1+Fb) in D+s+C bits, summed in a P-bit two's complement accumulator that wraps
-//   like the DSP48E1 P register (the generator proves that legal samples never make it wrap).
-// - Rounding: round half up, twice. The accumulator starts each section at 2^(Fa-1) and
-//   y_ext = sum >>> Fa (arithmetic). The section's D-bit output y, the next section's input and,
-//   after the last section, sample_o, is rounded from y_ext (not from the accumulator):
-//   y = (y_ext + 2^(s-1)) >>> s for s > 0, y = y_ext for s = 0.
-// - Saturation: y_ext is clipped to [-2^(D-1+s), 2^(D-1+s) - 1] before it enters the history, y to
-//   [-2^(D-1), 2^(D-1) - 1]; either clip sets the sticky saturation_o.
-// - ROM order: section 0 first; within a section b[0..M], then -a[1..M]. Load registers: K + 1
-//   lines of M + 1 words of D + s bits, newest first; line 0 is the input x[n..n-M] shifted left
-//   by s, line k + 1 is y_ext of section k. Section k multiplies b[i] by line k age i rounded to D
-//   bits as above (exact for line 0) and -a[j] by line k + 1 age j as it is. The bus target
-//   counter (BTC) counts the terms in issue order and addresses each term's ROM word and load
-//   register with that one count.
-// - Timing: a section issues its T = 2M + 1 terms one per cycle in the order b[1..M], -a[1..M],
-//   b[0]: only b[0] needs the previous section's output, so the next section's first 2M terms
-//   overlap the MAC's 3 cycles of latency, and its b[0] waits, if it must, until the cycle after
-//   that output is written back. With S = max(T, 4), section k's last term issues T + kS cycles
-//   after the accepted EN and is written back 3 cycles later. From the cycle in which
-//   sample_valid_i is accepted to the cycle in which sample_valid_o is high:
-//   LatencyCycles = T + (K - 1) * S + 4, which is MACs + 4 when M >= 2 or K = 1. A new sample is
-//   accepted in the cycle sample_valid_o is high, so CyclesPerSample = LatencyCycles too.
+// D = SampleWidth, C = CoefWidth, P = AccWidth, F = CoefFracBits, s = FeedbackShift,
+// L = SplitShift = C - 1 (17 with 18-bit words: the DSP48E1's P >>> 17), K = NumSections,
+// M = SectionOrder.
+// - Formats: samples in and out are Q1.(D-1) (Q1.15 by default). Inside the core every signal
+//   (each section's input and output, the history) is a (D+s)-bit word, Q1.(D-1+s), D + s <= 25
+//   (the DSP48E1 A port): the input enters as x << s and only sample_o is rounded back to D bits.
+//   Every coefficient c, b[i] or -a[j], is split into two C-bit ROM words,
+//   c = (H + W * 2^-L) * 2^-F with a signed hi word H and a lo word W in [0, 2^L); the
+//   error-feedback words E[j] are signed integers (the generator takes E[j] = round(-a[j])).
+// - One section k at sample n, u = its input (line k), w = its output history (line k + 1),
+//   e = its rounding-error history:
+//     lo    = 2^(F-1+L) + sum_i W_b[i] u[n-i] + sum_j W_a[j] w[n-j]
+//     acc   = (lo >>> L) + sum_i H_b[i] u[n-i] + sum_j H_a[j] w[n-j] + sum_j E[j] e[n-j]
+//     w[n]  = y_ext = saturate_(D+s)(acc >>> F)
+//     e[n]  = (acc mod 2^F) - 2^(F-1), the rounding error in accumulator LSBs (F-bit signed)
+//   lo and acc are P-bit two's complement and wrap like the DSP48E1 P register (the generator
+//   proves that legal samples never make them wrap). Feeding the error back through E shapes
+//   the rounding noise by 1 - sum_j E[j] z^-j, which cancels the 1/A(z) gain near z = 1.
+// - Rounding: round half up: the preload 2^(F-1+L) becomes 2^(F-1) after the shift. sample_o is
+//   rounded from the last section's y_ext: (y_ext + 2^(s-1)) >>> s for s > 0, y_ext for s = 0.
+// - Saturation: each y_ext is clipped to [-2^(D-1+s), 2^(D-1+s) - 1] before it enters the
+//   history; sample_o to [-2^(D-1), 2^(D-1) - 1]; any clip sets the sticky saturation_o.
+// - ROM order: section 0 first; within a section W_b[0..M], W_a[1..M], H_b[0..M], H_a[1..M],
+//   E[1..M]: 5M + 2 words. Load registers: K + 1 lines of M + 1 words of D + s bits, newest
+//   first (line 0 is x << s, line k + 1 is y_ext of section k), and K error lines of M + 1
+//   words (line k: e of section k, F-bit values). The bus target counter (BTC) counts the terms
+//   in issue order and addresses each term's ROM word and load register with that one count.
+// - Timing: a section issues its T = 5M + 2 terms one per cycle in the order W_b[1..M],
+//   W_a[1..M], W_b[0], then H_b[0], H_b[1..M], H_a[1..M], E[1..M]. The first term starts the sum
+//   at 2^(F-1+L); H_b[0] is added to P >>> L instead of P. Only W_b[0] and H_b[0] need the
+//   previous section's output, so the next section's first 2M terms overlap the MAC's 3 cycles
+//   of latency and its W_b[0] waits, if it must, until the cycle after that output is written
+//   back. With S = T + max(0, 3 - 2M), section k's last term issues T + kS cycles after the
+//   accepted EN and is written back 3 cycles later. From the cycle in which sample_valid_i is
+//   accepted to the cycle in which sample_valid_o is high: LatencyCycles = T + (K - 1) * S + 4.
+//   A new sample is accepted in the cycle sample_valid_o is high, so CyclesPerSample =
+//   LatencyCycles too.
 //
 // Channels (docs/core.md, "Channels"): NumChannels independent filters share the one MAC. Each
 // sample comes with its channel_i; each channel has its own load registers, its own overrun_o and
@@ -84,8 +93,10 @@ class IirCore {
 
   const CoreConfig& config() const { return config_; }
   int latency_cycles() const { return latency_; }     // accepted EN -> sample_valid_o
-  // S: cycles from one section's last term to the next one's (b[0] waits for the write-back).
-  int section_pitch() const { return std::max(config_.terms(), kMacLatency + 1); }
+  // S: cycles from one section's last term to the next one's (W_b[0] waits for the write-back).
+  int section_pitch() const {
+    return config_.terms() + std::max(0, kMacLatency - 2 * config_.section_order);
+  }
   int cycles_per_sample() const { return latency_; }  // minimum spacing of accepted EN
   int macs_per_sample() const { return config_.rom_depth(); }
   std::int32_t sample_min() const { return sample_min_; }
@@ -124,8 +135,8 @@ class IirCore {
   // The expected outputs in `cycle`.
   Pins pins(std::uint64_t cycle);
 
-  // One channel's load registers as in the RTL: (K + 1) lines of (M + 1) words of D + s bits,
-  // newest first; line 0 holds x << s, line k + 1 the y_ext history of section k.
+  // One channel's load registers as in the RTL: 2K + 1 lines of M + 1 words, newest first; line 0
+  // holds x << s, line k + 1 the y_ext history of section k, line K + 1 + k its rounding errors.
   const std::vector<std::int64_t>& lr(int channel = 0) const {
     return lr_.at(static_cast<std::size_t>(channel));
   }
