@@ -41,8 +41,8 @@ done
 # that holds closes at a short length (1 with the schedule invariants); N only bounds the search
 # for a counterexample from reset when it does not.
 case "$property" in
-  LatencyExact)             unit=core; labels="latency_*";            proof="induct 40" ;;
-  BusyOverrunAsDocumented)  unit=core; labels="busy_* overrun_* history_*"; proof="induct 40" ;;
+  LatencyExact)             unit=core; labels="latency_*";            proof="induct 100" ;;
+  BusyOverrunAsDocumented)  unit=core; labels="busy_* overrun_* history_*"; proof="induct 100" ;;
   ScheduleAsDocumented)     unit=core; labels="sched_*";              proof="induct 40" ;;
   BtcWithinRom)             unit=core; labels="btc_* sched_*";        proof="induct 40" ;;
   LoadRegistersWithinLines) unit=core; labels="lr_* sched_*";         proof="induct 40" ;;
