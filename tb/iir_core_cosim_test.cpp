@@ -163,13 +163,14 @@ TEST_F(IirCoreCosim, FullScaleSquare) {
   }
 }
 
-// An input whose response takes some section's y_ext into the 2^(s-1) - 1 words just below its
-// rail: y_ext itself fits D + s bits, but the D-bit output rounded from it does not, so only the
-// second rounding step clips (docs/fixed_point.md). Found with the model: probe each section's
-// peak step gain, then try steps of the amplitudes around the one that puts that peak into the
-// window, and, as the peak moves by about 2^s words per input LSB, steps whose last `lag` samples
-// are a little higher or lower, which moves it by less (lags in steps of about 25 %). Sets whose
-// step response never overshoots (order 1) cannot reach the window: nullopt.
+// An input whose response takes the last section's y_ext into the 2^(s-1) words just below its
+// rail: y_ext itself fits D + s bits, but sample_o rounded from it does not, so only the output's
+// rounding step clips (docs/fixed_point.md; sections pass y_ext on unrounded, so no other section
+// can clip this way). Found with the model: probe the last section's peak step gain, then try
+// steps of the amplitudes around the one that puts that peak into the window, and, as the peak
+// moves by about 2^s words per input LSB, steps whose last `lag` samples are a little higher or
+// lower, which moves it by less (lags in steps of about 25 %). Sets whose step response never
+// overshoots (order 1) cannot reach the window: nullopt.
 std::optional<std::vector<std::int32_t>> find_second_step_clip(const model::CoreConfig& config,
                                                                std::size_t max_samples) {
   const int line = config.section_order + 1;
@@ -206,7 +207,7 @@ std::optional<std::vector<std::int32_t>> find_second_step_clip(const model::Core
   };
   const double window_middle =
       static_cast<double>(probe.ext_max()) - std::ldexp(1.0, config.feedback_shift - 2);
-  for (std::size_t k = 0; k < peak.size(); ++k) {
+  for (std::size_t k = peak.size() - 1; k < peak.size(); ++k) {  // the last section only
     const double target = window_middle * half / static_cast<double>(peak[k]);
     if (target > probe.sample_max()) continue;  // the peak stays below the window
     const std::size_t n = peak_at[k] + 2;
