@@ -373,10 +373,13 @@ module iir_core #(
   logic signed [AccWidth-1:0]    mac_p;
 
   // Every term takes a (D+s)-bit word as it is: the history word (x << s in line 0, y_ext in the
-  // others) or the F-bit error, sign-extended (F <= D + s).
-  assign mac_a = !issue     ? '0 :
-                 term_error ? AWidth'(err_word) :
-                              lr_word;
+  // others) or the F-bit error, sign-extended (F <= D + s). The two selects are kept as signals of
+  // their own: with the core flattened, ABC would otherwise fold the BTC decoder into every bit
+  // of A (a mux tree of LUT6, MUXF7 and MUXF8 per bit, about 85 LUTs more).
+  (* keep *) logic sel_lr, sel_err;
+  assign sel_lr  = issue & ~term_error;
+  assign sel_err = issue & term_error;
+  assign mac_a   = ({AWidth{sel_lr}} & lr_word) | ({AWidth{sel_err}} & AWidth'(err_word));
   // One set: the decoded address; a set per channel: that channel's set.
   logic [RomFullWidth-1:0] rom_full_addr;
   assign rom_full_addr = CoefSets == 1 ? RomFullWidth'(rom_addr) :

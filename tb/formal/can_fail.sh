@@ -22,7 +22,7 @@ mutations=(
   "AccumulatorNeverWraps#measurement_sos#rtl/iir_mac.sv#s/assign p_d    = p_base + AccWidth'(m_q);/assign p_d    = p_base + AccWidth'(\$unsigned(m_q));/#RTL: the product is zero-extended into the accumulator"
   "AccumulatorNeverWraps#vehicle_sos#rtl/iir_core.sv#s/    .first_i(issue \& term_first),/    .first_i(issue \& term_first \& (btc_q == '0)),/#RTL: only the first section restarts the sum"
   "AccumulatorNeverWraps#measurement_df1#rtl/iir_mac.sv#s/shift_m_q ? p_q >>> ShiftBits :/shift_m_q ? p_q :/#RTL: the MAC adds H_b[0] to P instead of P >>> L"
-  "AccumulatorWithinGeneratorBound#measurement_sos#rtl/iir_core.sv#s/                 term_error ? AWidth'(err_word) :/                 1'b0 ? AWidth'(err_word) :/#RTL: error-feedback terms take the history word instead of the F-bit error"
+  "AccumulatorWithinGeneratorBound#measurement_sos#rtl/iir_core.sv#s/  assign mac_a   = ({AWidth{sel_lr}} \& lr_word) |/  assign mac_a   = ({AWidth{issue}} \& lr_word) |/#RTL: error-feedback terms take the history word (ORed with the F-bit error)"
   "ChannelsIndependent#tests/data/coeffs/loco_sets3#rtl/iir_core.sv#s/    both         = {chan, addr};/    both         = {{ChannelWidth{1'b0}}, addr};/#RTL: every channel's load registers at channel 0's address"
   "ChannelsIndependent#tests/data/coeffs/loco_sets3#rtl/iir_core.sv#s/    both          = {chan, addr};/    both          = {{ChannelWidth{1'b0}}, addr};/#RTL: every channel's error lines at channel 0's address"
   "ChannelsIndependent#tests/data/coeffs/loco_sets3#rtl/iir_core.sv#s/                            channel_bit(channel_i));/                            channel_bit(chan_q));/#RTL: a dropped sample flags the overrun of the channel in flight"
