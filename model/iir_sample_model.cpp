@@ -21,9 +21,10 @@ __extension__ typedef __int128 i128;
 // The largest magnitudes of a section's terms under the contract, for any history: |u|, |w| <=
 // 2^(D-1+s) (x << s and clipped y_ext), |e| <= 2^(F-1).
 struct SectionBounds {
-  u128 lo = 0;      // |lo|, preload included
-  u128 acc = 0;     // |acc| = |(lo >>> L) + hi terms|
-  u128 merged = 0;  // |2^(F-1+L) + sum |c| u + sum |E| 2^L e|, every partial sum included
+  u128 lo = 0;         // |lo|, preload included
+  u128 acc = 0;        // |acc| = |(lo >>> L) + hi terms|
+  u128 merged = 0;     // |2^(F-1+L) + sum |c| u + sum |E| 2^L e|, every partial sum included
+  u128 lo_folded = 0;  // |lo - 2^(F-1) sum E 2^L|: the vector kernel's lo (iir_sample_vector.h)
 };
 
 u128 magnitude(std::int64_t v) {
@@ -51,6 +52,8 @@ SectionBounds section_bounds(const CoreConfig& c, const std::int64_t* words) {
                 (magnitude(words[c.err(j)]) << split) * error;
   }
   b.acc = (b.lo >> split) + 1 + hi;
+  b.lo_folded = b.lo;
+  for (int j = 1; j <= m; ++j) b.lo_folded += (magnitude(words[c.err(j)]) * error) << split;
   return b;
 }
 
@@ -61,6 +64,16 @@ bool can_wrap(const CoreConfig& c) {
     if (b.lo > limit || b.acc > limit) return true;
   }
   return false;
+}
+
+// The vector kernel's sums modulo 2^52 are exact when sign-extended from bit 51.
+bool fits_52_bits(const CoreConfig& c) {
+  const u128 limit = (u128{1} << 51) - 1;
+  for (int k = 0; k < c.num_sections; ++k) {
+    const SectionBounds b = section_bounds(c, c.rom.data() + k * c.terms());
+    if (b.lo_folded > limit || b.acc > limit) return false;
+  }
+  return true;
 }
 
 bool merged_fits_int64(const CoreConfig& c) {
@@ -128,7 +141,7 @@ bool IirSampleModel::kernel_available(const CoreConfig& config, SampleKernel ker
     case SampleKernel::kMerged:
       return !can_wrap(config) && merged_fits_int64(config);
     case SampleKernel::kVector:
-      return !can_wrap(config) && vector::supported(config);
+      return vector::supported(config) && !can_wrap(config) && fits_52_bits(config);
   }
   return false;
 }
@@ -178,21 +191,33 @@ IirSampleModel::IirSampleModel(CoreConfig config, SampleKernel kernel)
     }
     const auto pick = [this]<int kOrder>() -> MergedRun {
       switch (config_.num_sections) {
-        case 1: return &IirSampleModel::run_merged<kOrder, 1>;
-        case 2: return &IirSampleModel::run_merged<kOrder, 2>;
-        case 3: return &IirSampleModel::run_merged<kOrder, 3>;
-        case 4: return &IirSampleModel::run_merged<kOrder, 4>;
-        case 5: return &IirSampleModel::run_merged<kOrder, 5>;
-        case 6: return &IirSampleModel::run_merged<kOrder, 6>;
-        case 7: return &IirSampleModel::run_merged<kOrder, 7>;
-        case 8: return &IirSampleModel::run_merged<kOrder, 8>;
-        default: return &IirSampleModel::run_merged<0, 0>;
+        case 1:
+          return &IirSampleModel::run_merged<kOrder, 1>;
+        case 2:
+          return &IirSampleModel::run_merged<kOrder, 2>;
+        case 3:
+          return &IirSampleModel::run_merged<kOrder, 3>;
+        case 4:
+          return &IirSampleModel::run_merged<kOrder, 4>;
+        case 5:
+          return &IirSampleModel::run_merged<kOrder, 5>;
+        case 6:
+          return &IirSampleModel::run_merged<kOrder, 6>;
+        case 7:
+          return &IirSampleModel::run_merged<kOrder, 7>;
+        case 8:
+          return &IirSampleModel::run_merged<kOrder, 8>;
+        default:
+          return &IirSampleModel::run_merged<0, 0>;
       }
     };
     static_assert(kMaxFixedSections == 8, "one case per fixed section count");
     merged_run_ = m == 2   ? pick.template operator()<2>()
                   : m == 1 ? pick.template operator()<1>()
                            : &IirSampleModel::run_merged<0, 0>;
+  }
+  if (kernel_ == SampleKernel::kVector) {
+    plan_ = std::make_shared<const vector::Plan>(vector::make_plan(config_));
   }
   history_.assign(static_cast<std::size_t>((2 * config_.num_sections + 1) * m), 0);
 }
@@ -232,7 +257,7 @@ void IirSampleModel::run_merged(const std::int32_t* in, SampleResult* out, std::
 
   std::int64_t u = 0;  // the section's input: x << s, then each section's y_ext
   bool saturated = false;
-  const auto section = [&](int k) {
+  const auto section = [&](int k) __attribute__((always_inline)) {
     const std::int64_t* const cb = coef + k * words;  // c_b[0..M]
     const std::int64_t* const ca = cb + m;            // c_a[1..M] at ca[1..M]
     const std::int64_t* const ce = cb + 2 * m;        // E[1..M] 2^L at ce[1..M]
@@ -317,7 +342,7 @@ void IirSampleModel::run_two_phase(const std::int32_t* in, SampleResult* out, st
 }
 
 void IirSampleModel::run_vector(const std::int32_t* in, SampleResult* out, std::size_t n) {
-  vector::run(config_, history_.data(), in, out, n);
+  vector::run(*plan_, history_.data(), in, out, n);
 }
 
 void IirSampleModel::run(const std::int32_t* in, SampleResult* out, std::size_t n) {

@@ -26,12 +26,17 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "filter_json.h"
 
 namespace flange::model {
+
+namespace vector {
+struct Plan;
+}
 
 // One output sample: what IirCore::step reports in StepResult::sample and ::saturated.
 struct SampleResult {
@@ -93,6 +98,7 @@ class IirSampleModel {
   MergedRun merged_run_ = nullptr;
   // Per section the merged words c_b[0..M], c_a[1..M], E[1..M] 2^L (kMerged), 3M + 1 of them.
   std::vector<std::int64_t> merged_;
+  std::shared_ptr<const vector::Plan> plan_;  // kVector: the words in lanes
   // The load registers without the newest word: line l (0..K: inputs and y_ext, K+1..2K: errors)
   // holds its words of ages 1..M at [l M, l M + M).
   std::vector<std::int64_t> history_;

@@ -160,8 +160,8 @@ std::vector<SetCase> every_set() {
   }
   for (const testing::NamedConfig& named : testing::hand_made_configs()) {
     const CoreConfig config = named.config;
-    sets.push_back({"HandMade" + named.name, "hand-made " + config.name,
-                    [config] { return config; }, true});
+    sets.push_back(
+        {"HandMade" + named.name, "hand-made " + config.name, [config] { return config; }, true});
   }
   return sets;
 }
@@ -246,8 +246,8 @@ TEST(IirSampleModel, AccumulatorWrapsLikeIirCore) {
   // And on a longer stream of every kind.
   const std::vector<std::int32_t> x = million_sample_stimulus(8, 5).samples;
   const std::vector<std::int32_t> head(x.begin(), x.begin() + 200'000);
-  const Comparison c =
-      compare(wrapping_config(), head, core_results(wrapping_config(), head), SampleKernel::kTwoPhase);
+  const Comparison c = compare(wrapping_config(), head, core_results(wrapping_config(), head),
+                               SampleKernel::kTwoPhase);
   EXPECT_EQ(c.mismatches, 0u) << "first at sample " << c.first_mismatch;
 }
 
@@ -285,8 +285,8 @@ TEST(IirSampleModel, MatchesIirCoreOnRandomConfigurations) {
       c.coef_frac_bits = pick(1, c.sample_width + c.feedback_shift);
     }
     const int d_ext = c.sample_width + c.feedback_shift;
-    const int min_acc = std::max({c.coef_frac_bits + d_ext, d_ext + c.coef_width,
-                                  c.coef_frac_bits + c.split_shift()});
+    const int min_acc = std::max(
+        {c.coef_frac_bits + d_ext, d_ext + c.coef_width, c.coef_frac_bits + c.split_shift()});
     c.acc_width = kind <= 1 ? min_acc : std::min(64, min_acc + pick(1, 24));
     const int split = c.split_shift();
     const auto hi_max = (std::int64_t{1} << (c.coef_width - 1)) - 1;
@@ -310,8 +310,8 @@ TEST(IirSampleModel, MatchesIirCoreOnRandomConfigurations) {
       }
       for (int i = 0; i < 2 * m + 1; ++i) {  // hi words
         c.rom.push_back(
-            static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(2 * hi_max + 2)) -
-            hi_max - 1);
+            static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(2 * hi_max + 2)) - hi_max -
+            1);
       }
       for (int j = 1; j <= m; ++j) {  // error-feedback words
         c.rom.push_back(std::clamp<std::int64_t>(pick(-3, 3), -hi_max - 1, hi_max));
@@ -328,12 +328,12 @@ TEST(IirSampleModel, MatchesIirCoreOnRandomConfigurations) {
     const std::vector<SampleResult> want = core_results(c, x);
     for (const SampleKernel kernel : available_kernels(c)) {
       const Comparison r = compare(c, x, want, kernel);
-      ASSERT_EQ(r.mismatches, 0u)
-          << "trial " << trial << ", " << to_string(kernel) << " kernel: first at sample "
-          << r.first_mismatch << ": IirCore " << r.want.sample << " " << r.want.saturated
-          << ", IirSampleModel " << r.got.sample << " " << r.got.saturated
-          << "\nreproduce: ctest --test-dir build -R "
-             "IirSampleModel.MatchesIirCoreOnRandomConfigurations";
+      ASSERT_EQ(r.mismatches, 0u) << "trial " << trial << ", " << to_string(kernel)
+                                  << " kernel: first at sample " << r.first_mismatch << ": IirCore "
+                                  << r.want.sample << " " << r.want.saturated << ", IirSampleModel "
+                                  << r.got.sample << " " << r.got.saturated
+                                  << "\nreproduce: ctest --test-dir build -R "
+                                     "IirSampleModel.MatchesIirCoreOnRandomConfigurations";
       ++runs[kernel];
     }
     if (IirSampleModel(c).accumulator_can_wrap()) {
@@ -384,9 +384,9 @@ TEST(IirSampleModel, StepAndFilterAndResetAgree) {
 TEST(IirSampleModel, AutoTakesTheFastestExactKernel) {
   for (const testing::NamedConfig& named : testing::hand_made_configs()) {
     const IirSampleModel model(named.config);
-    const SampleKernel want =
-        IirSampleModel::kernel_available(named.config, SampleKernel::kVector) ? SampleKernel::kVector
-                                                                                : SampleKernel::kMerged;
+    const SampleKernel want = IirSampleModel::kernel_available(named.config, SampleKernel::kVector)
+                                  ? SampleKernel::kVector
+                                  : SampleKernel::kMerged;
     EXPECT_EQ(model.kernel(), want) << named.name;
     EXPECT_FALSE(model.accumulator_can_wrap()) << named.name;
   }
