@@ -107,29 +107,24 @@ double l1_norm(const std::vector<double>& b, const std::vector<double>& a) {
 }  // namespace
 
 double limit_cycle_bound_lsb(const CoreConfig& config) {
-  const int m = config.section_order;
-  const int terms = config.terms();
-  std::vector<double> inverse_norm, section_norm;
+  std::vector<double> shaped_norm, inverse_norm, section_norm;
   for (int k = 0; k < config.num_sections; ++k) {
-    std::vector<double> b, a{1.0};
-    for (int i = 0; i <= m; ++i) {
-      b.push_back(
-          std::ldexp(static_cast<double>(config.rom[static_cast<std::size_t>(k * terms + i)]),
-                     -config.num_frac_bits));
-    }
-    for (int j = 1; j <= m; ++j) {
-      // The ROM holds -a in Q.Fa.
-      a.push_back(
-          -std::ldexp(static_cast<double>(config.rom[static_cast<std::size_t>(k * terms + m + j)]),
-                      -config.coef_frac_bits));
-    }
+    const std::vector<double> a = config.a_values(k);
+    // The fed-back rounding error passes 1 - sum_j E[j] z^-j before 1/A.
+    std::vector<double> shaping{1.0};
+    for (std::int64_t e : config.error_feedback(k)) shaping.push_back(-static_cast<double>(e));
+    shaped_norm.push_back(l1_norm(shaping, a));
     inverse_norm.push_back(l1_norm({1.0}, a));
-    section_norm.push_back(l1_norm(b, a));
+    section_norm.push_back(l1_norm(config.b_values(k), a));
   }
-  double bound = 0.0;
+  double bound = 0.5;  // sample_o's own rounding
   for (int k = 0; k < config.num_sections; ++k) {
-    double gain =
-        std::ldexp(0.5, -config.feedback_shift) * inverse_norm[static_cast<std::size_t>(k)] + 0.5;
+    const auto i = static_cast<std::size_t>(k);
+    // In output LSB: half a y_ext LSB (2^-(s+1)) shaped by the error feedback, and below one
+    // accumulator LSB (2^-(s+F)) from the lo phase's shift, which is not fed back.
+    double gain = std::ldexp(0.5, -config.feedback_shift) * shaped_norm[i] +
+                  std::ldexp(1.0, -(config.feedback_shift + config.coef_frac_bits)) *
+                      inverse_norm[i];
     for (int j = k + 1; j < config.num_sections; ++j)
       gain *= section_norm[static_cast<std::size_t>(j)];
     bound += gain;

@@ -34,11 +34,13 @@ LimitCycle find_limit_cycle(const std::vector<std::int32_t>& y, std::size_t tail
                             std::size_t max_period);
 
 // A rigorous bound, in LSB, on the zero-input output of the core once the response to the
-// initial state has died away (any limit cycle or dead band). Section k rounds twice: its feedback
-// history y_ext with an error in (-1/2, 1/2] of a y_ext LSB, 2^-s sample LSB, which circulates
-// through 1/A_k; its D-bit output with an error in (-1/2, 1/2] LSB, which does not. Both reach the
-// filter output through the sections after k:
-//   |y| <= sum_k (2^-(s+1) ||1/A_k||_1 + 1/2) prod_{j>k} ||B_j/A_j||_1,
+// initial state has died away (any limit cycle or dead band). Section k rounds its y_ext with an
+// error of at most 1/2 a y_ext LSB (2^-s sample LSB), fed back through 1 - E_k(z) and 1/A_k, and
+// truncates its lo phase by less than one accumulator LSB (2^-(s+F) sample LSB), which circulates
+// through 1/A_k alone; both reach the output through the sections after k, and sample_o adds its
+// own rounding of at most 1/2 LSB:
+//   |y| <= 1/2 + sum_k (2^-(s+1) ||(1 - E_k)/A_k||_1 + 2^-(s+F) ||1/A_k||_1)
+//                      prod_{j>k} ||B_j/A_j||_1,
 // with the quantised words. The l1 norms are summed in double until the impulse responses have
 // decayed below 1e-13.
 double limit_cycle_bound_lsb(const CoreConfig& config);

@@ -98,6 +98,38 @@ CoreConfig CoreConfig::channel_config(int channel) const {
   return one;
 }
 
+namespace {
+
+// A split coefficient's value: (H + W 2^-L) 2^-F.
+double split_value(const CoreConfig& c, std::int64_t hi, std::int64_t lo) {
+  return std::ldexp(static_cast<double>(hi), -c.coef_frac_bits) +
+         std::ldexp(static_cast<double>(lo), -(c.coef_frac_bits + c.split_shift()));
+}
+
+}  // namespace
+
+std::vector<double> CoreConfig::b_values(int k, int channel) const {
+  const std::int64_t* words = channel_words(channel) + k * terms();
+  std::vector<double> b;
+  for (int i = 0; i <= section_order; ++i) b.push_back(split_value(*this, words[hi_b(i)], words[lo_b(i)]));
+  return b;
+}
+
+std::vector<double> CoreConfig::a_values(int k, int channel) const {
+  const std::int64_t* words = channel_words(channel) + k * terms();
+  std::vector<double> a{1.0};
+  // The ROM holds -a.
+  for (int j = 1; j <= section_order; ++j) a.push_back(-split_value(*this, words[hi_a(j)], words[lo_a(j)]));
+  return a;
+}
+
+std::vector<std::int64_t> CoreConfig::error_feedback(int k, int channel) const {
+  const std::int64_t* words = channel_words(channel) + k * terms();
+  std::vector<std::int64_t> e;
+  for (int j = 1; j <= section_order; ++j) e.push_back(words[err(j)]);
+  return e;
+}
+
 void validate_core_config(const CoreConfig& c) {
   auto bad = [](const std::string& field, const std::string& what) {
     throw std::invalid_argument(fmt::format("core config: {}: {}", field, what));

@@ -50,6 +50,11 @@ struct CoreConfig {
   int hi_a(int j) const { return 3 * section_order + 1 + j; }  // H_a[j]
   int err(int j) const { return 4 * section_order + 1 + j; }   // E[j]
   int rom_depth() const { return num_sections * terms(); }  // words of one set
+  // Section k's coefficients of channel c's set as the core computes them:
+  // b[0..M] and a[0..M] (a[0] = 1) from the split words, (H + W 2^-L) 2^-F, and E[1..M].
+  std::vector<double> b_values(int k, int channel = 0) const;
+  std::vector<double> a_values(int k, int channel = 0) const;
+  std::vector<std::int64_t> error_feedback(int k, int channel = 0) const;
   // The first word of channel c's set.
   const std::int64_t* channel_words(int channel) const {
     return rom.data() + (coef_sets == 1 ? 0 : channel * rom_depth());

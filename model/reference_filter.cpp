@@ -34,18 +34,10 @@ ReferenceFilter::ReferenceFilter(std::vector<std::vector<double>> b,
 }
 
 ReferenceFilter ReferenceFilter::quantized(const CoreConfig& config, double leftover_gain) {
-  const int m = config.section_order;
-  std::vector<std::vector<double>> b(static_cast<std::size_t>(config.num_sections));
-  std::vector<std::vector<double>> a(b.size());
-  const auto terms = static_cast<std::size_t>(config.terms());
-  for (std::size_t k = 0; k < b.size(); ++k) {
-    // ROM order per section: b[0..M], then -a[1..M].
-    const auto word = [&](int i) {
-      return static_cast<double>(config.rom[k * terms + static_cast<std::size_t>(i)]);
-    };
-    for (int i = 0; i <= m; ++i) b[k].push_back(std::ldexp(word(i), -config.num_frac_bits));
-    a[k].push_back(1.0);
-    for (int j = 1; j <= m; ++j) a[k].push_back(-std::ldexp(word(m + j), -config.coef_frac_bits));
+  std::vector<std::vector<double>> b, a;
+  for (int k = 0; k < config.num_sections; ++k) {
+    b.push_back(config.b_values(k));
+    a.push_back(config.a_values(k));
   }
   return ReferenceFilter(std::move(b), std::move(a), leftover_gain);
 }

@@ -35,9 +35,9 @@ std::string effect_description(FixedPointEffect effect) {
     case FixedPointEffect::kInputRounding:
       return "input rounded to the sample format";
     case FixedPointEffect::kFeedbackRounding:
-      return "first rounding: y_ext = acc >>> Fa";
+      return "rounding inside the core: lo >>> L, y_ext = acc >>> F, error fed back";
     case FixedPointEffect::kOutputRounding:
-      return "second rounding: section output to D bits";
+      return "output rounding: sample_o to D bits";
     case FixedPointEffect::kAccumulatorWrap:
       return "P-bit accumulator wrap";
     case FixedPointEffect::kSaturation:
@@ -67,7 +67,14 @@ std::vector<FixedPointEffect> EffectSet::list() const {
 }
 
 StagedFormat staged_format(const CoreConfig& config) {
-  return {config.sample_width, config.feedback_shift, config.coef_frac_bits, config.acc_width};
+  return {config.sample_width, config.feedback_shift, config.coef_frac_bits, config.acc_width,
+          config.split_shift()};
+}
+
+std::vector<std::int64_t> error_feedback_words(const std::vector<double>& a) {
+  std::vector<std::int64_t> e;
+  for (std::size_t j = 1; j < a.size(); ++j) e.push_back(std::llround(-a[j]));
+  return e;
 }
 
 std::vector<SectionCoefficients> float_sections(const CoreConfig& config,
@@ -80,8 +87,9 @@ std::vector<SectionCoefficients> float_sections(const CoreConfig& config,
     for (const auto& row : design.sos) {
       const double a0 = row[3];
       sections.push_back(
-          {{row[0] / a0, row[1] / a0, row[2] / a0}, {1.0, row[4] / a0, row[5] / a0}});
+          {{row[0] / a0, row[1] / a0, row[2] / a0}, {1.0, row[4] / a0, row[5] / a0}, {}});
     }
+    for (SectionCoefficients& section : sections) section.e = error_feedback_words(section.a);
     return sections;
   }
   const auto m = static_cast<std::size_t>(config.section_order);
@@ -90,6 +98,7 @@ std::vector<SectionCoefficients> float_sections(const CoreConfig& config,
     SectionCoefficients s;
     for (double v : design.b) s.b.push_back(v / a0);
     for (double v : design.a) s.a.push_back(v / a0);
+    s.e = error_feedback_words(s.a);
     sections.push_back(std::move(s));
     return sections;
   }
@@ -102,20 +111,8 @@ std::vector<SectionCoefficients> float_sections(const CoreConfig& config,
 
 std::vector<SectionCoefficients> rom_sections(const CoreConfig& config) {
   std::vector<SectionCoefficients> sections;
-  const int m = config.section_order;
   for (int k = 0; k < config.num_sections; ++k) {
-    SectionCoefficients s;
-    s.a.push_back(1.0);
-    for (int i = 0; i < config.terms(); ++i) {
-      const auto word =
-          static_cast<double>(config.rom[static_cast<std::size_t>(k * config.terms() + i)]);
-      if (i <= m) {
-        s.b.push_back(std::ldexp(word, -config.num_frac_bits));
-      } else {
-        s.a.push_back(-std::ldexp(word, -config.coef_frac_bits));
-      }
-    }
-    sections.push_back(std::move(s));
+    sections.push_back({config.b_values(k), config.a_values(k), config.error_feedback(k)});
   }
   return sections;
 }
@@ -138,9 +135,10 @@ void check_shape(const std::vector<SectionCoefficients>& exact,
   for (std::size_t k = 0; k < exact.size(); ++k) {
     for (const auto* s : {&exact[k], &quantised[k]}) {
       if (s->b.size() != exact[k].b.size() || s->a.size() != exact[k].a.size() || s->a.empty() ||
-          s->a[0] != 1.0 || s->b.size() > s->a.size()) {
+          s->a[0] != 1.0 || s->b.size() > s->a.size() || s->e.size() + 1 != s->a.size()) {
         throw std::invalid_argument(fmt::format(
-            "StagedFixedPoint: section {}: b and a must have the same shape in both sets, a[0] = 1",
+            "StagedFixedPoint: section {}: b, a and e must have the same shape in both sets, a[0] = "
+            "1, one e per a[j], j >= 1",
             k));
       }
     }
@@ -155,11 +153,13 @@ StagedFixedPoint::StagedFixedPoint(const StagedFormat& format,
     : format_(format), effects_(effects) {
   check_shape(exact, quantised);
   if (format.sample_width < 2 || format.sample_width > 32 || format.feedback_shift < 0 ||
-      format.coef_frac_bits < 1 || format.acc_width > 64 ||
-      format.acc_width < format.coef_frac_bits + format.sample_width) {
+      format.coef_frac_bits < 1 || format.acc_width > 64 || format.split_shift < 1 ||
+      format.acc_width < format.coef_frac_bits + format.sample_width + format.feedback_shift ||
+      format.acc_width < format.coef_frac_bits + format.split_shift) {
     throw std::invalid_argument(fmt::format(
-        "StagedFixedPoint: format D = {}, s = {}, Fa = {}, P = {} out of range",
-        format.sample_width, format.feedback_shift, format.coef_frac_bits, format.acc_width));
+        "StagedFixedPoint: format D = {}, s = {}, F = {}, P = {}, L = {} out of range",
+        format.sample_width, format.feedback_shift, format.coef_frac_bits, format.acc_width,
+        format.split_shift));
   }
   coefficients_ =
       effects.has(FixedPointEffect::kCoefficients) ? std::move(quantised) : std::move(exact);
@@ -172,56 +172,96 @@ StagedFixedPoint::StagedFixedPoint(const CoreConfig& config, const FloatDesign& 
                        effects) {}
 
 void StagedFixedPoint::reset() {
-  x_.clear();
+  u_.clear();
   y_ext_.clear();
+  err_.clear();
   for (const SectionCoefficients& s : coefficients_) {
-    x_.emplace_back(s.b.size(), 0.0L);
+    u_.emplace_back(s.b.size(), 0.0L);
     y_ext_.emplace_back(s.a.size(), 0.0L);
+    err_.emplace_back(s.a.size(), 0.0L);
   }
 }
 
+namespace {
+
+// A P-bit two's complement register holding `t` (in its LSB): t wrapped to [-2^(P-1), 2^(P-1)).
+long double wrapped(long double t, int width) {
+  const long double span = std::ldexp(1.0L, width);
+  return t - span * std::floor((t + span / 2) / span);
+}
+
+}  // namespace
+
 double StagedFixedPoint::step(double x) {
-  const bool feedback_rounding = effects_.has(FixedPointEffect::kFeedbackRounding);
+  const bool quantised = effects_.has(FixedPointEffect::kCoefficients);
+  const bool rounding = effects_.has(FixedPointEffect::kFeedbackRounding);
   const bool output_rounding = effects_.has(FixedPointEffect::kOutputRounding);
   const bool wrap = effects_.has(FixedPointEffect::kAccumulatorWrap);
   const bool saturation = effects_.has(FixedPointEffect::kSaturation);
   const int s = format_.feedback_shift;
+  const int f = format_.coef_frac_bits;
+  const int split = format_.split_shift;
   const long double sample_max = std::ldexp(1.0L, format_.sample_width - 1) - 1.0L;
   const long double sample_min = -sample_max - 1.0L;
   const long double ext_max = std::ldexp(sample_max + 1.0L, s) - 1.0L;
   const long double ext_min = std::ldexp(sample_min, s);
-  // The accumulator seen >>> Fa spans 2^(P-Fa) y_ext LSB.
-  const long double span = std::ldexp(1.0L, format_.acc_width - format_.coef_frac_bits);
+  const long double half = std::ldexp(1.0L, f - 1);  // the rounding constant, accumulator LSB
 
-  long double u = effects_.has(FixedPointEffect::kInputRounding)
-                      ? static_cast<long double>(round_input_sample(x, format_.sample_width))
-                      : static_cast<long double>(x);
+  const long double input = effects_.has(FixedPointEffect::kInputRounding)
+                                ? static_cast<long double>(round_input_sample(x, format_.sample_width))
+                                : static_cast<long double>(x);
+  long double u = std::ldexp(input, s);  // y_ext units from here on
   for (std::size_t k = 0; k < coefficients_.size(); ++k) {
     const SectionCoefficients& c = coefficients_[k];
-    std::vector<long double>& xs = x_[k];
+    std::vector<long double>& us = u_[k];
     std::vector<long double>& ys = y_ext_[k];
-    std::rotate(xs.rbegin(), xs.rbegin() + 1, xs.rend());
-    xs[0] = u;
-    long double acc = 0.0L;
-    for (std::size_t i = 0; i < c.b.size(); ++i) acc += static_cast<long double>(c.b[i]) * xs[i];
-    acc = std::ldexp(acc, s);
-    // ys[0] is the previous output until this section's new one is stored.
+    std::vector<long double>& es = err_[k];
+    std::rotate(us.rbegin(), us.rbegin() + 1, us.rend());
+    us[0] = u;
+    // ys[0] and es[0] are the previous sample's until this section's new ones are stored.
     std::rotate(ys.rbegin(), ys.rbegin() + 1, ys.rend());
-    for (std::size_t j = 1; j < c.a.size(); ++j) acc -= static_cast<long double>(c.a[j]) * ys[j];
+    std::rotate(es.rbegin(), es.rbegin() + 1, es.rend());
+    // In accumulator LSB (2^-F of a y_ext LSB). Quantised coefficients are split as in the ROM,
+    // c 2^(F+L) = H 2^L + W, and the lo phase (the W terms) is shifted down by L; exact ones
+    // are summed whole.
+    long double lo = rounding ? std::ldexp(half, split) : 0.0L;  // 2^L accumulator LSB units
+    long double hi = 0.0L;
+    const auto add = [&](long double coefficient, long double operand) {
+      if (!quantised) {
+        hi += std::ldexp(coefficient * operand, f);
+        return;
+      }
+      const long double whole = std::ldexp(coefficient, f + split);  // an integer
+      const long double upper = std::floor(std::ldexp(whole, -split));
+      lo += (whole - std::ldexp(upper, split)) * operand;
+      hi += upper * operand;
+    };
+    for (std::size_t i = 0; i < c.b.size(); ++i) add(c.b[i], us[i]);
+    for (std::size_t j = 1; j < c.a.size(); ++j) add(-c.a[j], ys[j]);
+    if (wrap) lo = wrapped(lo, format_.acc_width);
+    long double acc = std::ldexp(lo, -split);
+    if (rounding) acc = std::floor(acc);
+    acc += hi;
+    for (std::size_t j = 1; j < c.a.size(); ++j) {
+      acc += static_cast<long double>(c.e[j - 1]) * es[j];
+    }
+    if (wrap) acc = wrapped(acc, format_.acc_width);
 
-    long double t = acc;
-    if (feedback_rounding) t += 0.5L;  // the rounding constant 2^(Fa-1), preloaded
-    if (wrap) t -= span * std::floor((t + span / 2) / span);
-    if (feedback_rounding) t = std::floor(t);
+    long double t = std::ldexp(acc, -f);
+    if (rounding) {
+      t = std::floor(t);
+      es[0] = acc - std::ldexp(t, f) - half;  // what the rounding dropped, fed back
+    } else {
+      es[0] = 0.0L;
+    }
     if (saturation) t = std::clamp(t, ext_min, ext_max);
     ys[0] = t;
-
-    long double y = std::ldexp(t, -s);
-    if (output_rounding) y = std::floor(y + 0.5L);
-    if (saturation) y = std::clamp(y, sample_min, sample_max);
-    u = y;
+    u = t;
   }
-  return static_cast<double>(u);
+  long double y = std::ldexp(u, -s);
+  if (output_rounding) y = std::floor(y + 0.5L);
+  if (saturation) y = std::clamp(y, sample_min, sample_max);
+  return static_cast<double>(y);
 }
 
 }  // namespace flange::model

@@ -5,21 +5,22 @@
 // every effect off it is ReferenceFilter (within double rounding).
 //
 // Units: samples in and out are in LSB of the D-bit sample format (Q1.(D-1) times 2^(D-1)), as
-// reals; the section's feedback history y_ext is in LSB of its (D+s)-bit format, as in the
-// contract. Per section and sample, in y_ext units, with v the exact sum
-//   v = 2^s sum_i b[i] x_k[n-i] - sum_j a[j] y_ext_k[n-j],
-// the effects act as follows (in this order; an effect switched off leaves the value alone):
-//   feedback rounding  t = v + 1/2 (the accumulator's rounding constant) ... t = floor(t)
-//   accumulator wrap   t wraps to [-2^(P-1-Fa), 2^(P-1-Fa)), the P-bit accumulator seen >>> Fa
-//   saturation         y_ext = clamp(t, -2^(D-1+s), 2^(D-1+s) - 1)
-//   output rounding    y = floor(y_ext 2^-s + 1/2)          (the second rounding, to D bits)
-//   saturation         y = clamp(y, -2^(D-1), 2^(D-1) - 1)  (y goes on to the next section)
-// Input rounding rounds the filter input to a D-bit word: floor(x + 1/2), clipped to the range
-// (the ADC). Coefficient quantisation replaces the exact coefficients by the quantised ones (the
-// ROM words b = B 2^-Fb, a = -A 2^-Fa for a coefficient set).
+// reals; every signal inside (each section's input u and output history y_ext) is in LSB of the
+// (D+s)-bit format, as in the contract, and the sums in accumulator LSB (2^-F of that). Per
+// section and sample (an effect switched off leaves the value alone):
+//   coefficients       the ROM's split words instead of the float design: each coefficient
+//                      c 2^(F+L) = H 2^L + W, and the W terms form the lo phase
+//   feedback rounding  the lo phase starts at 2^(F-1+L) and is floored after >>> L; y_ext =
+//                      floor(acc 2^-F), and the error acc - y_ext 2^F - 2^(F-1) is fed back
+//                      through E[j] (round(-a[j]) for the float design)
+//   accumulator wrap   the lo phase and acc wrap to P-bit two's complement
+//   saturation         y_ext = clamp(y_ext, -2^(D-1+s), 2^(D-1+s) - 1), and the output below
+// The filter output is the last y_ext in sample LSB: with output rounding floor(y 2^-s + 1/2),
+// with saturation clipped to [-2^(D-1), 2^(D-1) - 1]. Input rounding rounds the filter input to
+// a D-bit word: floor(x + 1/2), clipped to the range (the ADC).
 // Arithmetic is long double (64-bit significand on x86-64): with quantised coefficients, rounded
-// data and legal samples every term and partial sum is an integer multiple of 2^-Fa below
-// 2^(P-1-Fa) in magnitude, so the sum is exact for any P <= 64, as the model's integers are.
+// data and legal samples every term and partial sum is an integer below 2^63, so the sums are
+// exact, as the model's integers are.
 #pragma once
 
 #include <array>
@@ -38,10 +39,10 @@ static_assert(std::numeric_limits<long double>::digits >= 64,
 enum class FixedPointEffect {
   kCoefficients,      // coefficient quantisation: the ROM words instead of the float design
   kInputRounding,     // the input rounded (and clipped) to a D-bit word
-  kFeedbackRounding,  // the first rounding: y_ext = floor(acc / 2^Fa + 1/2)
-  kOutputRounding,    // the second rounding: each section's D-bit output from y_ext
+  kFeedbackRounding,  // rounding inside: lo >>> L, y_ext = acc >>> F, the error fed back
+  kOutputRounding,    // sample_o rounded to D bits from the last y_ext
   kAccumulatorWrap,   // the P-bit two's complement accumulator
-  kSaturation,        // y_ext clipped to D + s bits, each section's output to D bits
+  kSaturation,        // y_ext clipped to D + s bits, sample_o to D bits
 };
 inline constexpr std::array<FixedPointEffect, 6> kAllFixedPointEffects = {
     FixedPointEffect::kCoefficients,     FixedPointEffect::kInputRounding,
@@ -66,17 +67,22 @@ class EffectSet {
   unsigned bits_ = 0;
 };
 
-// One section's coefficients, a[0] = 1: y = sum b[i] x[n-i] - sum_{j>=1} a[j] y[n-j].
+// One section's coefficients, a[0] = 1: y = sum b[i] x[n-i] - sum_{j>=1} a[j] y[n-j], and its
+// error-feedback words e[j-1] = E[j].
 struct SectionCoefficients {
   std::vector<double> b, a;
+  std::vector<std::int64_t> e;
 };
+// E[j] = round(-a[j]), j >= 1: the generator's error feedback for denominator a.
+std::vector<std::int64_t> error_feedback_words(const std::vector<double>& a);
 
 // The formats the effects need (docs/fixed_point.md symbols).
 struct StagedFormat {
   int sample_width = 16;   // D, 2..32
   int feedback_shift = 0;  // s, 0..25 - D
-  int coef_frac_bits = 1;  // Fa, >= 1
-  int acc_width = 48;      // P, Fa + D <= P <= 64
+  int coef_frac_bits = 1;  // F, >= 1
+  int acc_width = 48;      // P, F + D + s <= P <= 64, F + L <= P
+  int split_shift = 17;    // L, >= 1
 };
 StagedFormat staged_format(const CoreConfig& config);
 
@@ -85,7 +91,7 @@ StagedFormat staged_format(const CoreConfig& config);
 // does not have the shape of the config.
 std::vector<SectionCoefficients> float_sections(const CoreConfig& config,
                                                 const FloatDesign& design);
-// The ROM words of `config` as values: b = B 2^-Fb, a[j] = -A 2^-Fa (exact in double).
+// The ROM words of `config` as values, (H + W 2^-L) 2^-F (exact in double), and its E words.
 std::vector<SectionCoefficients> rom_sections(const CoreConfig& config);
 
 // The D-bit word the core receives for an input of `x` LSB: floor(x + 1/2), clipped to
@@ -114,7 +120,7 @@ class StagedFixedPoint {
   StagedFormat format_;
   EffectSet effects_;
   std::vector<SectionCoefficients> coefficients_;
-  std::vector<std::vector<long double>> x_, y_ext_;  // per section, newest first
+  std::vector<std::vector<long double>> u_, y_ext_, err_;  // per section, newest first
 };
 
 }  // namespace flange::model

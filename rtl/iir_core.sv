@@ -3,34 +3,43 @@
 // unit (one DSP48E1), sequenced by an FSM over a coefficient ROM and the sample history.
 //
 // Fixed-point contract (docs/fixed_point.md; the same paragraph heads model/iir_core.h).
-// D = SampleWidth, C = CoefWidth, P = AccWidth, Fb = NumFracBits, Fa = CoefFracBits,
-// s = FeedbackShift = Fb - Fa, K = NumSections, M = SectionOrder.
-// - Formats: samples in, out and between sections are Q1.(D-1) (Q1.15 by default). The ROM holds
-//   C-bit words: b as Q(C-Fb).Fb, the negated denominator -a as Q(C-Fa).Fa. Extended-precision
-//   feedback: each section keeps its own output history y_ext with s more fractional bits,
-//   Q1.(D-1+s) in D + s <= 25 bits (the DSP48E1 A port), and feeds it back as it is. Every product
-//   is then Q.(D-1+Fb) in D+s+C bits, summed in a P-bit two's complement accumulator that wraps
-//   like the DSP48E1 P register (the generator proves that legal samples never make it wrap).
-// - Rounding: round half up, twice. The accumulator starts each section at 2^(Fa-1) and
-//   y_ext = sum >>> Fa (arithmetic). The section's D-bit output y, the next section's input and,
-//   after the last section, sample_o, is rounded from y_ext (not from the accumulator):
-//   y = (y_ext + 2^(s-1)) >>> s for s > 0, y = y_ext for s = 0.
-// - Saturation: y_ext is clipped to [-2^(D-1+s), 2^(D-1+s) - 1] before it enters the history, y to
-//   [-2^(D-1), 2^(D-1) - 1]; either clip sets the sticky saturation_o.
-// - ROM order: section 0 first; within a section b[0..M], then -a[1..M]. Load registers: K + 1
-//   lines of M + 1 words of D + s bits, newest first; line 0 is the input x[n..n-M] shifted left
-//   by s, line k + 1 is y_ext of section k. Section k multiplies b[i] by line k age i rounded to D
-//   bits as above (exact for line 0) and -a[j] by line k + 1 age j as it is. The bus target
-//   counter (BTC) counts the terms in issue order and addresses each term's ROM word and load
-//   register with that one count.
-// - Timing: a section issues its T = 2M + 1 terms one per cycle in the order b[1..M], -a[1..M],
-//   b[0]: only b[0] needs the previous section's output, so the next section's first 2M terms
-//   overlap the MAC's 3 cycles of latency, and its b[0] waits, if it must, until the cycle after
-//   that output is written back. With S = max(T, 4), section k's last term issues T + kS cycles
-//   after the accepted EN and is written back 3 cycles later. From the cycle in which
-//   sample_valid_i is accepted to the cycle in which sample_valid_o is high:
-//   LatencyCycles = T + (K - 1) * S + 4, which is MACs + 4 when M >= 2 or K = 1. A new sample is
-//   accepted in the cycle sample_valid_o is high, so CyclesPerSample = LatencyCycles too.
+// D = SampleWidth, C = CoefWidth, P = AccWidth, F = CoefFracBits, s = FeedbackShift,
+// L = SplitShift = C - 1 (17 with 18-bit words: the DSP48E1's P >>> 17), K = NumSections,
+// M = SectionOrder.
+// - Formats: samples in and out are Q1.(D-1) (Q1.15 by default). Inside the core every signal
+//   (each section's input and output, the history) is a (D+s)-bit word, Q1.(D-1+s), D + s <= 25
+//   (the DSP48E1 A port): the input enters as x << s and only sample_o is rounded back to D bits.
+//   Every coefficient c, b[i] or -a[j], is split into two C-bit ROM words,
+//   c = (H + W * 2^-L) * 2^-F with a signed hi word H and a lo word W in [0, 2^L); the
+//   error-feedback words E[j] are signed integers (the generator takes E[j] = round(-a[j])).
+// - One section k at sample n, u = its input (line k), w = its output history (line k + 1),
+//   e = its rounding-error history:
+//     lo    = 2^(F-1+L) + sum_i W_b[i] u[n-i] + sum_j W_a[j] w[n-j]
+//     acc   = (lo >>> L) + sum_i H_b[i] u[n-i] + sum_j H_a[j] w[n-j] + sum_j E[j] e[n-j]
+//     w[n]  = y_ext = saturate_(D+s)(acc >>> F)
+//     e[n]  = (acc mod 2^F) - 2^(F-1), the rounding error in accumulator LSBs (F-bit signed)
+//   lo and acc are P-bit two's complement and wrap like the DSP48E1 P register (the generator
+//   proves that legal samples never make them wrap). Feeding the error back through E shapes
+//   the rounding noise by 1 - sum_j E[j] z^-j, which cancels the 1/A(z) gain near z = 1.
+// - Rounding: round half up: the preload 2^(F-1+L) becomes 2^(F-1) after the shift. sample_o is
+//   rounded from the last section's y_ext: (y_ext + 2^(s-1)) >>> s for s > 0, y_ext for s = 0.
+// - Saturation: each y_ext is clipped to [-2^(D-1+s), 2^(D-1+s) - 1] before it enters the
+//   history; sample_o to [-2^(D-1), 2^(D-1) - 1]; any clip sets the sticky saturation_o.
+// - ROM order: section 0 first; within a section W_b[0..M], W_a[1..M], H_b[0..M], H_a[1..M],
+//   E[1..M]: 5M + 2 words. Load registers: K + 1 lines of M + 1 words of D + s bits, newest
+//   first (line 0 is x << s, line k + 1 is y_ext of section k), and K error lines of M + 1
+//   words (line k: e of section k, F-bit values). The bus target counter (BTC) counts the terms
+//   in issue order and addresses each term's ROM word and load register with that one count.
+// - Timing: a section issues its T = 5M + 2 terms one per cycle in the order W_b[1..M],
+//   W_a[1..M], W_b[0], then H_b[0], H_b[1..M], H_a[1..M], E[1..M]. The first term starts the sum
+//   at 2^(F-1+L); H_b[0] is added to P >>> L instead of P. Only W_b[0] and H_b[0] need the
+//   previous section's output, so the next section's first 2M terms overlap the MAC's 3 cycles
+//   of latency and its W_b[0] waits, if it must, until the cycle after that output is written
+//   back. With S = T + max(0, 3 - 2M), section k's last term issues T + kS cycles after the
+//   accepted EN and is written back 3 cycles later. From the cycle in which sample_valid_i is
+//   accepted to the cycle in which sample_valid_o is high: LatencyCycles = T + (K - 1) * S + 4.
+//   A new sample is accepted in the cycle sample_valid_o is high, so CyclesPerSample =
+//   LatencyCycles too.
 //
 // Flags: sample_valid_i while busy_o is high drops that sample (the history is untouched) and sets
 // the sticky overrun_o. Sticky flags clear on reset or with flag_clear_i; a flag event in the same
@@ -71,16 +80,16 @@ module iir_core #(
   localparam int SectionOrder  = iir_coeffs_pkg::SectionOrder;
   localparam int SampleWidth   = iir_coeffs_pkg::SampleWidth;
   localparam int CoefWidth     = iir_coeffs_pkg::CoefWidth;
-  localparam int CoefFracBits  = iir_coeffs_pkg::CoefFracBits;
-  localparam int NumFracBits   = iir_coeffs_pkg::NumFracBits;
-  localparam int FeedbackShift = iir_coeffs_pkg::FeedbackShift;
+  localparam int CoefFracBits  = iir_coeffs_pkg::CoefFracBits;   // F
+  localparam int FeedbackShift = iir_coeffs_pkg::FeedbackShift;  // s
+  localparam int SplitShift    = iir_coeffs_pkg::SplitShift;     // L = C - 1
   localparam int AccWidth      = iir_coeffs_pkg::AccWidth;
   localparam int RomDepth      = iir_coeffs_pkg::RomDepth;       // words of one set
   localparam int NumChannels   = iir_coeffs_pkg::NumChannels;
   localparam int CoefSets      = iir_coeffs_pkg::CoefSets;       // 1, or one per channel
   localparam int ChannelWidth  = iir_coeffs_pkg::ChannelWidth;   // max(1, clog2(NumChannels))
 
-  localparam int Terms         = 2 * SectionOrder + 1;              // MACs per section
+  localparam int Terms         = 5 * SectionOrder + 2;              // MACs per section
   localparam int LrLine        = SectionOrder + 1;                  // samples per history line
   localparam int AgeWidth      = $clog2(LrLine);                    // slot within a line
   localparam int LineWidth     = $clog2(NumSections + 1);           // line number
@@ -88,12 +97,21 @@ module iir_core #(
   localparam int LrSlots       = 1 << LrAddrWidth;                  // lines padded to 2^AgeWidth
   localparam int LrDepth       = NumChannels * LrSlots;             // channel c from c * LrSlots
   localparam int LrFullWidth   = LrDepth > 1 ? $clog2(LrDepth) : 1;
+  // Error lines: K lines (one per section) of M + 1 slots, addressed like the history lines.
+  localparam int ErrLineBits   = $clog2(NumSections);               // 0 for one section
+  localparam int ErrAddrWidth  = ErrLineBits + AgeWidth;
+  localparam int ErrSlots      = 1 << ErrAddrWidth;
+  localparam int ErrDepth      = NumChannels * ErrSlots;            // channel c from c * ErrSlots
+  localparam int ErrFullWidth  = ErrDepth > 1 ? $clog2(ErrDepth) : 1;
+  localparam int ErrWidth      = CoefFracBits;                      // e: F-bit signed
   localparam int RomWords      = CoefSets * RomDepth;               // set c from c * RomDepth
   localparam int RomFullWidth  = RomWords > 1 ? $clog2(RomWords) : 1;
   localparam int ExtWidth      = SampleWidth + FeedbackShift;       // y_ext: history word
   localparam int AWidth        = ExtWidth;                          // multiplier A operand
   localparam int MacLatency    = 3;                                 // iir_mac: A/B, M, P
-  localparam int SectionPitch  = Terms > MacLatency + 1 ? Terms : MacLatency + 1;  // S
+  // S = T + max(0, 3 - 2M): W_b[0] of the next section waits for the write-back.
+  localparam int SectionPitch  = 2 * SectionOrder >= MacLatency ? Terms :
+                                 Terms + MacLatency - 2 * SectionOrder;
   localparam int LatencyCycles = Terms + (NumSections - 1) * SectionPitch + MacLatency + 1;
   localparam int BtcWidth      = RomDepth > 1 ? $clog2(RomDepth) : 1;
 
@@ -103,19 +121,27 @@ module iir_core #(
   localparam logic signed [ExtWidth-1:0]    EXT_MIN    = {1'b1, {(ExtWidth - 1){1'b0}}};
   // 2^(s-1), half an LSB of a sample in y_ext units (0 when s = 0).
   localparam logic [ExtWidth:0]             ROUND_HALF = ((ExtWidth + 1)'(1) << FeedbackShift) >> 1;
+  // The error's sign bit: e = (acc mod 2^F) - 2^(F-1) is acc's low F bits with this bit flipped.
+  localparam logic [ErrWidth-1:0]           ERR_FLIP   = ErrWidth'(1) << (CoefFracBits - 1);
 
   // Elaboration checks: a set that breaks the contract must not build //
   if (RomDepth != NumSections * Terms) begin : g_bad_rom_depth
-    $error("iir_core: RomDepth must equal NumSections * (2 * SectionOrder + 1)");
+    $error("iir_core: RomDepth must equal NumSections * (5 * SectionOrder + 2)");
   end
   if (FilterOrder > NumSections * SectionOrder) begin : g_bad_order
     $error("iir_core: FilterOrder exceeds NumSections * SectionOrder");
   end
-  if (FeedbackShift != NumFracBits - CoefFracBits || FeedbackShift < 0) begin : g_bad_shift
-    $error("iir_core: FeedbackShift must equal NumFracBits - CoefFracBits >= 0");
+  if (FeedbackShift < 0) begin : g_bad_shift
+    $error("iir_core: FeedbackShift must be >= 0");
   end
-  if (CoefFracBits < 1 || AccWidth < NumFracBits + SampleWidth) begin : g_bad_acc
-    $error("iir_core: need 1 <= CoefFracBits and NumFracBits + SampleWidth <= AccWidth");
+  if (SplitShift != CoefWidth - 1) begin : g_bad_split
+    $error("iir_core: SplitShift must equal CoefWidth - 1");
+  end
+  if (CoefFracBits < 1 || CoefFracBits > ExtWidth) begin : g_bad_frac
+    $error("iir_core: need 1 <= CoefFracBits <= SampleWidth + FeedbackShift");
+  end
+  if (AccWidth < CoefFracBits + ExtWidth || AccWidth < CoefFracBits + SplitShift) begin : g_bad_acc
+    $error("iir_core: need CoefFracBits + max(SampleWidth + FeedbackShift, SplitShift) <= AccWidth");
   end
   if (AWidth + CoefWidth > AccWidth) begin : g_bad_product
     $error("iir_core: the product (SampleWidth + FeedbackShift + CoefWidth) exceeds AccWidth");
@@ -127,7 +153,7 @@ module iir_core #(
     $error("iir_core: ChannelWidth must be max(1, clog2(NumChannels))");
   end
 
-  // The D-bit sample for a history word: (y_ext + 2^(s-1)) >>> s, saturated. The sum is one bit
+  // sample_o for the last section's y_ext: (y_ext + 2^(s-1)) >>> s, saturated. The sum is one bit
   // wider than y_ext, so it cannot wrap; its shifted value fits the sample format when its two top
   // bits agree. Only the positive rail can be reached: y_ext >= 2^(D-1+s) - 2^(s-1).
   function automatic logic [SampleWidth-1:0] round_to_sample(logic [ExtWidth-1:0] y_ext);
@@ -146,7 +172,7 @@ module iir_core #(
 
   typedef enum logic [1:0] {
     StIdle   = 2'd0,  // wait for EN
-    StIssue  = 2'd1,  // issue one term per cycle (BTC counting), or wait for a b[0] operand
+    StIssue  = 2'd1,  // issue one term per cycle (BTC counting), or wait for a W_b[0] operand
     StFinish = 2'd2   // every term issued: wait for the last section's write-back
   } state_e;
 
@@ -176,8 +202,11 @@ module iir_core #(
   // holds a value once more than a samples were accepted: line k + 1's age 0 is read only after
   // section k wrote it.) Each channel has its own lines (from channel * LrSlots), its own newest
   // slot and its own count; newest_q and filled_q are those of the channel being served (channel_i
-  // while idle, the sample's channel while busy).
+  // while idle, the sample's channel while busy). The error lines live in a second RAM of the
+  // same shape (K lines of F-bit words, from channel * ErrSlots), with the same pointers: section
+  // k writes its y_ext to line k + 1 and its error to error line k at age 0 in the same cycle.
   logic [ExtWidth-1:0]    lr_ram [LrDepth];
+  logic [ErrWidth-1:0]    err_ram [ErrDepth];
   // Per channel c, at bits [c * width +: width] (flat: Yosys 0.23 reads no packed 2-D arrays).
   logic [NumChannels*AgeWidth-1:0]     newest_mem_q;  // slot of age 0
   logic [NumChannels*(AgeWidth+1)-1:0] filled_mem_q;  // samples accepted since reset, up to M + 1
@@ -204,6 +233,10 @@ module iir_core #(
   logic [LrAddrWidth-1:0] lr_waddr, lr_raddr;          // within the channel's lines
   logic [LrFullWidth-1:0] lr_waddr_full, lr_raddr_full;
   logic [ExtWidth-1:0]    lr_wdata;
+  logic                    err_we;
+  logic [ErrAddrWidth-1:0] err_waddr, err_raddr;       // within the channel's error lines
+  logic [ErrFullWidth-1:0] err_waddr_full, err_raddr_full;
+  logic [ErrWidth-1:0]     err_wdata;
 
   assign cur_chan    = (state_q == StIdle) ? channel_i : chan_q;
   assign cur_chan_ok = channel_exists(cur_chan);
@@ -219,12 +252,29 @@ module iir_core #(
     both         = {chan, addr};
     lr_full_addr = both[LrFullWidth-1:0];
   endfunction
+  function automatic logic [ErrFullWidth-1:0] err_full_addr(logic [ChannelWidth-1:0] chan,
+                                                            logic [ErrAddrWidth-1:0] addr);
+    logic [ChannelWidth+ErrAddrWidth-1:0] both;
+    both          = {chan, addr};
+    err_full_addr = both[ErrFullWidth-1:0];
+  endfunction
+  // Error line `line` (section `line`, < K), slot `slot`: {line, slot}; one section has no line
+  // bits (the shift drops them).
+  function automatic logic [ErrAddrWidth-1:0] err_addr_of(logic [LineWidth-1:0] line,
+                                                          logic [AgeWidth-1:0] slot);
+    err_addr_of = ErrAddrWidth'(ErrAddrWidth'(line) << AgeWidth) | ErrAddrWidth'(slot);
+  endfunction
   /* verilator lint_on UNUSEDSIGNAL */
-  assign lr_waddr_full = lr_full_addr(cur_chan, lr_waddr);
-  assign lr_raddr_full = lr_full_addr(cur_chan, lr_raddr);
+  assign lr_waddr_full  = lr_full_addr(cur_chan, lr_waddr);
+  assign lr_raddr_full  = lr_full_addr(cur_chan, lr_raddr);
+  assign err_waddr_full = err_full_addr(cur_chan, err_waddr);
+  assign err_raddr_full = err_full_addr(cur_chan, err_raddr);
 
   always_ff @(posedge clk_i) begin
     if (lr_we) lr_ram[lr_waddr_full] <= lr_wdata;
+  end
+  always_ff @(posedge clk_i) begin
+    if (err_we) err_ram[err_waddr_full] <= err_wdata;
   end
 
   // The slot of the word `age` samples older than the one in slot `newest`.
@@ -237,17 +287,25 @@ module iir_core #(
   endfunction
 
   // BTC decode: the term's ROM word, its role, and the load register it multiplies //
-  // Issue position p of section k: p < M is b[p+1], M <= p < 2M is -a[p-M+1], p = 2M is b[0].
-  // ROM words stay in ROM order (b[0..M], -a[1..M]); the decoder maps the count to the address,
-  // which synthesis folds into the ROM's LUTs.
-  logic                       term_first, term_last, term_feedback, term_needs_previous;
+  // Issue position p of section k (M = SectionOrder):
+  //   p < M            W_b[p+1]          line k,     age p + 1        ROM offset p + 1
+  //   M <= p < 2M      W_a[p-M+1]        line k + 1, age p - M + 1    ROM offset p + 1
+  //   p = 2M           W_b[0]            line k,     age 0            ROM offset 0
+  //   p = 2M + 1       H_b[0]  (P >>> L) line k,     age 0            ROM offset p
+  //   2M + 1 < p <= 3M + 1  H_b[p-2M-1]  line k,     age p - 2M - 1   ROM offset p
+  //   3M + 1 < p <= 4M + 1  H_a[p-3M-1]  line k + 1, age p - 3M - 1   ROM offset p
+  //   4M + 1 < p <= 5M + 1  E[p-4M-1]    error line k, age p - 4M - 1 ROM offset p
+  // ROM words stay in ROM order (W_b[0..M], W_a[1..M], H_b[0..M], H_a[1..M], E[1..M]); the
+  // decoder maps the count to the address, which synthesis folds into the ROM's LUTs.
+  logic                       term_first, term_last, term_shift, term_error, term_needs_previous;
   logic [BtcWidth-1:0]        rom_addr;
   logic [LineWidth-1:0]       rd_line;
   logic [AgeWidth:0]          rd_age;  // 0..M
   always_comb begin
     term_first          = 1'b0;
     term_last           = 1'b0;
-    term_feedback       = 1'b0;
+    term_shift          = 1'b0;
+    term_error          = 1'b0;
     term_needs_previous = 1'b0;
     rom_addr            = '0;
     rd_line             = '0;
@@ -258,47 +316,67 @@ module iir_core #(
           term_first = (p == 0);
           term_last  = (p == Terms - 1);
           if (p < SectionOrder) begin
-            // b[p+1] multiplies x_k[n-p-1] (line k, rounded below).
+            // W_b[p+1] multiplies u_k[n-p-1] (line k).
             rom_addr = BtcWidth'(k * Terms + p + 1);
             rd_line  = LineWidth'(k);
             rd_age   = (AgeWidth + 1)'(p + 1);
           end else if (p < 2 * SectionOrder) begin
-            // -a[j], j = p - M + 1, multiplies y_ext_k[n-j] (line k + 1).
-            term_feedback = 1'b1;
-            rom_addr      = BtcWidth'(k * Terms + p + 1);
-            rd_line       = LineWidth'(k + 1);
-            rd_age        = (AgeWidth + 1)'(p - SectionOrder + 1);
-          end else begin
-            // b[0] multiplies x_k[n]: for k > 0 the output section k - 1 is still computing.
+            // W_a[j], j = p - M + 1, multiplies w_k[n-j] (line k + 1).
+            rom_addr = BtcWidth'(k * Terms + p + 1);
+            rd_line  = LineWidth'(k + 1);
+            rd_age   = (AgeWidth + 1)'(p - SectionOrder + 1);
+          end else if (p <= 2 * SectionOrder + 1) begin
+            // W_b[0], then H_b[0] (added to P >>> L), multiply u_k[n]: for k > 0 the output of
+            // section k - 1, which may still be computing.
+            term_shift          = (p == 2 * SectionOrder + 1);
             term_needs_previous = (k > 0);
-            rom_addr            = BtcWidth'(k * Terms);
+            rom_addr            = BtcWidth'(p == 2 * SectionOrder ? k * Terms : k * Terms + p);
             rd_line             = LineWidth'(k);
             rd_age              = '0;
+          end else if (p <= 3 * SectionOrder + 1) begin
+            // H_b[i], i = p - 2M - 1, multiplies u_k[n-i] (line k).
+            rom_addr = BtcWidth'(k * Terms + p);
+            rd_line  = LineWidth'(k);
+            rd_age   = (AgeWidth + 1)'(p - 2 * SectionOrder - 1);
+          end else if (p <= 4 * SectionOrder + 1) begin
+            // H_a[j], j = p - 3M - 1, multiplies w_k[n-j] (line k + 1).
+            rom_addr = BtcWidth'(k * Terms + p);
+            rd_line  = LineWidth'(k + 1);
+            rd_age   = (AgeWidth + 1)'(p - 3 * SectionOrder - 1);
+          end else begin
+            // E[j], j = p - 4M - 1, multiplies e_k[n-j] (error line k).
+            term_error = 1'b1;
+            rom_addr   = BtcWidth'(k * Terms + p);
+            rd_line    = LineWidth'(k);
+            rd_age     = (AgeWidth + 1)'(p - 4 * SectionOrder - 1);
           end
         end
       end
     end
   end
 
+  logic [AgeWidth-1:0]        rd_slot;
+  logic                       rd_filled;  // the word of age rd_age holds a value
   logic signed [ExtWidth-1:0] lr_word;
-  assign lr_raddr = {rd_line, slot_of(newest_q, rd_age)};
-  assign lr_word  = (filled_q > rd_age) ? $signed(lr_ram[lr_raddr_full]) : '0;
+  logic signed [ErrWidth-1:0] err_word;
+  assign rd_slot   = slot_of(newest_q, rd_age);
+  assign rd_filled = filled_q > rd_age;
+  assign lr_raddr  = {rd_line, rd_slot};
+  assign err_raddr = err_addr_of(rd_line, rd_slot);
+  assign lr_word   = rd_filled ? $signed(lr_ram[lr_raddr_full]) : '0;
+  assign err_word  = rd_filled ? $signed(err_ram[err_raddr_full]) : '0;
 
   // Operands //
   logic                          issue;
-  logic signed [SampleWidth-1:0] lr_sample;
   logic signed [AWidth-1:0]      mac_a;
   logic signed [CoefWidth-1:0]   mac_b;
   logic signed [AccWidth-1:0]    mac_p;
 
-  // A feed-forward term takes the D-bit sample: the input (x << s rounds back to x exactly) or
-  // the previous section's output, rounded from its y_ext as at its write-back, where a clip was
-  // flagged. A feedback term takes y_ext itself: s more fractional bits at no DSP cost (A port
-  // <= 25 bits).
-  assign lr_sample = $signed(round_to_sample(lr_word));
-  assign mac_a     = !issue        ? '0 :
-                     term_feedback ? lr_word :
-                                     AWidth'(lr_sample);
+  // Every term takes a (D+s)-bit word as it is: the history word (x << s in line 0, y_ext in the
+  // others) or the F-bit error, sign-extended (F <= D + s).
+  assign mac_a = !issue     ? '0 :
+                 term_error ? AWidth'(err_word) :
+                              lr_word;
   // One set: the decoded address; a set per channel: that channel's set.
   logic [RomFullWidth-1:0] rom_full_addr;
   assign rom_full_addr = CoefSets == 1 ? RomFullWidth'(rom_addr) :
@@ -309,37 +387,42 @@ module iir_core #(
     .AWidth    (AWidth),
     .BWidth    (CoefWidth),
     .AccWidth  (AccWidth),
-    .PreloadBit(CoefFracBits - 1)
+    .PreloadBit(CoefFracBits - 1 + SplitShift),
+    .ShiftBits (SplitShift)
   ) u_mac (
     .clk_i,
     .rst_ni,
     .a_i    (mac_a),
     .b_i    (mac_b),
     .first_i(issue & term_first),
+    .shift_i(issue & term_shift),
     .p_o    (mac_p)
   );
 
-  // Round (preloaded) and saturate, twice //
-  // y_ext = P >>> Fa fits D + s bits when every bit of P above its sign bit equals it.
-  logic [AccWidth-NumFracBits-SampleWidth:0] acc_top;
-  logic                                      clip_ext, clip;
-  logic signed [ExtWidth-1:0]                section_ext;
-  logic signed [SampleWidth-1:0]             section_y;
+  // Round (preloaded), saturate, keep the error //
+  // y_ext = P >>> F fits D + s bits when every bit of P above its sign bit equals it.
+  logic [AccWidth-CoefFracBits-ExtWidth:0] acc_top;
+  logic                                    clip_ext, clip, last_writeback;
+  logic signed [ExtWidth-1:0]              section_ext;
+  logic [ErrWidth-1:0]                     section_err;
 
-  assign acc_top         = mac_p[AccWidth-1:NumFracBits+SampleWidth-1];
-  assign clip_ext        = !((&acc_top) || !(|acc_top));
-  assign section_ext     = !clip_ext         ? mac_p[NumFracBits+SampleWidth-1:CoefFracBits] :
-                           mac_p[AccWidth-1] ? EXT_MIN : EXT_MAX;
-  // The D-bit output is rounded from y_ext (double rounding), the same function as the read path.
-  assign section_y       = $signed(round_to_sample(section_ext));
-  assign clip            = clip_ext | round_clips(section_ext);
+  assign acc_top     = mac_p[AccWidth-1:CoefFracBits+ExtWidth-1];
+  assign clip_ext    = !((&acc_top) || !(|acc_top));
+  assign section_ext = !clip_ext         ? mac_p[CoefFracBits+ExtWidth-1:CoefFracBits] :
+                       mac_p[AccWidth-1] ? EXT_MIN : EXT_MAX;
+  // e = (P mod 2^F) - 2^(F-1): P's low F bits with the top one inverted, as an F-bit signed word.
+  assign section_err = mac_p[CoefFracBits-1:0] ^ ERR_FLIP;
 
   // FSM //
-  // b[0] of section k > 0 waits while section k - 1's last term is still in the MAC pipeline.
+  // W_b[0] and H_b[0] of section k > 0 wait while section k - 1's last term is still in the MAC
+  // pipeline (only W_b[0] ever waits: H_b[0] follows it).
   logic stall;
   logic writeback;
-  assign stall     = term_needs_previous & (|wb_pipe_q);
-  assign writeback = wb_pipe_q[MacLatency-1];
+  assign stall          = term_needs_previous & (|wb_pipe_q);
+  assign writeback      = wb_pipe_q[MacLatency-1];
+  assign last_writeback = wb_sec_q == LineWidth'(NumSections - 1);
+  // Any section's y_ext clip; the last one's also sample_o's clip.
+  assign clip           = clip_ext | (last_writeback & round_clips(section_ext));
 
   always_comb begin
     state_d    = state_q;
@@ -355,6 +438,9 @@ module iir_core #(
     lr_we     = 1'b0;
     lr_waddr  = '0;
     lr_wdata  = '0;
+    err_we    = 1'b0;
+    err_waddr = '0;
+    err_wdata = '0;
 
     unique case (state_q)
       StIdle: begin
@@ -387,13 +473,17 @@ module iir_core #(
     endcase
 
     if (writeback) begin
-      // A section's sum is complete: its y_ext becomes the newest entry of the next line.
-      lr_we    = 1'b1;
-      lr_waddr = {wb_sec_q + LineWidth'(1), newest_q};
-      lr_wdata = section_ext;
-      wb_sec_d = wb_sec_q + 1'b1;
-      if (wb_sec_q == LineWidth'(NumSections - 1)) begin
-        out_d      = section_y;
+      // A section's sum is complete: its y_ext becomes the newest entry of the next line, its
+      // rounding error the newest entry of its error line.
+      lr_we     = 1'b1;
+      lr_waddr  = {wb_sec_q + LineWidth'(1), newest_q};
+      lr_wdata  = section_ext;
+      err_we    = 1'b1;
+      err_waddr = err_addr_of(wb_sec_q, newest_q);
+      err_wdata = section_err;
+      wb_sec_d  = wb_sec_q + 1'b1;
+      if (last_writeback) begin
+        out_d      = $signed(round_to_sample(section_ext));
         out_chan_d = chan_q;
         valid_d    = 1'b1;
         state_d    = StIdle;
@@ -420,9 +510,9 @@ module iir_core #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      state_q      <= StIdle;
-      btc_q        <= '0;
-      wb_pipe_q    <= '0;
+      state_q         <= StIdle;
+      btc_q           <= '0;
+      wb_pipe_q       <= '0;
       wb_sec_q        <= '0;
       chan_q          <= '0;
       newest_mem_q    <= '0;
@@ -469,10 +559,11 @@ module iir_core #(
     end
   end
 
-  // b[0] of section k > 0 is never issued before section k - 1 was written back.
+  // W_b[0] and H_b[0] of section k > 0 are never issued before section k - 1 was written back.
   always @(posedge clk_i) begin
     if (rst_ni && issue && term_needs_previous) begin
-      assert (wb_pipe_q == '0) else $error("iir_core: b[0] issued before its operand exists");
+      assert (wb_pipe_q == '0)
+      else $error("iir_core: W_b[0] or H_b[0] issued before its operand exists");
     end
   end
 

@@ -34,11 +34,16 @@ DesignRecord generate_channel_designs(const DesignRequest& request,
   if (!request.order) throw BadArgument("--channel-fc: give the order of every channel (--order)");
   std::vector<DesignRecord> records = design_each(request, channel_fc_hz, generated_by);
 
-  // One format for all: the smallest feedback shift any channel takes on its own.
+  // One format for all: the smallest feedback shift and fraction any channel takes on its own.
   int shift = records.front().quantized.feedback_shift;
-  for (const DesignRecord& r : records) shift = std::min(shift, r.quantized.feedback_shift);
+  int frac = records.front().quantized.coef_frac_bits;
+  for (const DesignRecord& r : records) {
+    shift = std::min(shift, r.quantized.feedback_shift);
+    frac = std::min(frac, r.quantized.coef_frac_bits);
+  }
   DesignRequest shared = request;
   shared.max_feedback_shift = shift;
+  shared.max_coef_frac_bits = frac;
   records = design_each(shared, channel_fc_hz, generated_by);
 
   DesignRecord combined = records.front();
@@ -47,20 +52,20 @@ DesignRecord generate_channel_designs(const DesignRequest& request,
   for (int c = 0; c < count; ++c) {
     const DesignRecord& r = records[static_cast<std::size_t>(c)];
     if (r.quantized.coef_frac_bits != combined.quantized.coef_frac_bits ||
-        r.quantized.b_frac_bits != combined.quantized.b_frac_bits) {
+        r.quantized.feedback_shift != combined.quantized.feedback_shift) {
       throw DesignRejected(fmt::format(
-          "channels 0 and {} need different coefficient formats (-a Q.{} b Q.{} against -a Q.{} "
-          "b Q.{}); one core has one format: give the channels closer cut-offs or use two cores",
-          c, combined.quantized.coef_frac_bits, combined.quantized.b_frac_bits,
-          r.quantized.coef_frac_bits, r.quantized.b_frac_bits));
+          "channels 0 and {} need different coefficient formats (Q.{} shift {} against Q.{} "
+          "shift {}); one core has one format: give the channels closer cut-offs or use two cores",
+          c, combined.quantized.coef_frac_bits, combined.quantized.feedback_shift,
+          r.quantized.coef_frac_bits, r.quantized.feedback_shift));
     }
     combined.quantized.acc_bits_needed =
         std::max(combined.quantized.acc_bits_needed, r.quantized.acc_bits_needed);
     if (combined.analysis.rejection.empty() && !r.analysis.rejection.empty()) {
       combined.analysis.rejection = fmt::format(
-          "channel {} (fc = {:.6g} Hz), in the channels' shared format (b Q.{}, feedback shift "
+          "channel {} (fc = {:.6g} Hz), in the channels' shared format (Q.{}, feedback shift "
           "{}): {}",
-          c, channel_fc_hz[static_cast<std::size_t>(c)], r.quantized.b_frac_bits, shift,
+          c, channel_fc_hz[static_cast<std::size_t>(c)], frac, shift,
           r.analysis.rejection);
     }
     combined.channel_sets.push_back({r.design, r.quantized, r.analysis});

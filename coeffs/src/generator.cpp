@@ -206,7 +206,8 @@ DesignRecord generate_design(const DesignRequest& request, const std::string& ge
   }
   require_representable(record.design);
   record.quantized =
-      quantize(record.design, request.structure, request.widths, request.max_feedback_shift);
+      quantize(record.design, request.structure, request.widths, request.max_feedback_shift,
+               request.max_coef_frac_bits);
   record.analysis = analyse(record.design, record.quantized, request.limits);
   return record;
 }

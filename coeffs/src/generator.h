@@ -23,7 +23,9 @@ struct DesignRequest {
   std::vector<double> tf_b, tf_a;
   Structure structure = Structure::kSos;
   HardwareWidths widths;
-  std::optional<int> max_feedback_shift;  // a cap on s = Fb - Fa (channel sets share one format)
+  // Caps on s and F (channel sets share one format).
+  std::optional<int> max_feedback_shift;
+  std::optional<int> max_coef_frac_bits;
   AcceptanceLimits limits;
 };
 

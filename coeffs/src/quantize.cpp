@@ -74,35 +74,42 @@ std::vector<double> feedback_coefficients(const FloatSections& sections) {
   return feedback;
 }
 
-// Fa as the denominators' largest coefficient allows; a word too narrow to leave a fractional
-// bit rejects the design.
-int feedback_frac_bits(const FloatSections& sections, const FloatDesign& design,
-                       Structure structure, int c) {
-  const std::vector<double> feedback = feedback_coefficients(sections);
-  const std::optional<int> feedback_int = integer_bits(feedback, c);
-  const int fa = feedback_int ? c - 1 - *feedback_int : c - 1;
-  if (fa < 1) {
-    throw DesignRejected(fmt::format(
-        "{} of order {} needs {} integer bits for its largest denominator coefficient ({}); "
-        "{}-bit coefficients leave none for the fraction; use --structure sos or more "
-        "coefficient bits",
-        structure == Structure::kDf1 ? "direct form" : "second-order sections", design.order,
-        *feedback_int, format_number(largest_magnitude(feedback)), c));
-  }
-  return fa;
+std::vector<double> all_values(const std::vector<std::vector<double>>& rows) {
+  std::vector<double> values;
+  for (const std::vector<double>& row : rows) values.insert(values.end(), row.begin(), row.end());
+  return values;
+}
+
+// A coefficient split into its hi and lo words (docs/fixed_point.md): c = (H + W 2^-L) 2^-F,
+// H = floor(c 2^F) in C bits and W in [0, 2^L). The whole word H 2^L + W is c rounded to
+// F + L fractional bits, to nearest (ties away from zero).
+struct SplitWord {
+  std::int64_t hi = 0;
+  std::int64_t lo = 0;
+  std::int64_t whole = 0;
+};
+
+SplitWord split_word(double value, int frac_bits, int split) {
+  SplitWord word;
+  word.whole = round_to_word(value, frac_bits + split);
+  word.hi = word.whole >> split;  // floor (C++20 arithmetic shift)
+  word.lo = word.whole & ((std::int64_t{1} << split) - 1);
+  return word;
 }
 
 // Numerator compensation: scale each section's numerator by A_q(1) / A(1), the rounded
 // denominator's DC value over the exact one, so that rounding the denominator of a narrow
 // filter (where A(1) is tiny) does not move the section's DC gain.
-std::vector<std::vector<double>> compensated_numerators(const FloatSections& sections, int fa) {
+std::vector<std::vector<double>> compensated_numerators(const FloatSections& sections, int f,
+                                                        int split) {
   std::vector<std::vector<double>> numerators = sections.b;
   for (std::size_t k = 0; k < sections.b.size(); ++k) {
     double exact_dc = 1.0;
     double rounded_dc = 1.0;
     for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
       exact_dc += sections.a[k][j];
-      rounded_dc -= std::ldexp(static_cast<double>(round_to_word(-sections.a[k][j], fa)), -fa);
+      rounded_dc -= std::ldexp(static_cast<double>(split_word(-sections.a[k][j], f, split).whole),
+                               -(f + split));
     }
     if (exact_dc != 0.0 && rounded_dc != 0.0 &&
         std::signbit(exact_dc) == std::signbit(rounded_dc)) {
@@ -112,64 +119,25 @@ std::vector<std::vector<double>> compensated_numerators(const FloatSections& sec
   return numerators;
 }
 
-struct FracBits {
-  int fa = 0;  // feedback coefficients
-  int fb = 0;  // feed-forward coefficients
-};
-
-// Fb as the numerators' largest coefficient allows, at most max_shift above Fa, and Fa lowered
-// to it: the feedback shift cannot be negative, so a numerator larger than the denominator takes
-// the denominator's format down with it.
-FracBits numerator_frac_bits(const std::vector<std::vector<double>>& numerators, int fa, int c,
-                             int max_shift) {
-  std::vector<double> feedforward;
-  for (const std::vector<double>& numerator : numerators) {
-    feedforward.insert(feedforward.end(), numerator.begin(), numerator.end());
+// F: as many fractional bits as the largest coefficient, numerator or denominator, leaves in a
+// C-bit hi word, at most `max_frac_bits`; a word too narrow to leave a fractional bit rejects the
+// design.
+int frac_bits_for(const std::vector<double>& feedback, const std::vector<double>& feedforward,
+                  const FloatDesign& design, Structure structure, int c, int max_frac_bits) {
+  std::vector<double> values = feedback;
+  values.insert(values.end(), feedforward.begin(), feedforward.end());
+  const std::optional<int> integer = integer_bits(values, c);
+  const int f = std::min(integer ? c - 1 - *integer : c - 1, max_frac_bits);
+  if (f < 1) {
+    throw DesignRejected(fmt::format(
+        "{} of order {} needs {} integer bits for its largest coefficient ({}); {}-bit "
+        "coefficients leave none for the fraction; {}",
+        structure == Structure::kDf1 ? "direct form" : "second-order sections", design.order,
+        integer.value_or(0), format_number(largest_magnitude(values)), c,
+        structure == Structure::kDf1 ? "use --structure sos or more coefficient bits"
+                                     : "use more coefficient bits"));
   }
-  const std::optional<int> feedforward_int = integer_bits(feedforward, c);
-  const int fb =
-      feedforward_int ? std::min(c - 1 - *feedforward_int, fa + max_shift) : fa + max_shift;
-  const FracBits bits{std::min(fa, fb), fb};
-  if (bits.fa < 1) {
-    // The accumulator's rounding constant is 2^(Fa-1) (docs/fixed_point.md).
-    throw DesignRejected(
-        fmt::format("the numerator needs {} integer bits for its largest coefficient ({}); {}-bit "
-                    "coefficients leave none for the fraction; use more coefficient bits",
-                    feedforward_int.value_or(0), format_number(largest_magnitude(feedforward)), c));
-  }
-  return bits;
-}
-
-// Rounds every section's coefficients in the formats already in `filter`, into its words and
-// sections. Returns the accumulator's worst case over the sections (docs/fixed_point.md): the
-// rounding constant 2^(Fa-1), |B| times the largest sample magnitude 2^(D-1), and |A| times the
-// largest feedback history magnitude 2^(D-1+s) (y_ext, D + s bits).
-Int128 round_sections(const FloatSections& sections,
-                      const std::vector<std::vector<double>>& numerators, QuantizedFilter& filter) {
-  const int fa = filter.coef_frac_bits;
-  const int fb = filter.b_frac_bits;
-  const int data_bits = filter.widths.data_bits;
-  Int128 worst_any = 0;
-  for (std::size_t k = 0; k < sections.b.size(); ++k) {
-    QuantizedSection quantized;
-    Int128 worst = Int128{1} << (fa - 1);  // the rounding constant
-    for (double value : numerators[k]) {
-      const std::int64_t word = round_to_word(value, fb);
-      filter.words.push_back(word);
-      quantized.b.push_back(std::ldexp(static_cast<double>(word), -fb));
-      worst += static_cast<Int128>(std::llabs(word)) << (data_bits - 1);
-    }
-    quantized.a.push_back(1.0);
-    for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
-      const std::int64_t word = round_to_word(-sections.a[k][j], fa);  // stored negated
-      filter.words.push_back(word);
-      quantized.a.push_back(-std::ldexp(static_cast<double>(word), -fa));
-      worst += static_cast<Int128>(std::llabs(word)) << (data_bits - 1 + filter.feedback_shift);
-    }
-    filter.sections.push_back(std::move(quantized));
-    worst_any = std::max(worst_any, worst);
-  }
-  return worst_any;
+  return f;
 }
 
 // Two's complement of P bits holds magnitudes up to 2^(P-1) - 1.
@@ -179,6 +147,60 @@ int accumulator_bits_needed(Int128 worst) {
   return needed;
 }
 
+// Rounds every section's coefficients in the format already in `filter` into its words (ROM
+// order: W_b[0..M], W_a[1..M], H_b[0..M], H_a[1..M], E[1..M]) and sections. Returns the worst
+// case of either phase of the accumulator over the sections (docs/fixed_point.md): every operand
+// is at most 2^(D-1+s) in magnitude, every error at most 2^(F-1).
+Int128 round_sections(const FloatSections& sections,
+                      const std::vector<std::vector<double>>& numerators, QuantizedFilter& filter) {
+  const int f = filter.coef_frac_bits;
+  const int split = filter.split_shift;
+  const int operand_shift = filter.widths.data_bits - 1 + filter.feedback_shift;
+  Int128 worst_any = 0;
+  for (std::size_t k = 0; k < sections.b.size(); ++k) {
+    std::vector<SplitWord> b, a;
+    for (double value : numerators[k]) b.push_back(split_word(value, f, split));
+    for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
+      a.push_back(split_word(-sections.a[k][j], f, split));  // stored negated
+    }
+    QuantizedSection quantized;
+    Int128 lo_sum = 0, hi_sum = 0, err_sum = 0;
+    for (const SplitWord& word : b) {
+      filter.words.push_back(word.lo);
+      lo_sum += word.lo;
+      quantized.b.push_back(std::ldexp(static_cast<double>(word.whole), -(f + split)));
+    }
+    quantized.a.push_back(1.0);
+    for (const SplitWord& word : a) {
+      filter.words.push_back(word.lo);
+      lo_sum += word.lo;
+      quantized.a.push_back(-std::ldexp(static_cast<double>(word.whole), -(f + split)));
+    }
+    for (const SplitWord& word : b) {
+      filter.words.push_back(word.hi);
+      hi_sum += word.hi < 0 ? -word.hi : word.hi;
+    }
+    for (const SplitWord& word : a) {
+      filter.words.push_back(word.hi);
+      hi_sum += word.hi < 0 ? -word.hi : word.hi;
+    }
+    // Error feedback 1 - sum E[j] z^-j as close to A(z) as integers get: E[j] = round(-a[j]).
+    for (std::size_t j = 1; j < sections.a[k].size(); ++j) {
+      const std::int64_t e = std::llround(-sections.a[k][j]);
+      filter.words.push_back(e);
+      quantized.error_feedback.push_back(e);
+      err_sum += e < 0 ? -e : e;
+    }
+    filter.sections.push_back(std::move(quantized));
+    const Int128 lo_phase = (Int128{1} << (f - 1 + split)) + (lo_sum << operand_shift);
+    const Int128 shifted = ((lo_sum << operand_shift) >> split) + 1;
+    const Int128 hi_phase = (Int128{1} << (f - 1)) + shifted + (hi_sum << operand_shift) +
+                            (err_sum << (f - 1));
+    worst_any = std::max({worst_any, lo_phase, hi_phase});
+  }
+  return worst_any;
+}
+
 }  // namespace
 
 std::string structure_name(Structure structure) {
@@ -186,7 +208,8 @@ std::string structure_name(Structure structure) {
 }
 
 QuantizedFilter quantize(const FloatDesign& design, Structure structure,
-                         const HardwareWidths& widths, std::optional<int> max_feedback_shift) {
+                         const HardwareWidths& widths, std::optional<int> max_feedback_shift,
+                         std::optional<int> max_frac_bits) {
   const FloatSections sections = float_sections(design, structure);
   QuantizedFilter filter;
   filter.structure = structure;
@@ -196,14 +219,25 @@ QuantizedFilter quantize(const FloatDesign& design, Structure structure,
   filter.leftover_gain = sections.leftover_gain;
 
   const int c = widths.coef_bits;
-  int max_shift = std::max(0, kDspAPortBits - widths.data_bits);
-  if (max_feedback_shift) max_shift = std::clamp(*max_feedback_shift, 0, max_shift);
-  const int feedback_fa = feedback_frac_bits(sections, design, structure, c);
-  const std::vector<std::vector<double>> numerators = compensated_numerators(sections, feedback_fa);
-  const FracBits bits = numerator_frac_bits(numerators, feedback_fa, c, max_shift);
-  filter.coef_frac_bits = bits.fa;
-  filter.b_frac_bits = bits.fb;
-  filter.feedback_shift = bits.fb - bits.fa;
+  filter.split_shift = c - 1;
+  int shift = std::max(0, kDspAPortBits - widths.data_bits);
+  if (max_feedback_shift) shift = std::clamp(*max_feedback_shift, 0, shift);
+  filter.feedback_shift = shift;
+  // The error word (F bits) rides the same A port as the history: F <= D + s.
+  int frac_cap = widths.data_bits + shift;
+  if (max_frac_bits) frac_cap = std::min(frac_cap, *max_frac_bits);
+
+  // F from the raw coefficients, then from the compensated numerators (compensation moves them by
+  // parts per million, which can cross a word boundary).
+  const std::vector<double> feedback = feedback_coefficients(sections);
+  int f = frac_bits_for(feedback, all_values(sections.b), design, structure, c, frac_cap);
+  std::vector<std::vector<double>> numerators = compensated_numerators(sections, f, c - 1);
+  const int settled = frac_bits_for(feedback, all_values(numerators), design, structure, c, f);
+  if (settled != f) {
+    f = settled;
+    numerators = compensated_numerators(sections, f, c - 1);
+  }
+  filter.coef_frac_bits = f;
 
   const int needed = accumulator_bits_needed(round_sections(sections, numerators, filter));
   filter.acc_bits_needed = needed;

@@ -34,6 +34,7 @@ inline constexpr int kMinAccBits = 16, kMaxAccBits = 64;
 struct QuantizedSection {
   std::vector<double> b;
   std::vector<double> a;
+  std::vector<std::int64_t> error_feedback;  // E[1..M]
 };
 
 struct QuantizedFilter {
@@ -41,22 +42,24 @@ struct QuantizedFilter {
   HardwareWidths widths;
   int section_count = 0;
   int section_order = 0;            // 2 for sos, N for df1
-  int coef_frac_bits = 0;           // Fa: feedback coefficients
-  int b_frac_bits = 0;              // Fb: feed-forward coefficients
-  int feedback_shift = 0;           // Fb - Fa
-  int acc_bits_needed = 0;          // worst case over the sections, sign included
-  std::vector<std::int64_t> words;  // ROM order: per section B[0..M], then -A[1..M]
+  int coef_frac_bits = 0;           // F: fractional bits of the hi words
+  int feedback_shift = 0;           // s: extra fractional bits of every signal inside the core
+  int split_shift = 0;              // L = C - 1: the lo words' shift
+  int acc_bits_needed = 0;          // worst case over the sections and phases, sign included
+  // ROM order, per section: W_b[0..M], W_a[1..M], H_b[0..M], H_a[1..M], E[1..M].
+  std::vector<std::int64_t> words;
   std::vector<QuantizedSection> sections;
   double leftover_gain = 1.0;  // applied by the host
 };
 
-// Picks the fractional bits (docs/fixed_point.md) and rounds every coefficient to nearest.
-// `max_feedback_shift` caps s = Fb - Fa below the A port's own limit (25 - D): channels that share
-// one core need one format. Throws DesignRejected when the direct form's denominator or the
-// numerator needs more integer bits than the word has, or the accumulator could overflow.
+// Picks the format (docs/fixed_point.md) and splits every coefficient into hi and lo words.
+// `max_feedback_shift` caps s below the A port's own limit (25 - D) and `max_frac_bits` caps F:
+// channels that share one core need one format. Throws DesignRejected when a coefficient needs
+// more integer bits than the word has, or the accumulator could overflow.
 QuantizedFilter quantize(const FloatDesign& design, Structure structure,
                          const HardwareWidths& widths,
-                         std::optional<int> max_feedback_shift = std::nullopt);
+                         std::optional<int> max_feedback_shift = std::nullopt,
+                         std::optional<int> max_frac_bits = std::nullopt);
 
 // Frequency response of the float design (from its zeros, poles and gain) and of the
 // quantised filter (from its sections, times its leftover gain); omega in rad/sample.

@@ -112,18 +112,12 @@ void plot_response(const std::filesystem::path& dir, const std::string& coeffs_p
     std::complex<double> h_quant(design.leftover_gain, 0.0);
     const int m = core.section_order;
     for (int k = 0; k < core.num_sections; ++k) {
-      std::complex<double> num(0.0, 0.0), den(1.0, 0.0), power(1.0, 0.0);
+      std::complex<double> num(0.0, 0.0), den(0.0, 0.0), power(1.0, 0.0);
+      const std::vector<double> b = core.b_values(k);
+      const std::vector<double> a = core.a_values(k);
       for (int j = 0; j <= m; ++j) {
-        const double b = std::ldexp(
-            static_cast<double>(core.rom[static_cast<std::size_t>(k * core.terms() + j)]),
-            -core.num_frac_bits);
-        num += b * power;
-        if (j > 0) {
-          const double neg_a = std::ldexp(
-              static_cast<double>(core.rom[static_cast<std::size_t>(k * core.terms() + m + j)]),
-              -core.coef_frac_bits);
-          den -= neg_a * power;
-        }
+        num += b[static_cast<std::size_t>(j)] * power;
+        den += a[static_cast<std::size_t>(j)] * power;
         power *= w;
       }
       h_quant *= num / den;

@@ -8,11 +8,11 @@ package iir_coeffs_pkg;
   localparam int SectionOrder = 2;  // order of every section
   localparam int SampleWidth = 16;  // samples are Q1.(SampleWidth-1)
   localparam int CoefWidth = 18;  // ROM word width
-  localparam int CoefFracBits = 16;  // fractional bits of the negated a words
-  localparam int NumFracBits = 20;  // fractional bits of the b words
-  localparam int FeedbackShift = 4;  // NumFracBits - CoefFracBits: extra fraction bits of y_ext
+  localparam int CoefFracBits = 16;  // F: fractional bits of the hi words
+  localparam int FeedbackShift = 9;  // s: extra fraction bits of every signal in the core
+  localparam int SplitShift = 17;  // L = CoefWidth - 1: lo words weigh 2^-L of a hi word
   localparam int AccWidth = 48;  // accumulator width
-  localparam int RomDepth = 20;  // NumSections * (2 * SectionOrder + 1)
+  localparam int RomDepth = 48;  // NumSections * (5 * SectionOrder + 2)
   localparam int NumChannels = 1;  // independent channels sharing the MAC
   localparam int CoefSets = 1;  // coefficient sets in the ROM: 1 (shared) or NumChannels
   localparam int ChannelWidth = 1;  // max(1, clog2(NumChannels))
