@@ -58,11 +58,12 @@ Mismatch compare(const CoreConfig& config, int samples, std::uint64_t seed) {
   int saturated = 0;
   for (int n = 0; n < samples; ++n) {
     const int channel = static_cast<int>(rng() % static_cast<std::uint64_t>(config.num_channels));
-    // Full-scale squares (half period 1000 stream words, some 300 per channel) on 4000 words of
-    // every 10000, uniform words elsewhere.
+    // Full-scale squares (half period some 250 words per channel) on 40% of the stream, uniform
+    // words elsewhere.
+    const int half = 250 * config.num_channels;
     const std::int32_t x =
-        n % 10'000 < 4'000
-            ? ((n / 1'000) % 2 ? hi : lo)
+        n % (10 * half) < 4 * half
+            ? ((n / half) % 2 ? hi : lo)
             : static_cast<std::int32_t>(lo + static_cast<std::int64_t>(rng() % span));
     const StepResult want = core.step(x, channel);
     const SampleResult got = bank.step(x, channel);
@@ -76,6 +77,28 @@ Mismatch compare(const CoreConfig& config, int samples, std::uint64_t seed) {
   EXPECT_GT(saturated, 0) << "the stimulus never clipped";
   return {};
 }
+
+class IirSampleBankSet : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(IirSampleBankSet, MatchesTheCycleModelOnAMillionSamples) {
+  const CoreConfig config = load_core_config(std::filesystem::path(FLANGE_SOURCE_DIR) /
+                                             "tests/data/coeffs" / GetParam() / "filter.json");
+  ASSERT_GT(config.num_channels, 1);
+  const Mismatch m = compare(config, 1'000'000, 20261122);
+  EXPECT_EQ(m.n, -1) << "first at " << m.n << ": " << m.what
+                     << "\nreproduce: ctest --test-dir build -R 'IirSampleBankSet.*" << GetParam()
+                     << "' --output-on-failure";
+  IirSampleBank bank(config);
+  for (int c = 0; c < config.num_channels; ++c) {
+    EXPECT_FALSE(bank.channel(c).accumulator_can_wrap()) << "channel " << c;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CheckedIn, IirSampleBankSet,
+                         ::testing::Values("loco_ch4", "loco_ch12", "loco_sets3"),
+                         [](const ::testing::TestParamInfo<std::string>& set) {
+                           return set.param;
+                         });
 
 TEST(IirSampleBank, OwnSetPerChannelMatchesTheCycleModel) {
   const CoreConfig config = three_sets();
