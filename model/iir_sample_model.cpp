@@ -175,7 +175,8 @@ IirSampleModel::IirSampleModel(CoreConfig config, SampleKernel kernel)
   kernel_ = kernel;
 
   const int m = config_.section_order;
-  if (kernel_ == SampleKernel::kMerged) {
+  // The merged words also serve the vector kernel's short blocks (all kernels share the state).
+  if (kernel_ != SampleKernel::kTwoPhase && merged_fits_int64(config_)) {
     const int split = config_.split_shift();
     for (int k = 0; k < config_.num_sections; ++k) {
       const std::int64_t* w = config_.rom.data() + k * config_.terms();
@@ -346,9 +347,16 @@ void IirSampleModel::run_vector(const std::int32_t* in, SampleResult* out, std::
 }
 
 void IirSampleModel::run(const std::int32_t* in, SampleResult* out, std::size_t n) {
+  // Below this many samples the vector kernel's pipeline fill and drain (2(K-1) steps each) cost
+  // more than the scalar merged kernel, which continues from the same state bit for bit.
+  constexpr std::size_t kVectorMinBlock = 64;
   switch (kernel_) {
     case SampleKernel::kVector:
-      run_vector(in, out, n);
+      if (n < kVectorMinBlock && merged_run_ != nullptr) {
+        (this->*merged_run_)(in, out, n);
+      } else {
+        run_vector(in, out, n);
+      }
       break;
     case SampleKernel::kMerged:
       (this->*merged_run_)(in, out, n);

@@ -381,6 +381,37 @@ TEST(IirSampleModel, StepAndFilterAndResetAgree) {
   }
 }
 
+// Blocks of random length, 1 to 300: the vector kernel hands blocks under 64 samples to the merged
+// one, so the two alternate on one state; every kernel must still match IirCore on every sample.
+TEST(IirSampleModel, BlocksOfAnyLengthMatchIirCore) {
+  for (const testing::NamedConfig& named : testing::hand_made_configs()) {
+    const CoreConfig& config = named.config;
+    const std::vector<std::int32_t> head = [&] {
+      const std::vector<std::int32_t> x = million_sample_stimulus(config.sample_width, 9).samples;
+      // Impulses and steps first, then the full-scale squares (from 200'000 on), then random.
+      std::vector<std::int32_t> picked(x.begin(), x.begin() + 60'000);
+      picked.insert(picked.end(), x.begin() + 200'000, x.begin() + 260'000);
+      picked.insert(picked.end(), x.end() - 60'000, x.end());
+      return picked;
+    }();
+    const std::vector<SampleResult> want = core_results(config, head);
+    for (const SampleKernel kernel : available_kernels(config)) {
+      IirSampleModel fast(config, kernel);
+      std::mt19937_64 rng(17);
+      std::vector<SampleResult> got(head.size());
+      for (std::size_t start = 0; start < head.size();) {
+        const std::size_t n = std::min<std::size_t>(1 + rng() % 300, head.size() - start);
+        fast.filter(std::span(head).subspan(start, n), std::span(got).subspan(start, n));
+        start += n;
+      }
+      for (std::size_t i = 0; i < head.size(); ++i) {
+        ASSERT_EQ(got[i], want[i])
+            << named.name << ", " << to_string(kernel) << " kernel, sample " << i;
+      }
+    }
+  }
+}
+
 TEST(IirSampleModel, AutoTakesTheFastestExactKernel) {
   for (const testing::NamedConfig& named : testing::hand_made_configs()) {
     const IirSampleModel model(named.config);
