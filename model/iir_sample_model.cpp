@@ -373,7 +373,13 @@ SampleResult IirSampleModel::step(std::int32_t sample) {
                                         sample_min_, sample_max_));
   }
   SampleResult result;
-  run(&sample, &result, 1);
+  // One sample: the general merged kernel works on the members in place; a fixed one would copy
+  // them in and out, the vector one fill and drain its pipeline.
+  if (!merged_.empty()) {
+    run_merged<0, 0>(&sample, &result, 1);
+  } else {
+    run(&sample, &result, 1);
+  }
   return result;
 }
 
