@@ -83,7 +83,9 @@ Stimulus million_sample_stimulus(int sample_width, std::uint64_t seed) {
   }
   s.begin("random held levels");
   while (s.samples.size() < 500'000) {
-    s.hold(uniform_word(rng, lo, hi), static_cast<std::size_t>(1 + rng() % 2000));
+    // One draw after the other: the order of a call's argument evaluations is unspecified.
+    const std::int32_t level = uniform_word(rng, lo, hi);
+    s.hold(level, static_cast<std::size_t>(1 + rng() % 2000));
   }
   s.begin("uniform random over the full range");
   while (s.samples.size() < 1'100'000) s.hold(uniform_word(rng, lo, hi), 1);
