@@ -58,7 +58,7 @@ constexpr int kMacsAllowance = 4;              // the aim: cycles per sample <= 
 constexpr double kSineLevelDbfs = -1.0;        // the SNR test signal's level
 constexpr std::size_t kSnrSamples = 40000;     // per SNR measurement
 constexpr std::size_t kSnrSettle = 15000;      // outputs left out while the filter settles
-constexpr double kSnrAimDb = 80.0;             // for measurement_sos with 16-bit samples
+constexpr double kSnrBelowFloorAimDb = 8.0;  // issue 12: every set within 8 dB of floor A
 constexpr std::size_t kCosimBlock = 2000;      // samples per co-simulation run
 constexpr std::size_t kRtlTimingOutputs = 64;  // outputs the RTL timing is measured over
 
@@ -151,25 +151,24 @@ class DoubleSection {
   std::vector<double> b_, a_, x_, y_;  // histories newest first
 };
 
-// Sum over sections k of ||(1/A_k) prod_{j>k} B_j/A_j||_2^2, with the quantised words: the output
-// noise power per unit of rounding-noise variance, if every section adds an independent uniform
-// rounding error at its output, before its own feedback (docs/fixed_point.md: the rounded output
-// is the section's feedback state).
+// The output noise power, in output LSB^2 / 12, of the contract's roundings as independent white
+// errors (docs/fixed_point.md): section k's y_ext rounding (2^-s output LSB) through its error
+// feedback (1 - E_k)/A_k and the sections after it, plus sample_o's own rounding.
 double section_noise_gain(const CoreConfig& config) {
-  const int m = config.section_order;
-  std::vector<std::vector<double>> b(config.num_sections), a(config.num_sections);
+  std::vector<std::vector<double>> b, a, shaping;
   for (int k = 0; k < config.num_sections; ++k) {
-    const auto word = [&](int i) {
-      return static_cast<double>(config.rom[static_cast<std::size_t>(k * config.terms() + i)]);
-    };
-    for (int i = 0; i <= m; ++i) b[k].push_back(std::ldexp(word(i), -config.num_frac_bits));
-    a[k].push_back(1.0);
-    for (int j = 1; j <= m; ++j) a[k].push_back(-std::ldexp(word(m + j), -config.coef_frac_bits));
+    b.push_back(config.b_values(k));
+    a.push_back(config.a_values(k));
+    shaping.push_back({1.0});
+    for (std::int64_t e : config.error_feedback(k)) shaping.back().push_back(-static_cast<double>(e));
   }
-  double gain = 0.0;
+  double gain = 1.0;  // sample_o's rounding
+  const double ext_lsb_squared = std::ldexp(1.0, -2 * config.feedback_shift);
   for (int k = 0; k < config.num_sections; ++k) {
-    std::vector<DoubleSection> path{DoubleSection({1.0}, a[k])};
-    for (int j = k + 1; j < config.num_sections; ++j) path.emplace_back(b[j], a[j]);
+    std::vector<DoubleSection> path{DoubleSection(shaping[static_cast<std::size_t>(k)], a[static_cast<std::size_t>(k)])};
+    for (int j = k + 1; j < config.num_sections; ++j) {
+      path.emplace_back(b[static_cast<std::size_t>(j)], a[static_cast<std::size_t>(j)]);
+    }
     double energy = 0.0, recent = 0.0;
     for (std::size_t n = 0;; ++n) {
       double h = n == 0 ? 1.0 : 0.0;
@@ -182,7 +181,7 @@ double section_noise_gain(const CoreConfig& config) {
         recent = 0.0;
       }
     }
-    gain += energy;
+    gain += ext_lsb_squared * energy;
   }
   return gain;
 }
@@ -378,16 +377,15 @@ void print_tables(const std::vector<CoreSet>& sets, const std::vector<SetFigures
                "double (the arithmetic alone); coef SNR: -20 log10 |H_q - H| / |H| at the sine's "
                "frequency (the coefficients alone)\n";
   std::cout << "floor A: 6.02 D + 1.76 dB - 1 dB, one uniform rounding at the output; floor B: "
-               "each section's rounding through 1/A_k and the sections after it\n";
+               "the contract's roundings as white noise (each y_ext through (1 - E_k)/A_k and the "
+               "sections after it, plus the output's); aim: SNR >= floor A - 8 dB\n";
   std::cout << fmt::format("{:<16} {:>3} {:>9} {:>10} {:>9} {:>9} {:>9} {:>10} {:>8}\n", "set", "D",
                            "SNR dB", "arith SNR", "coef SNR", "floor A", "floor B", "SNR - B",
                            "aim");
   for (std::size_t i = 0; i < sets.size(); ++i) {
     const SnrFigures& snr = figures[i].snr;
-    std::string aim = "-";
-    if (sets[i].name == "measurement_sos") {
-      aim = fmt::format(">= {:g}: {}", kSnrAimDb, snr.snr_db >= kSnrAimDb ? "met" : "NOT met");
-    }
+    const std::string aim =
+        snr.snr_db >= snr.output_rounding_floor_db - kSnrBelowFloorAimDb ? "met" : "NOT met";
     std::cout << fmt::format(
         "{:<16} {:>3} {:>9.1f} {:>10.1f} {:>9.1f} {:>9.1f} {:>9.1f} {:>+10.1f} {:>8}\n",
         sets[i].name, sets[i].config.sample_width, snr.snr_db, snr.arith_snr_db, snr.coef_snr_db,

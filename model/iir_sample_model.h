@@ -3,28 +3,40 @@
 // accepted sample, with no clock cycles, pins or events, for callers that want only the samples.
 //
 // It computes exactly what IirCore::step returns in StepResult::sample and ::saturated, under the
-// fixed-point contract of model/iir_core.h (docs/fixed_point.md): the same ROM words, the P-bit
-// accumulator preloaded with 2^(Fa-1) and wrapping like the DSP48E1 P register, y_ext = acc >>> Fa
-// clipped to D + s bits and fed back as it is, y rounded half up from y_ext and clipped to D bits,
-// the per-sample saturation flag set by either clip in any section. Only the bookkeeping differs.
-// In place of the load registers each section keeps M partial sums (transposed direct form): z[j]
-// holds, modulo 2^64, every product of the samples so far that belongs to the sum of sample n+1+j
-// (z[0] with the rounding constant). The products are the core's, b[i] times the D-bit operand
-// (line k rounded to D bits is, bit for bit, section k - 1's clipped output) and -a[j] times
-// y_ext; a sum modulo 2^64 depends neither on the order nor on the grouping of its terms, so
-// b[0] x[n] + z[0] has the low P bits of the core's accumulator, wrapped or not. The cycle model
-// stays the specification of the RTL; tests/model/iir_sample_model_test.cpp proves the two equal
-// on every checked-in set, on random legal configurations and on an accumulator that wraps.
+// fixed-point contract v2 of model/iir_core.h (docs/fixed_point.md): per section, with u its
+// (D+s)-bit input, w its y_ext history and e its rounding-error history,
+//   lo    = 2^(F-1+L) + sum W_b[i] u[n-i] + sum W_a[j] w[n-j]              (P bits, wraps)
+//   acc   = (lo >>> L) + sum H_b[i] u[n-i] + sum H_a[j] w[n-j] + sum E[j] e[n-j]  (P bits, wraps)
+//   y_ext = clip_(D+s)(acc >>> F),  e[n] = (acc mod 2^F) - 2^(F-1),
+// section 0's u is x << s, section k's is section k-1's y_ext, and the output is the last y_ext
+// rounded half up to D bits and clipped; the per-sample saturation flag is set by any clip.
+// The state is the core's load registers (every line's last M words, errors included), so every
+// kernel below continues from where any other stopped. Only the bookkeeping differs from IirCore:
+// - kTwoPhase: the contract as written, lo and acc wrapped to P bits; for any legal config.
+// - kMerged: when no legal input can make lo or acc wrap, floor((X + 2^L H) / 2^L) =
+//   floor(X / 2^L) + H merges the phases into one sum with c = H 2^L + W (and E 2^L for the
+//   error terms): acc = (2^(F-1+L) + sum c_b u + sum c_a w + sum E 2^L e) >>> L. Used when every
+//   such sum also fits int64 (|c| < 2^34 and |u| < 2^24 for the generator's biquads).
+// - kVector (x86-64 with AVX-512F/VL only, chosen at run time): kMerged's preconditions, every
+//   operand and ROM word within 32 bits and at most 8 sections; the sections run side by side in
+//   SIMD lanes, section k on sample n - k, with the two phases in 32 x 32 -> 64-bit products.
+// tests/model/iir_sample_model_test.cpp proves every kernel equal to IirCore on every checked-in
+// set, on random legal configurations and on an accumulator that wraps.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "filter_json.h"
 
 namespace flange::model {
+
+namespace vector {
+struct Plan;
+}
 
 // One output sample: what IirCore::step reports in StepResult::sample and ::saturated.
 struct SampleResult {
@@ -33,19 +45,28 @@ struct SampleResult {
   bool operator==(const SampleResult&) const = default;
 };
 
+// How IirSampleModel computes (see the header comment); kAuto takes the fastest that applies.
+enum class SampleKernel { kAuto, kTwoPhase, kMerged, kVector };
+const char* to_string(SampleKernel kernel);
+
 class IirSampleModel {
  public:
-  // Throws std::invalid_argument when `config` breaks docs/fixed_point.md (as IirCore does) or has
-  // more than one channel (IirSampleBank serves those, one IirSampleModel per channel).
-  explicit IirSampleModel(CoreConfig config);
+  // Throws std::invalid_argument when `config` breaks docs/fixed_point.md (as IirCore does), has
+  // more than one channel (IirSampleBank serves those, one IirSampleModel per channel), or when
+  // `kernel` is not kAuto and cannot compute `config` exactly on this machine (kernel_available).
+  explicit IirSampleModel(CoreConfig config, SampleKernel kernel = SampleKernel::kAuto);
+
+  // Whether `kernel` can compute `config` (a valid one-channel config) exactly on this machine.
+  static bool kernel_available(const CoreConfig& config, SampleKernel kernel);
 
   const CoreConfig& config() const { return config_; }
+  SampleKernel kernel() const { return kernel_; }  // never kAuto
   std::int32_t sample_min() const { return sample_min_; }
   std::int32_t sample_max() const { return sample_max_; }
-  // Whether some legal input could make a section's P-bit sum wrap: |sum| bounded by
-  // 2^(Fa-1) + sum|B| 2^(D-1) + sum|A| 2^(D-1+s) does not fit P - 1 bits. The generator refuses
-  // such sets (docs/fixed_point.md), so for generated sets this is false and the wrap, which
-  // would change nothing, is skipped; hand-made configurations still get it.
+  // Whether some legal input could make a section's lo or acc wrap at P bits: with every u and w
+  // within D + s bits and every e within F bits, the sum of the terms' largest magnitudes does not
+  // fit P - 1 bits. The generator refuses such sets (docs/fixed_point.md), so for generated sets
+  // this is false; hand-made configurations that wrap run the two-phase kernel.
   bool accumulator_can_wrap() const { return can_wrap_; }
 
   // One sample, as IirCore::step. `sample` must lie in [sample_min(), sample_max()]
@@ -61,22 +82,26 @@ class IirSampleModel {
   void reset();
 
  private:
-  using Kernel = void (IirSampleModel::*)(const std::int32_t* in, SampleResult* out, std::size_t n);
-  // kOrder, kSections: M and K when known at compile time (the words and partial sums then live
-  // in local arrays the compiler keeps in registers), 0 to read them from config_.
-  template <int kOrder, int kSections, bool kWrap>
+  struct Limits;  // what the kernels share, filled from config_
+  template <int kOrder, int kSections>
+  void run_merged(const std::int32_t* in, SampleResult* out, std::size_t n);
+  void run_two_phase(const std::int32_t* in, SampleResult* out, std::size_t n);
+  void run_vector(const std::int32_t* in, SampleResult* out, std::size_t n);
   void run(const std::int32_t* in, SampleResult* out, std::size_t n);
-  template <bool kWrap>
-  static Kernel biquad_kernel(int sections);
-  Kernel choose_kernel() const;
 
   CoreConfig config_;
+  SampleKernel kernel_;
   std::int32_t sample_min_, sample_max_;
   std::int64_t ext_min_, ext_max_;
   bool can_wrap_;
-  Kernel kernel_;
-  // Per section, M partial sums z[0..M-1] (two's complement bits modulo 2^64).
-  std::vector<std::uint64_t> partial_;
+  using MergedRun = void (IirSampleModel::*)(const std::int32_t*, SampleResult*, std::size_t);
+  MergedRun merged_run_ = nullptr;
+  // Per section the merged words c_b[0..M], c_a[1..M], E[1..M] 2^L (kMerged), 3M + 1 of them.
+  std::vector<std::int64_t> merged_;
+  std::shared_ptr<const vector::Plan> plan_;  // kVector: the words in lanes
+  // The load registers without the newest word: line l (0..K: inputs and y_ext, K+1..2K: errors)
+  // holds its words of ages 1..M at [l M, l M + M).
+  std::vector<std::int64_t> history_;
 };
 
 }  // namespace flange::model

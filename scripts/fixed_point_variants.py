@@ -1,26 +1,23 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 # Independent, standard-library-only re-implementation of the fixed-point contract
-# (docs/fixed_point.md) next to two variants, for the comparison in docs/core.md:
-#   contract: extended-precision feedback. Each section keeps its own output history y_ext with
-#             s = FeedbackShift more fractional bits than a sample (D + s <= 25 bits, the DSP48E1
-#             A port): y_ext = sat_(D+s)((acc + 2^(Fa-1)) >>> Fa). The section's D-bit output (the
-#             next section's input, the filter output) is rounded again from y_ext:
-#             y = sat_D((y_ext + 2^(s-1)) >>> s) (double rounding).
-#   direct:   the same history, but y rounded directly from the accumulator,
-#             y = sat_D((acc + 2^(Fb-1)) >>> Fb) (what double rounding saves a second adder on).
-#   narrow:   the contract before extended precision: every section's output is rounded to D bits
-#             and that D-bit value, shifted left by s, is the feedback history.
+# (docs/fixed_point.md, contract v2) next to two variants that each drop one of its parts, for the
+# comparison in docs/core.md:
+#   contract:  split coefficients (hi + lo words, F + L fractional bits), the lo phase shifted by
+#              L, every signal between sections in D + s bits, error feedback through E.
+#   no_error:  the same without error feedback (E = 0): the rounding noise passes 1/A(z).
+#   one_word:  no lo words (each coefficient rounded to its hi word's F fractional bits), with
+#              error feedback: what the 18-bit words alone allow.
 # For each filter.json: SNR and largest error against the float SOS for a passband sine (fc / 4)
 # at 0.5 and 0.05 of full scale, and the zero-input tail after a half-scale negative step.
 #   python3 scripts/fixed_point_variants.py coeffs/vehicle_sos/filter.json [...]
-# The "contract" rows must equal the C++ model (tests/model/iir_core_fidelity_test.cpp prints the
-# same SNR figures, and IirCoreModel.* checks hand-computed cases of the same arithmetic).
+# The "contract" rows must equal the C++ model (IirCoreModel.* checks hand-computed cases of the
+# same arithmetic; tests/coeffs/precision_grid_test.cpp and bench/core_bench measure the SNR).
 import json
 import math
 import sys
 
-VARIANTS = ("contract", "direct", "narrow")
+VARIANTS = ("contract", "no_error", "one_word")
 
 
 def load(path):
@@ -35,39 +32,54 @@ def clamp(v, lo, hi):
 
 def run(q, xs, variant):
     w = q["words"]
-    fb = q["b_frac_bits"]
-    fa = q["coef_frac_bits"]
+    f = q["coef_frac_bits"]
     s = q["feedback_shift"]
+    split = q["split_shift"]
     k_sections = q["sections"]
     m = q["section_order"]
-    terms = 2 * m + 1
+    terms = 5 * m + 2
     d_bits = q["data_bits"]
     lo, hi = -(2 ** (d_bits - 1)), 2 ** (d_bits - 1) - 1
     ext_lo, ext_hi = lo * 2**s, (hi + 1) * 2**s - 1
     half_s = 2 ** (s - 1) if s > 0 else 0
-    xh = [[0] * (m + 1) for _ in range(k_sections)]  # D-bit inputs per section, newest first
-    yh = [[0] * (m + 1) for _ in range(k_sections)]  # feedback operand per section (D + s bits)
+    uh = [[0] * (m + 1) for _ in range(k_sections)]  # section inputs, D + s bits, newest first
+    yh = [[0] * (m + 1) for _ in range(k_sections)]  # section outputs y_ext
+    eh = [[0] * (m + 1) for _ in range(k_sections)]  # rounding errors
     out = []
     for x in xs:
-        v = x
+        v = x * 2**s
         for k in range(k_sections):
-            xh[k].insert(0, xh[k].pop())
-            xh[k][0] = v
-            yh[k].insert(0, yh[k].pop())
-            raw = sum(w[k * terms + i] * xh[k][i] for i in range(m + 1))
-            raw += sum(w[k * terms + m + j] * yh[k][j] for j in range(1, m + 1))
-            if variant == "narrow":
-                y = clamp((raw + 2 ** (fb - 1)) >> fb, lo, hi)
-                yh[k][0] = y * 2**s
-            else:
-                y_ext = clamp((raw + 2 ** (fa - 1)) >> fa, ext_lo, ext_hi)
-                yh[k][0] = y_ext
-                if variant == "contract":
-                    y = clamp((y_ext + half_s) >> s, lo, hi)
-                else:
-                    y = clamp((raw + 2 ** (fb - 1)) >> fb, lo, hi)
-            v = y
-        out.append(v)
+            base = k * terms
+            lo_b = w[base : base + m + 1]
+            lo_a = [0] + w[base + m + 1 : base + 2 * m + 1]
+            hi_b = w[base + 2 * m + 1 : base + 3 * m + 2]
+            hi_a = [0] + w[base + 3 * m + 2 : base + 4 * m + 2]
+            err = [0] + w[base + 4 * m + 2 : base + 5 * m + 2]
+            if variant == "no_error":
+                err = [0] * (m + 1)
+            if variant == "one_word":
+                # Each coefficient rounded half away from zero to F fractional bits.
+                def one(h, l):
+                    c = h * 2**split + l
+                    r = (abs(c) + 2 ** (split - 1)) >> split
+                    return r if c >= 0 else -r
+                hi_b = [one(h, l) for h, l in zip(hi_b, lo_b)]
+                hi_a = [one(h, l) for h, l in zip(hi_a, lo_a)]
+                lo_b, lo_a = [0] * (m + 1), [0] * (m + 1)
+            for hist in (uh[k], yh[k], eh[k]):
+                hist.insert(0, hist.pop())
+            uh[k][0] = v
+            acc_lo = 2 ** (f - 1 + split)
+            acc_lo += sum(lo_b[i] * uh[k][i] for i in range(m + 1))
+            acc_lo += sum(lo_a[j] * yh[k][j] for j in range(1, m + 1))
+            acc = acc_lo >> split
+            acc += sum(hi_b[i] * uh[k][i] for i in range(m + 1))
+            acc += sum(hi_a[j] * yh[k][j] + err[j] * eh[k][j] for j in range(1, m + 1))
+            y_ext = clamp(acc >> f, ext_lo, ext_hi)
+            yh[k][0] = y_ext
+            eh[k][0] = (acc % 2**f) - 2 ** (f - 1)
+            v = y_ext
+        out.append(clamp((v + half_s) >> s, lo, hi))
     return out
 
 

@@ -33,6 +33,7 @@ DesignRecord generate_channel_designs(const DesignRequest& request,
   }
   if (!request.order) throw BadArgument("--channel-fc: give the order of every channel (--order)");
   std::vector<DesignRecord> records = design_each(request, channel_fc_hz, generated_by);
+  const std::vector<DesignRecord> alone = records;
 
   // One format for all: the smallest feedback shift and fraction any channel takes on its own.
   int shift = records.front().quantized.feedback_shift;
@@ -62,11 +63,17 @@ DesignRecord generate_channel_designs(const DesignRequest& request,
     combined.quantized.acc_bits_needed =
         std::max(combined.quantized.acc_bits_needed, r.quantized.acc_bits_needed);
     if (combined.analysis.rejection.empty() && !r.analysis.rejection.empty()) {
-      combined.analysis.rejection = fmt::format(
-          "channel {} (fc = {:.6g} Hz), in the channels' shared format (Q.{}, feedback shift "
-          "{}): {}",
-          c, channel_fc_hz[static_cast<std::size_t>(c)], frac, shift,
-          r.analysis.rejection);
+      // Say the shared format is to blame only when the channel passes in its own.
+      const bool shared_format_broke_it =
+          alone[static_cast<std::size_t>(c)].analysis.rejection.empty();
+      combined.analysis.rejection =
+          shared_format_broke_it
+              ? fmt::format("channel {} (fc = {:.6g} Hz), in the channels' shared format (Q.{}, "
+                            "feedback shift {}): {}",
+                            c, channel_fc_hz[static_cast<std::size_t>(c)], frac, shift,
+                            r.analysis.rejection)
+              : fmt::format("channel {} (fc = {:.6g} Hz): {}", c,
+                            channel_fc_hz[static_cast<std::size_t>(c)], r.analysis.rejection);
     }
     combined.channel_sets.push_back({r.design, r.quantized, r.analysis});
   }

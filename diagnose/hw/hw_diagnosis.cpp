@@ -58,6 +58,7 @@ model::SectionCoefficients printed_coefficients(const HwRequest& o,
   model::SectionCoefficients s;
   for (double v : b) s.b.push_back(v / a[0]);
   for (double v : a) s.a.push_back(v / a[0]);
+  s.e = model::error_feedback_words(s.a);
   return s;
 }
 
@@ -94,6 +95,7 @@ HwDiagnosis diagnose_printed(const HwRequest& o, const HwInputs& in) {
   model::SectionCoefficients exact;
   for (double v : in.design.b) exact.b.push_back(v / a0);
   for (double v : in.design.a) exact.a.push_back(v / a0);
+  exact.e = model::error_feedback_words(exact.a);
 
   GapProblem p;
   p.format = model::staged_format(in.config);

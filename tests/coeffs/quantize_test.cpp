@@ -43,16 +43,33 @@ TEST(Quantize, ReferenceSpecDesignsMeetTheirSpecAsSos) {
   }
 }
 
-TEST(Quantize, BiquadsGetSixteenFractionalBitsForTheDenominator) {
+TEST(Quantize, BiquadsGetSixteenFractionalBitsAndTheWholeAPort) {
   const DesignRecord record =
       generate_design(order_and_cutoff(7, 0.259, 100.0, Structure::kSos), "test");
   EXPECT_EQ(record.quantized.coef_frac_bits, 16);  // |a1| < 2 -> Q2.16 in 18 bits
+  EXPECT_EQ(record.quantized.split_shift, 17);     // C - 1: the DSP48E1's P >>> 17
   EXPECT_EQ(record.quantized.section_count, 4);
-  EXPECT_EQ(record.quantized.words.size(), 20u);
-  EXPECT_EQ(record.quantized.feedback_shift,
-            record.quantized.b_frac_bits - record.quantized.coef_frac_bits);
-  EXPECT_GE(record.quantized.feedback_shift, 0);
-  EXPECT_LE(record.quantized.feedback_shift, kDspAPortBits - 16);
+  EXPECT_EQ(record.quantized.words.size(), 48u);  // 4 x (5 M + 2)
+  EXPECT_EQ(record.quantized.feedback_shift, kDspAPortBits - 16);
+}
+
+TEST(Quantize, ErrorFeedbackIsTheRoundedDenominator) {
+  // Narrow biquads have -a near (2, -1): E = (2, -1), so the rounding noise passes
+  // (1 - z^-1)^2 / A(z), which cancels the double pole near z = 1.
+  const DesignRecord record =
+      generate_design(order_and_cutoff(7, 0.259, 100.0, Structure::kSos), "test");
+  const QuantizedFilter& q = record.quantized;
+  for (int k = 0; k < q.section_count; ++k) {
+    const QuantizedSection& section = q.sections[static_cast<std::size_t>(k)];
+    ASSERT_EQ(section.error_feedback.size(), 2u);
+    for (int j = 1; j <= 2; ++j) {
+      EXPECT_EQ(section.error_feedback[static_cast<std::size_t>(j - 1)],
+                std::llround(-section.a[static_cast<std::size_t>(j)]));
+      EXPECT_EQ(q.words[static_cast<std::size_t>(k * 12 + 4 * 2 + 1 + j)],
+                section.error_feedback[static_cast<std::size_t>(j - 1)]);
+    }
+  }
+  EXPECT_EQ(q.sections[1].error_feedback, (std::vector<std::int64_t>{2, -1}));
 }
 
 TEST(Quantize, WordsFitTheCoefficientWidthAndReproduceTheSectionValues) {
@@ -65,21 +82,25 @@ TEST(Quantize, WordsFitTheCoefficientWidthAndReproduceTheSectionValues) {
       EXPECT_LT(word, limit);
       EXPECT_GE(word, -limit);
     }
-    // ROM order: b[0..M] then -a[1..M] per section.
+    // ROM order per section: lo b[0..M], lo -a[1..M], hi b[0..M], hi -a[1..M], E[1..M]; a
+    // coefficient is (hi + lo 2^-L) 2^-F with lo in [0, 2^L).
     const int m = q.section_order;
+    const int terms = 5 * m + 2;
+    const auto value = [&](int k, int hi, int lo) {
+      const std::int64_t lo_word = q.words[static_cast<std::size_t>(k * terms + lo)];
+      EXPECT_GE(lo_word, 0);
+      EXPECT_LT(lo_word, std::int64_t{1} << q.split_shift);
+      return std::ldexp(static_cast<double>(q.words[static_cast<std::size_t>(k * terms + hi)]),
+                        -q.coef_frac_bits) +
+             std::ldexp(static_cast<double>(lo_word), -(q.coef_frac_bits + q.split_shift));
+    };
     for (int k = 0; k < q.section_count; ++k) {
       const auto& section = q.sections[static_cast<std::size_t>(k)];
       for (int i = 0; i <= m; ++i) {
-        EXPECT_EQ(
-            std::ldexp(static_cast<double>(q.words[static_cast<std::size_t>(k * (2 * m + 1) + i)]),
-                       -q.b_frac_bits),
-            section.b[static_cast<std::size_t>(i)]);
+        EXPECT_EQ(value(k, 2 * m + 1 + i, i), section.b[static_cast<std::size_t>(i)]);
       }
       for (int j = 1; j <= m; ++j) {
-        EXPECT_EQ(-std::ldexp(static_cast<double>(
-                                  q.words[static_cast<std::size_t>(k * (2 * m + 1) + m + j)]),
-                              -q.coef_frac_bits),
-                  section.a[static_cast<std::size_t>(j)]);
+        EXPECT_EQ(-value(k, 3 * m + 1 + j, m + j), section.a[static_cast<std::size_t>(j)]);
       }
     }
   }
@@ -121,15 +142,17 @@ TEST(Quantize, HighOrderDirectFormWithoutFractionBitsIsRefused) {
 }
 
 TEST(Quantize, NumeratorWithoutFractionBitsIsRefused) {
-  // A numerator 2^20 times too large leaves no fractional bit in 18-bit words: Fb and with it Fa
-  // would drop below 1, and the accumulator's rounding constant 2^(Fa-1) would not exist.
+  // A numerator 2^20 times too large leaves no fractional bit in 18-bit words: F would drop below
+  // 1, and the accumulator's rounding constant 2^(F-1) would not exist.
   FloatDesign design = design_butterworth(2, 1.0, 6.0, std::nullopt);
   for (double& b : design.b) b = std::ldexp(b, 20);
   try {
     quantize(design, Structure::kDf1, HardwareWidths{});
     FAIL() << "accepted";
   } catch (const DesignRejected& e) {
-    EXPECT_NE(std::string(e.what()).find("the numerator needs"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("integer bits for its largest coefficient (325166)"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -168,7 +191,8 @@ TEST(Quantize, WithoutASpecTheResponseMustFollowTheFloatDesign) {
   const DesignRecord record = generate_design(request, "test");
   ASSERT_TRUE(record.analysis.passband_deviation_db.has_value());
   EXPECT_GT(*record.analysis.passband_deviation_db, 0.5);
-  EXPECT_NE(record.analysis.rejection.find("departs from the float response"), std::string::npos)
+  // The DC gain is judged first; 4-bit words miss both.
+  EXPECT_NE(record.analysis.rejection.find("DC gain error"), std::string::npos)
       << record.analysis.rejection;
 }
 

@@ -20,16 +20,19 @@ TEST(FilterJson, LoadsTheCheckedInSets) {
   const CoreConfig vehicle = load_core_config(set_json("vehicle_sos"));
   EXPECT_EQ(vehicle.num_sections, 4);
   EXPECT_EQ(vehicle.section_order, 2);
-  EXPECT_EQ(vehicle.num_frac_bits, 23);
-  EXPECT_EQ(vehicle.feedback_shift, 7);
-  ASSERT_EQ(vehicle.rom.size(), 20u);
-  EXPECT_EQ(vehicle.rom[0], 33856);
-  EXPECT_EQ(vehicle.rom[9], -63642);
+  EXPECT_EQ(vehicle.coef_frac_bits, 16);
+  EXPECT_EQ(vehicle.feedback_shift, 9);
+  EXPECT_EQ(vehicle.split_shift(), 17);
+  ASSERT_EQ(vehicle.rom.size(), 48u);
+  EXPECT_EQ(vehicle.rom[0], 62660);   // section 0's lo word of b0
+  EXPECT_EQ(vehicle.rom[8], 64478);   // its hi word of -a1 (a first-order section)
+  EXPECT_EQ(vehicle.rom[10], 1);      // E1 = round(-a1)
+  EXPECT_EQ(vehicle.error_feedback(1), (std::vector<std::int64_t>{2, -1}));
 
   const CoreConfig df1 = load_core_config(set_json("measurement_df1"));
   EXPECT_EQ(df1.num_sections, 1);
   EXPECT_EQ(df1.section_order, 5);
-  EXPECT_EQ(df1.rom_depth(), 11);
+  EXPECT_EQ(df1.rom_depth(), 27);
 
   const FloatDesign design = load_float_design(set_json("measurement_sos"));
   EXPECT_DOUBLE_EQ(design.fs_hz, 6.0);
@@ -117,8 +120,8 @@ TEST_F(BadFilterJson, MissingQuantized) {
 }
 
 TEST_F(BadFilterJson, WrongType) {
-  good_["quantized"]["b_frac_bits"] = "23";
-  expect_names(error_of(good_), "'quantized.b_frac_bits'");
+  good_["quantized"]["split_shift"] = "17";
+  expect_names(error_of(good_), "'quantized.split_shift'");
 }
 
 TEST_F(BadFilterJson, WordOutOfRange) {
@@ -132,8 +135,11 @@ TEST_F(BadFilterJson, TooFewWords) {
 }
 
 TEST_F(BadFilterJson, InconsistentShift) {
-  good_["quantized"]["feedback_shift"] = 6;
-  expect_names(error_of(good_), "'quantized.feedback_shift'");
+  good_["quantized"]["split_shift"] = 16;  // must be coef_bits - 1
+  expect_names(error_of(good_), "'quantized.split_shift'");
+  good_["quantized"]["split_shift"] = 17;
+  good_["quantized"]["coef_frac_bits"] = 26;  // the error word would not fit D + s = 25 bits
+  expect_names(error_of(good_), "'quantized.coef_frac_bits'");
 }
 
 TEST_F(BadFilterJson, RomDepthDisagrees) {

@@ -17,7 +17,7 @@ namespace flange::model {
 namespace {
 
 // Three channels of one first-order section (8-bit samples and words), a set per channel:
-// channel c's numerator is B0 = 8 + 8c, so the channels' outputs differ.
+// channel c's numerator is b0 = (4 + 4c) / 8, so the channels' outputs differ.
 CoreConfig three_channels() {
   CoreConfig c;
   c.name = "three";
@@ -26,13 +26,12 @@ CoreConfig three_channels() {
   c.section_order = 1;
   c.sample_width = 8;
   c.coef_width = 8;
-  c.num_frac_bits = 4;
   c.coef_frac_bits = 3;
   c.feedback_shift = 1;
   c.acc_width = 32;
   c.num_channels = 3;
   c.coef_sets = 3;
-  c.rom = {8, 4, 4, 16, 4, 4, 24, 4, 4};
+  c.rom = {0, 0, 0, 4, 2, 4, 0, 0, 0, 0, 8, 2, 4, 0, 0, 0, 0, 12, 2, 4, 1};
   return c;
 }
 
@@ -80,7 +79,7 @@ TEST(IirCoreChannels, ChannelBeyondTheCountIsDroppedAndFlagged) {
   const Pins p = core.pins(2);
   EXPECT_TRUE(p.channel_error);
   EXPECT_FALSE(p.busy) << "nothing was accepted";
-  EXPECT_EQ(core.lr(0), std::vector<std::int64_t>(4, 0));
+  EXPECT_EQ(core.lr(0), std::vector<std::int64_t>(6, 0));  // 2K + 1 lines of M + 1 words
   EXPECT_THROW(core.strobe(3, 10, 4), std::out_of_range) << "does not fit channel_i";
   EXPECT_THROW(core.step(10, 3), std::out_of_range);
   core.clear_flags(4);
@@ -112,14 +111,15 @@ TEST(IirCoreChannels, ConfigRulesForChannels) {
   EXPECT_THROW(validate_core_config(c), std::invalid_argument) << "1 or num_channels sets";
   c = three_channels();
   c.rom.pop_back();
-  EXPECT_THROW(validate_core_config(c), std::invalid_argument) << "3 sets of 3 words";
+  EXPECT_THROW(validate_core_config(c), std::invalid_argument) << "3 sets of 7 words";
   c = three_channels();
   c.num_channels = kMaxCoreChannels + 1;
   c.coef_sets = 1;
-  c.rom.resize(3);
+  c.rom.resize(7);
   EXPECT_THROW(validate_core_config(c), std::invalid_argument);
   EXPECT_THROW(three_channels().channel_config(3), std::out_of_range);
-  EXPECT_EQ(three_channels().channel_config(1).rom, (std::vector<std::int64_t>{16, 4, 4}));
+  EXPECT_EQ(three_channels().channel_config(1).rom,
+            (std::vector<std::int64_t>{0, 0, 0, 8, 2, 4, 0}));
 }
 
 TEST(IirCoreChannels, LoaderReadsChannelsAndRejectsBadCounts) {

@@ -133,21 +133,24 @@ TEST(IirCoreFidelity, ZeroInputTailWithinTheRoundingBound) {
 }
 
 TEST(IirCoreFidelity, LimitCycleBoundOfAFirstOrderSection) {
-  // y_ext = round(0.5 y_ext1) with s = 2: 1/A has l1 norm 2, so the feedback rounding (1/8 LSB)
-  // circulates to at most 1/4 LSB (the dead band of y_ext in
-  // IirCoreModel.ExtendedFeedbackAndDeadBand), plus 1/2 LSB for the output rounding: 0.75 LSB.
+  // y_ext = round(0.5 y_ext1) with s = 2 and no error feedback: 1/A has l1 norm 2, so the
+  // feedback rounding (1/8 LSB) circulates to at most 1/4 LSB (the dead band of y_ext in
+  // IirCoreModel.ExtendedFeedbackAndDeadBand), the lo phase's truncation (below 2^-(s+F) =
+  // 1/16 LSB) to 1/8 LSB, plus 1/2 LSB for the output rounding: 0.875 LSB.
   CoreConfig c;
   c.filter_order = 1;
   c.num_sections = 1;
   c.section_order = 1;
   c.sample_width = 8;
   c.coef_width = 8;
-  c.num_frac_bits = 4;
   c.coef_frac_bits = 2;
   c.feedback_shift = 2;
   c.acc_width = 32;
-  c.rom = {16, 0, 2};
-  EXPECT_NEAR(limit_cycle_bound_lsb(c), 0.75, 1e-9);
+  c.rom = {0, 0, 0, 4, 0, 2, 0};
+  EXPECT_NEAR(limit_cycle_bound_lsb(c), 0.875, 1e-9);
+  // With E1 = 1 the rounding passes (1 - z^-1) / (1 - 0.5 z^-1), whose l1 norm is also 2.
+  c.rom.back() = 1;
+  EXPECT_NEAR(limit_cycle_bound_lsb(c), 0.875, 1e-9);
 }
 
 TEST(IirCoreFidelity, FindsPeriodAndDeadBand) {

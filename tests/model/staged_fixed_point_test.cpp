@@ -95,11 +95,10 @@ TEST(StagedFixedPoint, AccumulatorWrapFollowsIirCore) {
   config.sample_width = 16;
   config.coef_width = 18;
   config.coef_frac_bits = 16;
-  config.num_frac_bits = 16;
   config.feedback_shift = 0;
   config.acc_width = 34;  // D + s + C; the worst case needs 35 bits
-  // b = 1.99, 1.99, 1.99; -a = 1.6, -0.8 (poles at radius 0.89).
-  config.rom = {130417, 130417, 130417, 104858, -52429};
+  // b = 1.99, 1.99, 1.99; -a = 1.6, -0.8 (poles at radius 0.89), hi words only; E = (2, -1).
+  config.rom = {0, 0, 0, 0, 0, 130417, 130417, 130417, 104858, -52429, 2, -1};
   FloatDesign design;
   design.name = config.name;
   design.fs_hz = 1.0;
@@ -167,8 +166,8 @@ TEST(StagedFixedPoint, EveryEffectAloneChangesTheOutput) {
 
 TEST(StagedFixedPoint, MismatchedShapesAreRefused) {
   const StagedFormat format;
-  std::vector<SectionCoefficients> one = {{{1.0, 0.5}, {1.0, -0.5}}};
-  std::vector<SectionCoefficients> other = {{{1.0, 0.5, 0.1}, {1.0, -0.5, 0.0}}};
+  std::vector<SectionCoefficients> one = {{{1.0, 0.5}, {1.0, -0.5}, {0}}};
+  std::vector<SectionCoefficients> other = {{{1.0, 0.5, 0.1}, {1.0, -0.5, 0.0}, {0, 0}}};
   EXPECT_THROW(StagedFixedPoint(format, one, other, EffectSet::none()), std::invalid_argument);
   EXPECT_THROW(StagedFixedPoint(format, one, {}, EffectSet::none()), std::invalid_argument);
 }
