@@ -151,7 +151,9 @@ TEST_F(BoardChannelsStream, TheCheckerSeesAWrongModel) {
   host::SerialPort port(pty.slave_name(), kBaud);
   host::BoardLink link(port, {kBaud, 2000, 3});
   model::CoreConfig wrong = model::load_core_config(kBoardFilterJson);
-  wrong.rom.at(0) += 0x4000;  // b[0] of section 0: 0.0040 -> 0.0060
+  // The hi word of section 0's b[0] (a lo word weighs 2^-L of it: too little to show): 131 more,
+  // 131 x 2^-F = 0.0020 with F = 16, so b[0]: 0.0040 -> 0.0060.
+  wrong.rom.at(static_cast<std::size_t>(wrong.hi_b(0))) += 131;
   host::ReplyChecker checker(wrong);
   host::StreamCounts counts;
   host::stream_channels(link, channel_words(3, 4), &checker, counts);
