@@ -14,7 +14,9 @@ struct SynthOptions {
   std::string source_dir;                         // repository root (default: compiled-in)
   std::string out = "docs/synthesis.md";
   std::string yosys = "yosys";
-  double max_core_lut_percent = 1.0;  // the core may use at most this share of the LUTs
+  // The core may use at most this share of the LUTs: 1.5 % since contract v2 (split coefficients
+  // and error feedback took measurement_sos from 140 to 214 LUT6 sites, 0.67 to 1.03 %).
+  double max_core_lut_percent = 1.5;
 };
 
 CLI::App* add_synth_command(CLI::App& app, SynthOptions& options);
