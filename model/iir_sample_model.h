@@ -17,9 +17,10 @@
 //   floor(X / 2^L) + H merges the phases into one sum with c = H 2^L + W (and E 2^L for the
 //   error terms): acc = (2^(F-1+L) + sum c_b u + sum c_a w + sum E 2^L e) >>> L. Used when every
 //   such sum also fits int64 (|c| < 2^34 and |u| < 2^24 for the generator's biquads).
-// - kVector (x86-64 with AVX-512F/VL only, chosen at run time): kMerged's preconditions, every
-//   operand and ROM word within 32 bits and at most 8 sections; the sections run side by side in
-//   SIMD lanes, section k on sample n - k, with the two phases in 32 x 32 -> 64-bit products.
+// - kVector (x86-64 with AVX-512F, VL and IFMA only, chosen at run time): kMerged's
+//   preconditions, every operand and ROM word within 32 bits and at most 8 sections; the sections
+//   run side by side in SIMD lanes, section k on sample n - 2k (model/iir_sample_vector.h), the
+//   older terms by exact 52-bit multiply-adds and the newest by 32 x 32 -> 64-bit products.
 // tests/model/iir_sample_model_test.cpp proves every kernel equal to IirCore on every checked-in
 // set, on random legal configurations and on an accumulator that wraps.
 #pragma once

@@ -15,7 +15,7 @@ namespace flange::tb::board {
 // takes the request's last byte in the middle of its stop bit, and the host's has the reply's last
 // byte in the middle of its stop bit, so a host that sends the next request at once starts it 129
 // bit times after the previous one, plus the board's turnaround: 13 cycles of receiver, frame check
-// and encoder, and the core's latency (24 cycles for the vehicle filter, docs/core.md).
+// and encoder, and the core's latency (52 cycles for the vehicle filter, docs/core.md).
 inline constexpr int kLinkBitsPerExchange = 129;
 inline constexpr int kBoardTurnaroundCycles = 13;
 

@@ -25,22 +25,22 @@ struct SetCase {
   std::int32_t max_tail_lsb;  // largest |y| once the zero-input tail has settled
 };
 
-// Floors about 1 dB below the figures measured with extended-precision feedback (docs/core.md;
-// the runs are deterministic), and the zero-input tails as measured. The vehicle filter
-// (fc / fs = 0.0026) is the hard case: its 40 dB is the ceiling its 18-bit coefficients set
-// (the quantised words in double arithmetic give 39.9 dB against the float design), and each
-// biquad keeps a dead band of 2^-(s+1) / (1 + a1 + a2) ~ 15 LSB in y_ext (13 LSB at the output
-// here). Fed back at 16 bits, it had 9.7 dB, -3.8 dB and a 5435 LSB dead band.
+// Floors about 1 dB below the figures measured under contract v2 (docs/core.md; the runs are
+// deterministic), and the zero-input tails as measured: every set decays to 0. The half-scale
+// sine sits at the output rounding's floor (97.1 - 5 = 92.1 dB) for every set; the vehicle
+// filter's random figure is lower because a 0.26 Hz low-pass passes little of white noise. Under
+// the first contract the vehicle filter had 40.0 / 33.3 dB and a 13 LSB dead band (its 18-bit
+// coefficients), and fed back at 16 bits before that 9.7 dB, -3.8 dB and 5435 LSB.
 const std::vector<SetCase> kSets = {
-    {"coeffs/measurement_sos", 87.0, 78.0, 0},
-    {"coeffs/measurement_df1", 68.0, 62.0, 0},
-    {"coeffs/vehicle_sos", 39.0, 32.0, 13},
-    {"tests/data/coeffs/sos_order1", 89.0, 81.0, 0},
-    {"tests/data/coeffs/sos_order2", 89.0, 80.0, 0},
-    {"tests/data/coeffs/sos_order3", 88.0, 78.0, 0},
-    {"tests/data/coeffs/sos_order4", 85.0, 76.0, 0},
-    {"tests/data/coeffs/sos_order8", 86.0, 76.0, 0},
-    {"tests/data/coeffs/sos_order12", 81.0, 71.0, 1},
+    {"coeffs/measurement_sos", 91.0, 82.0, 0},
+    {"coeffs/measurement_df1", 91.0, 82.0, 0},
+    {"coeffs/vehicle_sos", 91.0, 66.5, 0},
+    {"tests/data/coeffs/sos_order1", 90.0, 82.5, 0},
+    {"tests/data/coeffs/sos_order2", 90.5, 81.5, 0},
+    {"tests/data/coeffs/sos_order3", 91.0, 81.5, 0},
+    {"tests/data/coeffs/sos_order4", 91.0, 81.5, 0},
+    {"tests/data/coeffs/sos_order8", 90.5, 81.5, 0},
+    {"tests/data/coeffs/sos_order12", 92.5, 81.0, 0},
 };
 
 std::filesystem::path json_of(const SetCase& c) {
@@ -90,14 +90,15 @@ TEST(IirCoreFidelity, PassbandSineSnr) {
 }
 
 TEST(IirCoreFidelity, MeasurementSosSineAtMinusOneDbfs) {
-  // The aim set for the measurement filter: at least 80 dB SNR for a -1 dBFS passband sine.
+  // The first aim for the measurement filter was 80 dB for a -1 dBFS passband sine; contract v2
+  // reaches the output rounding floor (97.1 dB), so the check is 96 dB.
   const SetCase& c = kSets.front();
   ASSERT_EQ(c.folder, "coeffs/measurement_sos");
   const double level = std::pow(10.0, -1.0 / 20.0);
   const double snr = core_snr_db(c, passband_sine(load_float_design(json_of(c)), level), 15000);
-  std::cout << fmt::format("[snr] {}: passband sine (fc/4, -1 dBFS) {:.1f} dB (threshold 80)\n",
+  std::cout << fmt::format("[snr] {}: passband sine (fc/4, -1 dBFS) {:.1f} dB (threshold 96)\n",
                            c.folder, snr);
-  EXPECT_GE(snr, 80.0);
+  EXPECT_GE(snr, 96.0);
 }
 
 TEST(IirCoreFidelity, UniformRandomSnr) {
