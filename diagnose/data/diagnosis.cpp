@@ -563,12 +563,12 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
   for (std::size_t i = 0; i < names.size(); ++i) candidates.push_back(pending[i].get());
   // The free shapes of the classes not yet modelled: least squares on the gap left, no refit.
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
-  for (const std::string& name : free_shape_effects()) {
-    if (!selection.free_shapes || class_taken(name, selection)) continue;
+  for (const FreeShapeFamily& family : free_shape_families()) {
+    if (!selection.free_shapes || class_taken(family.effect, selection)) continue;
     Candidate c;
-    c.free_shape = fit_free_shape(name, parts.calibration, parts.cal_replay, parts.heldout,
-                                  parts.ho_replay, cal_gap, parts.cal_replay.v_min_v());
-    c.fit.settings = sim::make_effect_settings(name, {}, "diagnose free shape");
+    c.free_shape = fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
+                                  parts.ho_replay, cal_gap);
+    c.fit.settings = sim::make_effect_settings(family.effect, {}, "diagnose free shape");
     c.fit.rms_v = rms_of(minus(cal_gap, c.free_shape->cal_voltage_v));
     c.with = modelled;
     c.heldout_error = minus(selection.current_error, c.free_shape->heldout_voltage_v);
@@ -650,7 +650,7 @@ EffectFinding finding_for_pick(const Candidate& chosen, const Pick& pick,
                                const std::vector<double>& current_error) {
   EffectFinding finding;
   finding.name = chosen.fit.settings.name;
-  finding.params = chosen.free_shape ? chosen.free_shape->params() : chosen.fit.settings.params;
+  finding.params = chosen.free_shape ? chosen.free_shape->params : chosen.fit.settings.params;
   finding.heldout_rms_before = rms_of(current_error);
   finding.heldout_rms_after = rms_of(chosen.heldout_error);
   finding.shrink_pct =
@@ -664,7 +664,7 @@ EffectFinding finding_for_pick(const Candidate& chosen, const Pick& pick,
     finding.evidence += "; a tone: the mains line aliased by the sampling";
   }
   if (chosen.free_shape) {
-    finding.evidence += "; not the library's formula: " + chosen.free_shape->describe();
+    finding.evidence += "; not the library's formula: " + chosen.free_shape->description;
   }
   return finding;
 }
@@ -720,9 +720,8 @@ void take_pick(std::vector<Candidate> candidates, const Pick& pick, Selection& s
 // difference-based noise estimate; estimate it again from what the picks leave, kept if lower.
 void reestimate_noise(const Parts& parts, Selection& selection, DiagnosisResult& result) {
   DiagnosisDetail& detail = result.detail;
-  WhiteNoise left =
-      estimate_white_noise(cal_target(parts, selection),
-                           parts.cal_replay.voltage(selection.modelled), detail.adc_grid);
+  WhiteNoise left = estimate_white_noise(
+      cal_target(parts, selection), parts.cal_replay.voltage(selection.modelled), detail.adc_grid);
   if (left.effective_std_v < selection.sigma) {
     left.source = "re-estimated on the calibration gap the selected effects leave: " + left.source;
     selection.sigma = std::max(left.effective_std_v, 1e-9);
@@ -1083,8 +1082,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   if (clock.kind != "unknown") result.diagnosis.heldout_starts_after_s = clock.age_offset_s;
   const Parts parts{calibration, heldout, TwinReplay(calibration, options.twin.nominal),
                     TwinReplay(heldout, options.twin.nominal, clock.age_offset_s)};
-  Selection selection = select_in_two_passes(parts, options,
-                                             replay_nominal_twin(parts, options, result), result);
+  Selection selection =
+      select_in_two_passes(parts, options, replay_nominal_twin(parts, options, result), result);
   measure_inclusion(selection);
   // Noise-type effects, recognised from their signatures in both parts.
   recognise_quantization(parts, result.detail.white_noise, selection);

@@ -5,14 +5,34 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace flange::diagnose {
 namespace {
 
-// Knots: enough to bend twice over a heating cycle or the voltage range, few enough that each
-// holds thousands of samples of a bench session.
+constexpr double kSecondsPerDay = 86400.0;
+constexpr double kSecondsPerHour = 3600.0;
+
+// Knots of a curve of temperature or voltage: enough to bend twice over a heating cycle or the
+// voltage range, few enough that each holds thousands of samples of a bench session.
 constexpr int kKnots = 7;
+// Knots of a curve of clearance: 0.5 mm apart over the thesis's 1-9 mm, so a ripple of 2 mm
+// period still shows.
+constexpr int kClearanceKnots = 17;
+
+// Knots of a trend in the sensor's age over the calibration session (held at its last value
+// after it: a step or a settling that has ended).
+constexpr int kAgeKnots = 5;
+
+// Relative ridge: each column's own sum of squares times this is added to the normal equations.
+// Small enough to leave a well-posed fit as it is (1e-3 of a column's weight), large enough that
+// two nearly equal columns (a 60 s and a 240 s lag on a slow heating) cannot carry huge opposite
+// values that cancel on one session and not on the other.
+constexpr double kRidge = 1e-3;
 
 // Piecewise-linear "hat" functions on evenly spread knots: hat k is 1 at knot k, 0 at the others;
 // beyond the ends the end hats stay at 1 (the curve is held constant there).
@@ -27,53 +47,362 @@ struct Hats {
   }
 };
 
-Hats hats_over(const std::vector<double>& x) {
+Hats hats_over(const std::vector<double>& x, int count) {
   const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
   Hats hats;
-  for (int k = 0; k < kKnots; ++k) {
-    hats.knots.push_back(*lo + (*hi - *lo) * k / static_cast<double>(kKnots - 1));
+  for (int k = 0; k < count; ++k) {
+    hats.knots.push_back(*lo + (*hi - *lo) * k / static_cast<double>(count - 1));
   }
   return hats;
 }
 
-// The family's columns at every sample: which hats it uses and what multiplies them.
-struct Family {
-  std::string variable;
-  Hats hats;
-  std::vector<std::size_t> used;  // hat indices with a free value
+// One part of the data, as a family reads it.
+struct Part {
+  const RecordingSeries& series;
+  const TwinReplay& replay;
 };
 
-Family family_for(const std::string& effect, const RecordingSeries& calibration,
-                  const TwinReplay& cal_replay) {
-  if (effect == "nonlinearity") {
-    Family f{"V", hats_over(cal_replay.nominal_voltage()), {}};
-    for (std::size_t k = 1; k + 1 < kKnots; ++k) f.used.push_back(k);  // 0 at both ends
-    return f;
+// A family's columns on a part, their names, and what its values say about the class.
+class Family {
+ public:
+  virtual ~Family() = default;
+  // Families with parameters the columns depend on (a skew's law) search them here first.
+  virtual void search(const Part& /*calibration*/, const std::vector<double>& /*gap_v*/) {}
+  virtual std::vector<std::string> names() const = 0;
+  virtual Eigen::MatrixXd columns(const Part& part) const = 0;
+  // The class's summary parameters (a lag's mean delay, a skew's mean) beside the free values.
+  virtual void summarise(const Eigen::VectorXd& /*beta*/, const Part& /*calibration*/,
+                         std::map<std::string, double>& /*params*/) const {}
+  virtual std::string describe(const Eigen::VectorXd& beta) const = 0;
+};
+
+// The sensor's age at every sample, in days from the calibration part's start: the held-out
+// part's by its start time, or the same start when that is unknown (docs/diagnose.md, "Sessions
+// and time").
+std::vector<double> age_days(const Part& part) {
+  std::vector<double> age(part.series.size());
+  for (std::size_t i = 0; i < age.size(); ++i) {
+    age[i] = std::max(0.0, (part.series.t_s[i] + part.replay.age_offset_s()) / kSecondsPerDay);
   }
-  if (effect == "temp_offset_drift" || effect == "temp_gain_drift") {
-    Family f{effect == "temp_offset_drift" ? "T" : "(V - v_min) T", hats_over(calibration.temp_c),
-             {}};
-    for (std::size_t k = 0; k < kKnots; ++k) f.used.push_back(k);
-    return f;
-  }
-  throw std::invalid_argument("no free-shape family for effect '" + effect + "'");
+  return age;
 }
 
-// The design matrix of `family` on one part.
-Eigen::MatrixXd columns(const Family& family, const std::string& effect,
-                        const RecordingSeries& series, const TwinReplay& replay, double v_min_v) {
-  const std::size_t n = series.size();
-  Eigen::MatrixXd a(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(family.used.size()));
-  for (std::size_t i = 0; i < n; ++i) {
-    const double v = replay.nominal_voltage()[i];
-    const double x = effect == "nonlinearity" ? v : series.temp_c[i];
-    const double scale = effect == "temp_gain_drift" ? v - v_min_v : 1.0;
-    for (std::size_t j = 0; j < family.used.size(); ++j) {
-      a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
-          scale * family.hats.weight(family.used[j], x);
+Eigen::MatrixXd matrix(std::size_t rows, std::size_t cols) {
+  return Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+}
+
+// A curve of one variable through hats: temperature offset, temperature gain, nonlinearity.
+class CurveFamily : public Family {
+ public:
+  CurveFamily(std::string effect, std::string variable, const Part& calibration)
+      : effect_(std::move(effect)), variable_(std::move(variable)) {
+    if (variable_ == "V") {
+      hats_ = hats_over(calibration.replay.nominal_voltage(), kKnots);
+      for (std::size_t k = 1; k + 1 < kKnots; ++k) used_.push_back(k);  // 0 at both ends
+    } else if (variable_ == "d") {
+      hats_ = hats_over(calibration.series.clearance_mm, kClearanceKnots);
+      for (std::size_t k = 0; k < kClearanceKnots; ++k) used_.push_back(k);
+    } else if (variable_ == "age") {
+      hats_ = hats_over(age_days(calibration), kAgeKnots);
+      for (std::size_t k = 0; k < kAgeKnots; ++k) used_.push_back(k);
+    } else {
+      hats_ = hats_over(calibration.series.temp_c, kKnots);
+      for (std::size_t k = 0; k < kKnots; ++k) used_.push_back(k);
     }
   }
-  return a;
+
+  std::vector<std::string> names() const override {
+    std::vector<std::string> out;
+    const char* unit = variable_ == "V"     ? "v"
+                       : variable_ == "d"   ? "mm"
+                       : variable_ == "age" ? "d"
+                                            : "c";
+    for (std::size_t k : used_) {
+      out.push_back(fmt::format("{}_at_{:.4g}{}",
+                                effect_ == "temp_gain_drift" ? "gain_change" : "offset_v",
+                                hats_.knots[k], unit));
+    }
+    return out;
+  }
+
+  Eigen::MatrixXd columns(const Part& part) const override {
+    const std::size_t n = part.series.size();
+    Eigen::MatrixXd a = matrix(n, used_.size());
+    const std::vector<double> age = variable_ == "age" ? age_days(part) : std::vector<double>{};
+    for (std::size_t i = 0; i < n; ++i) {
+      const double v = part.replay.nominal_voltage()[i];
+      const double x = variable_ == "V"     ? v
+                       : variable_ == "d"   ? part.series.clearance_mm[i]
+                       : variable_ == "age" ? age[i]
+                                            : part.series.temp_c[i];
+      const double scale = effect_ == "temp_gain_drift" ? v - part.replay.v_min_v() : 1.0;
+      for (std::size_t j = 0; j < used_.size(); ++j) {
+        a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+            scale * hats_.weight(used_[j], x);
+      }
+    }
+    return a;
+  }
+
+  std::string describe(const Eigen::VectorXd& beta) const override {
+    const char* what = variable_ == "(V - v_min) T" ? "T (a gain about v_min)"
+                       : variable_ == "d"           ? "the clearance"
+                       : variable_ == "age"         ? "the sensor's age, settled after the session"
+                                                    : variable_.c_str();
+    const char* unit = variable_ == "V"     ? "V"
+                       : variable_ == "d"   ? "mm"
+                       : variable_ == "age" ? "days"
+                                            : "degC";
+    std::string text = fmt::format("a free curve of {} through", what);
+    for (std::size_t j = 0; j < used_.size(); ++j) {
+      text += fmt::format("{} {:.3g} at {:.4g} {}", j == 0 ? "" : ",",
+                          beta(static_cast<Eigen::Index>(j)), hats_.knots[used_[j]], unit);
+    }
+    return text;
+  }
+
+ private:
+  std::string effect_, variable_;
+  Hats hats_;
+  std::vector<std::size_t> used_;
+};
+
+// Linear interpolation of `x` at time `t_s`, held constant beyond the ends.
+double at_time(const std::vector<double>& t, const std::vector<double>& x, double t_s) {
+  if (t_s <= t.front()) return x.front();
+  if (t_s >= t.back()) return x.back();
+  const auto upper = std::upper_bound(t.begin(), t.end(), t_s);
+  const std::size_t j = static_cast<std::size_t>(upper - t.begin());
+  const double w = (t_s - t[j - 1]) / (t[j] - t[j - 1]);
+  return x[j - 1] + w * (x[j] - x[j - 1]);
+}
+
+// The coil's temperature off the recorded one, through mixes of lags and advances.
+class LagFamily : public Family {
+ public:
+  std::vector<std::string> names() const override {
+    std::vector<std::string> out;
+    for (double tau : kLags) out.push_back(fmt::format("weight_lag_{:g}s", tau));
+    for (double lead : kLeads) out.push_back(fmt::format("weight_advance_{:g}s", lead));
+    return out;
+  }
+
+  Eigen::MatrixXd columns(const Part& part) const override {
+    const std::vector<double>& t = part.series.t_s;
+    const std::vector<double>& temp = part.series.temp_c;
+    const std::vector<double>& dv_dt = part.replay.temperature_sensitivity_v_per_c();
+    const std::size_t n = t.size();
+    Eigen::MatrixXd a = matrix(n, kLags.size() + kLeads.size());
+    for (std::size_t k = 0; k < kLags.size(); ++k) {
+      // A first-order lag stepped by each sample's own interval (short against every tau).
+      double lagged = temp.empty() ? 0.0 : temp.front();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (i > 0) lagged += (temp[i] - lagged) * (1.0 - std::exp(-(t[i] - t[i - 1]) / kLags[k]));
+        a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) =
+            dv_dt[i] * (lagged - temp[i]);
+      }
+    }
+    for (std::size_t k = 0; k < kLeads.size(); ++k) {
+      const auto col = static_cast<Eigen::Index>(kLags.size() + k);
+      for (std::size_t i = 0; i < n; ++i) {
+        a(static_cast<Eigen::Index>(i), col) =
+            dv_dt[i] * (at_time(t, temp, t[i] + kLeads[k]) - temp[i]);
+      }
+    }
+    return a;
+  }
+
+  // The mix's mean delay: each lag delays by its tau, each advance by minus its lead. A positive
+  // one is the sensor lagging (the library's thermal_lag with tau_s > 0), a negative one the
+  // reading lagging (tau_s < 0).
+  void summarise(const Eigen::VectorXd& beta, const Part&,
+                 std::map<std::string, double>& params) const override {
+    params["tau_s"] = mean_delay(beta);
+  }
+
+  std::string describe(const Eigen::VectorXd& beta) const override {
+    std::string text = fmt::format(
+        "the coil's temperature off the recorded one by a free mix of lags and advances (mean "
+        "delay {:.0f} s; weights",
+        mean_delay(beta));
+    const std::vector<std::string> n = names();
+    for (std::size_t j = 0; j < n.size(); ++j) {
+      text += fmt::format("{} {} {:.2f}", j == 0 ? "" : ",", n[j].substr(7),
+                          beta(static_cast<Eigen::Index>(j)));
+    }
+    return text + ")";
+  }
+
+ private:
+  double mean_delay(const Eigen::VectorXd& beta) const {
+    double delay = 0.0;
+    for (std::size_t k = 0; k < kLags.size(); ++k) {
+      delay += beta(static_cast<Eigen::Index>(k)) * kLags[k];
+    }
+    for (std::size_t k = 0; k < kLeads.size(); ++k) {
+      delay -= beta(static_cast<Eigen::Index>(kLags.size() + k)) * kLeads[k];
+    }
+    return delay;
+  }
+  // Time constants and advances a factor of four apart, 30 s to 16 min: the bench's heating and
+  // cooling take tens of minutes, so shorter ones look alike and longer ones exceed a session.
+  static constexpr std::array<double, 3> kLags = {60.0, 240.0, 960.0};
+  static constexpr std::array<double, 3> kLeads = {30.0, 120.0, 480.0};
+};
+
+// The voltage channel sampled skew(t) = s0 + s1 t off: the twin's voltage at t + skew(t), by
+// linear interpolation (the library's channel_skew sign: negative when the voltage is late). The
+// law is searched on the calibration gap (a lattice, then a finer one about its best point), since
+// a skew of seconds across a move of the micrometer is far from a small perturbation; one column
+// with a free scale then carries it.
+class SkewFamily : public Family {
+ public:
+  void search(const Part& calibration, const std::vector<double>& gap_v) override {
+    double best = std::numeric_limits<double>::infinity();
+    const auto try_law = [&](double s0, double s1) {
+      const std::vector<double> shifted = shift(calibration, s0, s1);
+      double sse = 0.0;
+      for (std::size_t i = 0; i < gap_v.size(); ++i) {
+        const double e = gap_v[i] - shifted[i];
+        sse += e * e;
+      }
+      if (sse < best) {
+        best = sse;
+        s0_ = s0;
+        s1_ = s1;
+      }
+    };
+    for (double s0 = -kMaxSkewS; s0 <= kMaxSkewS + 1e-9; s0 += 1.0) {
+      for (double s1 = -kMaxDriftSPerHour; s1 <= kMaxDriftSPerHour + 1e-9; s1 += 1.0) {
+        try_law(s0, s1);
+      }
+    }
+    for (double step : {0.25, 0.05}) {
+      const double c0 = s0_, c1 = s1_;
+      for (int i = -4; i <= 4; ++i) {
+        for (int j = -4; j <= 4; ++j) try_law(c0 + i * step, c1 + j * step);
+      }
+    }
+  }
+
+  std::vector<std::string> names() const override { return {"scale"}; }
+
+  Eigen::MatrixXd columns(const Part& part) const override {
+    const std::vector<double> shifted = shift(part, s0_, s1_);
+    Eigen::MatrixXd a = matrix(shifted.size(), 1);
+    for (std::size_t i = 0; i < shifted.size(); ++i)
+      a(static_cast<Eigen::Index>(i), 0) = shifted[i];
+    return a;
+  }
+
+  void summarise(const Eigen::VectorXd&, const Part& calibration,
+                 std::map<std::string, double>& params) const override {
+    const std::vector<double>& t = calibration.series.t_s;
+    const double mid_h = t.empty() ? 0.0 : 0.5 * (t.front() + t.back()) / kSecondsPerHour;
+    params["skew_s_at_start"] = s0_;
+    params["skew_s_per_hour"] = s1_;
+    params["skew_s"] = s0_ + s1_ * mid_h;
+  }
+
+  std::string describe(const Eigen::VectorXd& beta) const override {
+    return fmt::format(
+        "the voltage channel {:.3g} s off in time at the session's start, drifting by {:.3g} s per "
+        "hour (negative: late; scale {:.2f})",
+        s0_, s1_, beta(0));
+  }
+
+ private:
+  // What sampling the twin's voltage skew(t) off adds to it.
+  static std::vector<double> shift(const Part& part, double s0, double s1) {
+    const std::vector<double>& t = part.series.t_s;
+    const std::vector<double>& v = part.replay.nominal_voltage();
+    std::vector<double> out(t.size());
+    std::size_t j = 0;  // the sample at or before the shifted instant: it only moves forward
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const double when = t[i] + s0 + s1 * t[i] / kSecondsPerHour;
+      while (j + 1 < t.size() && t[j + 1] <= when) ++j;
+      if (when <= t.front()) {
+        out[i] = v.front() - v[i];
+      } else if (j + 1 >= t.size()) {
+        out[i] = v.back() - v[i];
+      } else {
+        const double w = (when - t[j]) / (t[j + 1] - t[j]);
+        out[i] = v[j] + w * (v[j + 1] - v[j]) - v[i];
+      }
+    }
+    return out;
+  }
+  // The library's own skew range, and a drift that can double it within a bench session.
+  static constexpr double kMaxSkewS = 10.0;
+  static constexpr double kMaxDriftSPerHour = 10.0;
+  double s0_ = 0.0, s1_ = 0.0;
+};
+
+// A smooth trend in the sensor's age, in days from the calibration part's start (the held-out
+// part's age follows from the start times, or is taken as the same when they are unknown).
+class AgeingFamily : public Family {
+ public:
+  std::vector<std::string> names() const override {
+    std::vector<std::string> out = {"offset_v", "rate_v_per_day"};
+    for (double tau : kSettleDays) out.push_back(fmt::format("log_weight_v_{:g}d", tau));
+    return out;
+  }
+
+  Eigen::MatrixXd columns(const Part& part) const override {
+    const std::size_t n = part.series.size();
+    Eigen::MatrixXd a = matrix(n, 2 + kSettleDays.size());
+    const std::vector<double> ages = age_days(part);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double age = ages[i];
+      const auto row = static_cast<Eigen::Index>(i);
+      a(row, 0) = 1.0;
+      a(row, 1) = age;
+      for (std::size_t k = 0; k < kSettleDays.size(); ++k) {
+        a(row, static_cast<Eigen::Index>(2 + k)) = std::log1p(age / kSettleDays[k]);
+      }
+    }
+    return a;
+  }
+
+  std::string describe(const Eigen::VectorXd& beta) const override {
+    std::string text =
+        fmt::format("a free trend in the sensor's age: {:.3g} V + {:.3g} V/day", beta(0), beta(1));
+    for (std::size_t k = 0; k < kSettleDays.size(); ++k) {
+      text += fmt::format(" + {:.3g} V ln(1 + age / {:g} d)",
+                          beta(static_cast<Eigen::Index>(2 + k)), kSettleDays[k]);
+    }
+    return text;
+  }
+
+ private:
+  // A settling over about half an hour and over about five hours: a bench session's span.
+  static constexpr std::array<double, 2> kSettleDays = {0.02, 0.2};
+};
+
+std::unique_ptr<Family> make_family(const FreeShapeFamily& family, const Part& calibration) {
+  if (family.effect == "thermal_lag") return std::make_unique<LagFamily>();
+  if (family.effect == "channel_skew") return std::make_unique<SkewFamily>();
+  if (family.effect == "ageing_drift" && family.variable == "age, continuing") {
+    return std::make_unique<AgeingFamily>();
+  }
+  if (family.effect == "ageing_drift")
+    return std::make_unique<CurveFamily>(family.effect, "age", calibration);
+  if (family.effect == "temp_offset_drift" || family.effect == "temp_gain_drift" ||
+      family.effect == "nonlinearity") {
+    return std::make_unique<CurveFamily>(family.effect, family.variable, calibration);
+  }
+  throw std::invalid_argument("no free-shape family for effect '" + family.effect + "'");
+}
+
+// Least squares with the relative ridge; a column with no weight at all (a hat over a
+// temperature never visited) gets 0.
+Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& y) {
+  Eigen::MatrixXd normal = a.transpose() * a;
+  const double largest = normal.diagonal().maxCoeff();
+  for (Eigen::Index j = 0; j < normal.rows(); ++j) {
+    normal(j, j) += kRidge * normal(j, j) + 1e-12 * std::max(largest, 1e-300);
+  }
+  return normal.ldlt().solve(a.transpose() * y);
 }
 
 std::vector<double> as_vector(const Eigen::VectorXd& v) {
@@ -82,55 +411,39 @@ std::vector<double> as_vector(const Eigen::VectorXd& v) {
 
 }  // namespace
 
-const std::vector<std::string>& free_shape_effects() {
-  static const std::vector<std::string> effects = {"temp_gain_drift", "temp_offset_drift",
-                                                   "nonlinearity"};
-  return effects;
+const std::vector<FreeShapeFamily>& free_shape_families() {
+  static const std::vector<FreeShapeFamily> families = {{"temp_gain_drift", "(V - v_min) T"},
+                                                        {"temp_offset_drift", "T"},
+                                                        {"nonlinearity", "V"},
+                                                        {"nonlinearity", "d"},
+                                                        {"thermal_lag", "lagged T"},
+                                                        {"channel_skew", "t"},
+                                                        {"ageing_drift", "age, continuing"},
+                                                        {"ageing_drift", "age, settled"}};
+  return families;
 }
 
-FreeShapeFit fit_free_shape(const std::string& effect, const RecordingSeries& calibration,
+FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries& calibration,
                             const TwinReplay& cal_replay, const RecordingSeries& heldout,
-                            const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v,
-                            double v_min_v) {
-  const Family family = family_for(effect, calibration, cal_replay);
-  const Eigen::MatrixXd cal = columns(family, effect, calibration, cal_replay, v_min_v);
+                            const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v) {
+  const Part cal_part{calibration, cal_replay};
+  std::unique_ptr<Family> shape = make_family(family, cal_part);
+  shape->search(cal_part, cal_gap_v);
+  const Eigen::MatrixXd cal = shape->columns(cal_part);
   const Eigen::Map<const Eigen::VectorXd> gap(cal_gap_v.data(),
                                               static_cast<Eigen::Index>(cal_gap_v.size()));
-  // Column-pivoting QR: a hat with no samples under it (a temperature never visited) gets 0.
-  const Eigen::VectorXd beta = cal.colPivHouseholderQr().solve(gap);
+  const Eigen::VectorXd beta = ridge_solve(cal, gap);
   FreeShapeFit fit;
-  fit.effect = effect;
-  fit.variable = family.variable;
-  fit.knots = family.hats.knots;
-  fit.values.assign(family.hats.knots.size(), 0.0);
-  for (std::size_t j = 0; j < family.used.size(); ++j) {
-    fit.values[family.used[j]] = beta(static_cast<Eigen::Index>(j));
+  fit.family = family;
+  const std::vector<std::string> names = shape->names();
+  for (std::size_t j = 0; j < names.size(); ++j) {
+    fit.params[names[j]] = beta(static_cast<Eigen::Index>(j));
   }
+  shape->summarise(beta, cal_part, fit.params);
+  fit.description = shape->describe(beta);
   fit.cal_voltage_v = as_vector(cal * beta);
-  fit.heldout_voltage_v =
-      as_vector(columns(family, effect, heldout, ho_replay, v_min_v) * beta);
+  fit.heldout_voltage_v = as_vector(shape->columns(Part{heldout, ho_replay}) * beta);
   return fit;
-}
-
-std::map<std::string, double> FreeShapeFit::params() const {
-  std::map<std::string, double> p;
-  const bool in_volts = variable == "V";
-  for (std::size_t k = 0; k < knots.size(); ++k) {
-    p[fmt::format("{}_at_{:.4g}{}", effect == "temp_gain_drift" ? "gain_change" : "offset_v",
-                  knots[k], in_volts ? "v" : "c")] = values[k];
-  }
-  return p;
-}
-
-std::string FreeShapeFit::describe() const {
-  std::string text = fmt::format("a free curve of {} through", variable == "(V - v_min) T"
-                                                                   ? "T (a gain about v_min)"
-                                                                   : variable);
-  const char* unit = variable == "V" ? "V" : "degC";
-  for (std::size_t k = 0; k < knots.size(); ++k) {
-    text += fmt::format("{} {:.3g} at {:.4g} {}", k == 0 ? "" : ",", values[k], knots[k], unit);
-  }
-  return text;
 }
 
 }  // namespace flange::diagnose

@@ -1,14 +1,25 @@
 // SPDX-License-Identifier: MIT
-// Shape-free families for the classes whose effect adds to the voltage as a function of one
-// variable (issue 11 item 1; docs/diagnose.md, "Free shapes"): the library's formula is one
-// member of each, so a recording whose effect has another shape is still named by its class.
-//   nonlinearity       f(V): any continuous curve of the twin's voltage that is 0 at both ends of
-//                      the part's range (a departure from the straight line, as bow and s-curve)
-//   temp_offset_drift  g(T): any continuous curve of the recorded temperature
-//   temp_gain_drift    (V - v_min) h(T): a gain about the range's bottom, any curve of T
-// Each curve is piecewise linear between knots spread evenly over the calibration part's range
-// (held constant beyond it), fitted by least squares to the gap the modelled effects leave; the
-// same curve, evaluated on the held-out part's own variables, is what is scored there.
+// Shape-free families for the effect classes (issue 11 item 1; docs/diagnose.md, "Free shapes"):
+// the library's formula is one member of each, so a recording whose effect has another shape is
+// still named by its class. Every family is linear in its free values, fitted by least squares
+// (with a light ridge, so near-collinear columns cannot trade huge opposite values) to the gap
+// the modelled effects leave on the calibration part; the same values, evaluated on the held-out
+// part's own variables, are what is scored there.
+//   temp_gain_drift    (V - v_min) h(T): a gain about the range's bottom, h any curve of T
+//   temp_offset_drift  g(T): any curve of the recorded temperature
+//   nonlinearity       f(V): any curve of the twin's voltage, 0 at both ends of the part's range;
+//                      or f(d): any curve of the reference clearance (a function of clearance
+//                      alone, fine enough for a ripple of a few mm)
+//   thermal_lag        dV/dT (S T - T): the coil at a temperature S T other than the recorded T,
+//                      S any mix of first-order lags (the sensor lags: a mean delay tau_s > 0) and
+//                      of advances of the recorded temperature (the reading lags: tau_s < 0)
+//   channel_skew       s(t) dV/dt: the voltage channel off in time by a skew that may drift
+//                      linearly through the session
+//   ageing_drift       a trend in the sensor's age, carried across sessions by their start times:
+//                      continuing (offset, rate and two logarithmic settling terms), or settled
+//                      (any curve of age over the calibration session, held after it: a step)
+// Curves of one variable are piecewise linear between knots spread evenly over the calibration
+// part's range (held constant beyond it).
 #pragma once
 
 #include <map>
@@ -20,25 +31,26 @@
 
 namespace flange::diagnose {
 
-// The library effects that have a free-shape family, in catalogue order.
-const std::vector<std::string>& free_shape_effects();
-
-struct FreeShapeFit {
-  std::string effect;                 // the library effect (and so the class) it stands for
-  std::string variable;               // "V", "T" or "(V - v_min) T"
-  std::vector<double> knots;          // where the curve's values are given, in V or degC
-  std::vector<double> values;         // the curve at the knots: V (offset, nonlinearity), 1 (gain)
-  std::vector<double> cal_voltage_v;  // what it adds to the twin's voltage, calibration part
-  std::vector<double> heldout_voltage_v;  // ... and held-out part
-  std::map<std::string, double> params() const;  // the knot values, named by their knot
-  std::string describe() const;                  // "a curve of T: -0.012 V at 21 degC, ..."
+// One family: the library effect (and so the class) it stands for, and its variable.
+struct FreeShapeFamily {
+  std::string effect;
+  std::string variable;  // "T", "(V - v_min) T", "V", "d", "lagged T", "t", "age, continuing", ...
 };
 
-// Fits `effect`'s family to `cal_gap_v` (the calibration gap the modelled effects leave).
-// Throws std::invalid_argument for an effect without a family.
-FreeShapeFit fit_free_shape(const std::string& effect, const RecordingSeries& calibration,
+// Every family, in the order they are scored.
+const std::vector<FreeShapeFamily>& free_shape_families();
+
+struct FreeShapeFit {
+  FreeShapeFamily family;
+  std::map<std::string, double> params;   // the free values, named, plus the class's summary
+  std::string description;                // "a free curve of T through -0.012 at 21 degC, ..."
+  std::vector<double> cal_voltage_v;      // what it adds to the twin's voltage, calibration part
+  std::vector<double> heldout_voltage_v;  // ... and held-out part
+};
+
+// Fits `family` to `cal_gap_v` (the calibration gap the modelled effects leave).
+FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries& calibration,
                             const TwinReplay& cal_replay, const RecordingSeries& heldout,
-                            const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v,
-                            double v_min_v);
+                            const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v);
 
 }  // namespace flange::diagnose

@@ -67,6 +67,7 @@ TwinReplay::TwinReplay(const RecordingSeries& series, const sim::PolynomialSenso
   nominal_v_.resize(n);
   nominal_clip_.resize(n);
   sensitivity_.resize(n);
+  temperature_sensitivity_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const sim::VoltageSolution v = nominal_.voltage_for(series.clearance_mm[i], series.temp_c[i]);
     nominal_v_[i] = v.volts;
@@ -77,6 +78,11 @@ TwinReplay::TwinReplay(const RecordingSeries& series, const sim::PolynomialSenso
                           nominal_.clearance_mm(v.volts - h, series.temp_c[i])) /
                          (2.0 * h);
     sensitivity_[i] = dd_dv != 0.0 ? 1.0 / dd_dv : 0.0;
+    // At a fixed clearance, dV/dT = -(dd/dT) / (dd/dV).
+    const double dd_dt = (nominal_.clearance_mm(v.volts, series.temp_c[i] + h) -
+                          nominal_.clearance_mm(v.volts, series.temp_c[i] - h)) /
+                         (2.0 * h);
+    temperature_sensitivity_[i] = v.clip == sim::RailClip::kNone ? -dd_dt * sensitivity_[i] : 0.0;
   }
 }
 

@@ -38,6 +38,11 @@ class TwinReplay {
   const std::vector<double>& nominal_voltage() const { return nominal_v_; }
   // dV/dd of the nominal model at every sample (V/mm): how clearance motion shows in volts.
   const std::vector<double>& sensitivity_v_per_mm() const { return sensitivity_; }
+  // dV/dT of the nominal model at every sample's clearance (V/degC): how a temperature the coil
+  // sees other than the recorded one shows in volts (the free lag family, free_shape_fit.h).
+  const std::vector<double>& temperature_sensitivity_v_per_c() const {
+    return temperature_sensitivity_;
+  }
   const std::vector<double>& times() const { return series_.t_s; }
   double age_offset_s() const { return age_offset_s_; }
   double v_min_v() const { return nominal_.v_min_v(); }
@@ -49,6 +54,7 @@ class TwinReplay {
   std::vector<double> nominal_v_;
   std::vector<sim::RailClip> nominal_clip_;
   std::vector<double> sensitivity_;
+  std::vector<double> temperature_sensitivity_;
 };
 
 }  // namespace flange::diagnose
