@@ -211,9 +211,9 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   j["adc_grid"] = d.adc_grid ? adc_grid_json(*d.adc_grid) : nlohmann::ordered_json();
   j["fs_hz"] = d.fs_hz;
   j["sessions"] = {{"clock", g.clock},
-                   {"heldout_starts_after_s", g.heldout_starts_after_s
-                                                  ? nlohmann::ordered_json(*g.heldout_starts_after_s)
-                                                  : nlohmann::ordered_json()}};
+                   {"heldout_starts_after_s",
+                    g.heldout_starts_after_s ? nlohmann::ordered_json(*g.heldout_starts_after_s)
+                                             : nlohmann::ordered_json()}};
   return j;
 }
 

@@ -567,7 +567,7 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
     if (!selection.free_shapes || class_taken(family.effect, selection)) continue;
     Candidate c;
     c.free_shape = fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
-                                  parts.ho_replay, cal_gap);
+                                  parts.ho_replay, cal_gap, selection.current_error);
     c.fit.settings = sim::make_effect_settings(family.effect, {}, "diagnose free shape");
     c.fit.rms_v = rms_of(minus(cal_gap, c.free_shape->cal_voltage_v));
     c.with = modelled;
@@ -583,10 +583,18 @@ struct Pick {
   double lower = 0.0;    // its block-bootstrap 5 % quantile, V^2
 };
 
+// What fitting a candidate's held-out values (the mains' windows) would take from white noise
+// alone: heldout_values / n of its variance, charged against every gain it makes.
+double chance_gain(const Candidate& c, const Selection& selection) {
+  if (!c.free_shape || c.free_shape->heldout_values == 0) return 0.0;
+  return selection.sigma * selection.sigma * c.free_shape->heldout_values /
+         static_cast<double>(std::max<std::size_t>(c.heldout_error.size(), 1));
+}
+
 // The held-out mean-square gain of candidate `c` over what the selection leaves now.
 double gain_of(const Candidate& c, const Selection& selection) {
   const double now = rms_of(selection.current_error), after = rms_of(c.heldout_error);
-  return now * now - after * after;
+  return now * now - after * after - chance_gain(c, selection);
 }
 
 // Candidate `index` as a pick: its gain and the gain's block-bootstrap 5 % quantile.
@@ -598,7 +606,8 @@ Pick pick_of(const std::vector<Candidate>& candidates, std::size_t index,
   std::vector<double> gains;
   for (const auto& set : selection.resamples) {
     gains.push_back(mean_square_on(selection.current_error, set) -
-                    mean_square_on(candidates[index].heldout_error, set));
+                    mean_square_on(candidates[index].heldout_error, set) -
+                    chance_gain(candidates[index], selection));
   }
   pick.lower = quantile(gains, 0.05);
   return pick;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 
 namespace flange::diagnose {
@@ -74,6 +75,24 @@ class Family {
   virtual void summarise(const Eigen::VectorXd& /*beta*/, const Part& /*calibration*/,
                          std::map<std::string, double>& /*params*/) const {}
   virtual std::string describe(const Eigen::VectorXd& beta) const = 0;
+};
+
+// The mains: tones at the aliases of 50 or 60 Hz and their harmonics, whose phase is wherever the
+// mains was when each session started and whose frequency wanders with the grid. What carries
+// from one session to the other is which lines are there; their amplitude and phase are fitted
+// in every window of each part's own gap (FreeShapeFit::heldout_values says how many values that
+// fits on the held-out part, which the selection charges against the gain).
+class MainsFamily {
+ public:
+  // Picks the lines on the calibration gap.
+  MainsFamily(const Part& calibration, const std::vector<double>& gap_v);
+  bool empty() const { return tones_hz_.empty(); }
+  // The tones fitted window by window to `gap_v` on `part`; `values` counts what that fits.
+  std::vector<double> fitted(const Part& part, const std::vector<double>& gap_v, int& values) const;
+  void describe(FreeShapeFit& fit, const std::vector<double>& cal_tones_v) const;
+
+ private:
+  std::vector<double> tones_hz_;
 };
 
 // The sensor's age at every sample, in days from the calibration part's start: the held-out
@@ -405,6 +424,170 @@ Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& y) 
   return normal.ldlt().solve(a.transpose() * y);
 }
 
+// Windows of 20 s: 120 samples or more, so the two values of a line in each cost under 2 % of the
+// noise variance; a line found within 0.0125 Hz of its frequency turns by under a quarter cycle
+// across one. Each part's own lines are found within 0.15 Hz of the nominal aliases (a grid
+// 0.02 Hz off, seventh harmonic), on a 0.01 Hz lattice.
+constexpr double kMainsWindowS = 20.0;
+constexpr double kMainsSearchHz = 0.15;
+constexpr double kMainsStepHz = 0.01;
+constexpr int kMainsHarmonics = 7;
+constexpr int kMainsLinesPerAlias = 2;
+// A line is kept when its window-by-window fit lowers the calibration gap's mean square by more
+// than this many times what fitting its values to white noise would.
+constexpr double kMainsLineFactor = 4.0;
+
+double alias_hz(double f_hz, double fs_hz) {
+  const double folded = std::fmod(f_hz, fs_hz);
+  return std::min(folded, fs_hz - folded);
+}
+
+// Least squares of `gap` on the tones at `tones_hz` in windows of kMainsWindowS seconds (a
+// constant per window as a nuisance, left out of what is returned).
+std::vector<double> windowed_tones(const std::vector<double>& t, const std::vector<double>& gap,
+                                   const std::vector<double>& tones_hz, int& values) {
+  const std::size_t n = t.size();
+  std::vector<double> out(n, 0.0);
+  values = 0;
+  const auto cols = static_cast<Eigen::Index>(1 + 2 * tones_hz.size());
+  std::size_t begin = 0;
+  while (begin < n) {
+    std::size_t end = begin;
+    while (end < n && t[end] < t[begin] + kMainsWindowS) ++end;
+    if (n - end < (end - begin) / 2) end = n;  // a short last window joins this one
+    const auto rows = static_cast<Eigen::Index>(end - begin);
+    if (rows > 2 * cols) {
+      Eigen::MatrixXd a(rows, cols);
+      Eigen::VectorXd y(rows);
+      for (Eigen::Index r = 0; r < rows; ++r) {
+        const std::size_t i = begin + static_cast<std::size_t>(r);
+        a(r, 0) = 1.0;
+        for (std::size_t k = 0; k < tones_hz.size(); ++k) {
+          const double phase = 2.0 * std::numbers::pi * tones_hz[k] * (t[i] - t[begin]);
+          a(r, static_cast<Eigen::Index>(1 + 2 * k)) = std::cos(phase);
+          a(r, static_cast<Eigen::Index>(2 + 2 * k)) = std::sin(phase);
+        }
+        y(r) = gap[i];
+      }
+      Eigen::VectorXd beta = a.colPivHouseholderQr().solve(y);
+      beta(0) = 0.0;
+      const Eigen::VectorXd tone = a * beta;
+      for (Eigen::Index r = 0; r < rows; ++r) out[begin + static_cast<std::size_t>(r)] = tone(r);
+      values += static_cast<int>(2 * tones_hz.size());
+    }
+    begin = end;
+  }
+  return out;
+}
+
+double mean_square(const std::vector<double>& x) {
+  double sum = 0.0;
+  for (double v : x) sum += v * v;
+  return x.empty() ? 0.0 : sum / static_cast<double>(x.size());
+}
+
+// The frequency within kMainsSearchHz of `nominal_hz` whose window-by-window fit leaves the
+// least of `gap`.
+double refine_line(const std::vector<double>& t, const std::vector<double>& gap,
+                   double nominal_hz) {
+  double best_hz = nominal_hz, best = std::numeric_limits<double>::infinity();
+  for (double f = nominal_hz - kMainsSearchHz; f <= nominal_hz + kMainsSearchHz + 1e-9;
+       f += kMainsStepHz) {
+    if (f <= 0.0) continue;
+    int values = 0;
+    const std::vector<double> tone = windowed_tones(t, gap, {f}, values);
+    double left = 0.0;
+    for (std::size_t i = 0; i < gap.size(); ++i) left += (gap[i] - tone[i]) * (gap[i] - tone[i]);
+    if (left < best) {
+      best = left;
+      best_hz = f;
+    }
+  }
+  return best_hz;
+}
+
+// The lines of `gap` near each of `nominals_hz`: up to kMainsLinesPerAlias each (harmonics of a
+// grid off its nominal frequency land a little apart), each found on what the lines before it
+// leave and kept when it lowers the mean square by more than kMainsLineFactor times what its
+// values would take from white noise.
+std::vector<double> find_lines(const std::vector<double>& t, const std::vector<double>& gap,
+                               const std::vector<double>& nominals_hz) {
+  std::vector<double> found;
+  std::vector<double> left = gap;
+  for (double nominal : nominals_hz) {
+    for (int k = 0; k < kMainsLinesPerAlias; ++k) {
+      const double f = refine_line(t, left, nominal);
+      if (std::any_of(found.begin(), found.end(),
+                      [&](double g) { return std::abs(g - f) < 0.5 * kMainsStepHz; })) {
+        break;
+      }
+      std::vector<double> trial = found;
+      trial.push_back(f);
+      int values = 0;
+      const std::vector<double> tones = windowed_tones(t, gap, trial, values);
+      std::vector<double> after(gap.size());
+      for (std::size_t i = 0; i < gap.size(); ++i) after[i] = gap[i] - tones[i];
+      const double per_line = static_cast<double>(values) / static_cast<double>(trial.size()) + 1;
+      const double chance = mean_square(after) * per_line / static_cast<double>(gap.size());
+      if (mean_square(left) - mean_square(after) <= kMainsLineFactor * chance) break;
+      found = std::move(trial);
+      left = std::move(after);
+    }
+  }
+  return found;
+}
+
+MainsFamily::MainsFamily(const Part& calibration, const std::vector<double>& gap_v) {
+  const std::vector<double>& t = calibration.series.t_s;
+  if (t.size() < 2) return;
+  const double fs_hz = static_cast<double>(t.size() - 1) / (t.back() - t.front());
+  // Every distinct alias of the harmonics of 50 and 60 Hz, away from DC and from fs/2 (where a
+  // window cannot tell a line from a constant or from its own mirror).
+  std::vector<double> aliases;
+  for (double mains_hz : {50.0, 60.0}) {
+    for (int h = 1; h <= kMainsHarmonics; ++h) {
+      const double f = alias_hz(h * mains_hz, fs_hz);
+      if (f < kMainsSearchHz + 2.0 / kMainsWindowS || f > 0.5 * fs_hz - kMainsSearchHz) continue;
+      if (std::none_of(aliases.begin(), aliases.end(),
+                       [&](double g) { return std::abs(g - f) < kMainsSearchHz; })) {
+        aliases.push_back(f);
+      }
+    }
+  }
+  // The aliases with a line on the calibration part.
+  for (double f : find_lines(t, gap_v, aliases)) {
+    for (double alias : aliases) {
+      if (std::abs(f - alias) <= kMainsSearchHz + 1e-9 &&
+          std::find(tones_hz_.begin(), tones_hz_.end(), alias) == tones_hz_.end()) {
+        tones_hz_.push_back(alias);
+      }
+    }
+  }
+}
+
+std::vector<double> MainsFamily::fitted(const Part& part, const std::vector<double>& gap_v,
+                                        int& values) const {
+  // Each part's own lines near the aliases kept: the grid wanders between sessions.
+  const std::vector<double> lines = find_lines(part.series.t_s, gap_v, tones_hz_);
+  std::vector<double> tones = windowed_tones(part.series.t_s, gap_v, lines, values);
+  values += static_cast<int>(lines.size());  // their frequencies
+  return tones;
+}
+
+void MainsFamily::describe(FreeShapeFit& fit, const std::vector<double>& cal_tones_v) const {
+  std::string lines;
+  for (std::size_t k = 0; k < tones_hz_.size(); ++k) {
+    fit.params[fmt::format("line_hz_{}", k + 1)] = tones_hz_[k];
+    lines += fmt::format("{}{:.3g} Hz", k == 0 ? "" : ", ", tones_hz_[k]);
+  }
+  const double rms = std::sqrt(mean_square(cal_tones_v));
+  fit.params["rms_v"] = rms;
+  fit.description = fmt::format(
+      "lines at the aliases of the mains ({}), {:.3g} V RMS, their amplitude and phase free in "
+      "every {:g} s window of each session (the mains' phase at a session's start is arbitrary)",
+      lines, rms, kMainsWindowS);
+}
+
 std::vector<double> as_vector(const Eigen::VectorXd& v) {
   return std::vector<double>(v.data(), v.data() + v.size());
 }
@@ -419,14 +602,32 @@ const std::vector<FreeShapeFamily>& free_shape_families() {
                                                         {"thermal_lag", "lagged T"},
                                                         {"channel_skew", "t"},
                                                         {"ageing_drift", "age, continuing"},
-                                                        {"ageing_drift", "age, settled"}};
+                                                        {"ageing_drift", "age, settled"},
+                                                        {"mains_pickup", "aliased lines"}};
   return families;
 }
 
 FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries& calibration,
                             const TwinReplay& cal_replay, const RecordingSeries& heldout,
-                            const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v) {
+                            const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v,
+                            const std::vector<double>& ho_gap_v) {
   const Part cal_part{calibration, cal_replay};
+  if (family.effect == "mains_pickup") {
+    FreeShapeFit fit;
+    fit.family = family;
+    const MainsFamily mains(cal_part, cal_gap_v);
+    if (mains.empty()) {
+      fit.cal_voltage_v.assign(cal_gap_v.size(), 0.0);
+      fit.heldout_voltage_v.assign(ho_gap_v.size(), 0.0);
+      fit.description = "no line at an alias of the mains";
+      return fit;
+    }
+    int cal_values = 0;
+    fit.cal_voltage_v = mains.fitted(cal_part, cal_gap_v, cal_values);
+    fit.heldout_voltage_v = mains.fitted(Part{heldout, ho_replay}, ho_gap_v, fit.heldout_values);
+    mains.describe(fit, fit.cal_voltage_v);
+    return fit;
+  }
   std::unique_ptr<Family> shape = make_family(family, cal_part);
   shape->search(cal_part, cal_gap_v);
   const Eigen::MatrixXd cal = shape->columns(cal_part);

@@ -15,6 +15,9 @@
 //                      of advances of the recorded temperature (the reading lags: tau_s < 0)
 //   channel_skew       s(t) dV/dt: the voltage channel off in time by a skew that may drift
 //                      linearly through the session
+//   mains_pickup       lines at the aliases of 50/60 Hz and their harmonics found on the
+//                      calibration part, amplitude and phase free in short windows of each part
+//                      (fitted on the held-out part's own gap: heldout_values says how many)
 //   ageing_drift       a trend in the sensor's age, carried across sessions by their start times:
 //                      continuing (offset, rate and two logarithmic settling terms), or settled
 //                      (any curve of age over the calibration session, held after it: a step)
@@ -46,11 +49,16 @@ struct FreeShapeFit {
   std::string description;                // "a free curve of T through -0.012 at 21 degC, ..."
   std::vector<double> cal_voltage_v;      // what it adds to the twin's voltage, calibration part
   std::vector<double> heldout_voltage_v;  // ... and held-out part
+  // Values fitted on the held-out part itself (the mains' windows; 0 for the others): fitting
+  // them to white noise alone would lower its mean square by heldout_values / n of its variance.
+  int heldout_values = 0;
 };
 
-// Fits `family` to `cal_gap_v` (the calibration gap the modelled effects leave).
+// Fits `family` to `cal_gap_v` (the calibration gap the modelled effects leave); `ho_gap_v`, the
+// held-out gap they leave, is read only by the families with heldout_values.
 FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries& calibration,
                             const TwinReplay& cal_replay, const RecordingSeries& heldout,
-                            const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v);
+                            const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v,
+                            const std::vector<double>& ho_gap_v);
 
 }  // namespace flange::diagnose
