@@ -269,17 +269,18 @@ class LagFamily : public Family {
   static constexpr std::array<double, 3> kLeads = {30.0, 120.0, 480.0};
 };
 
-// The voltage channel sampled skew(t) = s0 + s1 t off: the twin's voltage at t + skew(t), by
-// linear interpolation (the library's channel_skew sign: negative when the voltage is late). The
-// law is searched on the calibration gap (a lattice, then a finer one about its best point), since
-// a skew of seconds across a move of the micrometer is far from a small perturbation; one column
-// with a free scale then carries it.
+// The voltage channel sampled skew(t) = s0 + s1 h + s2 h^2 off (h in hours from the session's
+// start): the twin's voltage at t + skew(t), by linear interpolation (the library's channel_skew
+// sign: negative when the voltage is late). A DAQ clock that drifts, or drifts and settles. The
+// law is searched on the calibration gap (a lattice in s0 and s1, then a pattern search in all
+// three), since a skew of seconds across a move of the micrometer is far from a small
+// perturbation; one column with a free scale then carries it.
 class SkewFamily : public Family {
  public:
   void search(const Part& calibration, const std::vector<double>& gap_v) override {
     double best = std::numeric_limits<double>::infinity();
-    const auto try_law = [&](double s0, double s1) {
-      const std::vector<double> shifted = shift(calibration, s0, s1);
+    const auto try_law = [&](const std::array<double, 3>& law) {
+      const std::vector<double> shifted = shift(calibration, law);
       double sse = 0.0;
       for (std::size_t i = 0; i < gap_v.size(); ++i) {
         const double e = gap_v[i] - shifted[i];
@@ -287,19 +288,26 @@ class SkewFamily : public Family {
       }
       if (sse < best) {
         best = sse;
-        s0_ = s0;
-        s1_ = s1;
+        law_ = law;
+        return true;
       }
+      return false;
     };
     for (double s0 = -kMaxSkewS; s0 <= kMaxSkewS + 1e-9; s0 += 1.0) {
       for (double s1 = -kMaxDriftSPerHour; s1 <= kMaxDriftSPerHour + 1e-9; s1 += 1.0) {
-        try_law(s0, s1);
+        try_law({s0, s1, 0.0});
       }
     }
-    for (double step : {0.25, 0.05}) {
-      const double c0 = s0_, c1 = s1_;
-      for (int i = -4; i <= 4; ++i) {
-        for (int j = -4; j <= 4; ++j) try_law(c0 + i * step, c1 + j * step);
+    for (double step : {0.5, 0.1, 0.02}) {
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (std::size_t k = 0; k < law_.size(); ++k) {
+          for (double sign : {-1.0, 1.0}) {
+            std::array<double, 3> trial = law_;
+            trial[k] += sign * step;
+            moved = try_law(trial) || moved;
+          }
+        }
       }
     }
   }
@@ -307,38 +315,43 @@ class SkewFamily : public Family {
   std::vector<std::string> names() const override { return {"scale"}; }
 
   Eigen::MatrixXd columns(const Part& part) const override {
-    const std::vector<double> shifted = shift(part, s0_, s1_);
+    const std::vector<double> shifted = shift(part, law_);
     Eigen::MatrixXd a = matrix(shifted.size(), 1);
-    for (std::size_t i = 0; i < shifted.size(); ++i)
+    for (std::size_t i = 0; i < shifted.size(); ++i) {
       a(static_cast<Eigen::Index>(i), 0) = shifted[i];
+    }
     return a;
   }
 
   void summarise(const Eigen::VectorXd&, const Part& calibration,
                  std::map<std::string, double>& params) const override {
     const std::vector<double>& t = calibration.series.t_s;
-    const double mid_h = t.empty() ? 0.0 : 0.5 * (t.front() + t.back()) / kSecondsPerHour;
-    params["skew_s_at_start"] = s0_;
-    params["skew_s_per_hour"] = s1_;
-    params["skew_s"] = s0_ + s1_ * mid_h;
+    const double end_h = t.empty() ? 0.0 : t.back() / kSecondsPerHour;
+    params["skew_s_at_start"] = skew_at(0.0);
+    params["skew_s_at_end"] = skew_at(end_h);
+    params["skew_s"] = skew_at(0.5 * end_h);
   }
 
   std::string describe(const Eigen::VectorXd& beta) const override {
     return fmt::format(
-        "the voltage channel {:.3g} s off in time at the session's start, drifting by {:.3g} s per "
-        "hour (negative: late; scale {:.2f})",
-        s0_, s1_, beta(0));
+        "the voltage channel off in time by a skew that drifts: {:.3g} s + {:.3g} s/h t + {:.3g} "
+        "s/h^2 t^2 (negative: late; scale {:.2f})",
+        law_[0], law_[1], law_[2], beta(0));
   }
 
  private:
+  double skew_at(double hours) const { return law_[0] + law_[1] * hours + law_[2] * hours * hours; }
+
   // What sampling the twin's voltage skew(t) off adds to it.
-  static std::vector<double> shift(const Part& part, double s0, double s1) {
+  static std::vector<double> shift(const Part& part, const std::array<double, 3>& law) {
     const std::vector<double>& t = part.series.t_s;
     const std::vector<double>& v = part.replay.nominal_voltage();
     std::vector<double> out(t.size());
-    std::size_t j = 0;  // the sample at or before the shifted instant: it only moves forward
+    std::size_t j = 0;  // the sample at or before the shifted instant (it moves forward)
     for (std::size_t i = 0; i < t.size(); ++i) {
-      const double when = t[i] + s0 + s1 * t[i] / kSecondsPerHour;
+      const double h = t[i] / kSecondsPerHour;
+      const double when = t[i] + law[0] + law[1] * h + law[2] * h * h;
+      while (j > 0 && t[j] > when) --j;
       while (j + 1 < t.size() && t[j + 1] <= when) ++j;
       if (when <= t.front()) {
         out[i] = v.front() - v[i];
@@ -354,48 +367,64 @@ class SkewFamily : public Family {
   // The library's own skew range, and a drift that can double it within a bench session.
   static constexpr double kMaxSkewS = 10.0;
   static constexpr double kMaxDriftSPerHour = 10.0;
-  double s0_ = 0.0, s1_ = 0.0;
+  std::array<double, 3> law_ = {0.0, 0.0, 0.0};
 };
 
-// A smooth trend in the sensor's age, in days from the calibration part's start (the held-out
-// part's age follows from the start times, or is taken as the same when they are unknown).
+// A trend in the sensor's age that goes on after the calibration session: an offset plus either
+// a straight line in age (the library's) or a settling a ln(1 + age / tau), with tau searched from
+// three minutes to ten days on the calibration gap. Age in days from the calibration part's start
+// (the held-out part's by its start time, or the same start when that is unknown).
 class AgeingFamily : public Family {
  public:
+  void search(const Part& calibration, const std::vector<double>& gap_v) override {
+    const Eigen::Map<const Eigen::VectorXd> gap(gap_v.data(),
+                                                static_cast<Eigen::Index>(gap_v.size()));
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<double> taus = {0.0};  // 0: the straight line
+    for (double tau = 0.002; tau <= 10.0; tau *= 1.5) taus.push_back(tau);
+    for (double tau : taus) {
+      tau_days_ = tau;
+      const Eigen::MatrixXd a = columns(calibration);
+      const Eigen::VectorXd beta = a.colPivHouseholderQr().solve(gap);
+      const double sse = (gap - a * beta).squaredNorm();
+      if (sse < best) {
+        best = sse;
+        chosen_ = tau;
+      }
+    }
+    tau_days_ = chosen_;
+  }
+
   std::vector<std::string> names() const override {
-    std::vector<std::string> out = {"offset_v", "rate_v_per_day"};
-    for (double tau : kSettleDays) out.push_back(fmt::format("log_weight_v_{:g}d", tau));
-    return out;
+    return {"offset_v", tau_days_ == 0.0 ? "rate_v_per_day" : "settling_v"};
   }
 
   Eigen::MatrixXd columns(const Part& part) const override {
-    const std::size_t n = part.series.size();
-    Eigen::MatrixXd a = matrix(n, 2 + kSettleDays.size());
     const std::vector<double> ages = age_days(part);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double age = ages[i];
+    Eigen::MatrixXd a = matrix(ages.size(), 2);
+    for (std::size_t i = 0; i < ages.size(); ++i) {
       const auto row = static_cast<Eigen::Index>(i);
       a(row, 0) = 1.0;
-      a(row, 1) = age;
-      for (std::size_t k = 0; k < kSettleDays.size(); ++k) {
-        a(row, static_cast<Eigen::Index>(2 + k)) = std::log1p(age / kSettleDays[k]);
-      }
+      a(row, 1) = tau_days_ == 0.0 ? ages[i] : std::log1p(ages[i] / tau_days_);
     }
     return a;
   }
 
+  void summarise(const Eigen::VectorXd&, const Part&,
+                 std::map<std::string, double>& params) const override {
+    if (tau_days_ > 0.0) params["settling_tau_days"] = tau_days_;
+  }
+
   std::string describe(const Eigen::VectorXd& beta) const override {
-    std::string text =
-        fmt::format("a free trend in the sensor's age: {:.3g} V + {:.3g} V/day", beta(0), beta(1));
-    for (std::size_t k = 0; k < kSettleDays.size(); ++k) {
-      text += fmt::format(" + {:.3g} V ln(1 + age / {:g} d)",
-                          beta(static_cast<Eigen::Index>(2 + k)), kSettleDays[k]);
+    if (tau_days_ == 0.0) {
+      return fmt::format("a trend in the sensor's age: {:.3g} V + {:.3g} V/day", beta(0), beta(1));
     }
-    return text;
+    return fmt::format("a settling in the sensor's age: {:.3g} V + {:.3g} V ln(1 + age / {:.3g} d)",
+                       beta(0), beta(1), tau_days_);
   }
 
  private:
-  // A settling over about half an hour and over about five hours: a bench session's span.
-  static constexpr std::array<double, 2> kSettleDays = {0.02, 0.2};
+  double tau_days_ = 0.0, chosen_ = 0.0;
 };
 
 std::unique_ptr<Family> make_family(const FreeShapeFamily& family, const Part& calibration) {
