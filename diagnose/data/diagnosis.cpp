@@ -631,8 +631,16 @@ Pick pick_of(const std::vector<Candidate>& candidates, std::size_t index,
   return pick;
 }
 
+// How many values a candidate's calibration fit chose.
+int free_values_of(const Candidate& c) {
+  return c.free_shape ? c.free_shape->free_values
+                      : static_cast<int>(fitted_keys(c.fit.settings.name).size());
+}
+
 // The candidate that lowers the held-out mean square most, with its gain and the gain's
-// block-bootstrap 5 % quantile.
+// block-bootstrap 5 % quantile. When the free shapes compete (the second pass), the fewest values
+// win among those within the least gain a pick must make of the best (kMinGainOfNoiseVariance of
+// sigma^2): a family with more freedom must earn it on held-out data (issue 11 item 2).
 Pick best_candidate(const std::vector<Candidate>& candidates, const Selection& selection) {
   std::size_t best = 0;
   double best_gain = -std::numeric_limits<double>::infinity();
@@ -640,6 +648,15 @@ Pick best_candidate(const std::vector<Candidate>& candidates, const Selection& s
     if (gain_of(candidates[c], selection) > best_gain) {
       best_gain = gain_of(candidates[c], selection);
       best = c;
+    }
+  }
+  if (selection.free_shapes) {
+    const double margin = kMinGainOfNoiseVariance * selection.sigma * selection.sigma;
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      if (gain_of(candidates[c], selection) >= best_gain - margin &&
+          free_values_of(candidates[c]) < free_values_of(candidates[best])) {
+        best = c;
+      }
     }
   }
   return pick_of(candidates, best, selection);

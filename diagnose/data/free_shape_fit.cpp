@@ -25,6 +25,11 @@ constexpr int kKnots = 7;
 // period still shows.
 constexpr int kClearanceKnots = 17;
 
+// Knots of the compression surface: five in voltage over the top of the range (the lowest held
+// at 0), three in temperature.
+constexpr int kCompressionVoltKnots = 5;
+constexpr int kCompressionTempKnots = 3;
+
 // Knots of a trend in the sensor's age over the calibration session (held at its last value
 // after it: a step or a settling that has ended).
 constexpr int kAgeKnots = 5;
@@ -70,6 +75,8 @@ class Family {
   // Families with parameters the columns depend on (a skew's law) search them here first.
   virtual void search(const Part& /*calibration*/, const std::vector<double>& /*gap_v*/) {}
   virtual std::vector<std::string> names() const = 0;
+  // How many values search() chose.
+  virtual int searched_values() const { return 0; }
   virtual Eigen::MatrixXd columns(const Part& part) const = 0;
   // The class's summary parameters (a lag's mean delay, a skew's mean) beside the free values.
   virtual void summarise(const Eigen::VectorXd& /*beta*/, const Part& /*calibration*/,
@@ -87,6 +94,7 @@ class MainsFamily {
   // Picks the lines on the calibration gap.
   MainsFamily(const Part& calibration, const std::vector<double>& gap_v);
   bool empty() const { return tones_hz_.empty(); }
+  std::size_t lines() const { return tones_hz_.size(); }
   // The tones fitted window by window to `gap_v` on `part`; `values` counts what that fits.
   std::vector<double> fitted(const Part& part, const std::vector<double>& gap_v, int& values) const;
   void describe(FreeShapeFit& fit, const std::vector<double>& cal_tones_v) const;
@@ -184,6 +192,117 @@ class CurveFamily : public Family {
   std::string effect_, variable_;
   Hats hats_;
   std::vector<std::size_t> used_;
+};
+
+// A gain that changes with temperature about a pivot of its own: (V - p) h(T) = (V - v_min) h(T)
+// - (p - v_min) h(T), i.e. a gain curve of T about the range's bottom plus an offset curve of T.
+// Its gain part names the class; the pivot where the two curves' ratio puts it is reported.
+class PivotGainFamily : public Family {
+ public:
+  explicit PivotGainFamily(const Part& calibration)
+      : hats_(hats_over(calibration.series.temp_c, kKnots)) {}
+
+  std::vector<std::string> names() const override {
+    std::vector<std::string> out;
+    for (double knot : hats_.knots) out.push_back(fmt::format("gain_change_at_{:.4g}c", knot));
+    for (double knot : hats_.knots) out.push_back(fmt::format("offset_v_at_{:.4g}c", knot));
+    return out;
+  }
+
+  Eigen::MatrixXd columns(const Part& part) const override {
+    const std::size_t n = part.series.size(), k = hats_.knots.size();
+    Eigen::MatrixXd a = matrix(n, 2 * k);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double above = part.replay.nominal_voltage()[i] - part.replay.v_min_v();
+      for (std::size_t j = 0; j < k; ++j) {
+        const double w = hats_.weight(j, part.series.temp_c[i]);
+        a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = above * w;
+        a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k + j)) = w;
+      }
+    }
+    return a;
+  }
+
+  // The pivot: the voltage above v_min where the two curves cancel, by least squares over knots.
+  void summarise(const Eigen::VectorXd& beta, const Part& calibration,
+                 std::map<std::string, double>& params) const override {
+    const auto k = static_cast<Eigen::Index>(hats_.knots.size());
+    const Eigen::VectorXd gain = beta.head(k), offset = beta.tail(k);
+    const double norm = gain.squaredNorm();
+    if (norm > 0.0) params["pivot_v"] = calibration.replay.v_min_v() - gain.dot(offset) / norm;
+  }
+
+  std::string describe(const Eigen::VectorXd& beta) const override {
+    const auto k = static_cast<Eigen::Index>(hats_.knots.size());
+    std::string text = "a gain that changes with T about a pivot of its own: gain change";
+    for (Eigen::Index j = 0; j < k; ++j) {
+      text += fmt::format("{} {:.3g} at {:.4g} degC", j == 0 ? "" : ",", beta(j),
+                          hats_.knots[static_cast<std::size_t>(j)]);
+    }
+    return text;
+  }
+
+ private:
+  Hats hats_;
+};
+
+// A compression of the top of the range that depends on temperature: any curve of V over the top
+// two fifths of the calibration part's voltage range (0 below it), times any curve of T (three
+// knots): f(V, T) = sum c_jk hat_j(V) hat_k(T).
+class CompressionFamily : public Family {
+ public:
+  explicit CompressionFamily(const Part& calibration)
+      : temp_(hats_over(calibration.series.temp_c, kCompressionTempKnots)) {
+    const auto [lo, hi] = std::minmax_element(calibration.replay.nominal_voltage().begin(),
+                                              calibration.replay.nominal_voltage().end());
+    const double top = *hi, bottom = *hi - 0.4 * (*hi - *lo);
+    for (int k = 0; k < kCompressionVoltKnots; ++k) {
+      volt_.knots.push_back(bottom + (top - bottom) * k / (kCompressionVoltKnots - 1.0));
+    }
+  }
+
+  std::vector<std::string> names() const override {
+    std::vector<std::string> out;
+    for (std::size_t j = 1; j < volt_.knots.size(); ++j) {
+      for (double t : temp_.knots) {
+        out.push_back(fmt::format("offset_v_at_{:.3g}v_{:.3g}c", volt_.knots[j], t));
+      }
+    }
+    return out;
+  }
+
+  Eigen::MatrixXd columns(const Part& part) const override {
+    const std::size_t n = part.series.size(), nt = temp_.knots.size();
+    Eigen::MatrixXd a = matrix(n, (volt_.knots.size() - 1) * nt);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double v = part.replay.nominal_voltage()[i];
+      if (v <= volt_.knots.front()) continue;  // below the knee region: 0
+      for (std::size_t j = 1; j < volt_.knots.size(); ++j) {
+        const double wv = volt_.weight(j, v);
+        if (wv == 0.0) continue;
+        for (std::size_t k = 0; k < nt; ++k) {
+          a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>((j - 1) * nt + k)) =
+              wv * temp_.weight(k, part.series.temp_c[i]);
+        }
+      }
+    }
+    return a;
+  }
+
+  std::string describe(const Eigen::VectorXd& beta) const override {
+    const std::size_t nt = temp_.knots.size();
+    std::string text = fmt::format("a free surface over the top of the range (above {:.3g} V):",
+                                   volt_.knots.front());
+    for (std::size_t k = 0; k < nt; ++k) {
+      text +=
+          fmt::format("{} at {:.3g} degC {:.3g} V at the top", k == 0 ? "" : ";", temp_.knots[k],
+                      beta(static_cast<Eigen::Index>((volt_.knots.size() - 2) * nt + k)));
+    }
+    return text;
+  }
+
+ private:
+  Hats volt_, temp_;
 };
 
 // Linear interpolation of `x` at time `t_s`, held constant beyond the ends.
@@ -313,6 +432,7 @@ class SkewFamily : public Family {
   }
 
   std::vector<std::string> names() const override { return {"scale"}; }
+  int searched_values() const override { return 3; }
 
   Eigen::MatrixXd columns(const Part& part) const override {
     const std::vector<double> shifted = shift(part, law_);
@@ -398,6 +518,7 @@ class AgeingFamily : public Family {
   std::vector<std::string> names() const override {
     return {"offset_v", tau_days_ == 0.0 ? "rate_v_per_day" : "settling_v"};
   }
+  int searched_values() const override { return 1; }
 
   Eigen::MatrixXd columns(const Part& part) const override {
     const std::vector<double> ages = age_days(part);
@@ -429,6 +550,10 @@ class AgeingFamily : public Family {
 
 std::unique_ptr<Family> make_family(const FreeShapeFamily& family, const Part& calibration) {
   if (family.effect == "thermal_lag") return std::make_unique<LagFamily>();
+  if (family.effect == "temp_gain_drift" && family.variable == "(V - pivot) T") {
+    return std::make_unique<PivotGainFamily>(calibration);
+  }
+  if (family.effect == "range_compression") return std::make_unique<CompressionFamily>(calibration);
   if (family.effect == "channel_skew") return std::make_unique<SkewFamily>();
   if (family.effect == "ageing_drift" && family.variable == "age, continuing") {
     return std::make_unique<AgeingFamily>();
@@ -625,9 +750,11 @@ std::vector<double> as_vector(const Eigen::VectorXd& v) {
 
 const std::vector<FreeShapeFamily>& free_shape_families() {
   static const std::vector<FreeShapeFamily> families = {{"temp_gain_drift", "(V - v_min) T"},
+                                                        {"temp_gain_drift", "(V - pivot) T"},
                                                         {"temp_offset_drift", "T"},
                                                         {"nonlinearity", "V"},
                                                         {"nonlinearity", "d"},
+                                                        {"range_compression", "top of V, T"},
                                                         {"thermal_lag", "lagged T"},
                                                         {"channel_skew", "t"},
                                                         {"ageing_drift", "age, continuing"},
@@ -655,6 +782,7 @@ FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries
     fit.cal_voltage_v = mains.fitted(cal_part, cal_gap_v, cal_values);
     fit.heldout_voltage_v = mains.fitted(Part{heldout, ho_replay}, ho_gap_v, fit.heldout_values);
     mains.describe(fit, fit.cal_voltage_v);
+    fit.free_values = 3 * static_cast<int>(mains.lines());  // frequency, amplitude and phase
     return fit;
   }
   std::unique_ptr<Family> shape = make_family(family, cal_part);
@@ -670,6 +798,7 @@ FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries
     fit.params[names[j]] = beta(static_cast<Eigen::Index>(j));
   }
   shape->summarise(beta, cal_part, fit.params);
+  fit.free_values = static_cast<int>(names.size()) + shape->searched_values();
   fit.description = shape->describe(beta);
   fit.cal_voltage_v = as_vector(cal * beta);
   fit.heldout_voltage_v = as_vector(shape->columns(Part{heldout, ho_replay}) * beta);

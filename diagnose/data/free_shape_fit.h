@@ -52,6 +52,9 @@ struct FreeShapeFit {
   // Values fitted on the held-out part itself (the mains' windows; 0 for the others): fitting
   // them to white noise alone would lower its mean square by heldout_values / n of its variance.
   int heldout_values = 0;
+  // How many values the calibration fit chose (the curve's, plus a searched law's): what the
+  // selection weighs when two candidates gain alike.
+  int free_values = 0;
 };
 
 // Fits `family` to `cal_gap_v` (the calibration gap the modelled effects leave); `ho_gap_v`, the
