@@ -388,8 +388,16 @@ void IirSampleModel::filter(std::span<const std::int32_t> in, std::span<SampleRe
     throw std::invalid_argument(
         fmt::format("IirSampleModel::filter: {} inputs but {} outputs", in.size(), out.size()));
   }
-  const auto [lo, hi] = std::minmax_element(in.begin(), in.end());
-  if (lo != in.end() && (*lo < sample_min_ || *hi > sample_max_)) {
+  // One unsigned compare per sample, which the compiler vectorises (std::minmax_element is not:
+  // it cost 30 % of a block's time); the error path finds the sample to name.
+  const auto span = static_cast<std::uint32_t>(sample_max_) - static_cast<std::uint32_t>(sample_min_);
+  std::uint32_t outside = 0;
+  for (const std::int32_t x : in) {
+    outside |= static_cast<std::uint32_t>(
+        static_cast<std::uint32_t>(x) - static_cast<std::uint32_t>(sample_min_) > span);
+  }
+  if (outside != 0) {
+    const auto [lo, hi] = std::minmax_element(in.begin(), in.end());
     const std::int32_t bad = *lo < sample_min_ ? *lo : *hi;
     throw std::out_of_range(
         fmt::format("IirSampleModel: sample {} outside [{}, {}]", bad, sample_min_, sample_max_));
