@@ -224,13 +224,15 @@ FLANGE_TARGET inline __mmask8 lane_step(const Words<T, m>& c, State<T>& s, const
     lo_pre = T::madd(T::madd(lo_pre, c.wb[2], s.u2), c.wb[1], s.u1);
     hi_pre = T::madd(T::madd(hi_pre, c.hb[2], s.u2), c.hb[1], s.u1);
     lo_pre = T::madd(lo_pre, c.wa[2], s.w2);
-    hi_pre = T::madd(T::madd(hi_pre, c.ee[2], s.r2), c.ha[2], s.w2);
+    hi_pre = T::madd(hi_pre, c.ee[2], s.r2);
+    // Two chains, added: a chain of five multiply-adds (4 cycles each) would end after y[t-1]'s.
+    hi_pre = T::add(hi_pre, T::madd(T::madd(zero, c.ha[2], s.w2), c.hb[0], u0));
   } else {
     lo_pre = T::madd(lo_pre, c.wb[1], s.u1);
     hi_pre = T::madd(hi_pre, c.hb[1], s.u1);
+    hi_pre = T::madd(hi_pre, c.hb[0], u0);
   }
   lo_pre = T::madd(lo_pre, c.wb[0], u0);
-  hi_pre = T::madd(hi_pre, c.hb[0], u0);
   const V lo = T::add(T::sext52(lo_pre), T::mul32(c.wa[1], s.w1));
   V hi = T::add(T::add(T::sext52(hi_pre), T::mul32(c.ee[1], s.r1)), T::mul32(c.ha[1], s.w1));
   // Keep hi summed on its own: then the add after lo >>> L is the only one on the path.
