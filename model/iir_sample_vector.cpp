@@ -301,8 +301,21 @@ FLANGE_TARGET inline void finish_samples(const Plan& p, const std::int32_t* y, s
   const V half = T::set1(p.half_s), shift = T::set1(p.shift), top = T::set1(p.out_max);
   const V low32 = T::set1(0xffffffff), flag = T::set1(std::int64_t{1} << 32);
   std::size_t i = first;
-  // Whole vectors that do not wrap around the ring.
-  for (; i + T::kLanes <= end && i % kRing + T::kLanes <= kRing; i += T::kLanes) {
+  // Whole vectors that do not wrap around the ring; one by one only the samples before the wrap
+  // (with 2(K-1) not a multiple of the lanes every other chunk crosses it: the rest of such a
+  // chunk went one by one before) and at the end.
+  const auto scalar = [&](std::size_t at) __attribute__((always_inline)) {
+    const std::int64_t rounded = (std::int64_t{y[at - first]} + p.half_s) >> p.shift;
+    const bool clip = rounded > p.out_max;
+    out[at] = {static_cast<std::int32_t>(clip ? p.out_max : rounded),
+               clip || ring[at % kRing] != 0};
+    ring[at % kRing] = 0;
+  };
+  while (i + T::kLanes <= end) {
+    if (i % kRing + T::kLanes > kRing) {
+      for (; i % kRing != 0; ++i) scalar(i);
+      continue;
+    }
     const V rounded = T::srav(T::add(T::widen32(y + (i - first)), half), shift);
     auto flagged = T::gt(rounded, top);
     if (!ring_clean) {
@@ -311,13 +324,9 @@ FLANGE_TARGET inline void finish_samples(const Plan& p, const std::int32_t* y, s
     }
     T::store(reinterpret_cast<std::int64_t*>(out + i),
              T::mask_or(T::band(T::min(rounded, top), low32), flagged, flag));
+    i += T::kLanes;
   }
-  for (; i < end; ++i) {
-    const std::int64_t rounded = (std::int64_t{y[i - first]} + p.half_s) >> p.shift;
-    const bool clip = rounded > p.out_max;
-    out[i] = {static_cast<std::int32_t>(clip ? p.out_max : rounded), clip || ring[i % kRing] != 0};
-    ring[i % kRing] = 0;
-  }
+  for (; i < end; ++i) scalar(i);
 }
 
 // The kernel for `lanes` = T::kLanes and M = kOrder.
