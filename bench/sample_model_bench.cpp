@@ -208,8 +208,8 @@ int main(int argc, char** argv) {
     const auto core = reporter.rate("IirCore/" + set.name);
     const auto reference = reporter.rate("ReferenceFilter/" + set.name);
     const auto reference_stepped = reporter.rate("ReferenceFilterStep/" + set.name);
-    std::cout << fmt::format("{:<16} {:>11} {:>11} {:>11} {:>11} {:>11} {:>12} {:>11}\n",
-                             set.name, rate_text(sample), rate_text(step), rate_text(core),
+    std::cout << fmt::format("{:<16} {:>11} {:>11} {:>11} {:>11} {:>11} {:>12} {:>11}\n", set.name,
+                             rate_text(sample), rate_text(step), rate_text(core),
                              rate_text(reference), rate_text(reference_stepped),
                              ratio_text(sample, core), ratio_text(sample, reference));
   }

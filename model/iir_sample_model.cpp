@@ -388,8 +388,9 @@ void IirSampleModel::filter(std::span<const std::int32_t> in, std::span<SampleRe
     throw std::invalid_argument(
         fmt::format("IirSampleModel::filter: {} inputs but {} outputs", in.size(), out.size()));
   }
-  // One unsigned compare per sample, in groups of a fixed size that -O2 vectorises (std::minmax_element
-  // is not vectorised: it cost 30 % of a block's time); the error path finds the sample to name.
+  // One unsigned compare per sample, in groups of a fixed size that -O2 vectorises
+  // (std::minmax_element is not vectorised: it cost 30 % of a block's time); the error path finds
+  // the sample to name.
   const auto low = static_cast<std::uint32_t>(sample_min_);
   const std::uint32_t span = static_cast<std::uint32_t>(sample_max_) - low;
   const auto outside = [low, span](const std::int32_t* x, std::size_t n) {

@@ -160,8 +160,8 @@ bool RecordingColumns::read_plain_line(RecordingRow& row, std::string_view line,
       row.temp_c > kMaxTempC) {
     return false;
   }
-  t_text = std::string_view(starts[t_], static_cast<std::size_t>(
-                                            (t_ < 3 ? starts[t_ + 1] - 1 : end) - starts[t_]));
+  t_text = std::string_view(
+      starts[t_], static_cast<std::size_t>((t_ < 3 ? starts[t_ + 1] - 1 : end) - starts[t_]));
   return true;
 }
 
