@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The sample model's throughput (model/iir_sample_model.h) beside the cycle model it is equal to
-// (IirCore::step) and the double-precision ReferenceFilter (the baseline), on the same 1,000,000
+// (IirCore::step) and the double-precision ReferenceFilter (the baseline: process() on the block,
+// and step() per sample), on the same 1,000,000
 // input words of measurement_sos and vehicle_sos, in one run (docs/benchmarks_core.md, "Sample
 // model"). Every benchmark filters the whole block per iteration from a zero state.
 //
@@ -94,6 +95,18 @@ void cycle_model_step(benchmark::State& state, const BenchSet& set) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(set.words.size()));
 }
 
+void reference_block(benchmark::State& state, const BenchSet& set) {
+  flange::model::ReferenceFilter filter(set.design);
+  std::vector<double> out(set.units.size());
+  for (auto _ : state) {
+    filter.reset();
+    filter.process(set.units, out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(set.units.size()));
+}
+
 void reference_step(benchmark::State& state, const BenchSet& set) {
   flange::model::ReferenceFilter filter(set.design);
   for (auto _ : state) {
@@ -124,8 +137,8 @@ void dump(const std::vector<BenchSet>& sets, const std::filesystem::path& dir) {
         .write(reinterpret_cast<const char*>(set.words.data()),
                static_cast<std::streamsize>(set.words.size() * sizeof(std::int32_t)));
     flange::model::ReferenceFilter filter(set.design);
-    std::vector<double> y;
-    for (const double x : set.units) y.push_back(filter.step(x));
+    std::vector<double> y(set.units.size());
+    filter.process(set.units, y);
     std::ofstream(y_file, std::ios::binary)
         .write(reinterpret_cast<const char*>(y.data()),
                static_cast<std::streamsize>(y.size() * sizeof(double)));
@@ -175,26 +188,30 @@ int main(int argc, char** argv) {
     add("SampleModel", sample_model_block);
     add("SampleModelStep", sample_model_step);
     add("IirCore", cycle_model_step);
-    add("ReferenceFilter", reference_step);
+    add("ReferenceFilter", reference_block);
+    add("ReferenceFilterStep", reference_step);
   }
   RateCollector reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
 
   std::cout << fmt::format(
       "\nSamples/s on one core, {} uniform random words per block; SampleModel = "
-      "IirSampleModel::filter on the block, step = IirSampleModel::step per sample\n",
+      "IirSampleModel::filter on the block, step = IirSampleModel::step per sample; reference = "
+      "ReferenceFilter::process on the block, ref step = ReferenceFilter::step per sample\n",
       kSamples);
-  std::cout << fmt::format("{:<16} {:>11} {:>11} {:>11} {:>11} {:>12} {:>11}\n", "set", "sample",
-                           "step", "IirCore", "reference", "sample/core", "sample/ref");
+  std::cout << fmt::format("{:<16} {:>11} {:>11} {:>11} {:>11} {:>11} {:>12} {:>11}\n", "set",
+                           "sample", "step", "IirCore", "reference", "ref step", "sample/core",
+                           "sample/ref");
   for (const BenchSet& set : sets) {
     const auto sample = reporter.rate("SampleModel/" + set.name);
     const auto step = reporter.rate("SampleModelStep/" + set.name);
     const auto core = reporter.rate("IirCore/" + set.name);
     const auto reference = reporter.rate("ReferenceFilter/" + set.name);
-    std::cout << fmt::format("{:<16} {:>11} {:>11} {:>11} {:>11} {:>12} {:>11}\n", set.name,
+    const auto reference_stepped = reporter.rate("ReferenceFilterStep/" + set.name);
+    std::cout << fmt::format("{:<16} {:>11} {:>11} {:>11} {:>11} {:>11} {:>12} {:>11}\n", set.name,
                              rate_text(sample), rate_text(step), rate_text(core),
-                             rate_text(reference), ratio_text(sample, core),
-                             ratio_text(sample, reference));
+                             rate_text(reference), rate_text(reference_stepped),
+                             ratio_text(sample, core), ratio_text(sample, reference));
   }
   benchmark::Shutdown();
   return 0;

@@ -5,7 +5,8 @@
 #   bash bench/sosfilt_peer.sh [SAMPLE_MODEL_BENCH] [Google Benchmark flags...]
 # (SAMPLE_MODEL_BENCH defaults to build/bench/sample_model_bench; build it with
 # `ninja -C build sample_model_bench`.) Prints the bench's table, then sosfilt's rate and the
-# ratios sample model / sosfilt and reference / sosfilt (aim: sample model >= 2x sosfilt).
+# ratios sample model / sosfilt and reference / sosfilt (aims: sample model >= 2x sosfilt,
+# ReferenceFilter::process >= 1x; ReferenceFilter::step per sample is shown beside).
 # Needs a python3 with numpy and scipy: Debian's python3-scipy, one of the optional benchmark
 # packages of scripts/setup.sh (`bash scripts/setup.sh --bench`).
 set -euo pipefail

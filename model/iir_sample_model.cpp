@@ -388,8 +388,23 @@ void IirSampleModel::filter(std::span<const std::int32_t> in, std::span<SampleRe
     throw std::invalid_argument(
         fmt::format("IirSampleModel::filter: {} inputs but {} outputs", in.size(), out.size()));
   }
-  const auto [lo, hi] = std::minmax_element(in.begin(), in.end());
-  if (lo != in.end() && (*lo < sample_min_ || *hi > sample_max_)) {
+  // One unsigned compare per sample, in groups of a fixed size that -O2 vectorises
+  // (std::minmax_element is not vectorised: it cost 30 % of a block's time); the error path finds
+  // the sample to name.
+  const auto low = static_cast<std::uint32_t>(sample_min_);
+  const std::uint32_t span = static_cast<std::uint32_t>(sample_max_) - low;
+  const auto outside = [low, span](const std::int32_t* x, std::size_t n) {
+    std::uint32_t any = 0;
+    for (std::size_t i = 0; i < n; ++i) any |= (static_cast<std::uint32_t>(x[i]) - low > span);
+    return any;
+  };
+  constexpr std::size_t kGroup = 32;
+  std::uint32_t any = 0;
+  std::size_t i = 0;
+  for (; i + kGroup <= in.size(); i += kGroup) any |= outside(in.data() + i, kGroup);
+  any |= outside(in.data() + i, in.size() - i);
+  if (any != 0) {
+    const auto [lo, hi] = std::minmax_element(in.begin(), in.end());
     const std::int32_t bad = *lo < sample_min_ ? *lo : *hi;
     throw std::out_of_range(
         fmt::format("IirSampleModel: sample {} outside [{}, {}]", bad, sample_min_, sample_max_));

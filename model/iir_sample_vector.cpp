@@ -114,6 +114,7 @@ struct Ymm {
   FLANGE_TARGET static V mul32(V a, V b) { return _mm256_mul_epi32(a, b); }
   // The two's complement value of bits 0..51.
   FLANGE_TARGET static V sext52(V a) { return _mm256_srai_epi64(_mm256_slli_epi64(a, 12), 12); }
+  FLANGE_TARGET static V shl12(V a) { return _mm256_slli_epi64(a, 12); }
   FLANGE_TARGET static V widen32(const std::int32_t* p) {
     return _mm256_cvtepi32_epi64(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)));
   }
@@ -158,6 +159,7 @@ struct Zmm {
   FLANGE_TARGET static V mul32(V a, V b) { return _mm512_mul_epi32(a, b); }
   // The two's complement value of bits 0..51.
   FLANGE_TARGET static V sext52(V a) { return _mm512_srai_epi64(_mm512_slli_epi64(a, 12), 12); }
+  FLANGE_TARGET static V shl12(V a) { return _mm512_slli_epi64(a, 12); }
   FLANGE_TARGET static V widen32(const std::int32_t* p) {
     return _mm512_cvtepi32_epi64(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)));
   }
@@ -189,7 +191,7 @@ struct Words {
   using V = typename T::V;
   V wb[m + 1], hb[m + 1];             // W_b[i], H_b[i], i = 0..M
   V wa[m + 1], ha[m + 1], ee[m + 1];  // W_a[j], H_a[j], E[j], j = 1..M ([0] unused)
-  V pre_lo, shift_lo, shift_acc, mask_f, ext_min, ext_max, ext_span;
+  V pre_lo, shift_lo, shift_acc, mask_f, ext_min, ext_max, ext_span;  // shift_lo = L + 12
 };
 
 // Each lane's history: u (its input), w (its y_ext), r (its errors + 2^(F-1)), newest first; and
@@ -215,23 +217,28 @@ FLANGE_TARGET inline __mmask8 lane_step(const Words<T, m>& c, State<T>& s, const
   using V = typename T::V;
   const V zero = T::set1(0);
   const V u0 = T::shift_in(s.y2, T::load(x_at));
-  // The terms of what the last step made (w[n-1], r[n-1]) are exact 32 x 32-bit products added to
-  // exact int64 sums. Everything older is summed modulo 2^52 by multiply-adds, oldest first and u0
-  // (step t-2's y_ext, shifted in) last, and sign-extended from bit 51 off the critical path. The
-  // loop-carried path y[t-1] -> y[t] is a product, an add, >>> L, an add and >>> F.
+  // The H and E terms of what the last step made (w[n-1], r[n-1]) are exact 32 x 32-bit products
+  // added to exact int64 sums. Everything else is summed modulo 2^52 by multiply-adds, oldest first
+  // and u0 (step t-2's y_ext, shifted in) late, and sign-extended from bit 51. The loop-carried
+  // paths: y[t-1] -> y[t] a multiply-add (or a product and an add), two shifts, an add and >>> F
+  // (8 cycles); acc -> acc the mask, a product and three adds (9 cycles).
   V lo_pre = c.pre_lo, hi_pre = zero;
   if constexpr (m == 2) {
     lo_pre = T::madd(T::madd(lo_pre, c.wb[2], s.u2), c.wb[1], s.u1);
     hi_pre = T::madd(T::madd(hi_pre, c.hb[2], s.u2), c.hb[1], s.u1);
     lo_pre = T::madd(lo_pre, c.wa[2], s.w2);
-    hi_pre = T::madd(T::madd(hi_pre, c.ee[2], s.r2), c.ha[2], s.w2);
+    hi_pre = T::madd(hi_pre, c.ee[2], s.r2);
+    // Two chains, added: a chain of five multiply-adds (4 cycles each) would end after y[t-1]'s.
+    hi_pre = T::add(hi_pre, T::madd(T::madd(zero, c.ha[2], s.w2), c.hb[0], u0));
   } else {
     lo_pre = T::madd(lo_pre, c.wb[1], s.u1);
     hi_pre = T::madd(hi_pre, c.hb[1], s.u1);
+    hi_pre = T::madd(hi_pre, c.hb[0], u0);
   }
   lo_pre = T::madd(lo_pre, c.wb[0], u0);
-  hi_pre = T::madd(hi_pre, c.hb[0], u0);
-  const V lo = T::add(T::sext52(lo_pre), T::mul32(c.wa[1], s.w1));
+  // lo's last term too is a multiply-add (4 cycles, against 5 for the exact product and 1 for its
+  // add); lo >>> L then comes from bits 0..51 moved to the top and shifted down by L + 12.
+  const V lo = T::shl12(T::madd(lo_pre, c.wa[1], s.w1));
   V hi = T::add(T::add(T::sext52(hi_pre), T::mul32(c.ee[1], s.r1)), T::mul32(c.ha[1], s.w1));
   // Keep hi summed on its own: then the add after lo >>> L is the only one on the path.
   asm("" : "+v"(hi));
@@ -294,8 +301,21 @@ FLANGE_TARGET inline void finish_samples(const Plan& p, const std::int32_t* y, s
   const V half = T::set1(p.half_s), shift = T::set1(p.shift), top = T::set1(p.out_max);
   const V low32 = T::set1(0xffffffff), flag = T::set1(std::int64_t{1} << 32);
   std::size_t i = first;
-  // Whole vectors that do not wrap around the ring.
-  for (; i + T::kLanes <= end && i % kRing + T::kLanes <= kRing; i += T::kLanes) {
+  // Whole vectors that do not wrap around the ring; one by one only the samples before the wrap
+  // (with 2(K-1) not a multiple of the lanes every other chunk crosses it: the rest of such a
+  // chunk went one by one before) and at the end.
+  const auto scalar = [&](std::size_t at) __attribute__((always_inline)) {
+    const std::int64_t rounded = (std::int64_t{y[at - first]} + p.half_s) >> p.shift;
+    const bool clip = rounded > p.out_max;
+    out[at] = {static_cast<std::int32_t>(clip ? p.out_max : rounded),
+               clip || ring[at % kRing] != 0};
+    ring[at % kRing] = 0;
+  };
+  while (i + T::kLanes <= end) {
+    if (i % kRing + T::kLanes > kRing) {
+      for (; i % kRing != 0; ++i) scalar(i);
+      continue;
+    }
     const V rounded = T::srav(T::add(T::widen32(y + (i - first)), half), shift);
     auto flagged = T::gt(rounded, top);
     if (!ring_clean) {
@@ -304,13 +324,9 @@ FLANGE_TARGET inline void finish_samples(const Plan& p, const std::int32_t* y, s
     }
     T::store(reinterpret_cast<std::int64_t*>(out + i),
              T::mask_or(T::band(T::min(rounded, top), low32), flagged, flag));
+    i += T::kLanes;
   }
-  for (; i < end; ++i) {
-    const std::int64_t rounded = (std::int64_t{y[i - first]} + p.half_s) >> p.shift;
-    const bool clip = rounded > p.out_max;
-    out[i] = {static_cast<std::int32_t>(clip ? p.out_max : rounded), clip || ring[i % kRing] != 0};
-    ring[i % kRing] = 0;
-  }
+  for (; i < end; ++i) scalar(i);
 }
 
 // The kernel for `lanes` = T::kLanes and M = kOrder.
@@ -345,7 +361,7 @@ void run_lanes(const Plan& p, std::int64_t* history, const std::int32_t* in, Sam
     buf[k] = k < sections ? (p.half_f - p.half_f * sum_e) * (std::int64_t{1} << p.split) : 0;
   }
   c.pre_lo = T::load(buf);
-  c.shift_lo = T::set1(p.split);
+  c.shift_lo = T::set1(p.split + 12);
   c.shift_acc = T::set1(p.frac);
   c.mask_f = T::set1(p.mask_f);
   c.ext_min = T::set1(p.ext_min);

@@ -6,14 +6,16 @@
 // The sections run side by side in 64-bit SIMD lanes (4 lanes for K <= 4, 8 for K <= 8), section
 // k on sample n - 2k: its input, section k-1's y_ext, was made two steps earlier, so the lane
 // shift (valignq) is not on the loop-carried path, which is each section's own feedback only.
-// Per step and lane: the terms of the last step's y_ext and error (w[n-1], r[n-1]) are exact
-// 32 x 32-bit products (vpmuldq) on exact int64 sums; all older terms are summed modulo 2^52 by
-// multiply-adds (vpmadd52luq) and sign-extended from bit 51, which `supported` and the model's
-// bounds make exact for every legal input (|lo|, |acc| < 2^51; y_ext, r and the words within 32
-// bits). The error history is kept as r = acc mod 2^F, its constant -2^(F-1) E folded into lo's
-// preload. A chunk of steps first runs without the clip test, only tracking y_ext's range; if
-// some y_ext left [-2^(D-1+s), 2^(D-1+s) - 1] the chunk is run again from its start with the
-// test and the clips. The last section's y_ext is rounded and clipped per chunk.
+// Per step and lane: the H and E terms of the last step's y_ext and error (w[n-1], r[n-1]) are
+// exact 32 x 32-bit products (vpmuldq) on exact int64 sums; all other terms, lo's W_a[1] w[n-1]
+// included, are summed modulo 2^52 by multiply-adds (vpmadd52luq) and sign-extended from bit 51,
+// which `supported` and the model's bounds make exact for every legal input (|lo|, |acc| < 2^51;
+// y_ext, r and the words within 32 bits). The loop-carried path is 9 cycles a step (acc -> r ->
+// E[1] r product -> two adds -> acc; y -> W_a[1] w multiply-add -> shifts -> add -> y). The error
+// history is kept as r = acc mod 2^F, its constant -2^(F-1) E folded into lo's preload. A chunk of
+// steps first runs without the clip test, only tracking y_ext's range; if some y_ext left
+// [-2^(D-1+s), 2^(D-1+s) - 1] the chunk is run again from its start with the test and the clips.
+// The last section's y_ext is rounded and clipped per chunk.
 #pragma once
 
 #include <cstddef>

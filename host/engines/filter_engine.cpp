@@ -53,12 +53,16 @@ class FloatEngine : public FilterEngine {
       : filter_(model::load_float_design(filter_json, channel)) {}
   std::string name() const override { return "float"; }
   void process(const std::vector<EngineSample>& in, std::vector<EngineOutput>& out) override {
+    units_.resize(in.size());
+    for (std::size_t k = 0; k < in.size(); ++k) units_[k] = in[k].unit;
+    filter_.process(units_, units_);  // step() over the block, bit for bit
     out.resize(in.size());
-    for (std::size_t k = 0; k < in.size(); ++k) out[k] = {filter_.step(in[k].unit), false};
+    for (std::size_t k = 0; k < in.size(); ++k) out[k] = {units_[k], false};
   }
 
  private:
   model::ReferenceFilter filter_;
+  std::vector<double> units_;  // reused from block to block
 };
 
 }  // namespace

@@ -49,13 +49,33 @@ inline char* write_fixed6(char* at, double value) {
                                            ? 0ULL - static_cast<unsigned long long>(millionths)
                                            : static_cast<unsigned long long>(millionths);
   if (millionths < 0) *at++ = '-';
-  // Clearances, temperatures and voltages have one or two digits before the point: a lookup.
+  // Clearances, temperatures and voltages have one or two digits before the point: a lookup;
+  // times up to eight digits (three years in seconds) by pairs from the right.
   const unsigned long long whole = magnitude / 1000000;
   if (whole < 10) {
     *at++ = static_cast<char>('0' + whole);
   } else if (whole < 100) {
     std::memcpy(at, &detail::kDigitPairs[2 * whole], 2);
     at += 2;
+  } else if (whole < 100000000) {
+    auto rest = static_cast<unsigned>(whole);
+    const int digits = rest < 1000       ? 3
+                       : rest < 10000    ? 4
+                       : rest < 100000   ? 5
+                       : rest < 1000000  ? 6
+                       : rest < 10000000 ? 7
+                                         : 8;
+    char* p = at + digits;
+    for (; rest >= 100; rest /= 100) {
+      p -= 2;
+      std::memcpy(p, &detail::kDigitPairs[2 * (rest % 100)], 2);
+    }
+    if (rest >= 10) {
+      std::memcpy(p - 2, &detail::kDigitPairs[2 * rest], 2);
+    } else {
+      p[-1] = static_cast<char>('0' + rest);
+    }
+    at += digits;
   } else {
     at = std::to_chars(at, at + kMaxFixed6IntegerDigits, whole).ptr;
   }

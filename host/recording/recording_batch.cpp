@@ -18,6 +18,11 @@ void RecordingBatch::read_rows(const RecordingColumns& columns) {
       }
       RecordingRow& row = rows[size];
       clear_row(row, line_count);
+      if (columns.read_plain_line(row, line_text, t_texts[size])) {
+        ++size;
+        continue;
+      }
+      clear_row(row, line_count);  // the general reading below decides the line
       split_fields(line_text, fields);
       row.problem = columns.read_fields(row, fields);
       t_texts[size] = {};

@@ -128,6 +128,41 @@ RecordingColumns::RecordingColumns(const std::string& path, std::string_view hea
   clearance_ = *clearance;
   temp_ = *temp;
   voltage_ = *voltage;
+  plain_ = count_ == 4 && !run_;
+}
+
+bool RecordingColumns::read_plain_line(RecordingRow& row, std::string_view line,
+                                       std::string_view& t_text) const {
+  if (!plain_) return false;
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  const char* at = line.data();
+  const char* const end = at + line.size();
+  double values[4];
+  const char* starts[4];
+  for (int i = 0; i < 4; ++i) {
+    // from_chars neither skips blanks nor takes '+': such a field stops it at once. A field it
+    // takes up to the comma (or the line's end) is what split_fields and parse_number would read.
+    starts[i] = at;
+    const auto [ptr, ec] = std::from_chars(at, end, values[i]);
+    if (ec != std::errc() || ptr == at || !std::isfinite(values[i])) return false;
+    if (i < 3) {
+      if (ptr == end || *ptr != ',') return false;
+      at = ptr + 1;
+    } else if (ptr != end) {
+      return false;
+    }
+  }
+  row.t_s = values[t_];
+  row.clearance_mm = values[clearance_];
+  row.temp_c = values[temp_];
+  row.voltage_v = values[voltage_];
+  if (row.voltage_v < kMinVoltageV || row.voltage_v > kMaxVoltageV || row.temp_c < kMinTempC ||
+      row.temp_c > kMaxTempC) {
+    return false;
+  }
+  t_text = std::string_view(
+      starts[t_], static_cast<std::size_t>((t_ < 3 ? starts[t_ + 1] - 1 : end) - starts[t_]));
+  return true;
 }
 
 std::string RecordingColumns::read_fields(RecordingRow& row,

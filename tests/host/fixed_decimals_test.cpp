@@ -41,6 +41,14 @@ TEST(FixedDecimals, WritesSixDecimalsAsTheCountOfMillionthsSays) {
   EXPECT_EQ(fixed6(-99.9999996), "-100.000000");
   EXPECT_EQ(fixed6(123456789.0123456), "123456789.012346");
   EXPECT_EQ(fixed6(0.0000505), "0.000051");
+  // Every length of the whole part, at both ends (1 to 8 digits by pairs, then std::to_chars;
+  // x 1e6 stays exact up to 9 digits).
+  for (unsigned long long whole = 1, digits = 1; digits <= 9; whole *= 10, ++digits) {
+    const std::string first = std::to_string(whole), last = std::to_string(whole * 10 - 1);
+    EXPECT_EQ(fixed6(static_cast<double>(whole)), first + ".000000") << digits;
+    EXPECT_EQ(fixed6(-static_cast<double>(whole * 10 - 1) - 0.25), "-" + last + ".250000")
+        << digits;
+  }
   // Against the plain way (std::llround, then the whole part and the decimals through
   // std::to_chars), over integer parts of 1 to 13 digits.
   std::mt19937_64 random(11);
