@@ -12,8 +12,10 @@ root="$(cd "$here/../.." && pwd)"
 # property # set (- for none) # file # sed expression # the break
 mutations=(
   "LatencyExact#measurement_sos#rtl/iir_core.sv#s/assign writeback      = wb_pipe_q\[MacLatency-1\];/assign writeback      = wb_pipe_q[MacLatency-2];/#RTL: the write-back reads the accumulator one cycle early"
+  "LatencyExactFromPorts#measurement_sos#rtl/iir_core.sv#s/assign writeback      = wb_pipe_q\[MacLatency-1\];/assign writeback      = wb_pipe_q[MacLatency-2];/#RTL: the write-back reads the accumulator one cycle early"
   "LatencyExact#measurement_df1#tb/formal/iir_core_props.sv#s/(NumSections - 1) \* SectionPitch + 4;  \/\/ L/(NumSections - 1) * SectionPitch + 5;  \/\/ L/#property: a wrong latency constant (L + 1)"
   "BusyOverrunAsDocumented#vehicle_sos#rtl/iir_core.sv#s/({NumChannels{sample_valid_i \& (state_q != StIdle)}} \&/({NumChannels{sample_valid_i \& (state_q == StIssue)}} \&/#RTL: a sample dropped while the core waits for its last write-back is not flagged"
+  "BusyOverrunAsDocumentedFromPorts#vehicle_sos#rtl/iir_core.sv#s/({NumChannels{sample_valid_i \& (state_q != StIdle)}} \&/({NumChannels{sample_valid_i \& (state_q == StIssue)}} \&/#RTL: a sample dropped while the core waits for its last write-back is not flagged"
   "BusyOverrunAsDocumented#measurement_sos#rtl/iir_core.sv#s/      StIdle: begin/      StIdle, StFinish: begin/#RTL: a sample offered while the core waits for its last write-back is taken"
   "ScheduleAsDocumented#measurement_sos#rtl/iir_core.sv#s/            state_d = StFinish;/            state_d = StIdle;/#RTL: the FSM skips StFinish (busy_o falls 3 cycles early)"
   "BtcWithinRom#measurement_sos#rtl/iir_core.sv#s/if (btc_q == BtcWidth'(RomDepth - 1)) begin/if (btc_q == BtcWidth'(RomDepth)) begin/#RTL: the BTC counts one term past the ROM"

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Regenerates the small SOS coefficient sets that the co-simulation tests build the RTL for
-# (orders 1, 2, 3, 4, 8 and 12; fs = 6 Hz, fc = 0.5 Hz, like the measurement filter), and the
+# (orders 1, 2, 3, 4, 8 and 12; fs = 6 Hz, fc = 0.5 Hz, like the measurement filter), the
+# first-order direct form df1_order1 (the only set with sections of order M = 1), and the
 # multichannel cores: the vehicle filter shared by 4 and by 12 channels (loco_ch4, loco_ch12), and
 # three channels with a coefficient set each (loco_sets3).
-#   bash tests/data/coeffs/regenerate.sh [FLANGE]          rewrite tests/data/coeffs/sos_order<N>/
+#   bash tests/data/coeffs/regenerate.sh [FLANGE]          rewrite every set folder here
 #   bash tests/data/coeffs/regenerate.sh --check [FLANGE]  regenerate into a temp folder, compare
 # FLANGE defaults to build/flange.
 set -euo pipefail
@@ -21,6 +22,9 @@ SETS=()
 for order in 1 2 3 4 8 12; do
   SETS+=("sos_order$order|--fs 6 --order $order --fc 0.5 --structure sos --name sos_order$order")
 done
+# M = 1: a direct form of order 1 (K = 1). An sos design stores a first-order section as a biquad
+# (M = 2), so this is the only M = 1 set `flange design` can make.
+SETS+=("df1_order1|--fs 6 --order 1 --fc 0.5 --structure df1 --name df1_order1")
 for channels in 4 12; do
   SETS+=("loco_ch$channels|--fs 100 --order 7 --fc 0.259 --structure sos --channels $channels --name loco_ch$channels")
 done
