@@ -25,6 +25,10 @@ constexpr int kKnots = 7;
 // period still shows.
 constexpr int kClearanceKnots = 17;
 
+// How far a curve of temperature goes on beyond the calibration part's range, in knot spacings
+// (about 10 degC for a 20-80 degC session) before it is held.
+constexpr double kTemperatureReach = 1.0;
+
 // Knots of the compression surface: five in voltage over the top of the range (the lowest held
 // at 0), three in temperature.
 constexpr int kCompressionVoltKnots = 5;
@@ -42,13 +46,23 @@ constexpr double kRidge = 1e-3;
 
 // Piecewise-linear "hat" functions on evenly spread knots: hat k is 1 at knot k, 0 at the others;
 // beyond the ends the end hats stay at 1 (the curve is held constant there).
+// With `reach` > 0 the curve goes on along its end segments for up to `reach` knot spacings
+// beyond the ends before it is held: a temperature the held-out session reaches a little past the
+// calibration one's, where holding the curve flat would break a trend every formula continues.
 struct Hats {
   std::vector<double> knots;
+  double reach = 0.0;
   double weight(std::size_t k, double x) const {
     const double lo = knots.front(), hi = knots.back();
-    x = std::clamp(x, lo, hi);
     const double step = (hi - lo) / static_cast<double>(knots.size() - 1);
-    const double u = step > 0.0 ? (x - lo) / step : 0.0;
+    if (step <= 0.0) return k == 0 ? 1.0 : 0.0;
+    const double last = static_cast<double>(knots.size() - 1);
+    const double u = std::clamp((x - lo) / step, -reach, last + reach);
+    if (u < 0.0) return k == 0 ? 1.0 - u : k == 1 ? u : 0.0;
+    if (u > last) {
+      const double beyond = u - last;
+      return k + 1 == knots.size() ? 1.0 + beyond : k + 2 == knots.size() ? -beyond : 0.0;
+    }
     return std::max(0.0, 1.0 - std::abs(u - static_cast<double>(k)));
   }
 };
@@ -134,6 +148,7 @@ class CurveFamily : public Family {
       for (std::size_t k = 0; k < kAgeKnots; ++k) used_.push_back(k);
     } else {
       hats_ = hats_over(calibration.series.temp_c, kKnots);
+      hats_.reach = kTemperatureReach;
       for (std::size_t k = 0; k < kKnots; ++k) used_.push_back(k);
     }
   }
@@ -200,7 +215,9 @@ class CurveFamily : public Family {
 class PivotGainFamily : public Family {
  public:
   explicit PivotGainFamily(const Part& calibration)
-      : hats_(hats_over(calibration.series.temp_c, kKnots)) {}
+      : hats_(hats_over(calibration.series.temp_c, kKnots)) {
+    hats_.reach = kTemperatureReach;
+  }
 
   std::vector<std::string> names() const override {
     std::vector<std::string> out;
