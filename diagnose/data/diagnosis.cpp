@@ -480,6 +480,8 @@ struct Selection {
   std::vector<double> cal_free_v, ho_free_v;
   std::vector<int> modelled_index;
   bool free_shapes = false;  // whether the free-shape families compete (the second pass)
+  // One sentence per pick that another class explained as well (issue 11 item 2).
+  std::vector<std::string> confounded;
 };
 
 // The recorded voltage less what the free-shape picks add: what the replayed effects must meet.
@@ -776,6 +778,43 @@ void reestimate_noise(const Parts& parts, Selection& selection, DiagnosisResult&
   }
 }
 
+// What a class's effect follows, for saying which data would tell two classes apart.
+std::string variable_of(const std::string& effect) {
+  if (effect == "temp_offset_drift" || effect == "temp_gain_drift") return "the temperature";
+  if (effect == "thermal_lag") return "the temperature's rate of change";
+  if (effect == "ageing_drift") return "the time";
+  if (effect == "channel_skew") return "the clearance's moves";
+  if (effect == "mains_pickup") return "the spectrum";
+  return "the voltage (clearance)";
+}
+
+// When a candidate of another class gains within the least gain a pick must make of the pick's,
+// the two are confounded on this protocol: the pick stands, and a sentence says so and which data
+// would separate them.
+void note_confounding(const std::vector<Candidate>& candidates, const Pick& pick,
+                      Selection& selection) {
+  const Candidate& chosen = candidates[pick.best];
+  const double margin = kMinGainOfNoiseVariance * selection.sigma * selection.sigma;
+  std::vector<std::string> alike;
+  for (const Candidate& c : candidates) {
+    const std::string& name = c.fit.settings.name;
+    if (name == chosen.fit.settings.name ||
+        std::find(alike.begin(), alike.end(), name) != alike.end()) {
+      continue;
+    }
+    if (gain_of(c, selection) >= pick.gain - margin) alike.push_back(name);
+  }
+  for (const std::string& other : alike) {
+    const std::string a = variable_of(chosen.fit.settings.name), b = variable_of(other);
+    selection.confounded.push_back(fmt::format(
+        "{} and {} explain the held-out gap alike (within {:.0f} % of the noise variance): "
+        "confounded on this protocol; {} is reported, and a session in which {} and {} do not "
+        "move together would tell them apart",
+        chosen.fit.settings.name, other, 100.0 * kMinGainOfNoiseVariance, chosen.fit.settings.name,
+        a, a == b ? "the other's shape" : b));
+  }
+}
+
 // Greedy selection of bias-type effects, each scored on the held-out part: at most
 // kMaxSelected, stopping at the first round whose best candidate is not significant.
 void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Selection& selection,
@@ -797,6 +836,7 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
       }
       break;
     }
+    note_confounding(candidates, pick, selection);
     take_pick(std::move(candidates), pick, selection);
     if (options.estimate_noise) reestimate_noise(parts, selection, result);
   }
@@ -1056,6 +1096,9 @@ void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisRes
         "the held-out gap is within {:.0f} % of the twin's noise and no stage exceeds its noise "
         "floor",
         100.0 * (kGapRatio - 1.0)));
+  }
+  if (diagnosis.status != "none") {
+    reasons.insert(reasons.end(), selection.confounded.begin(), selection.confounded.end());
   }
   if (diagnosis.stage.empty()) diagnosis.stage = "none";
 }

@@ -6,6 +6,7 @@
 // inverted for a bench sweep, then the effect written by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -290,6 +291,39 @@ INSTANTIATE_TEST_SUITE_P(
         ShapeCase{"NonlinearityRippleInClearance", each(clearance_ripple), "nonlinearity", 0.0, {}},
         ShapeCase{"NonlinearityCubicInVoltage", each(cubic_voltage), "nonlinearity", 0.0, {}}),
     [](const ::testing::TestParamInfo<ShapeCase>& shape) { return shape.param.name; });
+
+// A protocol on which time and temperature move together (both sessions heat steadily from 20 to
+// 80 degC, clocks restarting at 0): an offset that follows the temperature is explained as well
+// by a trend in time. The diagnosis names one and says that the two are confounded, and what
+// session would separate them.
+TEST(Confounding, TimeAndTemperatureMovingTogetherAreReportedAsSuch) {
+  const auto steady = [](double phase_s) {
+    Truth truth = bench_truth(phase_s, 600.0);
+    for (std::size_t i = 0; i < truth.t_s.size(); ++i) {
+      truth.ambient_c[i] = 20.0 + 60.0 * truth.t_s[i] / kSessionS;
+    }
+    return truth;
+  };
+  const auto offset = [](const Truth& truth) {
+    Session s = unchanged(truth);
+    s.voltage = [temp = truth.ambient_c](std::size_t i, double v) {
+      return v + 0.0006 * (temp[i] - 20.0);
+    };
+    return s;
+  };
+  const Truth first = steady(0.0), second = steady(70.0);
+  // 0.036 V over the session: 1.7 V/day, within the library ageing's +-2 V/day.
+  const DiagnosisResult r = diagnose_in_detail(record(first, offset(first), 0.005, 5),
+                                               record(second, offset(second), 0.005, 6), {});
+  EXPECT_EQ(r.diagnosis.status, "explained");
+  const auto confounded =
+      std::find_if(r.detail.reasons.begin(), r.detail.reasons.end(), [](const std::string& s) {
+        return s.find("confounded on this protocol") != std::string::npos;
+      });
+  ASSERT_NE(confounded, r.detail.reasons.end()) << stages_of(r);
+  EXPECT_NE(confounded->find("the temperature"), std::string::npos) << *confounded;
+  EXPECT_NE(confounded->find("the time"), std::string::npos) << *confounded;
+}
 
 // No effect at all, at three noise levels from a fine 5 mV to 0.15 V: "none", every seed.
 class NullPairs : public ::testing::TestWithParam<double> {};
