@@ -322,16 +322,6 @@ class CompressionFamily : public Family {
   Hats volt_, temp_;
 };
 
-// Linear interpolation of `x` at time `t_s`, held constant beyond the ends.
-double at_time(const std::vector<double>& t, const std::vector<double>& x, double t_s) {
-  if (t_s <= t.front()) return x.front();
-  if (t_s >= t.back()) return x.back();
-  const auto upper = std::upper_bound(t.begin(), t.end(), t_s);
-  const std::size_t j = static_cast<std::size_t>(upper - t.begin());
-  const double w = (t_s - t[j - 1]) / (t[j] - t[j - 1]);
-  return x[j - 1] + w * (x[j] - x[j - 1]);
-}
-
 // The coil's temperature off the recorded one, through mixes of lags and advances.
 class LagFamily : public Family {
  public:
@@ -361,7 +351,7 @@ class LagFamily : public Family {
       const auto col = static_cast<Eigen::Index>(kLags.size() + k);
       for (std::size_t i = 0; i < n; ++i) {
         a(static_cast<Eigen::Index>(i), col) =
-            dv_dt[i] * (at_time(t, temp, t[i] + kLeads[k]) - temp[i]);
+            dv_dt[i] * (interpolate_at(t, temp, t[i] + kLeads[k]) - temp[i]);
       }
     }
     return a;

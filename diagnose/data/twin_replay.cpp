@@ -17,8 +17,9 @@ ChainStage stage_of(const std::string& name) {
   return sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(name))].stage;
 }
 
-// Linear interpolation of `values` at time `t_s` (held constant beyond the ends).
-double interpolate(const std::vector<double>& t, const std::vector<double>& values, double t_s) {
+}  // namespace
+
+double interpolate_at(const std::vector<double>& t, const std::vector<double>& values, double t_s) {
   if (t_s <= t.front()) return values.front();
   if (t_s >= t.back()) return values.back();
   const auto upper = std::upper_bound(t.begin(), t.end(), t_s);
@@ -26,8 +27,6 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& valu
   const double w = (t_s - t[j - 1]) / (t[j] - t[j - 1]);
   return values[j - 1] + w * (values[j] - values[j - 1]);
 }
-
-}  // namespace
 
 std::vector<double> ambient_from_recorded(const RecordingSeries& series,
                                           const std::vector<sim::EffectSettings>& effects) {
@@ -39,7 +38,7 @@ std::vector<double> ambient_from_recorded(const RecordingSeries& series,
       const double skew_s = effect.params.at("skew_s");
       std::vector<double> advanced(n);
       for (std::size_t i = 0; i < n; ++i) {
-        advanced[i] = interpolate(series.t_s, ambient, series.t_s[i] + skew_s);
+        advanced[i] = interpolate_at(series.t_s, ambient, series.t_s[i] + skew_s);
       }
       ambient = std::move(advanced);
     }

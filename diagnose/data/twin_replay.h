@@ -14,6 +14,10 @@
 
 namespace flange::diagnose {
 
+// Linear interpolation of `values` (sampled at the increasing times `t`) at time `t_s`, held
+// constant beyond the ends.
+double interpolate_at(const std::vector<double>& t, const std::vector<double>& values, double t_s);
+
 // The twin's ambient temperature behind a recorded one: effects that delay the temperature
 // channel (channel_skew with skew_s > 0, thermal_lag with tau_s < 0) are undone, so that the
 // twin driven by the result records what was recorded. Others leave it as recorded.

@@ -152,14 +152,16 @@ Session coil_lags(const Truth& truth) {
   for (std::size_t i = 0; i < fast.size(); ++i) s.coil_c[i] = 0.5 * (fast[i] + slow[i]);
   return s;
 }
+// The ambient `dead_s` late (its first value before that).
+std::vector<double> ambient_late(const Truth& truth, double dead_s) {
+  std::vector<double> late(truth.t_s.size());
+  const std::size_t dead = static_cast<std::size_t>(dead_s * kFsHz);
+  for (std::size_t i = 0; i < late.size(); ++i) late[i] = truth.ambient_c[i < dead ? 0 : i - dead];
+  return late;
+}
 Session coil_dead_time(const Truth& truth) {
   Session s = unchanged(truth);
-  std::vector<double> delayed(truth.t_s.size());
-  const std::size_t dead = static_cast<std::size_t>(60.0 * kFsHz);
-  for (std::size_t i = 0; i < delayed.size(); ++i) {
-    delayed[i] = truth.ambient_c[i < dead ? 0 : i - dead];
-  }
-  s.coil_c = lagged(truth.t_s, delayed, 150.0);
+  s.coil_c = lagged(truth.t_s, ambient_late(truth, 60.0), 150.0);
   return s;
 }
 // The thermocouple in a sheath (two lags in series, 60 s and 90 s), or behind a 40 s dead time
@@ -171,12 +173,7 @@ Session sheathed_reading(const Truth& truth) {
 }
 Session late_reading(const Truth& truth) {
   Session s = unchanged(truth);
-  std::vector<double> delayed(truth.t_s.size());
-  const std::size_t dead = static_cast<std::size_t>(40.0 * kFsHz);
-  for (std::size_t i = 0; i < delayed.size(); ++i) {
-    delayed[i] = truth.ambient_c[i < dead ? 0 : i - dead];
-  }
-  s.recorded_c = lagged(truth.t_s, delayed, 60.0);
+  s.recorded_c = lagged(truth.t_s, ambient_late(truth, 40.0), 60.0);
   return s;
 }
 
