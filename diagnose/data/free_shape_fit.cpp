@@ -105,16 +105,21 @@ class Family {
 // fits on the held-out part, which the selection charges against the gain).
 class MainsFamily {
  public:
-  // Picks the lines on the calibration gap.
+  // Finds the lines on the calibration gap, and the aliases they lie near.
   MainsFamily(const Part& calibration, const std::vector<double>& gap_v);
   bool empty() const { return tones_hz_.empty(); }
   std::size_t lines() const { return tones_hz_.size(); }
-  // The tones fitted window by window to `gap_v` on `part`; `values` counts what that fits.
+  // The calibration's lines fitted window by window to its gap.
+  std::vector<double> fitted_on_calibration(const Part& calibration,
+                                            const std::vector<double>& gap_v) const;
+  // Another part's own lines near the aliases kept, fitted window by window to `gap_v`;
+  // `values` counts what that fits.
   std::vector<double> fitted(const Part& part, const std::vector<double>& gap_v, int& values) const;
   void describe(FreeShapeFit& fit, const std::vector<double>& cal_tones_v) const;
 
  private:
-  std::vector<double> tones_hz_;
+  std::vector<double> tones_hz_;   // the aliases with a line on the calibration part
+  std::vector<double> cal_lines_;  // the lines found there, Hz
 };
 
 // The sensor's age at every sample, in days from the calibration part's start: the held-out
@@ -716,7 +721,8 @@ MainsFamily::MainsFamily(const Part& calibration, const std::vector<double>& gap
     }
   }
   // The aliases with a line on the calibration part.
-  for (double f : find_lines(t, gap_v, aliases)) {
+  cal_lines_ = find_lines(t, gap_v, aliases);
+  for (double f : cal_lines_) {
     for (double alias : aliases) {
       if (std::abs(f - alias) <= kMainsSearchHz + 1e-9 &&
           std::find(tones_hz_.begin(), tones_hz_.end(), alias) == tones_hz_.end()) {
@@ -724,6 +730,12 @@ MainsFamily::MainsFamily(const Part& calibration, const std::vector<double>& gap
       }
     }
   }
+}
+
+std::vector<double> MainsFamily::fitted_on_calibration(const Part& calibration,
+                                                       const std::vector<double>& gap_v) const {
+  int values = 0;
+  return windowed_tones(calibration.series.t_s, gap_v, cal_lines_, values);
 }
 
 std::vector<double> MainsFamily::fitted(const Part& part, const std::vector<double>& gap_v,
@@ -737,14 +749,15 @@ std::vector<double> MainsFamily::fitted(const Part& part, const std::vector<doub
 
 void MainsFamily::describe(FreeShapeFit& fit, const std::vector<double>& cal_tones_v) const {
   std::string lines;
-  for (std::size_t k = 0; k < tones_hz_.size(); ++k) {
-    fit.params[fmt::format("line_hz_{}", k + 1)] = tones_hz_[k];
-    lines += fmt::format("{}{:.3g} Hz", k == 0 ? "" : ", ", tones_hz_[k]);
+  for (std::size_t k = 0; k < cal_lines_.size(); ++k) {
+    fit.params[fmt::format("line_hz_{}", k + 1)] = cal_lines_[k];
+    lines += fmt::format("{}{:.4g} Hz", k == 0 ? "" : ", ", cal_lines_[k]);
   }
   const double rms = std::sqrt(mean_square(cal_tones_v));
   fit.params["rms_v"] = rms;
   fit.description = fmt::format(
-      "lines at the aliases of the mains ({}), {:.3g} V RMS, their amplitude and phase free in "
+      "lines at the aliases of the mains ({} on the calibration part), {:.3g} V RMS, their "
+      "amplitude and phase free in "
       "every {:g} s window of each session (the mains' phase at a session's start is arbitrary)",
       lines, rms, kMainsWindowS);
 }
@@ -785,8 +798,7 @@ FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries
       fit.description = "no line at an alias of the mains";
       return fit;
     }
-    int cal_values = 0;
-    fit.cal_voltage_v = mains.fitted(cal_part, cal_gap_v, cal_values);
+    fit.cal_voltage_v = mains.fitted_on_calibration(cal_part, cal_gap_v);
     fit.heldout_voltage_v = mains.fitted(Part{heldout, ho_replay}, ho_gap_v, fit.heldout_values);
     mains.describe(fit, fit.cal_voltage_v);
     fit.free_values = 3 * static_cast<int>(mains.lines());  // frequency, amplitude and phase
