@@ -581,19 +581,24 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
   }
   std::vector<Candidate> candidates;
   for (std::size_t i = 0; i < names.size(); ++i) candidates.push_back(pending[i].get());
-  // The free shapes of the classes not yet modelled: least squares on the gap left, no refit.
+  // The free shapes of the classes not yet modelled: least squares on the gap left, no refit;
+  // in parallel too, taken in catalogue order.
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
+  std::vector<std::future<Candidate>> pending_free;
   for (const FreeShapeFamily& family : free_shape_families()) {
     if (!selection.free_shapes || class_taken(family.effect, selection)) continue;
-    Candidate c;
-    c.free_shape = fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
-                                  parts.ho_replay, cal_gap, selection.current_error);
-    c.fit.settings = sim::make_effect_settings(family.effect, {}, "diagnose free shape");
-    c.fit.rms_v = rms_of(minus(cal_gap, c.free_shape->cal_voltage_v));
-    c.with = modelled;
-    c.heldout_error = minus(selection.current_error, c.free_shape->heldout_voltage_v);
-    candidates.push_back(std::move(c));
+    pending_free.push_back(std::async(std::launch::async, [&, family] {
+      Candidate c;
+      c.free_shape = fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
+                                    parts.ho_replay, cal_gap, selection.current_error);
+      c.fit.settings = sim::make_effect_settings(family.effect, {}, "diagnose free shape");
+      c.fit.rms_v = rms_of(minus(cal_gap, c.free_shape->cal_voltage_v));
+      c.with = modelled;
+      c.heldout_error = minus(selection.current_error, c.free_shape->heldout_voltage_v);
+      return c;
+    }));
   }
+  for (std::future<Candidate>& c : pending_free) candidates.push_back(c.get());
   return candidates;
 }
 

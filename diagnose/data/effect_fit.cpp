@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 #include "residual_tests.h"
@@ -274,6 +275,7 @@ class GapRms {
       if (m.name != "ageing_drift") held_.push_back(m);
     }
     profile_ageing_ = held_.size() < modelled.size();
+    if (name_ == "mains_pickup" && !any_after_wiring(modelled)) prepare_mains_tail();
   }
 
   std::size_t dims() const { return params_.size(); }
@@ -287,11 +289,16 @@ class GapRms {
   }
 
   double operator()(const std::vector<double>& unit) const {
-    std::vector<sim::EffectSettings> effects = profile_ageing_ ? held_ : modelled_;
-    effects.push_back(settings_at(unit));
-    const std::vector<double> sim_v = replay_.voltage(effects);
-    std::vector<double> gap(sim_v.size());
-    for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v_[i] - sim_v[i];
+    std::vector<double> gap;
+    if (!mains_tail_.empty()) {
+      gap = gap_with_mains_tail(settings_at(unit));
+    } else {
+      std::vector<sim::EffectSettings> effects = profile_ageing_ ? held_ : modelled_;
+      effects.push_back(settings_at(unit));
+      const std::vector<double> sim_v = replay_.voltage(effects);
+      gap.resize(sim_v.size());
+      for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v_[i] - sim_v[i];
+    }
     if (profile_ageing_) remove_ageing_line(gap, replay_.times());
     double sum = 0.0;
     for (const double g : gap) sum += g * g;
@@ -299,6 +306,60 @@ class GapRms {
   }
 
  private:
+  // Mains pickup adds its tones on the cable, after every effect but the acquisition's: with no
+  // acquisition effect modelled, the twin with it is the twin without it plus the tones, so
+  // the replay is made once and each step of the search only sums the tones, from sin(k w t)
+  // and cos(k w t) kept per sample (k w t + k phi by the angle sum).
+  static bool any_after_wiring(const std::vector<sim::EffectSettings>& effects) {
+    for (const sim::EffectSettings& e : effects) {
+      const auto stage =
+          sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(e.name))].stage;
+      if (stage > sim::ChainStage::kWiring) return true;
+    }
+    return false;
+  }
+
+  void prepare_mains_tail() {
+    const sim::EffectSettings any = settings_at(std::vector<double>(params_.size(), 0.0));
+    const int harmonics = static_cast<int>(any.params.at("harmonics"));
+    const double angular_hz = 2.0 * std::numbers::pi * any.params.at("mains_hz");
+    const std::vector<double>& t = replay_.times();
+    mains_base_v_ = replay_.voltage(profile_ageing_ ? held_ : modelled_);
+    for (int k = 1; k <= harmonics; ++k) {
+      MainsTone tone;
+      tone.sin_kwt.resize(t.size());
+      tone.cos_kwt.resize(t.size());
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        tone.sin_kwt[i] = std::sin(k * angular_hz * t[i]);
+        tone.cos_kwt[i] = std::cos(k * angular_hz * t[i]);
+      }
+      mains_tail_.push_back(std::move(tone));
+    }
+  }
+
+  std::vector<double> gap_with_mains_tail(const sim::EffectSettings& mains) const {
+    const double phase_rad = mains.params.at("phase_deg") * std::numbers::pi / 180.0;
+    std::vector<double> gap(real_v_.size());
+    for (std::size_t i = 0; i < gap.size(); ++i) gap[i] = real_v_[i] - mains_base_v_[i];
+    double amplitude_v = mains.params.at("amplitude_v");
+    for (std::size_t k = 0; k < mains_tail_.size(); ++k) {
+      const double kphi = static_cast<double>(k + 1) * phase_rad;
+      const double a_sin = amplitude_v * std::cos(kphi), a_cos = amplitude_v * std::sin(kphi);
+      const MainsTone& tone = mains_tail_[k];
+      for (std::size_t i = 0; i < gap.size(); ++i) {
+        gap[i] -= a_sin * tone.sin_kwt[i] + a_cos * tone.cos_kwt[i];
+      }
+      amplitude_v *= mains.params.at("harmonic_ratio");
+    }
+    return gap;
+  }
+
+  struct MainsTone {
+    std::vector<double> sin_kwt, cos_kwt;
+  };
+  std::vector<MainsTone> mains_tail_;  // empty: every step replays the twin
+  std::vector<double> mains_base_v_;   // the twin without the tones, when mains_tail_ is used
+
   const std::string& name_;
   const std::vector<FreeParam>& params_;
   sim::ParamValues fixed_;
@@ -330,17 +391,17 @@ std::vector<double> best_lattice_point(Objective& objective, std::size_t dims, i
   return start;
 }
 
-// Minimises `gap_rms`: a coarse lattice, then Nelder-Mead from its best point.
-EffectFit minimise_gap_rms(const GapRms& gap_rms) {
-  const std::size_t dims = gap_rms.dims();
+// Minimises `search` (a GapRms on the replay's search rows): a coarse lattice, then Nelder-Mead
+// from its best point; the point found is scored by `score` (the same on every row).
+EffectFit minimise_gap_rms(const GapRms& search, const GapRms& score) {
+  const std::size_t dims = search.dims();
   Objective objective;
-  objective.value = [&](const std::vector<double>& unit) { return gap_rms(unit); };
+  objective.value = [&](const std::vector<double>& unit) { return search(unit); };
   const int points = lattice_points(dims);
   const std::vector<double> start = best_lattice_point(objective, dims, points);
   const std::vector<double> unit =
       nelder_mead(objective, start, 0.5 / (points - 1), 100 * static_cast<int>(dims));
-  const double value = objective.value(unit);
-  return {gap_rms.settings_at(unit), value, objective.evaluations + 1};
+  return {score.settings_at(unit), score(unit), objective.evaluations + 1};
 }
 
 }  // namespace
@@ -367,13 +428,16 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
     return {sim::make_effect_settings(name, {}, "diagnose fit"),
             std::numeric_limits<double>::infinity(), 0};
   }
+  const TwinReplay& search_replay = replay.search_replay();
+  const std::vector<double> search_v = replay.at_search_rows(real_v);
   EffectFit best;
   best.rms_v = std::numeric_limits<double>::infinity();
   for (const double mains_hz : mains_choices) {
     sim::ParamValues fixed;
     if (mains) fixed["mains_hz"] = mains_hz;
     const EffectFit fit =
-        minimise_gap_rms(GapRms(name, params, std::move(fixed), replay, real_v, modelled));
+        minimise_gap_rms(GapRms(name, params, fixed, search_replay, search_v, modelled),
+                         GapRms(name, params, fixed, replay, real_v, modelled));
     if (fit.rms_v < best.rms_v) {
       best.settings = fit.settings;
       best.rms_v = fit.rms_v;

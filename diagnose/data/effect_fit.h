@@ -24,7 +24,8 @@ struct EffectFit {
 };
 
 // Fits `name` on top of `modelled` (effects already in the twin), minimising
-// RMS(real_v - replay(modelled + name)).
+// RMS(real_v - replay(modelled + name)) over the replay's search rows (every row up to
+// TwinReplay::kSearchRows); rms_v is on every row.
 EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
                      const std::vector<double>& real_v,
                      const std::vector<sim::EffectSettings>& modelled);

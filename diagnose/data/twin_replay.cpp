@@ -10,6 +10,9 @@ namespace flange::diagnose {
 namespace {
 
 constexpr double kSecondsPerDay = 86400.0;
+// Coil states kept per replay: the fitted effects, and the candidate being searched when it is
+// itself a coil effect, with room for the parallel candidates' own.
+constexpr std::size_t kCoilCacheEntries = 6;
 
 using sim::ChainStage;
 
@@ -17,7 +20,23 @@ ChainStage stage_of(const std::string& name) {
   return sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(name))].stage;
 }
 
+// Which row of block `block` (of `stride` rows) the search subset takes: a fixed hash, so that
+// runs agree, spread over the block.
+std::size_t row_in_block(std::size_t block, std::size_t stride) {
+  std::uint64_t z = static_cast<std::uint64_t>(block) + 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return static_cast<std::size_t>(z % stride);
+}
+
 }  // namespace
+
+struct TwinReplay::SearchSubset {
+  RecordingSeries series;
+  std::vector<std::size_t> rows;
+  std::unique_ptr<TwinReplay> replay;
+};
 
 double interpolate_at(const std::vector<double>& t, const std::vector<double>& values, double t_s) {
   if (t_s <= t.front()) return values.front();
@@ -83,6 +102,79 @@ TwinReplay::TwinReplay(const RecordingSeries& series, const sim::PolynomialSenso
                          (2.0 * h);
     temperature_sensitivity_[i] = v.clip == sim::RailClip::kNone ? -dd_dt * sensitivity_[i] : 0.0;
   }
+  if (n > kSearchRows) {
+    auto subset = std::make_shared<SearchSubset>();
+    const std::size_t stride = (n + kSearchRows - 1) / kSearchRows;
+    for (std::size_t block = 0; block * stride < n; ++block) {
+      const std::size_t i = std::min(n - 1, block * stride + row_in_block(block, stride));
+      subset->rows.push_back(i);
+      subset->series.t_s.push_back(series.t_s[i]);
+      subset->series.clearance_mm.push_back(series.clearance_mm[i]);
+      subset->series.temp_c.push_back(series.temp_c[i]);
+      subset->series.voltage_v.push_back(series.voltage_v[i]);
+    }
+    subset->series.path = series.path;
+    subset->series.start_utc_s = series.start_utc_s;
+    subset->replay = std::make_unique<TwinReplay>(subset->series, nominal, age_offset_s);
+    search_ = std::move(subset);
+  }
+}
+
+const TwinReplay& TwinReplay::search_replay() const {
+  return search_ ? *search_->replay : *this;
+}
+
+std::vector<double> TwinReplay::at_search_rows(const std::vector<double>& full) const {
+  if (!search_) return full;
+  std::vector<double> picked;
+  picked.reserve(search_->rows.size());
+  for (const std::size_t i : search_->rows) picked.push_back(full[i]);
+  return picked;
+}
+
+std::shared_ptr<const TwinReplay::CoilSamples> TwinReplay::coil_samples(
+    const std::vector<sim::EffectSettings>& coil_effects, std::uint64_t seed) const {
+  {
+    const std::lock_guard<std::mutex> lock(coil_cache_->mutex);
+    auto& entries = coil_cache_->entries;
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+      if (entries[k].seed == seed && entries[k].coil_effects == coil_effects) {
+        std::rotate(entries.begin() + static_cast<std::ptrdiff_t>(k),
+                    entries.begin() + static_cast<std::ptrdiff_t>(k) + 1, entries.end());
+        return entries.back().samples;
+      }
+    }
+  }
+  std::vector<std::unique_ptr<sim::Effect>> chain;
+  std::vector<ChainStage> stages;
+  for (const sim::EffectSettings& effect : coil_effects) {
+    chain.push_back(sim::make_effect(effect, nominal_.v_min_v(), nominal_.v_max_v(), seed));
+    stages.push_back(stage_of(effect.name));
+  }
+  const std::vector<double> ambient = ambient_from_recorded(series_, coil_effects);
+  auto samples = std::make_shared<CoilSamples>(series_.size());
+  for (std::size_t i = 0; i < series_.size(); ++i) {
+    sim::ChainSample& sample = (*samples)[i];
+    sample.t_s = series_.t_s[i];
+    sample.clearance_mm = series_.clearance_mm[i];
+    sample.ambient_c = sample.coil_c = sample.thermocouple_c = ambient[i];
+    for (const ChainStage stage : {ChainStage::kMount, ChainStage::kThermal}) {
+      for (std::size_t k = 0; k < chain.size(); ++k) {
+        if (stages[k] == stage) chain[k]->apply(sample);
+      }
+    }
+    const sim::VoltageSolution v =
+        nominal_clip_[i] == sim::RailClip::kNone
+            ? nominal_.voltage_near(sample.clearance_mm, sample.coil_c, nominal_v_[i])
+            : nominal_.voltage_for(sample.clearance_mm, sample.coil_c);
+    sample.voltage_v = v.volts;
+    sample.clip = v.clip;
+  }
+  const std::lock_guard<std::mutex> lock(coil_cache_->mutex);
+  auto& entries = coil_cache_->entries;
+  if (entries.size() == kCoilCacheEntries) entries.erase(entries.begin());
+  entries.push_back({coil_effects, seed, samples});
+  return samples;
 }
 
 std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& effects,
@@ -100,36 +192,36 @@ std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& 
             [](const sim::EffectSettings* a, const sim::EffectSettings* b) {
               return sim::catalogue_index(a->name) < sim::catalogue_index(b->name);
             });
+  // The coil effects in chain order, and whether any is there: without one the coil sees the
+  // recorded inputs and the inversion made once in the constructor serves.
+  std::vector<sim::EffectSettings> coil_effects;
   std::vector<std::unique_ptr<sim::Effect>> chain;
   std::vector<ChainStage> stages;
-  bool moves_coil = false;
   for (const sim::EffectSettings* effect : ordered) {
+    const ChainStage stage = stage_of(effect->name);
+    const bool moves_drive = effect->name == "channel_skew" && effect->params.at("skew_s") > 0.0;
+    if (stage <= ChainStage::kThermal || moves_drive) coil_effects.push_back(*effect);
+    if (stage <= ChainStage::kThermal) continue;
     chain.push_back(sim::make_effect(*effect, nominal_.v_min_v(), nominal_.v_max_v(), seed));
-    stages.push_back(stage_of(effect->name));
-    moves_coil = moves_coil || stages.back() <= ChainStage::kThermal;
+    stages.push_back(stage);
   }
+  const std::shared_ptr<const CoilSamples> coil =
+      coil_effects.empty() ? nullptr : coil_samples(coil_effects, seed);
   const auto apply = [&](ChainStage stage, sim::ChainSample& sample) {
     for (std::size_t k = 0; k < chain.size(); ++k) {
       if (stages[k] == stage) chain[k]->apply(sample);
     }
   };
 
-  const std::vector<double> ambient = ambient_from_recorded(series_, effects);
-  const bool drive_changed = ambient != series_.temp_c;
-  moves_coil = moves_coil || drive_changed;
   std::vector<double> out(series_.size());
   for (std::size_t i = 0; i < series_.size(); ++i) {
     sim::ChainSample sample;
-    sample.t_s = series_.t_s[i];
-    sample.clearance_mm = series_.clearance_mm[i];
-    sample.ambient_c = sample.coil_c = sample.thermocouple_c = ambient[i];
-    apply(ChainStage::kMount, sample);
-    apply(ChainStage::kThermal, sample);
-    if (moves_coil) {
-      const sim::VoltageSolution v = nominal_.voltage_for(sample.clearance_mm, sample.coil_c);
-      sample.voltage_v = v.volts;
-      sample.clip = v.clip;
+    if (coil) {
+      sample = (*coil)[i];
     } else {
+      sample.t_s = series_.t_s[i];
+      sample.clearance_mm = series_.clearance_mm[i];
+      sample.ambient_c = sample.coil_c = sample.thermocouple_c = series_.temp_c[i];
       sample.voltage_v = nominal_v_[i];
       sample.clip = nominal_clip_[i];
     }

@@ -3,10 +3,13 @@
 // "sim" voltage the diagnosis compares with the recorded one. It runs the catalogue's effects
 // in the same chain order as sim::SensorTwin::step (a test checks they agree sample for
 // sample), but inverts the nominal model only once per sample and reuses that inversion while
-// no mount or thermal effect changes what the coil sees: fitting an effect replays thousands
-// of times.
+// no mount or thermal effect changes what the coil sees, and starts Newton from it when one
+// does: fitting an effect replays thousands of times.
 #pragma once
 
+#include <cstdint>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "diagnosis.h"
@@ -48,10 +51,41 @@ class TwinReplay {
     return temperature_sensitivity_;
   }
   const std::vector<double>& times() const { return series_.t_s; }
+  std::size_t size() const { return series_.size(); }
+
+  // The replay a parameter search runs on: this one up to kSearchRows rows; beyond that (a
+  // 100 Hz log), a replay of one row from each block of ceil(n / kSearchRows) consecutive rows,
+  // at a pseudo-random place in its block so that no tone aliases onto a constant the way a
+  // fixed stride can make it. A search on it costs what a 6 Hz session costs; the fit it finds
+  // is then scored on every row.
+  static constexpr std::size_t kSearchRows = 40000;
+  const TwinReplay& search_replay() const;
+  // `full` (one value per row of this replay) at the rows of search_replay().
+  std::vector<double> at_search_rows(const std::vector<double>& full) const;
   double age_offset_s() const { return age_offset_s_; }
   double v_min_v() const { return nominal_.v_min_v(); }
 
  private:
+  // Every sample as the coil sees it once the effects that move the coil or its temperature
+  // (mount and thermal stages, and a late temperature channel, which changes the drive) have
+  // acted, with the nominal model inverted there. A fit varies one effect while the others
+  // stay, so the last few of these are kept: a candidate downstream of a fitted thermal lag
+  // would otherwise invert every sample at every step of its search.
+  using CoilSamples = std::vector<sim::ChainSample>;
+  std::shared_ptr<const CoilSamples> coil_samples(
+      const std::vector<sim::EffectSettings>& coil_effects, std::uint64_t seed) const;
+  struct SearchSubset;
+  std::shared_ptr<const SearchSubset> search_;  // null while the series has <= kSearchRows
+  struct CoilCache {
+    struct Entry {
+      std::vector<sim::EffectSettings> coil_effects;
+      std::uint64_t seed = 0;
+      std::shared_ptr<const CoilSamples> samples;
+    };
+    std::mutex mutex;
+    std::vector<Entry> entries;  // most recently used last
+  };
+
   const RecordingSeries& series_;
   sim::PolynomialSensorModel nominal_;
   double age_offset_s_;
@@ -59,6 +93,7 @@ class TwinReplay {
   std::vector<sim::RailClip> nominal_clip_;
   std::vector<double> sensitivity_;
   std::vector<double> temperature_sensitivity_;
+  std::shared_ptr<CoilCache> coil_cache_ = std::make_shared<CoilCache>();
 };
 
 }  // namespace flange::diagnose

@@ -42,6 +42,12 @@ class PolynomialSensorModel {
   // Non-monotone models take the first root above v_min.
   VoltageSolution voltage_for(double clearance_mm, double temp_c) const;
 
+  // The same root found by Newton's method from `guess_v` (a nearby sample's voltage), for
+  // callers that invert millions of samples close to a known one (the diagnosis's replays).
+  // Falls back to voltage_for whenever Newton leaves the range or does not settle within a few
+  // steps, so it agrees with voltage_for to within voltage_for's own 1e-12 V tolerance.
+  VoltageSolution voltage_near(double clearance_mm, double temp_c, double guess_v) const;
+
   const Eigen::MatrixXd& coefficients() const { return a_; }
   double v_min_v() const { return v_min_v_; }
   double v_max_v() const { return v_max_v_; }

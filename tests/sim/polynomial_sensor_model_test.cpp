@@ -111,5 +111,20 @@ TEST(PolynomialSensorModel, RejectsModelsItCannotInvert) {
   EXPECT_THROW(PolynomialSensorModel(Eigen::MatrixXd::Ones(17, 1)), BadArgument);
 }
 
+TEST(PolynomialSensorModel, NewtonFromANearbyVoltageAgreesWithBrentAndItsRails) {
+  const PolynomialSensorModel model = PolynomialSensorModel::thesis_eq_3_14();
+  // Clearances past both rails, guesses from a tenth of a volt to the whole range away.
+  for (const double t_c : {-20.0, 20.0, 61.0, 98.0, 120.0}) {
+    for (double d = 0.5; d <= 12.0; d += 0.0625) {
+      const VoltageSolution brent = model.voltage_for(d, t_c);
+      for (const double guess : {0.0, 0.1, 3.3, 9.9, 10.0, brent.volts + 0.1, -1.0}) {
+        const VoltageSolution newton = model.voltage_near(d, t_c, guess);
+        ASSERT_EQ(newton.clip, brent.clip) << "d " << d << " T " << t_c << " guess " << guess;
+        ASSERT_NEAR(newton.volts, brent.volts, 2e-12) << "d " << d << " T " << t_c;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace flange::sim

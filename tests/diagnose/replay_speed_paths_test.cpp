@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// The shortcuts that keep a 100 Hz diagnosis fast must not change what it computes: the kept
+// coil states give the replay the twin would give, the search rows of a long log are an
+// increasing subset whose fit still recovers the effect, and the mains fit's tone sum scores
+// the point it finds exactly as a full replay does.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "effect_catalogue.h"
+#include "effect_fit.h"
+#include "sensor_twin.h"
+#include "twin_replay.h"
+
+namespace flange::diagnose {
+namespace {
+
+// A bench-like sweep at `fs_hz`: the micrometer's triangle over 1.5-10 mm (300 s period), the
+// blower heating to about 95 degC and the cool-down.
+RecordingSeries sweep(const std::vector<sim::EffectSettings>& effects, double fs_hz,
+                      double duration_s, double noise_v, std::uint64_t seed) {
+  sim::TwinConfig config;
+  config.noise.voltage_std_v = noise_v;
+  config.effects = effects;
+  sim::SensorTwin twin(config, seed);
+  RecordingSeries series;
+  const auto n = static_cast<int>(duration_s * fs_hz);
+  for (int i = 0; i <= n; ++i) {
+    const double t = i / fs_hz;
+    const double u = std::fmod(t, 300.0) / 300.0;
+    const double d = 1.5 + 8.5 * (u < 0.5 ? 2.0 * u : 2.0 - 2.0 * u);
+    const double temp = t < 0.5 * duration_s
+                            ? 20.0 + 75.0 * (1.0 - std::exp(-t / 400.0))
+                            : 20.0 + 75.0 * (1.0 - std::exp(-0.5 * duration_s / 400.0)) *
+                                         std::exp(-(t - 0.5 * duration_s) / 500.0);
+    const sim::Reading r = twin.step({t, d, temp});
+    series.t_s.push_back(t);
+    series.clearance_mm.push_back(d);
+    series.temp_c.push_back(r.temp_c);
+    series.voltage_v.push_back(r.voltage_v);
+  }
+  return series;
+}
+
+sim::EffectSettings effect(const std::string& name, const sim::ParamValues& values) {
+  return sim::make_effect_settings(name, values, "test");
+}
+
+double rms_gap(const std::vector<double>& a, const std::vector<double>& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(sum / static_cast<double>(a.size()));
+}
+
+TEST(ReplaySpeedPaths, KeptCoilStatesGiveWhatAFreshReplayGives) {
+  const RecordingSeries series = sweep({}, 6.0, 1200.0, 0.0, 1);
+  const sim::PolynomialSensorModel nominal = sim::PolynomialSensorModel::thesis_eq_3_14();
+  const TwinReplay kept(series, nominal);
+  const auto with_lag = [](double tau_s) {
+    return std::vector<sim::EffectSettings>{effect("thermal_lag", {{"tau_s", tau_s}}),
+                                            effect("range_compression", {})};
+  };
+  // Fill the cache past its size and come back to the first state: each answer must be the
+  // one a replay that never saw the others gives, bit for bit.
+  for (const double tau_s : {300.0, 600.0, 90.0, 1200.0, 45.0, 700.0, 800.0, 900.0, 300.0, 90.0}) {
+    const TwinReplay fresh(series, nominal);
+    ASSERT_EQ(kept.voltage(with_lag(tau_s)), fresh.voltage(with_lag(tau_s))) << tau_s;
+  }
+  // A late temperature channel changes what drives the coil, so it is part of the state.
+  const std::vector<sim::EffectSettings> late_temperature = {effect("channel_skew", {{"skew_s", 5}})};
+  const TwinReplay fresh(series, nominal);
+  EXPECT_EQ(kept.voltage(late_temperature), fresh.voltage(late_temperature));
+  EXPECT_NE(kept.voltage(late_temperature), kept.voltage({}));
+}
+
+TEST(ReplaySpeedPaths, ALongLogIsSearchedOnAnIncreasingSubsetOfItsRows) {
+  const sim::PolynomialSensorModel nominal = sim::PolynomialSensorModel::thesis_eq_3_14();
+  const RecordingSeries short_log = sweep({}, 6.0, 6600.0, 0.0, 2);
+  const TwinReplay short_replay(short_log, nominal);
+  EXPECT_EQ(&short_replay.search_replay(), &short_replay);  // 39,601 rows: every row
+
+  const RecordingSeries long_log = sweep({}, 100.0, 1800.0, 0.0, 3);  // 180,001 rows
+  const TwinReplay replay(long_log, nominal);
+  const TwinReplay& search = replay.search_replay();
+  ASSERT_NE(&search, &replay);
+  EXPECT_LE(search.size(), TwinReplay::kSearchRows);
+  EXPECT_GT(search.size(), TwinReplay::kSearchRows * 3 / 4);
+  const std::vector<double> picked_t = replay.at_search_rows(long_log.t_s);
+  ASSERT_EQ(picked_t, search.times());
+  for (std::size_t i = 1; i < picked_t.size(); ++i) ASSERT_GT(picked_t[i], picked_t[i - 1]);
+  // Not a fixed stride: every fifth row of a 60 Hz tone at 100 Hz is one value (60 x 5 / 100 is
+  // whole), the search rows see the tone.
+  std::vector<double> tone(long_log.size());
+  for (std::size_t i = 0; i < tone.size(); ++i) {
+    tone[i] = std::sin(2 * M_PI * 60 * long_log.t_s[i] + 0.3);
+  }
+  const std::vector<double> picked_tone = replay.at_search_rows(tone);
+  double spread = 0.0;
+  for (const double v : picked_tone) spread = std::max(spread, std::abs(v - picked_tone[0]));
+  EXPECT_GT(spread, 0.5);
+}
+
+TEST(ReplaySpeedPaths, A100HzLagIsFittedOnTheSearchRowsAndScoredOnEveryRow) {
+  const std::vector<sim::EffectSettings> truth = {effect("thermal_lag", {{"tau_s", 300}})};
+  const RecordingSeries log = sweep(truth, 100.0, 1800.0, 0.05, 4);
+  const TwinReplay replay(log, sim::PolynomialSensorModel::thesis_eq_3_14());
+  const EffectFit fit = fit_effect("thermal_lag", replay, log.voltage_v, {});
+  EXPECT_NEAR(fit.settings.params.at("tau_s"), 300.0, 6.0);
+  EXPECT_DOUBLE_EQ(fit.rms_v, rms_gap(log.voltage_v, replay.voltage({fit.settings})));
+  EXPECT_NEAR(fit.rms_v, 0.05, 0.002);
+}
+
+TEST(ReplaySpeedPaths, TheMainsToneSumScoresItsFitAsAFullReplayDoes) {
+  const std::vector<sim::EffectSettings> truth = {
+      effect("thermal_lag", {{"tau_s", 200}}),
+      effect("mains_pickup", {{"amplitude_v", 0.2}, {"phase_deg", 40}, {"harmonic_ratio", 0.4}})};
+  const RecordingSeries log = sweep(truth, 7.0, 2400.0, 0.03, 5);
+  const TwinReplay replay(log, sim::PolynomialSensorModel::thesis_eq_3_14());
+  const std::vector<sim::EffectSettings> modelled = {truth[0]};
+  const EffectFit fit = fit_effect("mains_pickup", replay, log.voltage_v, modelled);
+  std::vector<sim::EffectSettings> with = modelled;
+  with.push_back(fit.settings);
+  EXPECT_NEAR(fit.rms_v, rms_gap(log.voltage_v, replay.voltage(with)), 1e-12);
+  EXPECT_NEAR(fit.rms_v, 0.03, 0.002);
+  EXPECT_NEAR(fit.settings.params.at("amplitude_v"), 0.2, 0.01);
+  EXPECT_NEAR(fit.settings.params.at("harmonic_ratio"), 0.4, 0.05);
+}
+
+}  // namespace
+}  // namespace flange::diagnose
