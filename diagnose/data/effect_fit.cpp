@@ -447,33 +447,77 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
   return best;
 }
 
-VibrationSignature vibration_signature(const std::vector<double>& gap_v,
-                                       const std::vector<double>& sensitivity_v_per_mm) {
+namespace {
+
+// Samples on each side of the centred moving mean the level signature takes off the gap: about
+// 8 s at 6 Hz, so what a bias leaves (slow: the micrometer and the heating take minutes) is
+// removed and motion aliased down to a few tenths of a hertz stays.
+constexpr std::size_t kLevelHalfWindow = 24;
+
+// Fits E[y] = a + b s2 by least squares and fills the signature's statistics; `per_motion`
+// converts b to the motion's variance in mm^2 (1/2 for squared differences, 1 for levels).
+VibrationSignature regress_on_sensitivity(const std::vector<double>& y,
+                                          const std::vector<double>& s2, double per_motion) {
   VibrationSignature signature;
-  const std::size_t n = gap_v.size();
+  const std::size_t n = y.size();
   if (n < 16) return signature;
-  Eigen::MatrixXd design(n - 1, 2);
-  Eigen::VectorXd target(n - 1);
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    const double d = gap_v[i + 1] - gap_v[i];
-    const double s = 0.5 * (sensitivity_v_per_mm[i] + sensitivity_v_per_mm[i + 1]);
+  Eigen::MatrixXd design(n, 2);
+  Eigen::VectorXd target(n);
+  for (std::size_t i = 0; i < n; ++i) {
     design(static_cast<Eigen::Index>(i), 0) = 1.0;
-    design(static_cast<Eigen::Index>(i), 1) = s * s;
-    target(static_cast<Eigen::Index>(i)) = d * d;
+    design(static_cast<Eigen::Index>(i), 1) = s2[i];
+    target(static_cast<Eigen::Index>(i)) = y[i];
   }
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
   if (qr.rank() < 2) return signature;
   const Eigen::Vector2d beta = qr.solve(target);
   const Eigen::VectorXd residual = target - design * beta;
-  const double dof = static_cast<double>(n - 1) - 2.0;
-  const double s2 = residual.squaredNorm() / dof;
-  const Eigen::Matrix2d covariance = s2 * (design.transpose() * design).inverse();
+  const double dof = static_cast<double>(n) - 2.0;
+  const double variance = residual.squaredNorm() / dof;
+  const Eigen::Matrix2d covariance = variance * (design.transpose() * design).inverse();
   signature.slope_t = beta(1) / std::sqrt(covariance(1, 1));
-  signature.rms_mm = std::sqrt(std::max(0.0, beta(1)) / 2.0);
-  signature.voltage_noise_std_v = std::sqrt(std::max(0.0, beta(0)) / 2.0);
+  signature.rms_mm = std::sqrt(std::max(0.0, beta(1)) * per_motion);
+  signature.voltage_noise_std_v = std::sqrt(std::max(0.0, beta(0)) * per_motion);
   const double mean_s2 = design.col(1).mean();
   const double motion_share = beta(1) * mean_s2 / std::max(target.mean(), 1e-30);
   signature.present = signature.slope_t > 8.0 && motion_share > 0.1;
+  return signature;
+}
+
+}  // namespace
+
+VibrationSignature vibration_signature(const std::vector<double>& gap_v,
+                                       const std::vector<double>& sensitivity_v_per_mm) {
+  const std::size_t n = gap_v.size();
+  if (n < 2 * kLevelHalfWindow + 16) return {};
+  // Squared first differences: motion white at fs.
+  std::vector<double> diff_sq(n - 1), diff_s2(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    diff_sq[i] = std::pow(gap_v[i + 1] - gap_v[i], 2);
+    diff_s2[i] = std::pow(0.5 * (sensitivity_v_per_mm[i] + sensitivity_v_per_mm[i + 1]), 2);
+  }
+  const VibrationSignature by_differences = regress_on_sensitivity(diff_sq, diff_s2, 0.5);
+  // Squared levels about a centred moving mean: motion whose aliases fall low in the band
+  // (a narrow resonance, sparse impacts), which differences pass only weakly.
+  const std::size_t w = kLevelHalfWindow;
+  std::vector<double> level_sq, level_s2;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < 2 * w + 1; ++i) sum += gap_v[i];
+  for (std::size_t i = w; i + w < n; ++i) {
+    if (i > w) sum += gap_v[i + w] - gap_v[i - w - 1];
+    const double about_mean = gap_v[i] - sum / static_cast<double>(2 * w + 1);
+    level_sq.push_back(about_mean * about_mean);
+    level_s2.push_back(sensitivity_v_per_mm[i] * sensitivity_v_per_mm[i]);
+  }
+  // The moving mean takes 1 / (2w + 1) of white variance with it.
+  const double kept = 1.0 - 1.0 / static_cast<double>(2 * w + 1);
+  const VibrationSignature by_levels = regress_on_sensitivity(level_sq, level_s2, 1.0 / kept);
+  // Each sees part of the motion's spectrum: the larger estimate of it is kept; the white noise
+  // beside it is the differences' (the levels' holds what the moving mean let through).
+  VibrationSignature signature = by_differences;
+  signature.present = by_differences.present || by_levels.present;
+  signature.slope_t = std::max(by_differences.slope_t, by_levels.slope_t);
+  signature.rms_mm = std::max(by_differences.rms_mm, by_levels.rms_mm);
   return signature;
 }
 

@@ -34,13 +34,15 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
 std::vector<std::string> fitted_keys(const std::string& name);
 
 // vibration: mount motion reaches the voltage through the sensor's sensitivity dV/dd, so the
-// squared first differences of the gap grow with (dV/dd)^2 while white voltage noise does not.
-// Fits E[diff^2] = a + b (dV/dd)^2 by least squares.
+// gap's fast variance grows with (dV/dd)^2 while white voltage noise does not. Fits
+// E[y] = a + b (dV/dd)^2 by least squares, first with y the squared first differences (motion
+// white at fs), then, when that does not show it, with y the squared gap about its centred
+// moving mean over 49 samples (motion whose aliases fall low: a narrow resonance, impacts).
 struct VibrationSignature {
   double slope_t = 0.0;            // t statistic of b
-  double rms_mm = 0.0;             // sqrt(b / 2): the motion's RMS if it is white at fs
-  double voltage_noise_std_v = 0;  // sqrt(a / 2): the white voltage noise beside it
-  bool present = false;            // slope_t > 8 and the motion adds > 10 % to diff variance
+  double rms_mm = 0.0;             // the motion's RMS: the larger of the two fits' estimates
+  double voltage_noise_std_v = 0;  // the white voltage noise beside it (the differences' a / 2)
+  bool present = false;            // slope_t > 8 and the motion adds > 10 % to the variance
 };
 VibrationSignature vibration_signature(const std::vector<double>& gap_v,
                                        const std::vector<double>& sensitivity_v_per_mm);
