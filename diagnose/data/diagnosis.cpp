@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <future>
 #include <limits>
@@ -473,6 +474,10 @@ struct Selection {
   std::vector<Step> steps;                          // one per bias-type pick
   std::vector<EffectFinding> findings;              // in selection order
   std::optional<AdcGrid> quantised_on;              // the converter grid, once recognised
+  // The converter's code boundaries, when placed before the picks (place_converter_boundaries),
+  // and the constant offset they give the twin's voltage (held in cal_free_v and ho_free_v).
+  std::optional<double> converter_threshold_lsb;
+  double converter_offset_v = 0.0;
   bool quantisation_as_noise = false;               // its codes not reproduced: taken as noise
   std::optional<EffectFinding> nearest_unpicked;    // the best candidate when none was significant
   // What the free-shape picks add to the twin's voltage, per part (zeros without any), and for
@@ -526,8 +531,76 @@ std::string first_significant_stage(const std::vector<StageGap>& stages) {
   return "";
 }
 
+// Two parts' grids are one converter's: the same LSB, codes on one lattice.
+bool same_grid(const AdcGrid& a, const AdcGrid& b) {
+  const double codes_apart = (b.lowest_v - a.lowest_v) / a.lsb_v;
+  return std::abs(a.lsb_v - b.lsb_v) <= 1e-3 * a.lsb_v &&
+         std::abs(codes_apart - std::round(codes_apart)) < 0.05;
+}
+
+// The converter grid both parts lie on, if they lie on one.
+std::optional<AdcGrid> shared_grid(const Parts& parts) {
+  const auto cal_grid = estimate_adc_grid(parts.calibration.voltage_v);
+  const auto ho_grid = estimate_adc_grid(parts.heldout.voltage_v);
+  if (!cal_grid || !ho_grid || !same_grid(*cal_grid, *ho_grid)) return std::nullopt;
+  std::vector<double> both = parts.calibration.voltage_v;
+  both.insert(both.end(), parts.heldout.voltage_v.begin(), parts.heldout.voltage_v.end());
+  return estimate_adc_grid(both);
+}
+
+bool has_effect(const std::vector<sim::EffectSettings>& effects, const std::string& name) {
+  return std::any_of(effects.begin(), effects.end(),
+                     [&](const sim::EffectSettings& e) { return e.name == name; });
+}
+
+// A converter's code boundaries need not sit where rounding puts them: a truncating one puts
+// them a whole LSB up, which offsets every code by -LSB/2 against the twin's rounding. On a
+// coarse grid that offset is as large as an effect, and a bias class took it before the
+// quantisation was recognised. So when both parts lie on one grid, the twin's converter on it is
+// replayed with its boundaries at 21 places over [-0.5, 0.5] LSB (threshold_lsb), the place that
+// fits the calibration part best is kept, and the mean offset it gives the twin's voltage there
+// joins the twin as a constant before any effect is fitted (a constant, not the converter itself,
+// so that the effects' fits stay smooth), if it lowers the calibration gap's mean square by the
+// least gain a pick must make.
+void place_converter_boundaries(const Parts& parts, Selection& selection) {
+  if (has_effect(selection.modelled, "adc_quantization")) return;
+  const std::optional<AdcGrid> grid = shared_grid(parts);
+  if (!grid) return;
+  const std::vector<double>& cal_v = parts.calibration.voltage_v;
+  const std::vector<double> twin_v = parts.cal_replay.voltage(selection.modelled);
+  double best_rms = std::numeric_limits<double>::infinity(), best_threshold = 0.0;
+  std::vector<double> best_v;
+  for (int step = -10; step <= 10; ++step) {
+    sim::EffectSettings converter = grid->as_effect();
+    converter.params["threshold_lsb"] = 0.05 * step;
+    std::vector<sim::EffectSettings> with = selection.modelled;
+    with.push_back(converter);
+    std::vector<double> v = parts.cal_replay.voltage(with);
+    const double rms = rms_of(minus(cal_v, v));
+    if (rms < best_rms) {
+      best_rms = rms;
+      best_threshold = converter.params["threshold_lsb"];
+      best_v = std::move(v);
+    }
+  }
+  const std::vector<double> offset_by_sample = minus(best_v, twin_v);
+  const double offset_v = std::accumulate(offset_by_sample.begin(), offset_by_sample.end(), 0.0) /
+                          static_cast<double>(offset_by_sample.size());
+  const double without = rms_of(minus(cal_v, twin_v));
+  std::vector<double> with_offset = minus(cal_v, twin_v);
+  for (double& g : with_offset) g -= offset_v;
+  const double after = rms_of(with_offset);
+  const double sigma = selection.sigma;
+  if (without * without - after * after < kMinGainOfNoiseVariance * sigma * sigma) return;
+  for (double& v : selection.cal_free_v) v += offset_v;
+  for (double& v : selection.ho_free_v) v += offset_v;
+  selection.converter_threshold_lsb = best_threshold;
+  selection.converter_offset_v = offset_v;
+}
+
 // The twin as given (options.twin) replayed on both parts: the noise estimate, where the gap
-// lies on the calibration part, and the held-out gap the selection starts from.
+// lies on the calibration part, and the held-out gap the selection starts from (with the
+// converter's boundaries placed first, when the data lie on a grid: place_converter_boundaries).
 Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options,
                               DiagnosisResult& result) {
   Diagnosis& diagnosis = result.diagnosis;
@@ -535,8 +608,6 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   Selection selection;
   selection.modelled = options.twin.effects;
   const std::vector<double> cal_base = parts.cal_replay.voltage(selection.modelled);
-  const std::vector<double> ho_base = parts.ho_replay.voltage(selection.modelled);
-  selection.ho_gap = minus(parts.heldout.voltage_v, ho_base);
   selection.cal_free_v.assign(parts.calibration.size(), 0.0);
   selection.ho_free_v.assign(parts.heldout.size(), 0.0);
 
@@ -545,6 +616,8 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   diagnosis.noise_std_v = selection.sigma;
   locate(parts.calibration, cal_base, detail.fs_hz, options, detail);
   diagnosis.stage = first_significant_stage(detail.stages);
+  place_converter_boundaries(parts, selection);
+  selection.ho_gap = minus(ho_target(parts, selection), parts.ho_replay.voltage(selection.modelled));
   return selection;
 }
 
@@ -827,7 +900,7 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
   selection.current_error = selection.ho_gap;
   selection.resamples =
       block_resamples(parts.heldout.size(), options.bootstrap_rounds, options.seed);
-  selection.first_selected = options.twin.effects.size();
+  selection.first_selected = selection.modelled.size();
   for (int round = 0; round < kMaxSelected; ++round) {
     std::vector<Candidate> candidates = score_candidates(parts, selection);
     if (candidates.empty()) break;
@@ -907,13 +980,6 @@ void measure_inclusion(Selection& selection) {
   }
 }
 
-// Two parts' grids are one converter's: the same LSB, codes on one lattice.
-bool same_grid(const AdcGrid& a, const AdcGrid& b) {
-  const double codes_apart = (b.lowest_v - a.lowest_v) / a.lsb_v;
-  return std::abs(a.lsb_v - b.lsb_v) <= 1e-3 * a.lsb_v &&
-         std::abs(codes_apart - std::round(codes_apart)) < 0.05;
-}
-
 std::string grid_evidence(const AdcGrid& grid) {
   return fmt::format(
       "the recorded voltages of both parts lie on one converter grid (estimated from their "
@@ -933,12 +999,7 @@ std::string grid_evidence(const AdcGrid& grid) {
 // a truncating converter, a gain or offset calibration in the DAQ software), the quantisation is
 // taken as noise of LSB / sqrt(12), which the effective white noise already holds.
 void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selection& selection) {
-  const auto cal_grid = estimate_adc_grid(parts.calibration.voltage_v);
-  const auto ho_grid = estimate_adc_grid(parts.heldout.voltage_v);
-  if (!cal_grid || !ho_grid || !same_grid(*cal_grid, *ho_grid)) return;
-  std::vector<double> both = parts.calibration.voltage_v;
-  both.insert(both.end(), parts.heldout.voltage_v.begin(), parts.heldout.voltage_v.end());
-  const auto grid = estimate_adc_grid(both);
+  const auto grid = shared_grid(parts);
   if (!grid) return;
   EffectFinding finding;
   finding.name = "adc_quantization";
@@ -947,6 +1008,15 @@ void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selecti
   finding.noise_type = true;
   finding.inclusion = 1.0;
   finding.evidence = grid_evidence(*grid);
+  if (selection.converter_threshold_lsb) {
+    const double threshold = *selection.converter_threshold_lsb;
+    finding.params["threshold_lsb"] = threshold;
+    finding.evidence += fmt::format(
+        "; its code boundaries sit {:.2f} LSB from rounding's ({}), which offsets the twin's "
+        "voltage by {:.4g} V: placed on the calibration part before any effect was fitted",
+        threshold, std::abs(threshold) >= 0.4 ? "a truncating converter" : "not rounding's",
+        selection.converter_offset_v);
+  }
   std::vector<sim::EffectSettings> with = selection.modelled;
   with.push_back(grid->as_effect());
   finding.heldout_rms_before = rms_of(selection.current_error);

@@ -289,6 +289,26 @@ TEST(DiagnoseCommand, ACoarseGridIsEstimatedReportedAndTheNoiseSurvivesIt) {
   EXPECT_NE(std::find(named.begin(), named.end(), "adc_quantization"), named.end()) << o.out;
 }
 
+// A truncating 5-bit converter over 0-10.24 V: every code sits LSB/2 (0.16 V) below where the
+// twin's rounding puts it. Its boundaries are placed before any effect is fitted, so no bias class
+// takes that offset (before, one was picked first): the converter is the only finding, and it
+// says it truncates.
+TEST(Diagnose, ATruncatingConverterIsNamedAloneWithItsBoundaries) {
+  const std::vector<sim::EffectSettings> effects = {sim::make_effect_settings(
+      "adc_quantization", {{"bits", 5}, {"v_min", 0.0}, {"v_max", 10.24}, {"threshold_lsb", 0.5}},
+      "test")};
+  const DiagnosisResult r =
+      diagnose_in_detail(twin_recording(effects, 63, 0.0), twin_recording(effects, 64, 70.0), {});
+  std::string named;
+  for (const EffectFinding& f : r.diagnosis.effects) named += f.name + ": " + f.evidence + "\n";
+  EXPECT_EQ(r.diagnosis.status, "explained") << named;
+  ASSERT_EQ(r.diagnosis.effects.size(), 1u) << named;
+  const EffectFinding& converter = r.diagnosis.effects.front();
+  EXPECT_EQ(converter.name, "adc_quantization");
+  EXPECT_NEAR(converter.params.at("threshold_lsb"), 0.5, 0.1) << converter.evidence;
+  EXPECT_NE(converter.evidence.find("truncating"), std::string::npos) << converter.evidence;
+}
+
 TEST(DiagnoseCommand, AnUnexplainedVerdictNamesTheNearestEffectInTextJsonAndHtml) {
   const auto dir = fresh_test_dir("diagnose_nearest");
   write_csv(dir / "real.csv", twin_recording({}, 71, 0.0, 0.94));
