@@ -467,7 +467,10 @@ struct Step {
 struct Selection {
   std::vector<sim::EffectSettings> modelled;        // the twin's own effects, then the picks
   std::size_t first_selected = 0;                   // where the picks start in `modelled`
-  std::vector<double> ho_gap;                       // held-out gap of the twin as given
+  std::vector<double> ho_gap;                       // held-out gap the picks start from
+  // The held-out gap of the twin as given: ho_gap unless the converter's boundaries were placed
+  // first (their offset is then in ho_gap, not here). What "before" means in the report.
+  std::vector<double> raw_ho_gap;
   std::vector<double> current_error;                // held-out gap `modelled` leaves
   double sigma = 0.0;                               // the twin's white noise, V (>= 1e-9)
   std::vector<std::vector<std::size_t>> resamples;  // held-out block-bootstrap index sets
@@ -616,8 +619,10 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   diagnosis.noise_std_v = selection.sigma;
   locate(parts.calibration, cal_base, detail.fs_hz, options, detail);
   diagnosis.stage = first_significant_stage(detail.stages);
+  const std::vector<double> ho_base = parts.ho_replay.voltage(selection.modelled);
+  selection.raw_ho_gap = minus(parts.heldout.voltage_v, ho_base);
   place_converter_boundaries(parts, selection);
-  selection.ho_gap = minus(ho_target(parts, selection), parts.ho_replay.voltage(selection.modelled));
+  selection.ho_gap = minus(ho_target(parts, selection), ho_base);
   return selection;
 }
 
@@ -1008,23 +1013,34 @@ void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selecti
   finding.noise_type = true;
   finding.inclusion = 1.0;
   finding.evidence = grid_evidence(*grid);
+  sim::EffectSettings converter = grid->as_effect();
+  finding.heldout_rms_before = rms_of(selection.current_error);
+  // With the boundaries placed first, their offset is in the targets; the converter replayed
+  // here carries it instead, so it comes out of them.
+  std::vector<double> target = ho_target(parts, selection);
   if (selection.converter_threshold_lsb) {
     const double threshold = *selection.converter_threshold_lsb;
+    converter.params["threshold_lsb"] = threshold;
     finding.params["threshold_lsb"] = threshold;
+    finding.heldout_rms_before = rms_of(selection.raw_ho_gap);
     finding.evidence += fmt::format(
         "; its code boundaries sit {:.2f} LSB from rounding's ({}), which offsets the twin's "
-        "voltage by {:.4g} V: placed on the calibration part before any effect was fitted",
+        "voltage by {:.4g} V: placed on the calibration part before any effect was fitted (the "
+        "held-out gap RMS {:.4g} -> {:.4g} V by that offset alone)",
         threshold, std::abs(threshold) >= 0.4 ? "a truncating converter" : "not rounding's",
-        selection.converter_offset_v);
+        selection.converter_offset_v, rms_of(selection.raw_ho_gap), rms_of(selection.ho_gap));
+    for (double& v : target) v += selection.converter_offset_v;
   }
   std::vector<sim::EffectSettings> with = selection.modelled;
-  with.push_back(grid->as_effect());
-  finding.heldout_rms_before = rms_of(selection.current_error);
-  std::vector<double> replayed = minus(ho_target(parts, selection), parts.ho_replay.voltage(with));
+  with.push_back(converter);
+  std::vector<double> replayed = minus(target, parts.ho_replay.voltage(with));
   const double null_rms = quantised_null_rms(white.analog_std_v, grid->lsb_v);
   if (rms_of(replayed) <= kExplainedRatio * null_rms) {
     selection.current_error = std::move(replayed);
     selection.modelled = with;
+    for (double& v : selection.cal_free_v) v -= selection.converter_offset_v;
+    for (double& v : selection.ho_free_v) v -= selection.converter_offset_v;
+    selection.converter_offset_v = 0.0;
   } else {
     selection.quantisation_as_noise = true;
     finding.evidence += fmt::format(
@@ -1148,7 +1164,7 @@ void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisRes
   Diagnosis& diagnosis = result.diagnosis;
   const std::vector<EffectFinding>& findings = selection.findings;
   const double sigma = selection.sigma;
-  diagnosis.heldout_rms_before = rms_of(selection.ho_gap);
+  diagnosis.heldout_rms_before = rms_of(selection.raw_ho_gap);
   diagnosis.heldout_rms_after = rms_of(selection.current_error);
   const bool has_noise_type =
       std::any_of(findings.begin(), findings.end(),
@@ -1192,7 +1208,7 @@ void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisRes
 void measure_how_far(const RecordingSeries& heldout, const Selection& selection,
                      DiagnosisResult& result) {
   DiagnosisDetail& detail = result.detail;
-  const std::vector<double>& ho_gap = selection.ho_gap;
+  const std::vector<double>& ho_gap = selection.raw_ho_gap;
   const std::vector<double>& current_error = selection.current_error;
   HowFar& how = detail.how_far;
   how.rms_before = result.diagnosis.heldout_rms_before;
