@@ -4,10 +4,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <numeric>
 #include <cmath>
 #include <future>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <string>
@@ -465,9 +465,9 @@ struct Step {
 
 // What the diagnosis's steps hand on to each other once the nominal twin is replayed.
 struct Selection {
-  std::vector<sim::EffectSettings> modelled;        // the twin's own effects, then the picks
-  std::size_t first_selected = 0;                   // where the picks start in `modelled`
-  std::vector<double> ho_gap;                       // held-out gap the picks start from
+  std::vector<sim::EffectSettings> modelled;  // the twin's own effects, then the picks
+  std::size_t first_selected = 0;             // where the picks start in `modelled`
+  std::vector<double> ho_gap;                 // held-out gap the picks start from
   // The held-out gap of the twin as given: ho_gap unless the converter's boundaries were placed
   // first (their offset is then in ho_gap, not here). What "before" means in the report.
   std::vector<double> raw_ho_gap;
@@ -481,8 +481,8 @@ struct Selection {
   // and the constant offset they give the twin's voltage (held in cal_free_v and ho_free_v).
   std::optional<double> converter_threshold_lsb;
   double converter_offset_v = 0.0;
-  bool quantisation_as_noise = false;               // its codes not reproduced: taken as noise
-  std::optional<EffectFinding> nearest_unpicked;    // the best candidate when none was significant
+  bool quantisation_as_noise = false;             // its codes not reproduced: taken as noise
+  std::optional<EffectFinding> nearest_unpicked;  // the best candidate when none was significant
   // What the free-shape picks add to the twin's voltage, per part (zeros without any), and for
   // each bias-type pick the index of its effect in `modelled` (-1: a free shape, which has none).
   std::vector<double> cal_free_v, ho_free_v;
@@ -589,10 +589,10 @@ void place_converter_boundaries(const Parts& parts, Selection& selection) {
   const std::vector<double> offset_by_sample = minus(best_v, twin_v);
   const double offset_v = std::accumulate(offset_by_sample.begin(), offset_by_sample.end(), 0.0) /
                           static_cast<double>(offset_by_sample.size());
-  const double without = rms_of(minus(cal_v, twin_v));
-  std::vector<double> with_offset = minus(cal_v, twin_v);
-  for (double& g : with_offset) g -= offset_v;
-  const double after = rms_of(with_offset);
+  std::vector<double> gap = minus(cal_v, twin_v);
+  const double without = rms_of(gap);
+  for (double& g : gap) g -= offset_v;
+  const double after = rms_of(gap);
   const double sigma = selection.sigma;
   if (without * without - after * after < kMinGainOfNoiseVariance * sigma * sigma) return;
   for (double& v : selection.cal_free_v) v += offset_v;

@@ -120,9 +120,7 @@ TwinReplay::TwinReplay(const RecordingSeries& series, const sim::PolynomialSenso
   }
 }
 
-const TwinReplay& TwinReplay::search_replay() const {
-  return search_ ? *search_->replay : *this;
-}
+const TwinReplay& TwinReplay::search_replay() const { return search_ ? *search_->replay : *this; }
 
 std::vector<double> TwinReplay::at_search_rows(const std::vector<double>& full) const {
   if (!search_) return full;

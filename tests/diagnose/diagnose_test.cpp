@@ -192,8 +192,7 @@ TEST(Diagnose, AnOffsetOfAnotherShapeIsNamedByItsClassWithAFreeCurve) {
   EXPECT_EQ(top.params.size(), 7u);  // the curve at its 7 knots
   EXPECT_NE(top.evidence.find("not the library's formula: a free curve of T"), std::string::npos)
       << top.evidence;
-  EXPECT_NE(top.evidence.find("the library's formula, best at"), std::string::npos)
-      << top.evidence;
+  EXPECT_NE(top.evidence.find("the library's formula, best at"), std::string::npos) << top.evidence;
 }
 
 TEST(Diagnose, GainStepOutsideTheLibraryIsUnexplained) {

@@ -67,7 +67,8 @@ TEST(ReplaySpeedPaths, KeptCoilStatesGiveWhatAFreshReplayGives) {
     ASSERT_EQ(kept.voltage(with_lag(tau_s)), fresh.voltage(with_lag(tau_s))) << tau_s;
   }
   // A late temperature channel changes what drives the coil, so it is part of the state.
-  const std::vector<sim::EffectSettings> late_temperature = {effect("channel_skew", {{"skew_s", 5}})};
+  const std::vector<sim::EffectSettings> late_temperature = {
+      effect("channel_skew", {{"skew_s", 5}})};
   const TwinReplay fresh(series, nominal);
   EXPECT_EQ(kept.voltage(late_temperature), fresh.voltage(late_temperature));
   EXPECT_NE(kept.voltage(late_temperature), kept.voltage({}));
