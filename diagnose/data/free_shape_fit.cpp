@@ -108,6 +108,8 @@ class MainsFamily {
   // Finds the lines on the calibration gap, and the aliases they lie near.
   MainsFamily(const Part& calibration, const std::vector<double>& gap_v);
   bool empty() const { return tones_hz_.empty(); }
+  // Lines were found, but their power followed the sensitivity: motion (lines_follow_sensitivity).
+  bool lines_are_motion() const { return follow_sensitivity_; }
   std::size_t lines() const { return tones_hz_.size(); }
   // The calibration's lines fitted window by window to its gap.
   std::vector<double> fitted_on_calibration(const Part& calibration,
@@ -118,8 +120,9 @@ class MainsFamily {
   void describe(FreeShapeFit& fit, const std::vector<double>& cal_tones_v) const;
 
  private:
-  std::vector<double> tones_hz_;   // the aliases with a line on the calibration part
-  std::vector<double> cal_lines_;  // the lines found there, Hz
+  std::vector<double> tones_hz_;     // the aliases with a line on the calibration part
+  std::vector<double> cal_lines_;    // the lines found there, Hz
+  bool follow_sensitivity_ = false;  // lines were found, but their power followed dV/dd
 };
 
 // The sensor's age at every sample, in days from the calibration part's start: the held-out
@@ -598,6 +601,9 @@ constexpr double kMainsWindowS = 20.0;
 constexpr double kMainsSearchHz = 0.15;
 constexpr double kMainsStepHz = 0.01;
 constexpr int kMainsHarmonics = 7;
+// The t of the slope of the lines' window power on the window's (dV/dd)^2 above which the lines
+// are taken for mount motion (lines_follow_sensitivity): far out in the null's N(0, 1).
+constexpr double kMotionLineT = 4.0;
 constexpr int kMainsLinesPerAlias = 2;
 // A line is kept when its window-by-window fit lowers the calibration gap's mean square by more
 // than this many times what fitting its values to white noise would.
@@ -703,6 +709,46 @@ std::vector<double> find_lines(const std::vector<double>& t, const std::vector<d
   return found;
 }
 
+// Whether the lines' power follows the sensor's sensitivity from window to window: the power of
+// the fitted lines in each window regressed on the window's mean (dV/dd)^2, slope t > 4. Pickup
+// on the cable is as strong at any clearance; mount motion that lands near an alias (a narrow
+// resonance) is stronger where the sensor is more sensitive, and is then motion, not mains.
+bool lines_follow_sensitivity(const Part& part, const std::vector<double>& gap_v,
+                              const std::vector<double>& lines_hz) {
+  const std::vector<double>& t = part.series.t_s;
+  const std::vector<double>& s = part.replay.sensitivity_v_per_mm();
+  int values = 0;
+  const std::vector<double> tones = windowed_tones(t, gap_v, lines_hz, values);
+  std::vector<double> power, s2;
+  for (std::size_t begin = 0; begin < t.size();) {
+    std::size_t end = begin;
+    while (end < t.size() && t[end] < t[begin] + kMainsWindowS) ++end;
+    double p = 0.0, q = 0.0;
+    for (std::size_t i = begin; i < end; ++i) {
+      p += tones[i] * tones[i];
+      q += s[i] * s[i];
+    }
+    power.push_back(p / static_cast<double>(end - begin));
+    s2.push_back(q / static_cast<double>(end - begin));
+    begin = end;
+  }
+  const auto n = static_cast<Eigen::Index>(power.size());
+  if (n < 8) return false;
+  Eigen::MatrixXd a(n, 2);
+  Eigen::VectorXd y(n);
+  for (Eigen::Index w = 0; w < n; ++w) {
+    a(w, 0) = 1.0;
+    a(w, 1) = s2[static_cast<std::size_t>(w)];
+    y(w) = power[static_cast<std::size_t>(w)];
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
+  if (qr.rank() < 2) return false;
+  const Eigen::Vector2d beta = qr.solve(y);
+  const double variance = (y - a * beta).squaredNorm() / static_cast<double>(n - 2);
+  const Eigen::Matrix2d covariance = variance * (a.transpose() * a).inverse();
+  return beta(1) / std::sqrt(covariance(1, 1)) > kMotionLineT;
+}
+
 MainsFamily::MainsFamily(const Part& calibration, const std::vector<double>& gap_v) {
   const std::vector<double>& t = calibration.series.t_s;
   if (t.size() < 2) return;
@@ -720,8 +766,12 @@ MainsFamily::MainsFamily(const Part& calibration, const std::vector<double>& gap
       }
     }
   }
-  // The aliases with a line on the calibration part.
+  // The aliases with a line on the calibration part, unless the lines are motion.
   cal_lines_ = find_lines(t, gap_v, aliases);
+  if (!cal_lines_.empty() && lines_follow_sensitivity(calibration, gap_v, cal_lines_)) {
+    cal_lines_.clear();
+    follow_sensitivity_ = true;
+  }
   for (double f : cal_lines_) {
     for (double alias : aliases) {
       if (std::abs(f - alias) <= kMainsSearchHz + 1e-9 &&
@@ -795,7 +845,10 @@ FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries
     if (mains.empty()) {
       fit.cal_voltage_v.assign(cal_gap_v.size(), 0.0);
       fit.heldout_voltage_v.assign(ho_gap_v.size(), 0.0);
-      fit.description = "no line at an alias of the mains";
+      fit.description = mains.lines_are_motion()
+                            ? "lines at aliases of the mains whose power follows the sensor's "
+                              "sensitivity from window to window: mount motion, not pickup"
+                            : "no line at an alias of the mains";
       return fit;
     }
     fit.cal_voltage_v = mains.fitted_on_calibration(cal_part, cal_gap_v);
