@@ -312,9 +312,7 @@ class GapRms {
   // and cos(k w t) kept per sample (k w t + k phi by the angle sum).
   static bool any_after_wiring(const std::vector<sim::EffectSettings>& effects) {
     for (const sim::EffectSettings& e : effects) {
-      const auto stage =
-          sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(e.name))].stage;
-      if (stage > sim::ChainStage::kWiring) return true;
+      if (sim::chain_stage_of(e.name) > sim::ChainStage::kWiring) return true;
     }
     return false;
   }
@@ -459,27 +457,13 @@ constexpr std::size_t kLevelHalfWindow = 24;
 VibrationSignature regress_on_sensitivity(const std::vector<double>& y,
                                           const std::vector<double>& s2, double per_motion) {
   VibrationSignature signature;
-  const std::size_t n = y.size();
-  if (n < 16) return signature;
-  Eigen::MatrixXd design(n, 2);
-  Eigen::VectorXd target(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    design(static_cast<Eigen::Index>(i), 0) = 1.0;
-    design(static_cast<Eigen::Index>(i), 1) = s2[i];
-    target(static_cast<Eigen::Index>(i)) = y[i];
-  }
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
-  if (qr.rank() < 2) return signature;
-  const Eigen::Vector2d beta = qr.solve(target);
-  const Eigen::VectorXd residual = target - design * beta;
-  const double dof = static_cast<double>(n) - 2.0;
-  const double variance = residual.squaredNorm() / dof;
-  const Eigen::Matrix2d covariance = variance * (design.transpose() * design).inverse();
-  signature.slope_t = beta(1) / std::sqrt(covariance(1, 1));
-  signature.rms_mm = std::sqrt(std::max(0.0, beta(1)) * per_motion);
-  signature.voltage_noise_std_v = std::sqrt(std::max(0.0, beta(0)) * per_motion);
-  const double mean_s2 = design.col(1).mean();
-  const double motion_share = beta(1) * mean_s2 / std::max(target.mean(), 1e-30);
+  if (y.size() < 16) return signature;
+  const LineFit fit = line_fit(s2, y);
+  if (!fit.fitted) return signature;
+  signature.slope_t = fit.slope_t;
+  signature.rms_mm = std::sqrt(std::max(0.0, fit.slope) * per_motion);
+  signature.voltage_noise_std_v = std::sqrt(std::max(0.0, fit.intercept) * per_motion);
+  const double motion_share = fit.slope * mean_of(s2) / std::max(mean_of(y), 1e-30);
   signature.present = signature.slope_t > 8.0 && motion_share > 0.1;
   return signature;
 }

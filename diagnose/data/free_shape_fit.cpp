@@ -11,6 +11,9 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
+
+#include "residual_tests.h"
 
 namespace flange::diagnose {
 namespace {
@@ -616,17 +619,28 @@ double alias_hz(double f_hz, double fs_hz) {
 
 // Least squares of `gap` on the tones at `tones_hz` in windows of kMainsWindowS seconds (a
 // constant per window as a nuisance, left out of what is returned).
+// The mains windows of a part, [begin, end) row ranges of kMainsWindowS each; a short last
+// window joins the one before it.
+std::vector<std::pair<std::size_t, std::size_t>> mains_windows(const std::vector<double>& t) {
+  const std::size_t n = t.size();
+  std::vector<std::pair<std::size_t, std::size_t>> windows;
+  for (std::size_t begin = 0; begin < n;) {
+    std::size_t end = begin;
+    while (end < n && t[end] < t[begin] + kMainsWindowS) ++end;
+    if (n - end < (end - begin) / 2) end = n;
+    windows.emplace_back(begin, end);
+    begin = end;
+  }
+  return windows;
+}
+
 std::vector<double> windowed_tones(const std::vector<double>& t, const std::vector<double>& gap,
                                    const std::vector<double>& tones_hz, int& values) {
   const std::size_t n = t.size();
   std::vector<double> out(n, 0.0);
   values = 0;
   const auto cols = static_cast<Eigen::Index>(1 + 2 * tones_hz.size());
-  std::size_t begin = 0;
-  while (begin < n) {
-    std::size_t end = begin;
-    while (end < n && t[end] < t[begin] + kMainsWindowS) ++end;
-    if (n - end < (end - begin) / 2) end = n;  // a short last window joins this one
+  for (const auto& [begin, end] : mains_windows(t)) {
     const auto rows = static_cast<Eigen::Index>(end - begin);
     if (rows > 2 * cols) {
       Eigen::MatrixXd a(rows, cols);
@@ -647,7 +661,6 @@ std::vector<double> windowed_tones(const std::vector<double>& t, const std::vect
       for (Eigen::Index r = 0; r < rows; ++r) out[begin + static_cast<std::size_t>(r)] = tone(r);
       values += static_cast<int>(2 * tones_hz.size());
     }
-    begin = end;
   }
   return out;
 }
@@ -720,9 +733,7 @@ bool lines_follow_sensitivity(const Part& part, const std::vector<double>& gap_v
   int values = 0;
   const std::vector<double> tones = windowed_tones(t, gap_v, lines_hz, values);
   std::vector<double> power, s2;
-  for (std::size_t begin = 0; begin < t.size();) {
-    std::size_t end = begin;
-    while (end < t.size() && t[end] < t[begin] + kMainsWindowS) ++end;
+  for (const auto& [begin, end] : mains_windows(t)) {
     double p = 0.0, q = 0.0;
     for (std::size_t i = begin; i < end; ++i) {
       p += tones[i] * tones[i];
@@ -730,23 +741,10 @@ bool lines_follow_sensitivity(const Part& part, const std::vector<double>& gap_v
     }
     power.push_back(p / static_cast<double>(end - begin));
     s2.push_back(q / static_cast<double>(end - begin));
-    begin = end;
   }
-  const auto n = static_cast<Eigen::Index>(power.size());
-  if (n < 8) return false;
-  Eigen::MatrixXd a(n, 2);
-  Eigen::VectorXd y(n);
-  for (Eigen::Index w = 0; w < n; ++w) {
-    a(w, 0) = 1.0;
-    a(w, 1) = s2[static_cast<std::size_t>(w)];
-    y(w) = power[static_cast<std::size_t>(w)];
-  }
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
-  if (qr.rank() < 2) return false;
-  const Eigen::Vector2d beta = qr.solve(y);
-  const double variance = (y - a * beta).squaredNorm() / static_cast<double>(n - 2);
-  const Eigen::Matrix2d covariance = variance * (a.transpose() * a).inverse();
-  return beta(1) / std::sqrt(covariance(1, 1)) > kMotionLineT;
+  if (power.size() < 8) return false;
+  const LineFit fit = line_fit(s2, power);
+  return fit.fitted && fit.slope_t > kMotionLineT;
 }
 
 MainsFamily::MainsFamily(const Part& calibration, const std::vector<double>& gap_v) {

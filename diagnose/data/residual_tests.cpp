@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "residual_tests.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -13,6 +14,29 @@
 namespace flange::diagnose {
 
 using host::WelchSpectrum;
+
+LineFit line_fit(const std::vector<double>& x, const std::vector<double>& y) {
+  LineFit fit;
+  const std::size_t n = y.size();
+  if (n < 3 || x.size() != n) return fit;
+  Eigen::MatrixXd design(n, 2);
+  Eigen::VectorXd target(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    design(static_cast<Eigen::Index>(i), 0) = 1.0;
+    design(static_cast<Eigen::Index>(i), 1) = x[i];
+    target(static_cast<Eigen::Index>(i)) = y[i];
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
+  if (qr.rank() < 2) return fit;
+  const Eigen::Vector2d beta = qr.solve(target);
+  const double variance = (target - design * beta).squaredNorm() / static_cast<double>(n - 2);
+  const Eigen::Matrix2d covariance = variance * (design.transpose() * design).inverse();
+  fit.fitted = true;
+  fit.intercept = beta(0);
+  fit.slope = beta(1);
+  fit.slope_t = beta(1) / std::sqrt(covariance(1, 1));
+  return fit;
+}
 
 double mean_of(const std::vector<double>& x) {
   double sum = 0.0;

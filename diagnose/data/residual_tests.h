@@ -13,6 +13,14 @@ double mean_of(const std::vector<double>& x);
 double rms_of(const std::vector<double>& x);
 double max_abs_of(const std::vector<double>& x);
 
+// y = intercept + slope x by least squares, with the t statistic of the slope. `fitted` is false
+// (and the rest 0) for fewer than 3 points or an x that does not vary.
+struct LineFit {
+  bool fitted = false;
+  double intercept = 0.0, slope = 0.0, slope_t = 0.0;
+};
+LineFit line_fit(const std::vector<double>& x, const std::vector<double>& y);
+
 // The standard deviation of the white part of `x`: 1.4826 * MAD(differences at `lag`) / sqrt(2).
 // Differencing removes what moves slowly (drifts, offsets, the effects of temperature); the
 // median ignores the few large jumps of a clearance step. Lag 2 is unbiased also when

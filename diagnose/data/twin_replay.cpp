@@ -16,10 +16,6 @@ constexpr std::size_t kCoilCacheEntries = 6;
 
 using sim::ChainStage;
 
-ChainStage stage_of(const std::string& name) {
-  return sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(name))].stage;
-}
-
 // Which row of block `block` (of `stride` rows) the search subset takes: a fixed hash, so that
 // runs agree, spread over the block.
 std::size_t row_in_block(std::size_t block, std::size_t stride) {
@@ -147,7 +143,7 @@ std::shared_ptr<const TwinReplay::CoilSamples> TwinReplay::coil_samples(
   std::vector<ChainStage> stages;
   for (const sim::EffectSettings& effect : coil_effects) {
     chain.push_back(sim::make_effect(effect, nominal_.v_min_v(), nominal_.v_max_v(), seed));
-    stages.push_back(stage_of(effect.name));
+    stages.push_back(sim::chain_stage_of(effect.name));
   }
   const std::vector<double> ambient = ambient_from_recorded(series_, coil_effects);
   auto samples = std::make_shared<CoilSamples>(series_.size());
@@ -196,7 +192,7 @@ std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& 
   std::vector<std::unique_ptr<sim::Effect>> chain;
   std::vector<ChainStage> stages;
   for (const sim::EffectSettings* effect : ordered) {
-    const ChainStage stage = stage_of(effect->name);
+    const ChainStage stage = sim::chain_stage_of(effect->name);
     const bool moves_drive = effect->name == "channel_skew" && effect->params.at("skew_s") > 0.0;
     if (stage <= ChainStage::kThermal || moves_drive) coil_effects.push_back(*effect);
     if (stage <= ChainStage::kThermal) continue;

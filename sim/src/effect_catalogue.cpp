@@ -29,6 +29,10 @@ int catalogue_index(const std::string& name) {
   return -1;
 }
 
+ChainStage chain_stage_of(const std::string& name) {
+  return effect_catalogue()[static_cast<std::size_t>(catalogue_index(name))].stage;
+}
+
 std::string effect_names() {
   std::string names;
   for (const EffectSpec& spec : effect_catalogue()) {

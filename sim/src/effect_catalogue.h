@@ -17,6 +17,9 @@ const std::vector<EffectSpec>& effect_catalogue();
 // Position of `name` in the catalogue, or -1 when there is no such effect.
 int catalogue_index(const std::string& name);
 
+// Where in the twin's chain the catalogue's effect `name` acts (name must be in the catalogue).
+ChainStage chain_stage_of(const std::string& name);
+
 // "vibration, thermal_lag, ...": for error messages and help.
 std::string effect_names();
 

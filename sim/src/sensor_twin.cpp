@@ -55,7 +55,7 @@ SensorTwin::SensorTwin(const TwinConfig& config, std::uint64_t seed)
   stage_end_.assign(kStageCount, 0);
   for (const EffectSettings* effect : ordered) {
     effects_.push_back(make_effect(*effect, nominal_.v_min_v(), nominal_.v_max_v(), seed));
-    const ChainStage stage = effect_catalogue()[catalogue_index(effect->name)].stage;
+    const ChainStage stage = chain_stage_of(effect->name);
     // The catalogue is in stage order, so each stage's effects are contiguous.
     for (std::size_t s = static_cast<std::size_t>(stage); s < kStageCount; ++s) {
       stage_end_[s] = effects_.size();
