@@ -36,6 +36,9 @@ constexpr double kTemperatureReach = 1.0;
 // at 0), three in temperature.
 constexpr int kCompressionVoltKnots = 5;
 constexpr int kCompressionTempKnots = 3;
+// Knots of a moving knee's curve of temperature, and of the curve above the knee.
+constexpr int kKneeTempKnots = 9;
+constexpr int kKneeHeightKnots = 7;
 
 // Knots of a trend in the sensor's age over the calibration session (held at its last value
 // after it: a step or a settling that has ended).
@@ -333,6 +336,166 @@ class CompressionFamily : public Family {
   Hats volt_, temp_;
 };
 
+Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& y);
+
+// A compression above a knee that moves with temperature: V' - V = h(max(0, V - k(T))), with the
+// knee k(T) any falling piecewise-linear curve through nine temperatures of the calibration part
+// (searched) and h any curve of the height above it, 0 at the knee. The library's compression (a
+// knee falling linearly with T, tanh above it) is one member; so is a knee that falls along an
+// exponential or a parabola, with any saturating or linear law above it. The knee stays in the
+// top three fifths of the voltage range: lower, h(V - k(T)) would be a gain and an offset of T.
+class KneeCompressionFamily : public Family {
+ public:
+  explicit KneeCompressionFamily(const Part& calibration)
+      : temp_(hats_over(calibration.series.temp_c, kKneeTempKnots)) {
+    temp_.reach = kTemperatureReach;
+    const auto [lo, hi] = std::minmax_element(calibration.replay.nominal_voltage().begin(),
+                                              calibration.replay.nominal_voltage().end());
+    top_v_ = *hi;
+    lowest_knee_v_ = *hi - 0.6 * (*hi - *lo);
+    knee_v_.assign(temp_.knots.size(), top_v_);
+  }
+
+  void search(const Part& calibration, const std::vector<double>& gap_v) override {
+    // On a long log, the rows a parameter search runs on (TwinReplay::search_replay).
+    const TwinReplay& replay = calibration.replay.search_replay();
+    const Part part{replay.series(), replay};
+    const std::vector<double> gap = calibration.replay.at_search_rows(gap_v);
+    const Eigen::VectorXd y =
+        Eigen::Map<const Eigen::VectorXd>(gap.data(), static_cast<Eigen::Index>(gap.size()));
+    // The knee as its cold value and the non-negative falls between neighbouring knots: a knee
+    // that only falls as the coil heats, flat up to wherever the compression sets in.
+    const auto knee_of = [&](std::vector<double> law) {
+      std::vector<double> knee(law.size());
+      double k = std::clamp(law[0], lowest_knee_v_, top_v_);
+      for (std::size_t j = 0; j < law.size(); ++j) {
+        if (j > 0) k -= std::max(0.0, law[j]);
+        knee[j] = std::max(k, lowest_knee_v_);
+      }
+      return knee;
+    };
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<double> chosen(knee_v_.size(), 0.0);
+    chosen[0] = top_v_;
+    const auto try_law = [&](const std::vector<double>& law) {
+      knee_v_ = knee_of(law);
+      height_span_v_ = highest_over(part);
+      const Eigen::MatrixXd a = columns(part);
+      const double sse = (y - a * ridge_solve(a, y)).squaredNorm();
+      if (sse < best) {
+        best = sse;
+        chosen = law;
+        return true;
+      }
+      return false;
+    };
+    // A lattice of knees falling evenly from the cold end to the hot one, then a pattern search.
+    const double span = top_v_ - lowest_knee_v_;
+    const double falls = static_cast<double>(knee_v_.size() - 1);
+    for (double cold = 0.0; cold <= 1.0 + 1e-9; cold += 0.125) {
+      for (double fall = 0.0; fall <= 1.0 + 1e-9; fall += 0.25) {
+        std::vector<double> law(knee_v_.size(), fall * span / falls);
+        law[0] = top_v_ - cold * span;
+        try_law(law);
+      }
+    }
+    for (double step : {0.1 * span, 0.025 * span, 0.006 * span}) {
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (std::size_t k = 0; k < chosen.size(); ++k) {
+          for (double sign : {-1.0, 1.0}) {
+            std::vector<double> trial = chosen;
+            trial[k] += sign * step;
+            if (k > 0 && trial[k] < 0.0) continue;
+            moved = try_law(trial) || moved;
+          }
+        }
+      }
+    }
+    knee_v_ = knee_of(chosen);
+    height_span_v_ = highest_over(part);
+  }
+
+  int searched_values() const override { return static_cast<int>(knee_v_.size()); }
+
+  std::vector<std::string> names() const override {
+    std::vector<std::string> out;
+    for (std::size_t j = 1; j < kKneeHeightKnots; ++j) {
+      out.push_back(fmt::format("offset_v_at_{:.3g}v_above_knee", height_knot(j)));
+    }
+    return out;
+  }
+
+  Eigen::MatrixXd columns(const Part& part) const override {
+    const std::size_t n = part.series.size();
+    Eigen::MatrixXd a = matrix(n, kKneeHeightKnots - 1);
+    const Hats heights = height_hats();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double over = part.replay.nominal_voltage()[i] - knee_at(part.series.temp_c[i]);
+      if (over <= 0.0) continue;
+      for (std::size_t j = 1; j < kKneeHeightKnots; ++j) {
+        a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j - 1)) = heights.weight(j, over);
+      }
+    }
+    return a;
+  }
+
+  void summarise(const Eigen::VectorXd&, const Part&,
+                 std::map<std::string, double>& params) const override {
+    for (std::size_t k = 0; k < knee_v_.size(); ++k) {
+      params[fmt::format("knee_v_at_{:.3g}c", temp_.knots[k])] = knee_v_[k];
+    }
+  }
+
+  std::string describe(const Eigen::VectorXd& beta) const override {
+    std::string text = "a compression above a knee that moves with temperature: knee";
+    for (std::size_t k = 0; k < knee_v_.size(); ++k) {
+      text +=
+          fmt::format("{} {:.3g} V at {:.3g} degC", k == 0 ? "" : ",", knee_v_[k], temp_.knots[k]);
+    }
+    text += "; above it";
+    for (std::size_t j = 1; j < kKneeHeightKnots; ++j) {
+      text += fmt::format("{} {:.3g} V at {:.3g} V over", j == 1 ? "" : ",",
+                          beta(static_cast<Eigen::Index>(j - 1)), height_knot(j));
+    }
+    return text;
+  }
+
+ private:
+  double knee_at(double temp_c) const {
+    double k = 0.0;
+    for (std::size_t j = 0; j < knee_v_.size(); ++j) k += knee_v_[j] * temp_.weight(j, temp_c);
+    return k;
+  }
+  // Knots of h from the knee to the most the calibration part goes above the lowest knee the
+  // search allows, so that the knots do not move while the knee is searched.
+  double height_knot(std::size_t j) const {
+    return height_span_v_ * static_cast<double>(j) / (kKneeHeightKnots - 1.0);
+  }
+  // The most the part goes above the knee: the curve above it is fitted up to there, and goes on
+  // along its last segment beyond (a saturating compression keeps its slope).
+  double highest_over(const Part& part) const {
+    double most = 1e-3;
+    for (std::size_t i = 0; i < part.series.size(); ++i) {
+      most = std::max(most, part.replay.nominal_voltage()[i] - knee_at(part.series.temp_c[i]));
+    }
+    return most;
+  }
+  Hats height_hats() const {
+    Hats h;
+    for (std::size_t j = 0; j < kKneeHeightKnots; ++j) h.knots.push_back(height_knot(j));
+    h.reach = kHeightReach;
+    return h;
+  }
+
+  Hats temp_;
+  // How far the curve above the knee goes on beyond the calibration part's highest point, in knot
+  // spacings, before it is held.
+  static constexpr double kHeightReach = 6.0;
+  double top_v_ = 0.0, lowest_knee_v_ = 0.0, height_span_v_ = 1e-3;
+  std::vector<double> knee_v_;
+};
+
 // The coil's temperature off the recorded one, through mixes of lags and advances.
 class LagFamily : public Family {
  public:
@@ -570,6 +733,9 @@ std::unique_ptr<Family> make_family(const FreeShapeFamily& family, const Part& c
   if (family.effect == "thermal_lag") return std::make_unique<LagFamily>();
   if (family.effect == "temp_gain_drift" && family.variable == "(V - pivot) T") {
     return std::make_unique<PivotGainFamily>(calibration);
+  }
+  if (family.effect == "range_compression" && family.variable == "V over a moving knee") {
+    return std::make_unique<KneeCompressionFamily>(calibration);
   }
   if (family.effect == "range_compression") return std::make_unique<CompressionFamily>(calibration);
   if (family.effect == "channel_skew") return std::make_unique<SkewFamily>();
@@ -817,17 +983,19 @@ std::vector<double> as_vector(const Eigen::VectorXd& v) {
 }  // namespace
 
 const std::vector<FreeShapeFamily>& free_shape_families() {
-  static const std::vector<FreeShapeFamily> families = {{"temp_gain_drift", "(V - v_min) T"},
-                                                        {"temp_gain_drift", "(V - pivot) T"},
-                                                        {"temp_offset_drift", "T"},
-                                                        {"nonlinearity", "V"},
-                                                        {"nonlinearity", "d"},
-                                                        {"range_compression", "top of V, T"},
-                                                        {"thermal_lag", "lagged T"},
-                                                        {"channel_skew", "t"},
-                                                        {"ageing_drift", "age, continuing"},
-                                                        {"ageing_drift", "age, settled"},
-                                                        {"mains_pickup", "aliased lines"}};
+  static const std::vector<FreeShapeFamily> families = {
+      {"temp_gain_drift", "(V - v_min) T"},
+      {"temp_gain_drift", "(V - pivot) T"},
+      {"temp_offset_drift", "T"},
+      {"nonlinearity", "V"},
+      {"nonlinearity", "d"},
+      {"range_compression", "top of V, T"},
+      {"range_compression", "V over a moving knee"},
+      {"thermal_lag", "lagged T"},
+      {"channel_skew", "t"},
+      {"ageing_drift", "age, continuing"},
+      {"ageing_drift", "age, settled"},
+      {"mains_pickup", "aliased lines"}};
   return families;
 }
 

@@ -51,6 +51,7 @@ class TwinReplay {
     return temperature_sensitivity_;
   }
   const std::vector<double>& times() const { return series_.t_s; }
+  const RecordingSeries& series() const { return series_; }
   std::size_t size() const { return series_.size(); }
 
   // The replay a parameter search runs on: this one up to kSearchRows rows; beyond that (a

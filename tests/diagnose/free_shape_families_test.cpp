@@ -249,6 +249,22 @@ Session cubic_voltage(const Truth& truth) {
   return s;
 }
 
+// A compression of the top of the range above a knee that falls as the coil heats: a soft
+// exponential approach above a knee that falls linearly from 45 degC, or a straight clip at a
+// third of the slope above a knee that falls as a square root from 20 degC. Neither is the
+// library's (a knee falling linearly from 0 degC with tanh above it).
+Effect compressed(std::function<double(double coil_c)> knee_v,
+                  std::function<double(double over_v)> above) {
+  return [knee_v, above](const Truth& truth, int) {
+    Session s = unchanged(truth);
+    s.voltage = [knee_v, above, coil = truth.ambient_c](std::size_t i, double v) {
+      const double knee = knee_v(coil[i]);
+      return v <= knee ? v : knee + above(v - knee);
+    };
+    return s;
+  };
+}
+
 Effect each(Session (*make)(const Truth&)) {
   return [make](const Truth& truth, int) { return make(truth); };
 }
@@ -286,7 +302,20 @@ INSTANTIATE_TEST_SUITE_P(
                   0.0,
                   {}},
         ShapeCase{"NonlinearityRippleInClearance", each(clearance_ripple), "nonlinearity", 0.0, {}},
-        ShapeCase{"NonlinearityCubicInVoltage", each(cubic_voltage), "nonlinearity", 0.0, {}}),
+        ShapeCase{"NonlinearityCubicInVoltage", each(cubic_voltage), "nonlinearity", 0.0, {}},
+        ShapeCase{"CompressionSoftAboveALinearlyFallingKnee",
+                  compressed([](double c) { return 9.3 - 0.05 * std::max(0.0, c - 45.0); },
+                             [](double over) { return 0.8 * (1.0 - std::exp(-over / 0.8)); }),
+                  "range_compression",
+                  0.0,
+                  {}},
+        ShapeCase{
+            "CompressionClipAboveASquareRootKnee",
+            compressed([](double c) { return 9.0 - 0.35 * std::sqrt(std::max(0.0, c - 20.0)); },
+                       [](double over) { return 0.3 * over; }),
+            "range_compression",
+            0.0,
+            {}}),
     [](const ::testing::TestParamInfo<ShapeCase>& shape) { return shape.param.name; });
 
 // A protocol on which time and temperature move together (both sessions heat steadily from 20 to
