@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
@@ -124,6 +125,24 @@ void choose_range(AdcGrid& grid) {
   grid.v_max = grid.lowest_v + std::ldexp(grid.lsb_v, grid.bits);
 }
 
+// The grid's LSB against the nearest span / 2^k (4 to 24 bits) of a usual converter range: a
+// ratio within kMostCalibrationGain of 1, but not 1 to the grid's own precision, is the DAQ
+// software's gain calibration.
+double calibration_gain_of(double lsb_v) {
+  constexpr double kSpansV[] = {5.0, 10.0, 20.0, 4.096, 10.24, 20.48};
+  double nearest = 1.0, off = std::numeric_limits<double>::infinity();
+  for (const double span : kSpansV) {
+    const double bits = std::round(std::log2(span / lsb_v));
+    if (bits < 4 || bits > 24) continue;
+    const double ratio = lsb_v / std::ldexp(span, -static_cast<int>(bits));
+    if (std::abs(ratio - 1.0) < off) {
+      off = std::abs(ratio - 1.0);
+      nearest = ratio;
+    }
+  }
+  return off <= kMostCalibrationGain && off > 1e-4 ? nearest : 1.0;
+}
+
 }  // namespace
 
 double AdcGrid::quantise(double volts) const {
@@ -148,6 +167,7 @@ std::optional<AdcGrid> estimate_adc_grid(const std::vector<double>& voltage_v) {
   count_codes(voltage_v, lattice.origin, grid);
   if (grid.share_on_grid < kMinShareOnGrid || grid.codes_used < 3) return std::nullopt;
   choose_range(grid);
+  if (!grid.usual_range) grid.calibration_gain = calibration_gain_of(grid.lsb_v);
   return grid;
 }
 

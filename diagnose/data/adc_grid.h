@@ -24,12 +24,20 @@ struct AdcGrid {
   // range of 2^bits codes from the lowest used. Always valid for the twin's adc_quantization.
   double v_min = 0.0, v_max = 0.0;
   bool usual_range = false;
+  // The LSB over the nearest span / 2^k of a usual converter range (5, 10 or 20 V; 4.096, 10.24
+  // or 20.48 V), when that is within kMostCalibrationGain of 1 but not 1: the DAQ software's gain
+  // calibration, which scales the codes and so the grid. 1 when no range is that near.
+  double calibration_gain = 1.0;
 
   // The grid point nearest to `volts`.
   double quantise(double volts) const;
   // The twin's adc_quantization effect with this grid.
   sim::EffectSettings as_effect() const;
 };
+
+// How far from 1 a gain calibration of the DAQ software goes (its grid is then this far off a
+// usual range's); beyond it the grid is taken as a range of its own.
+inline constexpr double kMostCalibrationGain = 0.02;
 
 // The grid, when at least 97 % of the samples lie on one with 3 or more codes and an LSB of at
 // least 20 uV; nothing for an unquantised column.

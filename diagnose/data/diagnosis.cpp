@@ -481,6 +481,10 @@ struct Selection {
   // and the constant offset they give the twin's voltage (held in cal_free_v and ho_free_v).
   std::optional<double> converter_threshold_lsb;
   double converter_offset_v = 0.0;
+  // The DAQ's gain calibration, when placed with them: the recorded voltage is the gain times
+  // the twin's plus converter_gain_offset_v (held in cal_free_v and ho_free_v as well).
+  std::optional<double> converter_gain;
+  double converter_gain_offset_v = 0.0;
   bool quantisation_as_noise = false;             // its codes not reproduced: taken as noise
   std::optional<EffectFinding> nearest_unpicked;  // the best candidate when none was significant
   // What the free-shape picks add to the twin's voltage, per part (zeros without any), and for
@@ -564,7 +568,7 @@ bool has_effect(const std::vector<sim::EffectSettings>& effects, const std::stri
 // fits the calibration part best is kept, and the mean offset it gives the twin's voltage there
 // joins the twin as a constant before any effect is fitted (a constant, not the converter itself,
 // so that the effects' fits stay smooth), if it lowers the calibration gap's mean square by the
-// least gain a pick must make.
+// least gain a pick must make. With them, a DAQ gain calibration the grid shows.
 void place_converter_boundaries(const Parts& parts, Selection& selection) {
   if (has_effect(selection.modelled, "adc_quantization")) return;
   const std::optional<AdcGrid> grid = shared_grid(parts);
@@ -589,14 +593,43 @@ void place_converter_boundaries(const Parts& parts, Selection& selection) {
   const std::vector<double> offset_by_sample = minus(best_v, twin_v);
   const double offset_v = std::accumulate(offset_by_sample.begin(), offset_by_sample.end(), 0.0) /
                           static_cast<double>(offset_by_sample.size());
-  std::vector<double> gap = minus(cal_v, twin_v);
-  const double without = rms_of(gap);
+  const std::vector<double> raw_gap = minus(cal_v, twin_v);
+  std::vector<double> gap = raw_gap;
   for (double& g : gap) g -= offset_v;
-  const double after = rms_of(gap);
   const double sigma = selection.sigma;
-  if (without * without - after * after < kMinGainOfNoiseVariance * sigma * sigma) return;
+  const double least = kMinGainOfNoiseVariance * sigma * sigma;
+  // A grid a little off a usual range's is a DAQ gain calibration (AdcGrid::calibration_gain):
+  // the recorded voltage is then the gain times the twin's, plus a constant. The gain is the
+  // grid's, so only the constant is fitted; kept when it lowers the calibration gap by the least
+  // gain a pick must make.
+  const double slope = grid->calibration_gain - 1.0;
+  double line_offset_v = 0.0;
+  bool calibrated = false;
+  if (slope != 0.0) {
+    std::vector<double> line_gap = gap;
+    for (std::size_t i = 0; i < line_gap.size(); ++i) line_gap[i] -= slope * twin_v[i];
+    line_offset_v = std::accumulate(line_gap.begin(), line_gap.end(), 0.0) /
+                    static_cast<double>(line_gap.size());
+    for (double& g : line_gap) g -= line_offset_v;
+    const double before = rms_of(gap), after = rms_of(line_gap);
+    calibrated = before * before - after * after >= least;
+    if (calibrated) gap = std::move(line_gap);
+  }
+  const double without = rms_of(raw_gap), after = rms_of(gap);
+  if (without * without - after * after < least) return;
   for (double& v : selection.cal_free_v) v += offset_v;
   for (double& v : selection.ho_free_v) v += offset_v;
+  if (calibrated) {
+    const std::vector<double> ho_twin_v = parts.ho_replay.voltage(selection.modelled);
+    for (std::size_t i = 0; i < twin_v.size(); ++i) {
+      selection.cal_free_v[i] += slope * twin_v[i] + line_offset_v;
+    }
+    for (std::size_t i = 0; i < ho_twin_v.size(); ++i) {
+      selection.ho_free_v[i] += slope * ho_twin_v[i] + line_offset_v;
+    }
+    selection.converter_gain = grid->calibration_gain;
+    selection.converter_gain_offset_v = line_offset_v;
+  }
   selection.converter_threshold_lsb = best_threshold;
   selection.converter_offset_v = offset_v;
 }
@@ -1029,6 +1062,15 @@ void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selecti
         "held-out gap RMS {:.4g} -> {:.4g} V by that offset alone)",
         threshold, std::abs(threshold) >= 0.4 ? "a truncating converter" : "not rounding's",
         selection.converter_offset_v, rms_of(selection.raw_ho_gap), rms_of(selection.ho_gap));
+    if (selection.converter_gain) {
+      finding.params["calibration_gain"] = *selection.converter_gain;
+      finding.params["calibration_offset_v"] = selection.converter_gain_offset_v;
+      finding.evidence += fmt::format(
+          "; with it, the DAQ software's gain calibration that the grid's spacing shows ({:.5g} "
+          "times a usual range's LSB): the recorded voltage is {:.5g} times the twin's {:+.4g} V "
+          "(in that held-out figure too)",
+          *selection.converter_gain, *selection.converter_gain, selection.converter_gain_offset_v);
+    }
     for (double& v : target) v += selection.converter_offset_v;
   }
   std::vector<sim::EffectSettings> with = selection.modelled;
@@ -1049,7 +1091,10 @@ void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selecti
         "taken as noise of LSB / sqrt(12) = {:.4g} V",
         rms_of(replayed), null_rms, grid->lsb_v / std::sqrt(12.0));
   }
-  finding.heldout_rms_after = rms_of(selection.current_error);
+  // Its own shrink: with the boundaries placed first, what placing them took off the held-out gap
+  // (the picks after them are theirs); else what the converter's replay takes.
+  finding.heldout_rms_after = selection.converter_threshold_lsb ? rms_of(selection.ho_gap)
+                                                                : rms_of(selection.current_error);
   finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
                        std::max(finding.heldout_rms_before, 1e-30);
   selection.findings.push_back(finding);

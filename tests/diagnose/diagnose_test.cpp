@@ -308,6 +308,28 @@ TEST(Diagnose, ATruncatingConverterIsNamedAloneWithItsBoundaries) {
   EXPECT_NE(converter.evidence.find("truncating"), std::string::npos) << converter.evidence;
 }
 
+// An 8-bit converter over 0-10 V behind the DAQ software's gain calibration (x 1.006, +20 mV):
+// the grid is 1.006 times the usual range's, which says that the linear gap is the converter's,
+// not a static nonlinearity of the sensor. The converter is the only finding, with its gain.
+TEST(Diagnose, AConverterBehindADaqGainCalibrationIsNamedAloneWithItsGain) {
+  const std::vector<sim::EffectSettings> effects = {sim::make_effect_settings(
+      "adc_quantization", {{"bits", 8}, {"v_min", 0.0}, {"v_max", 10.0}}, "test")};
+  const auto calibrated = [](RecordingSeries s) {
+    for (double& v : s.voltage_v) v = 1.006 * v + 0.02;
+    return s;
+  };
+  const DiagnosisResult r = diagnose_in_detail(calibrated(twin_recording(effects, 65, 0.0)),
+                                               calibrated(twin_recording(effects, 66, 70.0)), {});
+  std::string named;
+  for (const EffectFinding& f : r.diagnosis.effects) named += f.name + ": " + f.evidence + "\n";
+  EXPECT_EQ(r.diagnosis.status, "explained") << named;
+  ASSERT_EQ(r.diagnosis.effects.size(), 1u) << named;
+  const EffectFinding& converter = r.diagnosis.effects.front();
+  EXPECT_EQ(converter.name, "adc_quantization");
+  ASSERT_TRUE(converter.params.count("calibration_gain")) << converter.evidence;
+  EXPECT_NEAR(converter.params.at("calibration_gain"), 1.006, 2e-4) << converter.evidence;
+}
+
 TEST(DiagnoseCommand, AnUnexplainedVerdictNamesTheNearestEffectInTextJsonAndHtml) {
   const auto dir = fresh_test_dir("diagnose_nearest");
   write_csv(dir / "real.csv", twin_recording({}, 71, 0.0, 0.94));
