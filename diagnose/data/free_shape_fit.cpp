@@ -358,11 +358,19 @@ class KneeCompressionFamily : public Family {
 
   void search(const Part& calibration, const std::vector<double>& gap_v) override {
     // On a long log, the rows a parameter search runs on (TwinReplay::search_replay).
+    // Rows at or below the lowest knee allowed are 0 in every column whatever the knee, so they
+    // add the same to every candidate's sum of squares and are left out of the search.
     const TwinReplay& replay = calibration.replay.search_replay();
-    const Part part{replay.series(), replay};
     const std::vector<double> gap = calibration.replay.at_search_rows(gap_v);
-    const Eigen::VectorXd y =
-        Eigen::Map<const Eigen::VectorXd>(gap.data(), static_cast<Eigen::Index>(gap.size()));
+    std::vector<double> volts, temps, gap_above;
+    for (std::size_t i = 0; i < gap.size(); ++i) {
+      if (replay.nominal_voltage()[i] <= lowest_knee_v_) continue;
+      volts.push_back(replay.nominal_voltage()[i]);
+      temps.push_back(replay.series().temp_c[i]);
+      gap_above.push_back(gap[i]);
+    }
+    const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(
+        gap_above.data(), static_cast<Eigen::Index>(gap_above.size()));
     // The knee as its cold value and the non-negative falls between neighbouring knots: a knee
     // that only falls as the coil heats, flat up to wherever the compression sets in.
     const auto knee_of = [&](std::vector<double> law) {
@@ -379,9 +387,8 @@ class KneeCompressionFamily : public Family {
     chosen[0] = top_v_;
     const auto try_law = [&](const std::vector<double>& law) {
       knee_v_ = knee_of(law);
-      height_span_v_ = highest_over(part);
-      const Eigen::MatrixXd a = columns(part);
-      const double sse = (y - a * ridge_solve(a, y)).squaredNorm();
+      height_span_v_ = highest_over(volts, temps);
+      const double sse = least_squares_sse(volts, temps, y);
       if (sse < best) {
         best = sse;
         chosen = law;
@@ -413,7 +420,7 @@ class KneeCompressionFamily : public Family {
       }
     }
     knee_v_ = knee_of(chosen);
-    height_span_v_ = highest_over(part);
+    height_span_v_ = highest_over(volts, temps);
   }
 
   int searched_values() const override { return static_cast<int>(knee_v_.size()); }
@@ -427,17 +434,7 @@ class KneeCompressionFamily : public Family {
   }
 
   Eigen::MatrixXd columns(const Part& part) const override {
-    const std::size_t n = part.series.size();
-    Eigen::MatrixXd a = matrix(n, kKneeHeightKnots - 1);
-    const Hats heights = height_hats();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double over = part.replay.nominal_voltage()[i] - knee_at(part.series.temp_c[i]);
-      if (over <= 0.0) continue;
-      for (std::size_t j = 1; j < kKneeHeightKnots; ++j) {
-        a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j - 1)) = heights.weight(j, over);
-      }
-    }
-    return a;
+    return columns_of(part.replay.nominal_voltage(), part.series.temp_c);
   }
 
   void summarise(const Eigen::VectorXd&, const Part&,
@@ -462,22 +459,72 @@ class KneeCompressionFamily : public Family {
   }
 
  private:
+  // The sum of squares the ridge fit of `y` on columns_of(volts, temps) leaves, from the normal
+  // equations summed row by row (a row has at most two hats that are not 0): what the search
+  // evaluates hundreds of times, without the rows x columns matrix.
+  double least_squares_sse(const std::vector<double>& volts, const std::vector<double>& temps,
+                           const Eigen::VectorXd& y) const {
+    constexpr int kCols = kKneeHeightKnots - 1;
+    Eigen::Matrix<double, kCols, kCols> normal = Eigen::Matrix<double, kCols, kCols>::Zero();
+    Eigen::Matrix<double, kCols, 1> aty = Eigen::Matrix<double, kCols, 1>::Zero();
+    const Hats heights = height_hats();
+    for (std::size_t i = 0; i < volts.size(); ++i) {
+      const double over = volts[i] - knee_at(temps[i]);
+      if (over <= 0.0) continue;
+      int at[2] = {0, 0};
+      double w[2] = {0.0, 0.0};
+      int used = 0;
+      for (std::size_t j = 1; j < kKneeHeightKnots && used < 2; ++j) {
+        const double weight = heights.weight(j, over);
+        if (weight == 0.0) continue;
+        at[used] = static_cast<int>(j - 1);
+        w[used++] = weight;
+      }
+      const double yi = y(static_cast<Eigen::Index>(i));
+      for (int a = 0; a < used; ++a) {
+        aty(at[a]) += w[a] * yi;
+        for (int b = 0; b < used; ++b) normal(at[a], at[b]) += w[a] * w[b];
+      }
+    }
+    Eigen::Matrix<double, kCols, kCols> ridged = normal;
+    const double largest = normal.diagonal().maxCoeff();
+    for (int j = 0; j < kCols; ++j) {
+      ridged(j, j) += kRidge * normal(j, j) + 1e-12 * std::max(largest, 1e-300);
+    }
+    const Eigen::Matrix<double, kCols, 1> beta = ridged.ldlt().solve(aty);
+    return y.squaredNorm() - 2.0 * beta.dot(aty) + beta.dot(normal * beta);
+  }
+
+  Eigen::MatrixXd columns_of(const std::vector<double>& volts,
+                             const std::vector<double>& temps) const {
+    const std::size_t n = volts.size();
+    Eigen::MatrixXd a = matrix(n, kKneeHeightKnots - 1);
+    const Hats heights = height_hats();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double over = volts[i] - knee_at(temps[i]);
+      if (over <= 0.0) continue;
+      for (std::size_t j = 1; j < kKneeHeightKnots; ++j) {
+        a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j - 1)) = heights.weight(j, over);
+      }
+    }
+    return a;
+  }
+
   double knee_at(double temp_c) const {
     double k = 0.0;
     for (std::size_t j = 0; j < knee_v_.size(); ++j) k += knee_v_[j] * temp_.weight(j, temp_c);
     return k;
   }
-  // Knots of h from the knee to the most the calibration part goes above the lowest knee the
-  // search allows, so that the knots do not move while the knee is searched.
+  // Knots of h, evenly from the knee to the most the calibration part goes above it.
   double height_knot(std::size_t j) const {
     return height_span_v_ * static_cast<double>(j) / (kKneeHeightKnots - 1.0);
   }
   // The most the part goes above the knee: the curve above it is fitted up to there, and goes on
   // along its last segment beyond (a saturating compression keeps its slope).
-  double highest_over(const Part& part) const {
+  double highest_over(const std::vector<double>& volts, const std::vector<double>& temps) const {
     double most = 1e-3;
-    for (std::size_t i = 0; i < part.series.size(); ++i) {
-      most = std::max(most, part.replay.nominal_voltage()[i] - knee_at(part.series.temp_c[i]));
+    for (std::size_t i = 0; i < volts.size(); ++i) {
+      most = std::max(most, volts[i] - knee_at(temps[i]));
     }
     return most;
   }
