@@ -396,24 +396,40 @@ class KneeCompressionFamily : public Family {
       }
       return false;
     };
-    // A lattice of knees falling evenly from the cold end to the hot one, then a pattern search.
+    // A lattice of knees flat up to an onset knot and falling evenly from there to the hot end,
+    // then a pattern search that moves one fall (every hotter knot with it) or one knot alone.
     const double span = top_v_ - lowest_knee_v_;
-    const double falls = static_cast<double>(knee_v_.size() - 1);
+    const std::size_t knots = knee_v_.size();
     for (double cold = 0.0; cold <= 1.0 + 1e-9; cold += 0.125) {
-      for (double fall = 0.0; fall <= 1.0 + 1e-9; fall += 0.25) {
-        std::vector<double> law(knee_v_.size(), fall * span / falls);
-        law[0] = top_v_ - cold * span;
-        try_law(law);
+      for (std::size_t onset = 0; onset + 1 < knots; ++onset) {
+        for (double fall = 0.25; fall <= 1.0 + 1e-9; fall += 0.25) {
+          std::vector<double> law(knots, 0.0);
+          law[0] = top_v_ - cold * span;
+          for (std::size_t j = onset + 1; j < knots; ++j) {
+            law[j] = fall * span / static_cast<double>(knots - 1 - onset);
+          }
+          try_law(law);
+        }
       }
+      std::vector<double> flat(knots, 0.0);
+      flat[0] = top_v_ - cold * span;
+      try_law(flat);
     }
     for (double step : {0.1 * span, 0.025 * span, 0.006 * span}) {
       for (bool moved = true; moved;) {
         moved = false;
-        for (std::size_t k = 0; k < chosen.size(); ++k) {
+        for (std::size_t k = 0; k < knots; ++k) {
           for (double sign : {-1.0, 1.0}) {
             std::vector<double> trial = chosen;
             trial[k] += sign * step;
             if (k > 0 && trial[k] < 0.0) continue;
+            moved = try_law(trial) || moved;
+            // Knot k alone: its fall and the next one's trade.
+            if (k == 0 || k + 1 >= knots) continue;
+            trial = chosen;
+            trial[k] += sign * step;
+            trial[k + 1] -= sign * step;
+            if (trial[k] < 0.0 || trial[k + 1] < 0.0) continue;
             moved = try_law(trial) || moved;
           }
         }
