@@ -434,7 +434,8 @@ std::optional<std::string> clock_reason(const Diagnosis& diagnosis,
   if (diagnosis.clock != "unknown" || !weighed) return std::nullopt;
   return "the held-out clock restarts at 0 and the sessions' start times are unknown: ageing is "
          "a trend within each session, and each session is taken to start at the same age, so a "
-         "drift that ran on between the sessions is left as an offset on the held-out part (give "
+         "drift that ran on between the sessions is left as an offset on the held-out part, "
+         "unless a free ageing curve placed the held-out session at an age of its own (give "
          "--real-start and --holdout-start)";
 }
 
@@ -696,12 +697,15 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
   // in parallel too, taken in catalogue order.
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
   std::vector<std::future<Candidate>> pending_free;
+  const bool heldout_age_unknown =
+      session_clock(parts.calibration, parts.heldout).kind == "unknown";
   for (const FreeShapeFamily& family : free_shape_families()) {
     if (!selection.free_shapes || class_taken(family.effect, selection)) continue;
     pending_free.push_back(std::async(std::launch::async, [&, family] {
       Candidate c;
-      c.free_shape = fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
-                                    parts.ho_replay, cal_gap, selection.current_error);
+      c.free_shape =
+          fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
+                         parts.ho_replay, cal_gap, selection.current_error, heldout_age_unknown);
       c.fit.settings = sim::make_effect_settings(family.effect, {}, "diagnose free shape");
       c.fit.rms_v = rms_of(minus(cal_gap, c.free_shape->cal_voltage_v));
       c.with = modelled;

@@ -86,6 +86,7 @@ Hats hats_over(const std::vector<double>& x, int count) {
 struct Part {
   const RecordingSeries& series;
   const TwinReplay& replay;
+  double age_shift_s = 0.0;  // the part placed this much older than its replay's age offset says
 };
 
 // A family's columns on a part, their names, and what its values say about the class.
@@ -137,7 +138,8 @@ class MainsFamily {
 std::vector<double> age_days(const Part& part) {
   std::vector<double> age(part.series.size());
   for (std::size_t i = 0; i < age.size(); ++i) {
-    age[i] = std::max(0.0, (part.series.t_s[i] + part.replay.age_offset_s()) / kSecondsPerDay);
+    age[i] = std::max(
+        0.0, (part.series.t_s[i] + part.replay.age_offset_s() + part.age_shift_s) / kSecondsPerDay);
   }
   return age;
 }
@@ -1043,6 +1045,48 @@ std::vector<double> as_vector(const Eigen::VectorXd& v) {
   return std::vector<double>(v.data(), v.data() + v.size());
 }
 
+// The held-out session's age when its clock restarts at 0 and no start times say it: the shift,
+// from 30 days before the calibration session's start to 30 days after its end, at which the
+// ageing curve best fits the held-out gap (one value fitted there, charged like the mains'
+// windows). Without it the held-out part is replayed at the calibration part's ages, which puts
+// a step or a settling seen in the calibration session back into the held-out one.
+void place_heldout_age(const Family& shape, const Eigen::VectorXd& beta,
+                       const RecordingSeries& calibration, const Part& heldout,
+                       const std::vector<double>& ho_gap_v, FreeShapeFit& fit) {
+  const double session_s = calibration.t_s.back() - calibration.t_s.front();
+  std::vector<double> shifts = {0.0};
+  for (double after = 60.0; after <= 30.0 * kSecondsPerDay; after *= 1.25) {
+    shifts.push_back(session_s + after);
+    shifts.push_back(-after);
+  }
+  for (int k = 1; k < 8; ++k) shifts.push_back(session_s * k / 8.0);
+  const auto sse_of = [&](const std::vector<double>& predicted) {
+    double sse = 0.0;
+    for (std::size_t i = 0; i < predicted.size(); ++i) {
+      const double e = ho_gap_v[i] - predicted[i];
+      sse += e * e;
+    }
+    return sse;
+  };
+  double best = sse_of(fit.heldout_voltage_v), best_shift = 0.0;
+  for (const double shift : shifts) {
+    std::vector<double> predicted =
+        as_vector(shape.columns(Part{heldout.series, heldout.replay, shift}) * beta);
+    const double sse = sse_of(predicted);
+    if (sse < best) {
+      best = sse;
+      best_shift = shift;
+      fit.heldout_voltage_v = std::move(predicted);
+    }
+  }
+  fit.heldout_values = 1;
+  fit.params["heldout_start_after_calibration_start_days"] = best_shift / kSecondsPerDay;
+  fit.description += fmt::format(
+      "; the held-out session's age is not known (its clock restarts at 0, no start times): "
+      "placed where the curve fits it best, {:.3g} days after the calibration session's start",
+      best_shift / kSecondsPerDay);
+}
+
 }  // namespace
 
 const std::vector<FreeShapeFamily>& free_shape_families() {
@@ -1065,7 +1109,7 @@ const std::vector<FreeShapeFamily>& free_shape_families() {
 FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries& calibration,
                             const TwinReplay& cal_replay, const RecordingSeries& heldout,
                             const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v,
-                            const std::vector<double>& ho_gap_v) {
+                            const std::vector<double>& ho_gap_v, bool heldout_age_unknown) {
   const Part cal_part{calibration, cal_replay};
   if (family.effect == "mains_pickup") {
     FreeShapeFit fit;
@@ -1103,6 +1147,9 @@ FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries
   fit.description = shape->describe(beta);
   fit.cal_voltage_v = as_vector(cal * beta);
   fit.heldout_voltage_v = as_vector(shape->columns(Part{heldout, ho_replay}) * beta);
+  if (heldout_age_unknown && family.effect == "ageing_drift") {
+    place_heldout_age(*shape, beta, calibration, Part{heldout, ho_replay}, ho_gap_v, fit);
+  }
   return fit;
 }
 

@@ -49,8 +49,9 @@ struct FreeShapeFit {
   std::string description;                // "a free curve of T through -0.012 at 21 degC, ..."
   std::vector<double> cal_voltage_v;      // what it adds to the twin's voltage, calibration part
   std::vector<double> heldout_voltage_v;  // ... and held-out part
-  // Values fitted on the held-out part itself (the mains' windows; 0 for the others): fitting
-  // them to white noise alone would lower its mean square by heldout_values / n of its variance.
+  // Values fitted on the held-out part itself (the mains' windows; an ageing's held-out age when
+  // the clocks do not say it; 0 for the others): fitting them to white noise alone would lower
+  // its mean square by heldout_values / n of its variance.
   int heldout_values = 0;
   // How many values the calibration fit chose (the curve's, plus a searched law's): what the
   // selection weighs when two candidates gain alike.
@@ -58,10 +59,13 @@ struct FreeShapeFit {
 };
 
 // Fits `family` to `cal_gap_v` (the calibration gap the modelled effects leave); `ho_gap_v`, the
-// held-out gap they leave, is read only by the families with heldout_values.
+// held-out gap they leave, is read only by the families with heldout_values. With
+// `heldout_age_unknown` (the held-out clock restarts at 0 and no start times were given), an
+// ageing family's held-out part is placed at the age, before or after the calibration session,
+// that fits its gap best (docs/diagnose.md, "Sessions and time").
 FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries& calibration,
                             const TwinReplay& cal_replay, const RecordingSeries& heldout,
                             const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v,
-                            const std::vector<double>& ho_gap_v);
+                            const std::vector<double>& ho_gap_v, bool heldout_age_unknown = false);
 
 }  // namespace flange::diagnose

@@ -318,6 +318,22 @@ INSTANTIATE_TEST_SUITE_P(
             {}}),
     [](const ::testing::TestParamInfo<ShapeCase>& shape) { return shape.param.name; });
 
+// The ageing step of `AgeingStep` with the held-out clock restarting at 0 and no start times:
+// the held-out session is placed at the age where the ageing curve fits it, after the step (here
+// a day later, after the calibration session's 1800 s), and the finding says so.
+TEST(SessionsAndTime, AnUnknownHeldOutAgeIsPlacedWhereTheAgeingCurveFitsIt) {
+  const Diagnosis d =
+      diagnose_pair(aged([](double age) { return age > 600.0 ? 0.12 : 0.0; }), kNoiseV, 11);
+  EXPECT_EQ(d.status, "explained") << d.heldout_rms_before << " -> " << d.heldout_rms_after;
+  ASSERT_FALSE(d.effects.empty());
+  const EffectFinding& ageing = d.effects.front();
+  ASSERT_EQ(ageing.name, "ageing_drift") << ageing.evidence;
+  ASSERT_TRUE(ageing.params.count("heldout_start_after_calibration_start_days")) << ageing.evidence;
+  EXPECT_GT(ageing.params.at("heldout_start_after_calibration_start_days"), kSessionS / 86400.0)
+      << ageing.evidence;
+  EXPECT_NE(ageing.evidence.find("age is not known"), std::string::npos) << ageing.evidence;
+}
+
 // A protocol on which time and temperature move together (both sessions heat steadily from 20 to
 // 80 degC, clocks restarting at 0): an offset that follows the temperature is explained as well
 // by a trend in time. The diagnosis names one and says that the two are confounded, and what
