@@ -13,6 +13,7 @@
 #include "alt_truth.h"
 #include "cli.h"
 #include "input_error.h"
+#include "utc_time.h"
 
 namespace flange::cli {
 namespace fs = std::filesystem;
@@ -28,9 +29,16 @@ void write_alt_files(const SelftestCommandOptions& options, const std::string& h
   fs::create_directories(dir);
   const diagnose::AltPairResult& first = results.front();
   if (first.pair) {
-    for (const fs::path& path : alt_reality::write_alt_pair(dir, first.spec, *first.pair)) {
-      out << "  wrote " << path.string() << "\n";
-    }
+    const std::vector<fs::path> paths = alt_reality::write_alt_pair(dir, first.spec, *first.pair);
+    for (const fs::path& path : paths) out << "  wrote " << path.string() << "\n";
+    // The diagnosis the self-test ran, as a user runs it on the files (with the start times the
+    // self-test gave it).
+    out << fmt::format(
+        "  the same diagnosis: flange diagnose --real {} --holdout {} --real-start {} "
+        "--holdout-start {} --out DIR\n",
+        paths[0].string(), paths[1].string(),
+        format_utc_time(diagnose::alt_session_start_utc_s(first.spec.fit)),
+        format_utc_time(diagnose::alt_session_start_utc_s(first.spec.heldout)));
   }
   std::ofstream json(dir / "selftest.json", std::ios::binary);
   json << diagnose::alt_selftest_json(options.run, results, summary).dump(2) << "\n";

@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <string_view>
 
 #include "input_error.h"
@@ -59,6 +60,17 @@ double parse_utc_time(const std::string& text, const std::string& option) {
   }
   const auto days = std::chrono::sys_days{date}.time_since_epoch().count();
   return static_cast<double>(days) * 86400.0 + hour * 3600.0 + minute * 60.0 + second + fraction;
+}
+
+std::string format_utc_time(double utc_s) {
+  const auto ms = static_cast<long long>(std::llround(utc_s * 1000.0));
+  const std::chrono::sys_days day{std::chrono::days{ms / 86'400'000}};
+  const std::chrono::year_month_day date{day};
+  const long long in_day = ms % 86'400'000;
+  return fmt::format("{:04d}-{:02d}-{:02d}T{:02d}:{:02d}:{:02d}.{:03d}Z",
+                     static_cast<int>(date.year()), static_cast<unsigned>(date.month()),
+                     static_cast<unsigned>(date.day()), in_day / 3'600'000, in_day / 60'000 % 60,
+                     in_day / 1000 % 60, in_day % 1000);
 }
 
 }  // namespace flange::cli

@@ -11,4 +11,8 @@ namespace flange::cli {
 // form and ranges expected.
 double parse_utc_time(const std::string& text, const std::string& option);
 
+// `utc_s` (seconds since 1970-01-01T00:00:00Z, >= 0) as parse_utc_time reads it, to the
+// millisecond: YYYY-MM-DDThh:mm:ss.fffZ.
+std::string format_utc_time(double utc_s);
+
 }  // namespace flange::cli

@@ -35,17 +35,13 @@ std::string fmt_label(int index, const char* part) {
   return fmt::format("alt pair {} ({})", index, part);
 }
 
-// When the calibration of the alternative reality's sensor happened (its age 0), as a UTC time:
-// any date serves, only the difference between two sessions' starts is used.
-constexpr double kSensorCalibratedUtcS = 1767225600.0;  // 2026-01-01T00:00:00Z
-
 // The session as `flange diagnose` reads it, with its start time (as a DAQ's file header or a lab
 // book gives it; the clock itself restarts at 0 in every session).
 RecordingSeries as_series(const alt_reality::AltRecording& r, const alt_reality::SessionPlan& plan,
                           const std::string& label) {
   RecordingSeries s;
   s.path = label;
-  s.start_utc_s = kSensorCalibratedUtcS + plan.start_age_s;
+  s.start_utc_s = alt_session_start_utc_s(plan);
   s.t_s = r.t_s;
   s.clearance_mm = r.clearance_mm;
   s.temp_c = r.temp_c;
@@ -68,6 +64,13 @@ void score_in_library(const AltPairSpec& spec, const Diagnosis& diagnosis, AltSc
 }
 
 }  // namespace
+
+double alt_session_start_utc_s(const alt_reality::SessionPlan& plan) {
+  // When the alternative reality's sensor was calibrated (its age 0): any date serves, only the
+  // difference between two sessions' starts is used.
+  constexpr double kSensorCalibratedUtcS = 1767225600.0;  // 2026-01-01T00:00:00Z
+  return kSensorCalibratedUtcS + plan.start_age_s;
+}
 
 AltScore score_alt_pair(const AltPairSpec& spec, const Diagnosis& diagnosis,
                         const std::vector<EffectFinding>& partial) {
@@ -115,10 +118,9 @@ std::vector<AltPairResult> run_alt_selftest(const SelftestOptions& options) {
     DiagnoseOptions diagnose_options;
     diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
     diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
-    DiagnosisResult detailed =
-        diagnose_in_detail(as_series(pair.fit, r.spec.fit, fmt_label(index, "fit")),
-                           as_series(pair.heldout, r.spec.heldout, fmt_label(index, "held-out")),
-                           diagnose_options);
+    DiagnosisResult detailed = diagnose_in_detail(
+        as_series(pair.fit, r.spec.fit, fmt_label(index, "fit")),
+        as_series(pair.heldout, r.spec.heldout, fmt_label(index, "held-out")), diagnose_options);
     r.diagnosis = std::move(detailed.diagnosis);
     r.partial = std::move(detailed.detail.partial);
     r.score = score_alt_pair(r.spec, r.diagnosis, r.partial);

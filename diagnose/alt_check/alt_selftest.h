@@ -67,6 +67,10 @@ struct AltSummary {
 };
 AltSummary summarise_alt_selftest(const std::vector<AltPairResult>& results);
 
+// The UTC time of a session's t_s = 0, as the self-test gives it to the diagnosis (its
+// --real-start / --holdout-start): the sensor's age at that instant after a fixed calibration date.
+double alt_session_start_utc_s(const alt_reality::SessionPlan& plan);
+
 // Every pair of options.seed (cases = pairs; only_case: just that pair; duration_s > 0 caps the
 // sessions), in parallel over options.jobs threads; results in pair order.
 std::vector<AltPairResult> run_alt_selftest(const SelftestOptions& options);

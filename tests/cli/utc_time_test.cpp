@@ -20,9 +20,9 @@ TEST(UtcTime, KnownInstants) {
 }
 
 TEST(UtcTime, DifferencesAreExactAcrossMonthsAndLeapDays) {
-  EXPECT_DOUBLE_EQ(parse_utc_time("2024-03-01T00:00:00Z", "--t") -
-                       parse_utc_time("2024-02-28T12:00:00Z", "--t"),
-                   1.5 * 86400.0);
+  EXPECT_DOUBLE_EQ(
+      parse_utc_time("2024-03-01T00:00:00Z", "--t") - parse_utc_time("2024-02-28T12:00:00Z", "--t"),
+      1.5 * 86400.0);
 }
 
 TEST(UtcTime, AnythingElseIsRefusedNamingTheOptionAndTheForm) {
@@ -43,4 +43,12 @@ TEST(UtcTime, AnythingElseIsRefusedNamingTheOptionAndTheForm) {
 }
 
 }  // namespace
+TEST(UtcTime, FormattedTimesReadBackToTheMillisecond) {
+  EXPECT_EQ(format_utc_time(0.0), "1970-01-01T00:00:00.000Z");
+  EXPECT_EQ(format_utc_time(1767225600.0), "2026-01-01T00:00:00.000Z");
+  for (const double t : {1767225600.0 + 6944.115, 1.7e9 + 86399.9996, 951782400.5}) {
+    EXPECT_NEAR(parse_utc_time(format_utc_time(t), "--real-start"), t, 5e-4) << format_utc_time(t);
+  }
+}
+
 }  // namespace flange::cli

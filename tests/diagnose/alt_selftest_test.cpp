@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "finding_class.h"
 #include "flange_in_process.h"
@@ -132,12 +134,21 @@ TEST(AltSelftestCommand, OnePairWritesItsSessionsAndItsTruth) {
   EXPECT_EQ(j["reality"], "alt");
   ASSERT_EQ(j["pairs"].size(), 1u);
   EXPECT_EQ(j["pairs"][0]["kind"], "null");
-  // The sessions diagnose on their own as a user would run them, to the same verdict (the
-  // blind run's bootstrap seed is the seed plus the pair).
+  // The sessions diagnose on their own as a user would run them, with the start times the
+  // printed command gives, to the same verdict (the blind run's bootstrap seed is the seed plus
+  // the pair).
+  const std::string same = "  the same diagnosis: flange diagnose --real ";
+  const std::size_t line = o.out.find(same);
+  ASSERT_NE(line, std::string::npos) << o.out;
+  std::istringstream words(o.out.substr(line, o.out.find('\n', line) - line));
+  std::map<std::string, std::string> option;
+  for (std::string word, previous; words >> word; previous = word) option[previous] = word;
+  EXPECT_EQ(option["--real"], (dir / "pair_8_fit.csv").string());
+  EXPECT_EQ(option["--holdout"], (dir / "pair_8_heldout.csv").string());
   const testing::FlangeOutcome again = testing::run_flange_captured(
-      {"diagnose", "--real", (dir / "pair_8_fit.csv").string(), "--holdout",
-       (dir / "pair_8_heldout.csv").string(), "--bootstrap", "20", "--seed", "109", "--out",
-       (dir / "diag").string()});
+      {"diagnose", "--real", option["--real"], "--holdout", option["--holdout"], "--real-start",
+       option["--real-start"], "--holdout-start", option["--holdout-start"], "--bootstrap", "20",
+       "--seed", "109", "--out", (dir / "diag").string()});
   EXPECT_EQ(again.status, 0) << again.err;
   EXPECT_EQ(again.out.rfind("verdict: " + j["pairs"][0]["verdict"].get<std::string>(), 0), 0u)
       << again.out;
