@@ -41,8 +41,9 @@ constexpr int kKneeTempKnots = 9;
 constexpr int kKneeHeightKnots = 7;
 
 // Knots of a trend in the sensor's age over the calibration session (held at its last value
-// after it: a step or a settling that has ended).
-constexpr int kAgeKnots = 5;
+// after it: a step or a settling that has ended). Nine, an eighth of the session apart: with five,
+// a step's ramp between two knots pulled the held value short of the step's height.
+constexpr int kAgeKnots = 9;
 
 // Relative ridge: each column's own sum of squares times this is added to the normal equations.
 // Small enough to leave a well-posed fit as it is (1e-3 of a column's weight), large enough that
