@@ -24,9 +24,10 @@ constexpr double kSecondsPerHour = 3600.0;
 // Knots of a curve of temperature or voltage: enough to bend twice over a heating cycle or the
 // voltage range, few enough that each holds thousands of samples of a bench session.
 constexpr int kKnots = 7;
-// Knots of a curve of clearance: 0.5 mm apart over the thesis's 1-9 mm, so a ripple of 2 mm
-// period still shows.
-constexpr int kClearanceKnots = 17;
+// Knots of a curve of clearance: about a third of a millimetre apart over the thesis's 1-9 mm,
+// six or more to the period of a 2 mm ripple (at 0.5 mm apart the piecewise-linear curve left
+// about a tenth of such a ripple's amplitude).
+constexpr int kClearanceKnots = 25;
 
 // How far a curve of temperature goes on beyond the calibration part's range, in knot spacings
 // (about 10 degC for a 20-80 degC session) before it is held.

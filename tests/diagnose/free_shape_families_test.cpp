@@ -240,6 +240,15 @@ Session clearance_ripple(const Truth& truth) {
   };
   return s;
 }
+// A finer ripple: a 2 mm period, the shortest the clearance curve's knots are spaced for (with
+// knots 0.5 mm apart it is left at 1.12 times the noise).
+Session fine_clearance_ripple(const Truth& truth) {
+  Session s = unchanged(truth);
+  s.voltage = [d = truth.clearance_mm](std::size_t i, double v) {
+    return v + 0.12 * std::sin(2.0 * std::numbers::pi * d[i] / 2.0 + 0.4);
+  };
+  return s;
+}
 Session cubic_voltage(const Truth& truth) {
   Session s = unchanged(truth);
   s.voltage = [](std::size_t, double v) {
@@ -302,6 +311,11 @@ INSTANTIATE_TEST_SUITE_P(
                   0.0,
                   {}},
         ShapeCase{"NonlinearityRippleInClearance", each(clearance_ripple), "nonlinearity", 0.0, {}},
+        ShapeCase{"NonlinearityFineRippleInClearance",
+                  each(fine_clearance_ripple),
+                  "nonlinearity",
+                  0.0,
+                  {}},
         ShapeCase{"NonlinearityCubicInVoltage", each(cubic_voltage), "nonlinearity", 0.0, {}},
         ShapeCase{"CompressionSoftAboveALinearlyFallingKnee",
                   compressed([](double c) { return 9.3 - 0.05 * std::max(0.0, c - 45.0); },
