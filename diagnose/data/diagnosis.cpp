@@ -706,7 +706,10 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
       c.free_shape =
           fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
                          parts.ho_replay, cal_gap, selection.current_error, heldout_age_unknown);
-      c.fit.settings = sim::make_effect_settings(family.effect, {}, "diagnose free shape");
+      // The class the fitted shape names (a compression whose knee does not move is a static
+      // nonlinearity).
+      c.fit.settings =
+          sim::make_effect_settings(c.free_shape->family.effect, {}, "diagnose free shape");
       c.fit.rms_v = rms_of(minus(cal_gap, c.free_shape->cal_voltage_v));
       c.with = modelled;
       c.heldout_error = minus(selection.current_error, c.free_shape->heldout_voltage_v);

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -105,6 +106,8 @@ class Family {
   virtual void summarise(const Eigen::VectorXd& /*beta*/, const Part& /*calibration*/,
                          std::map<std::string, double>& /*params*/) const {}
   virtual std::string describe(const Eigen::VectorXd& beta) const = 0;
+  // The library effect (class) the fitted shape names when that is not the family's own.
+  virtual std::optional<std::string> effect_named_by_shape() const { return std::nullopt; }
 };
 
 // The mains: tones at the aliases of 50 or 60 Hz and their harmonics, whose phase is wherever the
@@ -149,6 +152,9 @@ std::vector<double> age_days(const Part& part) {
 Eigen::MatrixXd matrix(std::size_t rows, std::size_t cols) {
   return Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
 }
+
+// Least squares with a relative ridge (defined below).
+Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& y);
 
 // A curve of one variable through hats: temperature offset, temperature gain, nonlinearity.
 class CurveFamily : public Family {
@@ -296,6 +302,30 @@ class CompressionFamily : public Family {
     }
   }
 
+  // Whether the surface's change with temperature earns its place: the same surface held equal
+  // at every temperature (a curve of V alone) is fitted too, and must leave 2 % more of the
+  // calibration gap's sum of squares (kLeastShareForTemperature).
+  void search(const Part& calibration, const std::vector<double>& gap_v) override {
+    const Eigen::VectorXd y =
+        Eigen::Map<const Eigen::VectorXd>(gap_v.data(), static_cast<Eigen::Index>(gap_v.size()));
+    const Eigen::MatrixXd surface = columns(calibration);
+    const auto nt = static_cast<Eigen::Index>(temp_.knots.size());
+    Eigen::MatrixXd curve = matrix(gap_v.size(), volt_.knots.size() - 1);
+    for (Eigen::Index j = 0; j < curve.cols(); ++j) {
+      curve.col(j) = surface.middleCols(j * nt, nt).rowwise().sum();
+    }
+    const double with_t = (y - surface * ridge_solve(surface, y)).squaredNorm();
+    const double without_t = (y - curve * ridge_solve(curve, y)).squaredNorm();
+    temperature_matters_ = without_t - with_t > kLeastShareForTemperature * with_t;
+  }
+
+  // A surface that does not change with temperature is a curve of V alone over the top of the
+  // range: a static nonlinearity, not a range compression (whose class is temperature dependent).
+  std::optional<std::string> effect_named_by_shape() const override {
+    if (temperature_matters_) return std::nullopt;
+    return std::string("nonlinearity");
+  }
+
   std::vector<std::string> names() const override {
     std::vector<std::string> out;
     for (std::size_t j = 1; j < volt_.knots.size(); ++j) {
@@ -326,8 +356,11 @@ class CompressionFamily : public Family {
 
   std::string describe(const Eigen::VectorXd& beta) const override {
     const std::size_t nt = temp_.knots.size();
-    std::string text = fmt::format("a free surface over the top of the range (above {:.3g} V):",
-                                   volt_.knots.front());
+    std::string text = fmt::format(
+        "a free surface over the top of the range (above {:.3g} V{}):", volt_.knots.front(),
+        temperature_matters_ ? ""
+                             : "; it does not change with temperature by more than the noise can "
+                               "tell: a static nonlinearity of V");
     for (std::size_t k = 0; k < nt; ++k) {
       text +=
           fmt::format("{} at {:.3g} degC {:.3g} V at the top", k == 0 ? "" : ";", temp_.knots[k],
@@ -337,10 +370,11 @@ class CompressionFamily : public Family {
   }
 
  private:
+  // As for the moving knee: 2 % of the sum of squares, the least gain a pick must make.
+  static constexpr double kLeastShareForTemperature = 0.02;
   Hats volt_, temp_;
+  bool temperature_matters_ = true;
 };
-
-Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& y);
 
 // A compression above a knee that moves with temperature: V' - V = h(max(0, V - k(T))), with the
 // knee k(T) any falling piecewise-linear curve through nine temperatures of the calibration part
@@ -387,12 +421,14 @@ class KneeCompressionFamily : public Family {
       return knee;
     };
     double best = std::numeric_limits<double>::infinity();
+    double best_flat = best;  // the least a knee that does not move leaves
     std::vector<double> chosen(knee_v_.size(), 0.0);
     chosen[0] = top_v_;
     const auto try_law = [&](const std::vector<double>& law) {
       knee_v_ = knee_of(law);
       height_span_v_ = highest_over(volts, temps);
       const double sse = least_squares_sse(volts, temps, y);
+      if (knee_v_.front() == knee_v_.back()) best_flat = std::min(best_flat, sse);
       if (sse < best) {
         best = sse;
         chosen = law;
@@ -419,6 +455,16 @@ class KneeCompressionFamily : public Family {
       flat[0] = top_v_ - cold * span;
       try_law(flat);
     }
+    // The best knee that does not move, to 1/64 of the span: what the moving one must beat.
+    for (double cold = 0.0; cold <= 1.0 + 1e-9; cold += 1.0 / 64.0) {
+      std::vector<double> flat(knots, 0.0);
+      flat[0] = top_v_ - cold * span;
+      const std::vector<double> keep = chosen;
+      const double kept = best;
+      try_law(flat);
+      chosen = keep;  // only best_flat is wanted from these
+      best = kept;
+    }
     for (double step : {0.1 * span, 0.025 * span, 0.006 * span}) {
       for (bool moved = true; moved;) {
         moved = false;
@@ -441,6 +487,15 @@ class KneeCompressionFamily : public Family {
     }
     knee_v_ = knee_of(chosen);
     height_span_v_ = highest_over(volts, temps);
+    knee_moves_ = best_flat - best > kLeastShareForAMovingKnee * best;
+  }
+
+  // A knee that does not move with temperature, or moves without earning it, makes h(V - k) a
+  // curve of V alone above a fixed voltage: a static nonlinearity, not a range compression (the
+  // class is "the top of the range, temperature dependent").
+  std::optional<std::string> effect_named_by_shape() const override {
+    if (knee_moves_) return std::nullopt;
+    return std::string("nonlinearity");
   }
 
   int searched_values() const override { return static_cast<int>(knee_v_.size()); }
@@ -470,7 +525,9 @@ class KneeCompressionFamily : public Family {
       text +=
           fmt::format("{} {:.3g} V at {:.3g} degC", k == 0 ? "" : ",", knee_v_[k], temp_.knots[k]);
     }
-    text += "; above it";
+    text += knee_moves_ ? "; above it"
+                        : " (it does not move with temperature by more than the noise can tell: a "
+                          "static nonlinearity of V above it); above it";
     for (std::size_t j = 1; j < kKneeHeightKnots; ++j) {
       text += fmt::format("{} {:.3g} V at {:.3g} V over", j == 1 ? "" : ",",
                           beta(static_cast<Eigen::Index>(j - 1)), height_knot(j));
@@ -559,6 +616,10 @@ class KneeCompressionFamily : public Family {
   // How far the curve above the knee goes on beyond the calibration part's highest point, in knot
   // spacings, before it is held.
   static constexpr double kHeightReach = 6.0;
+  // The share of the sum of squares a moving knee must take off the best fixed one: 2 %, which
+  // is the least gain a pick must make (2 % of sigma^2 a sample) when the fit leaves the noise.
+  static constexpr double kLeastShareForAMovingKnee = 0.02;
+  bool knee_moves_ = true;
   double top_v_ = 0.0, lowest_knee_v_ = 0.0, height_span_v_ = 1e-3;
   std::vector<double> knee_v_;
 };
@@ -1145,6 +1206,7 @@ FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries
     fit.params[names[j]] = beta(static_cast<Eigen::Index>(j));
   }
   shape->summarise(beta, cal_part, fit.params);
+  if (auto named = shape->effect_named_by_shape()) fit.family.effect = *named;
   fit.free_values = static_cast<int>(names.size()) + shape->searched_values();
   fit.description = shape->describe(beta);
   fit.cal_voltage_v = as_vector(cal * beta);

@@ -249,6 +249,14 @@ Session fine_clearance_ripple(const Truth& truth) {
   };
   return s;
 }
+// A static nonlinearity that grows towards the top of the range, the same at every temperature:
+// a function of V above some voltage, which the moving-knee compression family also fits, with
+// a knee that does not move; it must be named a nonlinearity, not a range compression.
+Session rising_at_the_top(const Truth& truth) {
+  Session s = unchanged(truth);
+  s.voltage = [](std::size_t, double v) { return v + 0.15 * std::pow(std::max(v, 0.0) / 10.0, 6); };
+  return s;
+}
 Session cubic_voltage(const Truth& truth) {
   Session s = unchanged(truth);
   s.voltage = [](std::size_t, double v) {
@@ -316,6 +324,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "nonlinearity",
                   0.0,
                   {}},
+        ShapeCase{"NonlinearityRisingAtTheTop", each(rising_at_the_top), "nonlinearity", 0.0, {}},
         ShapeCase{"NonlinearityCubicInVoltage", each(cubic_voltage), "nonlinearity", 0.0, {}},
         ShapeCase{"CompressionSoftAboveALinearlyFallingKnee",
                   compressed([](double c) { return 9.3 - 0.05 * std::max(0.0, c - 45.0); },
