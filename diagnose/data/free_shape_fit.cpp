@@ -409,6 +409,7 @@ class KneeCompressionFamily : public Family {
     }
     const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(
         gap_above.data(), static_cast<Eigen::Index>(gap_above.size()));
+    const std::vector<KneePlace> places = knee_places(temps);
     // The knee as its cold value and the non-negative falls between neighbouring knots: a knee
     // that only falls as the coil heats, flat up to wherever the compression sets in.
     const auto knee_of = [&](std::vector<double> law) {
@@ -426,8 +427,7 @@ class KneeCompressionFamily : public Family {
     chosen[0] = top_v_;
     const auto try_law = [&](const std::vector<double>& law) {
       knee_v_ = knee_of(law);
-      height_span_v_ = highest_over(volts, temps);
-      const double sse = least_squares_sse(volts, temps, y);
+      const double sse = least_squares_sse(volts, places, y);
       if (knee_v_.front() == knee_v_.back()) best_flat = std::min(best_flat, sse);
       if (sse < best) {
         best = sse;
@@ -536,37 +536,63 @@ class KneeCompressionFamily : public Family {
   }
 
  private:
-  // The sum of squares the ridge fit of `y` on columns_of(volts, temps) leaves, from the normal
-  // equations summed row by row (a row has at most two hats that are not 0): what the search
-  // evaluates hundreds of times, without the rows x columns matrix.
-  double least_squares_sse(const std::vector<double>& volts, const std::vector<double>& temps,
-                           const Eigen::VectorXd& y) const {
+  // Where a calibration temperature falls among the knee's knots: knot k and the fraction f of
+  // the way to knot k + 1 (the search's temperatures lie within the knots).
+  struct KneePlace {
+    std::size_t k = 0;
+    double f = 0.0;
+  };
+  std::vector<KneePlace> knee_places(const std::vector<double>& temps) const {
+    const double lo = temp_.knots.front(), hi = temp_.knots.back();
+    const double last = static_cast<double>(temp_.knots.size() - 1);
+    std::vector<KneePlace> places(temps.size());
+    for (std::size_t i = 0; i < temps.size(); ++i) {
+      const double u = hi > lo ? std::clamp((temps[i] - lo) / (hi - lo) * last, 0.0, last) : 0.0;
+      places[i].k = std::min(static_cast<std::size_t>(u), temp_.knots.size() - 2);
+      places[i].f = u - static_cast<double>(places[i].k);
+    }
+    return places;
+  }
+
+  // For the knee the search holds: the highest point above it (height_span_v_), then the sum of
+  // squares the ridge fit of `y` on columns_of(volts, temps) leaves, from the normal equations
+  // summed row by row (a row has at most two hats that are not 0): what the search evaluates
+  // hundreds of times, without the rows x columns matrix. The same numbers as the hats give,
+  // with each row's place among the knots worked out once (`places`).
+  double least_squares_sse(const std::vector<double>& volts, const std::vector<KneePlace>& places,
+                           const Eigen::VectorXd& y) {
     constexpr int kCols = kKneeHeightKnots - 1;
+    std::vector<double> over(volts.size());
+    double most = 1e-3;
+    for (std::size_t i = 0; i < volts.size(); ++i) {
+      const KneePlace& p = places[i];
+      over[i] = volts[i] - (knee_v_[p.k] * (1.0 - p.f) + knee_v_[p.k + 1] * p.f);
+      most = std::max(most, over[i]);
+    }
+    height_span_v_ = most;
+    const double per_knot = static_cast<double>(kCols) / most;
     Eigen::Matrix<double, kCols, kCols> normal = Eigen::Matrix<double, kCols, kCols>::Zero();
     Eigen::Matrix<double, kCols, 1> aty = Eigen::Matrix<double, kCols, 1>::Zero();
-    const Hats heights = height_hats();
     for (std::size_t i = 0; i < volts.size(); ++i) {
-      const double over = volts[i] - knee_at(temps[i]);
-      if (over <= 0.0) continue;
-      int at[2] = {0, 0};
-      double w[2] = {0.0, 0.0};
-      int used = 0;
-      for (std::size_t j = 1; j < kKneeHeightKnots && used < 2; ++j) {
-        const double weight = heights.weight(j, over);
-        if (weight == 0.0) continue;
-        at[used] = static_cast<int>(j - 1);
-        w[used++] = weight;
-      }
-      const double yi = y(static_cast<Eigen::Index>(i));
-      for (int a = 0; a < used; ++a) {
-        aty(at[a]) += w[a] * yi;
-        for (int b = 0; b < used; ++b) normal(at[a], at[b]) += w[a] * w[b];
+      if (over[i] <= 0.0) continue;
+      const double u = std::min(over[i] * per_knot, static_cast<double>(kCols));
+      const int k = std::min(static_cast<int>(u), kCols - 1);  // between hats k and k + 1
+      const double f = u - k, yi = y(static_cast<Eigen::Index>(i));
+      // Hat k + 1 is column k; hat k is column k - 1 (hat 0, at the knee, is no column).
+      aty(k) += f * yi;
+      normal(k, k) += f * f;
+      if (k > 0) {
+        const double g = 1.0 - f;
+        aty(k - 1) += g * yi;
+        normal(k - 1, k - 1) += g * g;
+        normal(k - 1, k) += g * f;
+        normal(k, k - 1) += g * f;
       }
     }
     Eigen::Matrix<double, kCols, kCols> ridged = normal;
     const double largest = normal.diagonal().maxCoeff();
-    for (int j = 0; j < kCols; ++j) {
-      ridged(j, j) += kRidge * normal(j, j) + 1e-12 * std::max(largest, 1e-300);
+    for (int c = 0; c < kCols; ++c) {
+      ridged(c, c) += kRidge * normal(c, c) + 1e-12 * std::max(largest, 1e-300);
     }
     const Eigen::Matrix<double, kCols, 1> beta = ridged.ldlt().solve(aty);
     return y.squaredNorm() - 2.0 * beta.dot(aty) + beta.dot(normal * beta);
@@ -706,12 +732,16 @@ class LagFamily : public Family {
 class SkewFamily : public Family {
  public:
   void search(const Part& calibration, const std::vector<double>& gap_v) override {
+    // On a long log, the rows a parameter search runs on (TwinReplay::search_replay).
+    const TwinReplay& rows = calibration.replay.search_replay();
+    const Part part{rows.series(), rows};
+    const std::vector<double> gap = calibration.replay.at_search_rows(gap_v);
     double best = std::numeric_limits<double>::infinity();
     const auto try_law = [&](const std::array<double, 3>& law) {
-      const std::vector<double> shifted = shift(calibration, law);
+      const std::vector<double> shifted = shift(part, law);
       double sse = 0.0;
-      for (std::size_t i = 0; i < gap_v.size(); ++i) {
-        const double e = gap_v[i] - shifted[i];
+      for (std::size_t i = 0; i < gap.size(); ++i) {
+        const double e = gap[i] - shifted[i];
         sse += e * e;
       }
       if (sse < best) {
@@ -1123,24 +1153,30 @@ void place_heldout_age(const Family& shape, const Eigen::VectorXd& beta,
     shifts.push_back(-after);
   }
   for (int k = 1; k < 8; ++k) shifts.push_back(session_s * k / 8.0);
-  const auto sse_of = [&](const std::vector<double>& predicted) {
+  // Searched on the held-out rows a parameter search runs on (TwinReplay::search_replay), then
+  // evaluated on every row.
+  const TwinReplay& rows = heldout.replay.search_replay();
+  const std::vector<double> gap = heldout.replay.at_search_rows(ho_gap_v);
+  const auto sse_at = [&](double shift) {
+    const Eigen::VectorXd predicted = shape.columns(Part{rows.series(), rows, shift}) * beta;
     double sse = 0.0;
-    for (std::size_t i = 0; i < predicted.size(); ++i) {
-      const double e = ho_gap_v[i] - predicted[i];
+    for (std::size_t i = 0; i < gap.size(); ++i) {
+      const double e = gap[i] - predicted(static_cast<Eigen::Index>(i));
       sse += e * e;
     }
     return sse;
   };
-  double best = sse_of(fit.heldout_voltage_v), best_shift = 0.0;
+  double best = sse_at(0.0), best_shift = 0.0;
   for (const double shift : shifts) {
-    std::vector<double> predicted =
-        as_vector(shape.columns(Part{heldout.series, heldout.replay, shift}) * beta);
-    const double sse = sse_of(predicted);
+    const double sse = sse_at(shift);
     if (sse < best) {
       best = sse;
       best_shift = shift;
-      fit.heldout_voltage_v = std::move(predicted);
     }
+  }
+  if (best_shift != 0.0) {
+    fit.heldout_voltage_v =
+        as_vector(shape.columns(Part{heldout.series, heldout.replay, best_shift}) * beta);
   }
   fit.heldout_values = 1;
   fit.params["heldout_start_after_calibration_start_days"] = best_shift / kSecondsPerDay;
