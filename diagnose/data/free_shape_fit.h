@@ -10,6 +10,9 @@
 //   nonlinearity       f(V): any curve of the twin's voltage, 0 at both ends of the part's range;
 //                      or f(d): any curve of the reference clearance (a function of clearance
 //                      alone, fine enough for a ripple of a few mm)
+//   range_compression  over the top of the range: a surface in V and T; or h(V - k(T)) above a
+//                      knee k(T) that falls as the coil heats (searched), h any curve; either is
+//                      named a nonlinearity when its change with T does not earn its place
 //   thermal_lag        dV/dT (S T - T): the coil at a temperature S T other than the recorded T,
 //                      S any mix of first-order lags (the sensor lags: a mean delay tau_s > 0) and
 //                      of advances of the recorded temperature (the reading lags: tau_s < 0)
