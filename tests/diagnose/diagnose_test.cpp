@@ -288,6 +288,15 @@ TEST(DiagnoseCommand, ACoarseGridIsEstimatedReportedAndTheNoiseSurvivesIt) {
   EXPECT_NE(std::find(named.begin(), named.end(), "adc_quantization"), named.end()) << o.out;
 }
 
+// An "explained" verdict whose only finding is the converter; the findings in the message.
+void expect_the_converter_alone(const Diagnosis& d) {
+  std::string named;
+  for (const EffectFinding& f : d.effects) named += f.name + ": " + f.evidence + "\n";
+  EXPECT_EQ(d.status, "explained") << named;
+  ASSERT_EQ(d.effects.size(), 1u) << named;
+  EXPECT_EQ(d.effects.front().name, "adc_quantization");
+}
+
 // A truncating 5-bit converter over 0-10.24 V: every code sits LSB/2 (0.16 V) below where the
 // twin's rounding puts it. Its boundaries are placed before any effect is fitted, so no bias class
 // takes that offset (before, one was picked first): the converter is the only finding, and it
@@ -298,12 +307,8 @@ TEST(Diagnose, ATruncatingConverterIsNamedAloneWithItsBoundaries) {
       "test")};
   const DiagnosisResult r =
       diagnose_in_detail(twin_recording(effects, 63, 0.0), twin_recording(effects, 64, 70.0), {});
-  std::string named;
-  for (const EffectFinding& f : r.diagnosis.effects) named += f.name + ": " + f.evidence + "\n";
-  EXPECT_EQ(r.diagnosis.status, "explained") << named;
-  ASSERT_EQ(r.diagnosis.effects.size(), 1u) << named;
+  ASSERT_NO_FATAL_FAILURE(expect_the_converter_alone(r.diagnosis));
   const EffectFinding& converter = r.diagnosis.effects.front();
-  EXPECT_EQ(converter.name, "adc_quantization");
   EXPECT_NEAR(converter.params.at("threshold_lsb"), 0.5, 0.1) << converter.evidence;
   EXPECT_NE(converter.evidence.find("truncating"), std::string::npos) << converter.evidence;
 }
@@ -320,12 +325,8 @@ TEST(Diagnose, AConverterBehindADaqGainCalibrationIsNamedAloneWithItsGain) {
   };
   const DiagnosisResult r = diagnose_in_detail(calibrated(twin_recording(effects, 65, 0.0)),
                                                calibrated(twin_recording(effects, 66, 70.0)), {});
-  std::string named;
-  for (const EffectFinding& f : r.diagnosis.effects) named += f.name + ": " + f.evidence + "\n";
-  EXPECT_EQ(r.diagnosis.status, "explained") << named;
-  ASSERT_EQ(r.diagnosis.effects.size(), 1u) << named;
+  ASSERT_NO_FATAL_FAILURE(expect_the_converter_alone(r.diagnosis));
   const EffectFinding& converter = r.diagnosis.effects.front();
-  EXPECT_EQ(converter.name, "adc_quantization");
   ASSERT_TRUE(converter.params.count("calibration_gain")) << converter.evidence;
   EXPECT_NEAR(converter.params.at("calibration_gain"), 1.006, 2e-4) << converter.evidence;
 }
