@@ -486,7 +486,7 @@ class KneeCompressionFamily : public Family {
       }
     }
     knee_v_ = knee_of(chosen);
-    height_span_v_ = highest_over(volts, temps);
+    least_squares_sse(volts, places, y);  // sets height_span_v_ for the chosen knee
     knee_moves_ = best_flat - best > kLeastShareForAMovingKnee * best;
   }
 
@@ -621,15 +621,6 @@ class KneeCompressionFamily : public Family {
   // Knots of h, evenly from the knee to the most the calibration part goes above it.
   double height_knot(std::size_t j) const {
     return height_span_v_ * static_cast<double>(j) / (kKneeHeightKnots - 1.0);
-  }
-  // The most the part goes above the knee: the curve above it is fitted up to there, and goes on
-  // along its last segment beyond (a saturating compression keeps its slope).
-  double highest_over(const std::vector<double>& volts, const std::vector<double>& temps) const {
-    double most = 1e-3;
-    for (std::size_t i = 0; i < volts.size(); ++i) {
-      most = std::max(most, volts[i] - knee_at(temps[i]));
-    }
-    return most;
   }
   Hats height_hats() const {
     Hats h;
