@@ -75,7 +75,8 @@ double alt_session_start_utc_s(const alt_reality::SessionPlan& plan) {
 AltScore score_alt_pair(const AltPairSpec& spec, const Diagnosis& diagnosis,
                         const std::vector<EffectFinding>& partial) {
   AltScore score;
-  if (diagnosis.status == "explained") {
+  // A partly explained verdict names its effects as found: they are claims too.
+  if (diagnosis.status == "explained" || diagnosis.status == "partly explained") {
     for (const EffectFinding& f : diagnosis.effects) score.claimed.push_back(class_of_finding(f));
   }
   if (diagnosis.status == "unexplained") {

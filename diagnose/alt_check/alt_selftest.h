@@ -16,17 +16,19 @@
 namespace flange::diagnose {
 
 struct AltScore {
-  std::vector<std::string> claimed;  // the classes an "explained" verdict names, in its order
+  std::vector<std::string> claimed;  // the classes an "explained" or "partly explained" verdict
+                                     // names, in its order
   std::string nearest;               // "unexplained": the class it came nearest to ("" if none)
   double nearest_shrink_pct = 0.0;   // how far that class alone shrank the held-out gap
   bool verdict_correct = false;      // in-library: explained; null: none; outside: unexplained
-  bool top_correct = false;        // in-library: explained and the first class named is a true one
-  bool all_found = false;          // in-library: every true class is named
-  bool nearest_correct = false;    // in-library and unexplained: the nearest class is a true one
-  int spurious = 0;                // classes named that are not true ones
-  bool bias_type = false;          // every true class is a deterministic one (not vibration, ADC)
-  double shrink_pct = 0.0;         // held-out gap RMS before -> after the named effects
-  double excess_shrink_pct = 0.0;  // the part of it above the pair's true noise
+  bool top_correct = false;          // in-library: explained, fully or partly, and the first class
+                                     // named is a true one
+  bool all_found = false;            // in-library: every true class is named
+  bool nearest_correct = false;      // in-library and unexplained: the nearest class is a true one
+  int spurious = 0;                  // classes named that are not true ones
+  bool bias_type = false;            // every true class is a deterministic one (not vibration, ADC)
+  double shrink_pct = 0.0;           // held-out gap RMS before -> after the named effects
+  double excess_shrink_pct = 0.0;    // the part of it above the pair's true noise
 };
 
 // Scores one pair. An "unexplained" verdict's nearest class is the diagnosis's nearest effect
@@ -55,6 +57,7 @@ struct AltSummary {
   int pairs = 0;
   int in_library = 0, top_correct = 0, all_found = 0, spurious = 0;
   int unexplained_in_library = 0, nearest_correct = 0;
+  int partly_explained_in_library = 0, partly_top_correct = 0;
   int bias_type = 0;
   double mean_shrink_pct = 0.0, mean_excess_shrink_pct = 0.0;  // over bias-type pairs
   int null_pairs = 0, null_claims = 0, null_none = 0;

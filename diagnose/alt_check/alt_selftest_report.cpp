@@ -131,6 +131,9 @@ std::vector<std::string> alt_summary_lines(const AltSummary& s) {
                   s.top_aim_met ? "met" : "MISSED"),
       fmt::format("all true classes named: {}/{} ({}); classes named that were not there: {}",
                   s.all_found, s.in_library, percent(s.all_found, s.in_library), s.spurious),
+      fmt::format("partly explained in-library pairs: {}; of them the first class named was a "
+                  "true one in {}",
+                  s.partly_explained_in_library, s.partly_top_correct),
       fmt::format(
           "unexplained in-library pairs: {}; of them the nearest class was a true one in {}",
           s.unexplained_in_library, s.nearest_correct),
@@ -197,6 +200,8 @@ nlohmann::json alt_selftest_json(const SelftestOptions& options,
                   {"top_correct", summary.top_correct},
                   {"all_found", summary.all_found},
                   {"spurious", summary.spurious},
+                  {"partly_explained_in_library", summary.partly_explained_in_library},
+                  {"partly_top_correct", summary.partly_top_correct},
                   {"unexplained_in_library", summary.unexplained_in_library},
                   {"nearest_correct", summary.nearest_correct},
                   {"bias_type", summary.bias_type},

@@ -18,6 +18,10 @@ void count_in_library(const AltPairResult& r, AltSummary& s, double& shrink_sum,
   s.top_correct += score.top_correct ? 1 : 0;
   s.all_found += score.all_found ? 1 : 0;
   s.spurious += score.spurious;
+  if (r.diagnosis.status == "partly explained") {
+    ++s.partly_explained_in_library;
+    s.partly_top_correct += score.top_correct ? 1 : 0;
+  }
   if (r.diagnosis.status == "unexplained") {
     ++s.unexplained_in_library;
     s.nearest_correct += score.nearest_correct ? 1 : 0;

@@ -209,7 +209,8 @@ SelftestRecordings make_selftest_recordings(const SelftestCaseSpec& spec, double
 SelftestScore score_selftest_case(const SelftestCaseSpec& spec, const Diagnosis& diagnosis,
                                   double noise_std_v) {
   SelftestScore score;
-  if (diagnosis.status == "explained") {
+  // A partly explained verdict names its effects as found: they are claims too.
+  if (diagnosis.status == "explained" || diagnosis.status == "partly explained") {
     for (const EffectFinding& f : diagnosis.effects) score.claimed.push_back(f.name);
   }
   const auto is_true = [&](const std::string& name) {

@@ -49,7 +49,7 @@ struct SelftestRecordings {
 SelftestRecordings make_selftest_recordings(const SelftestCaseSpec& spec, double duration_s);
 
 struct SelftestScore {
-  std::vector<std::string> claimed;  // effects the verdict names (explained only)
+  std::vector<std::string> claimed;  // effects the verdict names (explained, fully or partly)
   bool verdict_correct = false;      // in-library: explained; null: none; outside: unexplained
   bool top_correct = false;          // in-library: the first named effect is a true one
   bool all_found = false;            // in-library: every true effect is named

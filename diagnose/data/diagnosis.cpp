@@ -40,6 +40,11 @@ constexpr int kMaxSelected = 3;
 // left after the selected effects is within 10 % of the noise.
 constexpr double kGapRatio = 1.05;
 constexpr double kExplainedRatio = 1.10;
+// Significant picks that leave more than that are still the diagnosis ("partly explained") when
+// they take at least this share of the held-out gap's RMS above the noise. Not 0.80, the shrink
+// issue 11 asks of a bias-type class: on the twin's own self-test (seed 3) three classes together
+// took 78-86 % of a gain step that no class models, and would have been claimed.
+constexpr double kPartlyExplainedShare = 0.90;
 // A candidate must remove at least this share of the noise variance from the held-out MSE.
 constexpr double kMinGainOfNoiseVariance = 0.02;
 
@@ -1210,7 +1215,18 @@ std::optional<EffectFinding> nearest_effect(const Selection& selection, double v
   return nearest;
 }
 
-// The status, "explained", "unexplained" or "none", and the reasons for it.
+// The share of the held-out gap's RMS above `noise` that the selected effects take:
+// 1 - sqrt(after^2 - noise^2) / sqrt(before^2 - noise^2), each root 0 below the noise.
+double above_noise_share_taken(const Diagnosis& diagnosis, double noise) {
+  const auto above = [noise](double rms) {
+    return std::sqrt(std::max(0.0, rms * rms - noise * noise));
+  };
+  const double before = above(diagnosis.heldout_rms_before);
+  if (before <= 0.0) return 0.0;
+  return 1.0 - above(diagnosis.heldout_rms_after) / before;
+}
+
+// The status ("explained", "partly explained", "unexplained" or "none") and the reasons for it.
 void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisResult& result) {
   const double verdict_noise = noise.rms_v;
   Diagnosis& diagnosis = result.diagnosis;
@@ -1234,6 +1250,16 @@ void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisRes
     diagnosis.effects = findings;
     reasons.push_back(fmt::format("what is left is within {:.0f} % of the noise",
                                   100.0 * (kExplainedRatio - 1.0)));
+  } else if (!findings.empty() &&
+             above_noise_share_taken(diagnosis, verdict_noise) >= kPartlyExplainedShare) {
+    diagnosis.status = "partly explained";
+    diagnosis.effects = findings;
+    reasons.push_back(fmt::format(
+        "the selected effects take {:.1f} % of the held-out gap above the noise (at least {:.0f} "
+        "% is asked), but {:.4g} V is left where the noise allows {:.4g} V: the rest is outside "
+        "the library or of a shape its families miss",
+        100.0 * above_noise_share_taken(diagnosis, verdict_noise), 100.0 * kPartlyExplainedShare,
+        diagnosis.heldout_rms_after, kExplainedRatio * verdict_noise));
   } else if (gap_exists) {
     diagnosis.status = "unexplained";
     result.detail.partial = findings;

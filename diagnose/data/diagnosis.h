@@ -36,8 +36,12 @@ struct EffectFinding {
 };
 
 struct Diagnosis {
-  std::string status;                  // "explained", "unexplained" or "none"
-  std::vector<EffectFinding> effects;  // selected, in selection order (empty unless explained)
+  // "explained" (what the selected effects leave is within 10 % of the noise), "partly
+  // explained" (they leave more, but take at least 80 % of the held-out gap above the noise),
+  // "unexplained" or "none".
+  std::string status;
+  std::vector<EffectFinding> effects;  // selected, in selection order (empty unless explained,
+                                       // fully or partly)
   std::string stage;                   // the stage where the gap first appears
   double heldout_rms_before = 0.0;     // V, nominal twin against the held-out recording
   double heldout_rms_after = 0.0;      // V, with every selected effect
