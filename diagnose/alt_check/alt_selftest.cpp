@@ -27,10 +27,6 @@ bool holds_class(const AltPairSpec& spec, const std::string& name) {
                      [&](const auto& e) { return e.draw.class_name == name; });
 }
 
-double excess_over_noise(double rms, double sigma) {
-  return std::sqrt(std::max(0.0, rms * rms - sigma * sigma));
-}
-
 std::string fmt_label(int index, const char* part) {
   return fmt::format("alt pair {} ({})", index, part);
 }
@@ -98,9 +94,9 @@ AltScore score_alt_pair(const AltPairSpec& spec, const Diagnosis& diagnosis,
   const double before = diagnosis.heldout_rms_before, after = diagnosis.heldout_rms_after;
   if (before > 0.0) score.shrink_pct = 100.0 * (before - after) / before;
   const double sigma = spec.heldout.noise_v;
-  const double excess_before = excess_over_noise(before, sigma);
+  const double excess_before = rms_above_noise(before, sigma);
   if (excess_before > 0.0) {
-    score.excess_shrink_pct = 100.0 * (1.0 - excess_over_noise(after, sigma) / excess_before);
+    score.excess_shrink_pct = 100.0 * (1.0 - rms_above_noise(after, sigma) / excess_before);
   }
   return score;
 }

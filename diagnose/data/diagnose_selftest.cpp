@@ -131,10 +131,6 @@ RecordingSeries bench_session(const SelftestCaseSpec& spec, const sim::BenchProt
   return series;
 }
 
-double excess_over_noise(double rms, double sigma) {
-  return std::sqrt(std::max(0.0, rms * rms - sigma * sigma));
-}
-
 }  // namespace
 
 const char* selftest_kind_name(SelftestKind kind) {
@@ -240,9 +236,9 @@ SelftestScore score_selftest_case(const SelftestCaseSpec& spec, const Diagnosis&
   const double before = diagnosis.heldout_rms_before;
   const double after = diagnosis.heldout_rms_after;
   if (before > 0.0) score.shrink_pct = 100.0 * (before - after) / before;
-  const double excess_before = excess_over_noise(before, noise_std_v);
+  const double excess_before = rms_above_noise(before, noise_std_v);
   if (excess_before > 0.0) {
-    score.excess_shrink_pct = 100.0 * (1.0 - excess_over_noise(after, noise_std_v) / excess_before);
+    score.excess_shrink_pct = 100.0 * (1.0 - rms_above_noise(after, noise_std_v) / excess_before);
   }
   return score;
 }

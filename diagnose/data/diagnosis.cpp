@@ -1215,15 +1215,11 @@ std::optional<EffectFinding> nearest_effect(const Selection& selection, double v
   return nearest;
 }
 
-// The share of the held-out gap's RMS above `noise` that the selected effects take:
-// 1 - sqrt(after^2 - noise^2) / sqrt(before^2 - noise^2), each root 0 below the noise.
+// The share of the held-out gap's RMS above `noise` that the selected effects take.
 double above_noise_share_taken(const Diagnosis& diagnosis, double noise) {
-  const auto above = [noise](double rms) {
-    return std::sqrt(std::max(0.0, rms * rms - noise * noise));
-  };
-  const double before = above(diagnosis.heldout_rms_before);
+  const double before = rms_above_noise(diagnosis.heldout_rms_before, noise);
   if (before <= 0.0) return 0.0;
-  return 1.0 - above(diagnosis.heldout_rms_after) / before;
+  return 1.0 - rms_above_noise(diagnosis.heldout_rms_after, noise) / before;
 }
 
 // The status ("explained", "partly explained", "unexplained" or "none") and the reasons for it.
@@ -1318,6 +1314,10 @@ void measure_how_far(const RecordingSeries& heldout, const Selection& selection,
 }
 
 }  // namespace
+
+double rms_above_noise(double rms, double noise) {
+  return std::sqrt(std::max(0.0, rms * rms - noise * noise));
+}
 
 double sample_rate_hz(const RecordingSeries& series) {
   if (series.size() < 2) {
