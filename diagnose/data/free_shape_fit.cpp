@@ -30,11 +30,9 @@ constexpr int kKnots = 7;
 // about a tenth of such a ripple's amplitude).
 constexpr int kClearanceKnots = 25;
 
-// How far a curve of temperature, voltage or clearance goes on beyond the calibration part's
-// range, in knot spacings (about 10 degC for a 20-80 degC session, 0.3 mm of clearance), before it
-// is held: a held-out session that heats a little further or whose micrometer goes a little
-// closer. (A curve of the sensor's age is held at once: a step or a settling that has ended.)
-constexpr double kCurveReach = 1.0;
+// How far a curve of temperature goes on beyond the calibration part's range, in knot spacings
+// (about 10 degC for a 20-80 degC session) before it is held.
+constexpr double kTemperatureReach = 1.0;
 
 // Knots of the compression surface: five in voltage over the top of the range (the lowest held
 // at 0), three in temperature.
@@ -165,18 +163,16 @@ class CurveFamily : public Family {
       : effect_(std::move(effect)), variable_(std::move(variable)) {
     if (variable_ == "V") {
       hats_ = hats_over(calibration.replay.nominal_voltage(), kKnots);
-      hats_.reach = kCurveReach;
       for (std::size_t k = 1; k + 1 < kKnots; ++k) used_.push_back(k);  // 0 at both ends
     } else if (variable_ == "d") {
       hats_ = hats_over(calibration.series.clearance_mm, kClearanceKnots);
-      hats_.reach = kCurveReach;
       for (std::size_t k = 0; k < kClearanceKnots; ++k) used_.push_back(k);
     } else if (variable_ == "age") {
       hats_ = hats_over(age_days(calibration), kAgeKnots);
       for (std::size_t k = 0; k < kAgeKnots; ++k) used_.push_back(k);
     } else {
       hats_ = hats_over(calibration.series.temp_c, kKnots);
-      hats_.reach = kCurveReach;
+      hats_.reach = kTemperatureReach;
       for (std::size_t k = 0; k < kKnots; ++k) used_.push_back(k);
     }
   }
@@ -244,7 +240,7 @@ class PivotGainFamily : public Family {
  public:
   explicit PivotGainFamily(const Part& calibration)
       : hats_(hats_over(calibration.series.temp_c, kKnots)) {
-    hats_.reach = kCurveReach;
+    hats_.reach = kTemperatureReach;
   }
 
   std::vector<std::string> names() const override {
@@ -390,7 +386,7 @@ class KneeCompressionFamily : public Family {
  public:
   explicit KneeCompressionFamily(const Part& calibration)
       : temp_(hats_over(calibration.series.temp_c, kKneeTempKnots)) {
-    temp_.reach = kCurveReach;
+    temp_.reach = kTemperatureReach;
     const auto [lo, hi] = std::minmax_element(calibration.replay.nominal_voltage().begin(),
                                               calibration.replay.nominal_voltage().end());
     top_v_ = *hi;

@@ -455,32 +455,6 @@ TEST(LowAliasedMotion, AResonanceOnAMainsAliasIsMotionNotPickup) {
   for (const EffectFinding& f : r.diagnosis.effects) EXPECT_NE(f.name, "mains_pickup") << named;
 }
 
-// A nonlinearity that steepens towards small clearances, with the held-out micrometer going
-// 0.3 mm closer than the calibration's (1.5 against 1.8 mm): the clearance curve goes on along
-// its last segment for one knot spacing (0.34 mm here) before it is held, as a curve of
-// temperature does. Held flat from 1.8 mm it left 1.3 times the noise.
-TEST(CurveReach, ANonlinearityGoesOnALittleBeyondTheCalibratedClearance) {
-  const auto session = [](double low_mm, double phase_s, double heat_s) {
-    Truth truth = bench_truth(phase_s, heat_s);
-    for (double& d : truth.clearance_mm) d = low_mm + (d - 1.5) * (10.0 - low_mm) / 8.5;
-    return truth;
-  };
-  const auto effect = [&](const Truth& truth) {
-    Session s = unchanged(truth);
-    s.voltage = [d = truth.clearance_mm](std::size_t i, double v) {
-      return v + 0.6 * std::exp(-(d[i] - 1.2) / 0.5);
-    };
-    return s;
-  };
-  const Truth first = session(1.8, 0.0, 600.0), second = session(1.5, 70.0, 800.0);
-  const Diagnosis d = diagnose(record(first, effect(first), kNoiseV, 21),
-                               record(second, effect(second), kNoiseV, 22), {});
-  EXPECT_EQ(d.status, "explained")
-      << d.heldout_rms_before << " -> " << d.heldout_rms_after << " V, noise " << d.noise_std_v;
-  ASSERT_FALSE(d.effects.empty());
-  EXPECT_EQ(d.effects.front().name, "nonlinearity") << d.effects.front().evidence;
-}
-
 // No effect at all, at three noise levels from a fine 5 mV to 0.15 V: "none", every seed.
 class NullPairs : public ::testing::TestWithParam<double> {};
 
