@@ -200,7 +200,8 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
       {"heldout_rms_before_v", h.rms_before},       {"heldout_rms_after_v", h.rms_after},
       {"heldout_max_before_v", h.max_before},       {"heldout_max_after_v", h.max_after},
       {"region_rms_before_v", h.region_rms_before}, {"region_rms_after_v", h.region_rms_after},
-      {"band_rms_before_v", h.band_rms_before},     {"band_rms_after_v", h.band_rms_after}};
+      {"region_heldout_samples", h.region_samples}, {"band_rms_before_v", h.band_rms_before},
+      {"band_rms_after_v", h.band_rms_after}};
   nlohmann::ordered_json regions = nlohmann::ordered_json::array();
   for (const RegionCell& c : d.regions) regions.push_back(region_json(c));
   j["regions"] = regions;

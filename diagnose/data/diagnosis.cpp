@@ -36,6 +36,9 @@ namespace {
 constexpr std::size_t kMinSamples = 256;  // enough for a 16-sample spectrum and the tests
 constexpr std::size_t kMaxLag = 25;
 constexpr int kMaxSelected = 3;
+// The fewest samples a clearance x temperature cell needs to be the where-region, and the held-out
+// part to say anything about that cell.
+constexpr std::size_t kMinCellSamples = 30;
 // A gap exists when the held-out RMS exceeds the noise by 5 %, and is explained when what is
 // left after the selected effects is within 10 % of the noise.
 constexpr double kGapRatio = 1.05;
@@ -302,7 +305,7 @@ void locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double
   for (std::size_t k = 0; k < detail.regions.size(); ++k) {
     const RegionCell& c = detail.regions[k];
     const double excess = c.rms_v * c.rms_v - sigma * sigma;
-    if (c.n >= 30 && excess > worst) {
+    if (c.n >= kMinCellSamples && excess > worst) {
       worst = excess;
       detail.where_region = k;
     }
@@ -1302,6 +1305,7 @@ void measure_how_far(const RecordingSeries& heldout, const Selection& selection,
     }
     how.region_rms_before = rms_of(before);
     how.region_rms_after = rms_of(after);
+    how.region_samples = before.size();
   }
   if (detail.band_hz) {
     const std::size_t segment = spectrum_segment(heldout.size());
@@ -1311,6 +1315,25 @@ void measure_how_far(const RecordingSeries& heldout, const Selection& selection,
   detail.heldout_t_s = heldout.t_s;
   detail.heldout_gap_before_v = ho_gap;
   detail.heldout_gap_after_v = current_error;
+}
+
+// When the held-out part barely enters the cell where the calibration gap stands out most, it can
+// neither confirm nor refute what lies there (a held-out session that does not heat as far): the
+// reason says so, and which data would.
+std::optional<std::string> coverage_reason(const DiagnosisResult& result) {
+  const DiagnosisDetail& detail = result.detail;
+  if (result.diagnosis.status == "none" || !detail.where_region ||
+      detail.how_far.region_samples >= kMinCellSamples) {
+    return std::nullopt;
+  }
+  const RegionCell& cell = detail.regions[*detail.where_region];
+  return fmt::format(
+      "the held-out part has {} samples in the cell where the calibration gap stands out most "
+      "({:.2f}-{:.2f} mm x {:.1f}-{:.1f} C, bias {:.4g} V, {} calibration samples): it can neither "
+      "confirm nor refute what lies there; a held-out session that reaches that clearance and "
+      "temperature would",
+      detail.how_far.region_samples, cell.clearance_lo, cell.clearance_hi, cell.temp_lo,
+      cell.temp_hi, cell.bias_v, cell.n);
 }
 
 }  // namespace
@@ -1359,6 +1382,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
     result.detail.reasons.push_back(*why);
   }
   measure_how_far(heldout, selection, result);
+  if (auto why = coverage_reason(result)) result.detail.reasons.push_back(*why);
   return result;
 }
 

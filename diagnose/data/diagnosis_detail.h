@@ -47,6 +47,7 @@ struct TimeSegment {
 struct HowFar {
   double rms_before = 0, rms_after = 0, max_before = 0, max_after = 0;  // held-out, V
   double region_rms_before = 0, region_rms_after = 0;                   // in the where-region cell
+  std::size_t region_samples = 0;                  // held-out samples in the where-region cell
   double band_rms_before = 0, band_rms_after = 0;  // in the where-band (PSD integrated)
 };
 

@@ -455,6 +455,30 @@ TEST(LowAliasedMotion, AResonanceOnAMainsAliasIsMotionNotPickup) {
   for (const EffectFinding& f : r.diagnosis.effects) EXPECT_NE(f.name, "mains_pickup") << named;
 }
 
+// An offset that appears above 75 degC, with a held-out session that heats to 63 degC only: the
+// held-out part shows no gap, and the reasons say that it never enters the cell where the
+// calibration gap lies, and what session would.
+TEST(Coverage, AHeldOutSessionThatMissesTheGapsCellIsSaidToMissIt) {
+  const auto hot_offset = [](const Truth& truth) {
+    Session s = unchanged(truth);
+    s.voltage = [c = truth.ambient_c](std::size_t i, double v) {
+      return v - 0.3 * std::max(0.0, c[i] - 75.0) / 15.0;
+    };
+    return s;
+  };
+  const Truth hot = bench_truth(0.0, 600.0), mild = bench_truth(70.0, 150.0);
+  const DiagnosisResult r = diagnose_in_detail(record(hot, hot_offset(hot), kNoiseV, 31),
+                                               record(mild, hot_offset(mild), kNoiseV, 32), {});
+  EXPECT_NE(r.diagnosis.status, "none");
+  ASSERT_TRUE(r.detail.where_region.has_value());
+  EXPECT_GT(r.detail.regions[*r.detail.where_region].temp_lo, 63.0);
+  EXPECT_EQ(r.detail.how_far.region_samples, 0u);
+  const auto& reasons = r.detail.reasons;
+  EXPECT_TRUE(std::any_of(reasons.begin(), reasons.end(), [](const std::string& why) {
+    return why.find("can neither confirm nor refute") != std::string::npos;
+  })) << ::testing::PrintToString(reasons);
+}
+
 // No effect at all, at three noise levels from a fine 5 mV to 0.15 V: "none", every seed.
 class NullPairs : public ::testing::TestWithParam<double> {};
 
