@@ -1249,16 +1249,16 @@ void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisRes
     diagnosis.effects = findings;
     reasons.push_back(fmt::format("what is left is within {:.0f} % of the noise",
                                   100.0 * (kExplainedRatio - 1.0)));
-  } else if (!findings.empty() &&
-             above_noise_share_taken(diagnosis, verdict_noise) >= kPartlyExplainedShare) {
+  } else if (const double share = above_noise_share_taken(diagnosis, verdict_noise);
+             !findings.empty() && share >= kPartlyExplainedShare) {
     diagnosis.status = "partly explained";
     diagnosis.effects = findings;
     reasons.push_back(fmt::format(
         "the selected effects take {:.1f} % of the held-out gap above the noise (at least {:.0f} "
         "% is asked), but {:.4g} V is left where the noise allows {:.4g} V: the rest is outside "
         "the library or of a shape its families miss",
-        100.0 * above_noise_share_taken(diagnosis, verdict_noise), 100.0 * kPartlyExplainedShare,
-        diagnosis.heldout_rms_after, kExplainedRatio * verdict_noise));
+        100.0 * share, 100.0 * kPartlyExplainedShare, diagnosis.heldout_rms_after,
+        kExplainedRatio * verdict_noise));
   } else if (gap_exists) {
     diagnosis.status = "unexplained";
     result.detail.partial = findings;
