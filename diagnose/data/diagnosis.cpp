@@ -453,6 +453,7 @@ struct Parts {
   const RecordingSeries& heldout;
   TwinReplay cal_replay;
   TwinReplay ho_replay;
+  bool heldout_age_unknown;  // the sessions' clocks are unknown (session_clock's "unknown")
 };
 
 // A candidate effect fitted on the calibration part and scored on the held-out part.
@@ -705,15 +706,13 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
   // in parallel too, taken in catalogue order.
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
   std::vector<std::future<Candidate>> pending_free;
-  const bool heldout_age_unknown =
-      session_clock(parts.calibration, parts.heldout).kind == "unknown";
   for (const FreeShapeFamily& family : free_shape_families()) {
     if (!selection.free_shapes || class_taken(family.effect, selection)) continue;
     pending_free.push_back(std::async(std::launch::async, [&, family] {
       Candidate c;
-      c.free_shape =
-          fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
-                         parts.ho_replay, cal_gap, selection.current_error, heldout_age_unknown);
+      c.free_shape = fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
+                                    parts.ho_replay, cal_gap, selection.current_error,
+                                    parts.heldout_age_unknown);
       // The class the fitted shape names (a compression whose knee does not move is a static
       // nonlinearity).
       c.fit.settings =
@@ -1369,7 +1368,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   result.diagnosis.clock = clock.kind;
   if (clock.kind != "unknown") result.diagnosis.heldout_starts_after_s = clock.age_offset_s;
   const Parts parts{calibration, heldout, TwinReplay(calibration, options.twin.nominal),
-                    TwinReplay(heldout, options.twin.nominal, clock.age_offset_s)};
+                    TwinReplay(heldout, options.twin.nominal, clock.age_offset_s),
+                    clock.kind == "unknown"};
   Selection selection =
       select_in_two_passes(parts, options, replay_nominal_twin(parts, options, result), result);
   measure_inclusion(selection);
