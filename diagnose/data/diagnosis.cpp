@@ -1111,7 +1111,16 @@ void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selecti
                                                                 : rms_of(selection.current_error);
   finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
                        std::max(finding.heldout_rms_before, 1e-30);
-  selection.findings.push_back(finding);
+  // Findings are listed largest first. The picks are in the order the rounds took them, each
+  // taking sqrt(before^2 - after^2) of the held-out gap's RMS; the converter's size is what its
+  // rounding puts in the gap, LSB / sqrt(12), which the grid itself shows whether or not the
+  // twin's converter reproduces the codes.
+  const double rounding_rms = grid->lsb_v / std::sqrt(12.0);
+  const auto smaller = std::find_if(
+      selection.findings.begin(), selection.findings.end(), [&](const EffectFinding& f) {
+        return rms_above_noise(f.heldout_rms_before, f.heldout_rms_after) < rounding_rms;
+      });
+  selection.findings.insert(smaller, finding);
   selection.quantised_on = grid;
 }
 

@@ -333,6 +333,24 @@ TEST(Diagnose, ATruncatingConverterIsNamedAloneWithItsBoundaries) {
   EXPECT_NE(converter.evidence.find("truncating"), std::string::npos) << converter.evidence;
 }
 
+// A rounding 5-bit converter over 0-12 V (LSB 375 mV, so its rounding puts LSB / sqrt(12) =
+// 108 mV in the gap) and a temperature offset drift of 1 mV/degC, some 20-40 mV over the sweep:
+// both are named, the converter first, as the larger. Before, the converter was listed after
+// every pick whatever its size (three such misses on the alternative reality's seeds 417 and 418).
+TEST(Diagnose, ACoarseConverterIsListedBeforeASmallerBiasEffect) {
+  const std::vector<sim::EffectSettings> effects = {
+      sim::make_effect_settings("temp_offset_drift", {{"offset_v_per_c", 0.003}}, "test"),
+      sim::make_effect_settings("adc_quantization",
+                                {{"bits", 5}, {"v_min", 0.0}, {"v_max", 12.0}}, "test")};
+  const DiagnosisResult r =
+      diagnose_in_detail(twin_recording(effects, 67, 0.0), twin_recording(effects, 68, 70.0), {});
+  std::string named;
+  for (const EffectFinding& f : r.diagnosis.effects) named += f.name + ": " + f.evidence + "\n";
+  ASSERT_EQ(r.diagnosis.effects.size(), 2u) << r.diagnosis.status << "\n" << named;
+  EXPECT_EQ(r.diagnosis.effects[0].name, "adc_quantization") << named;
+  EXPECT_EQ(r.diagnosis.effects[1].name, "temp_offset_drift") << named;
+}
+
 // An 8-bit converter over 0-10 V behind the DAQ software's gain calibration (x 1.006, +20 mV):
 // the grid is 1.006 times the usual range's, which says that the linear gap is the converter's,
 // not a static nonlinearity of the sensor. The converter is the only finding, with its gain.
