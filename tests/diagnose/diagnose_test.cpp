@@ -334,9 +334,10 @@ TEST(Diagnose, ATruncatingConverterIsNamedAloneWithItsBoundaries) {
 }
 
 // A rounding 5-bit converter over 0-12 V (LSB 375 mV, so its rounding puts LSB / sqrt(12) =
-// 108 mV in the gap) and a temperature offset drift of 1 mV/degC, some 20-40 mV over the sweep:
-// both are named, the converter first, as the larger. Before, the converter was listed after
-// every pick whatever its size (three such misses on the alternative reality's seeds 417 and 418).
+// 108 mV in the gap) and a temperature offset drift of 3 mV/degC, which takes less than that off
+// the held-out gap: both are named, the converter first, as the larger. Before, the converter was
+// listed after every pick whatever its size (three such misses on the alternative reality's seeds
+// 417 and 418).
 TEST(Diagnose, ACoarseConverterIsListedBeforeASmallerBiasEffect) {
   const std::vector<sim::EffectSettings> effects = {
       sim::make_effect_settings("temp_offset_drift", {{"offset_v_per_c", 0.003}}, "test"),
