@@ -22,7 +22,8 @@ struct StageGap {
   double gap_rms = 0.0;      // real minus sim (alarm timing: largest onset difference)
   double noise_floor = 0.0;  // the same figure for the noisy twin against the noiseless one
   double real_error_rms = 0.0, sim_error_rms = 0.0;  // clearance stages: against the reference
-  bool significant = false;  // gap_rms > 1.5 x noise_floor (alarm timing: > floor + 1 s)
+  // gap_rms > 1.5 x noise_floor (alarm timing: > floor + 1 s, on the held-out part too)
+  bool significant = false;
   std::string note;
 };
 
