@@ -1009,29 +1009,39 @@ double refine_line(const std::vector<double>& t, const std::vector<double>& gap,
 // The lines of `gap` near each of `nominals_hz`: up to kMainsLinesPerAlias each (harmonics of a
 // grid off its nominal frequency land a little apart), each found on what the lines before it
 // leave and kept when it lowers the mean square by more than kMainsLineFactor times what its
-// values would take from white noise.
+// values would take from white noise. That figure is a share of what is left, so a weak line
+// looked at before a strong one's removal can fall short: the aliases are gone through again
+// while a pass keeps a line (a grid's weak second harmonic beside a strong fundamental).
 std::vector<double> find_lines(const std::vector<double>& t, const std::vector<double>& gap,
                                const std::vector<double>& nominals_hz) {
   std::vector<double> found;
   std::vector<double> left = gap;
-  for (double nominal : nominals_hz) {
-    for (int k = 0; k < kMainsLinesPerAlias; ++k) {
-      const double f = refine_line(t, left, nominal);
-      if (std::any_of(found.begin(), found.end(),
-                      [&](double g) { return std::abs(g - f) < 0.5 * kMainsStepHz; })) {
-        break;
+  std::vector<int> lines_near(nominals_hz.size(), 0);
+  std::vector<bool> done(nominals_hz.size(), false);
+  for (bool kept_one = true; kept_one;) {
+    kept_one = false;
+    for (std::size_t a = 0; a < nominals_hz.size(); ++a) {
+      while (!done[a] && lines_near[a] < kMainsLinesPerAlias) {
+        const double f = refine_line(t, left, nominals_hz[a]);
+        if (std::any_of(found.begin(), found.end(),
+                        [&](double g) { return std::abs(g - f) < 0.5 * kMainsStepHz; })) {
+          done[a] = true;
+          break;
+        }
+        std::vector<double> trial = found;
+        trial.push_back(f);
+        int values = 0;
+        const std::vector<double> tones = windowed_tones(t, gap, trial, values);
+        std::vector<double> after(gap.size());
+        for (std::size_t i = 0; i < gap.size(); ++i) after[i] = gap[i] - tones[i];
+        const double per_line = static_cast<double>(values) / static_cast<double>(trial.size()) + 1;
+        const double chance = mean_square(after) * per_line / static_cast<double>(gap.size());
+        if (mean_square(left) - mean_square(after) <= kMainsLineFactor * chance) break;
+        found = std::move(trial);
+        left = std::move(after);
+        ++lines_near[a];
+        kept_one = true;
       }
-      std::vector<double> trial = found;
-      trial.push_back(f);
-      int values = 0;
-      const std::vector<double> tones = windowed_tones(t, gap, trial, values);
-      std::vector<double> after(gap.size());
-      for (std::size_t i = 0; i < gap.size(); ++i) after[i] = gap[i] - tones[i];
-      const double per_line = static_cast<double>(values) / static_cast<double>(trial.size()) + 1;
-      const double chance = mean_square(after) * per_line / static_cast<double>(gap.size());
-      if (mean_square(left) - mean_square(after) <= kMainsLineFactor * chance) break;
-      found = std::move(trial);
-      left = std::move(after);
     }
   }
   return found;
