@@ -522,6 +522,65 @@ std::optional<std::string> clock_reason(const Diagnosis& diagnosis,
          "--real-start and --holdout-start)";
 }
 
+// Whether, in `s`, the direction of the last clearance move is set by the clearance itself: in
+// every band of a twentieth of the range holding 30 or more samples at rest after the first move,
+// at least 95 % of them were last reached by a move the same way, and both ways occur (a
+// staircase that climbs in steps and drops back in one move). Then an output that depends on the
+// direction of the last move is a function of clearance. A sweep that never rests has no such
+// samples and says no: it reaches each clearance from both sides.
+bool last_move_set_by_clearance(const RecordingSeries& s) {
+  constexpr int kBands = 20;
+  constexpr std::size_t kLeastSamples = 30;
+  constexpr double kOneWayShare = 0.95;
+  constexpr double kMovingMm = 1e-4;  // a sample-to-sample change that is a move
+  if (s.size() < 2) return false;
+  const auto [lo, hi] = std::minmax_element(s.clearance_mm.begin(), s.clearance_mm.end());
+  const double width = (*hi - *lo) / kBands;
+  if (!(width > 0.0)) return false;
+  std::vector<std::size_t> opening(kBands, 0), closing(kBands, 0);
+  int last = 0;  // +1 after an opening move, -1 after a closing one, 0 before the first
+  for (std::size_t i = 1; i < s.size(); ++i) {
+    const double step = s.clearance_mm[i] - s.clearance_mm[i - 1];
+    if (std::abs(step) > kMovingMm) {
+      last = step > 0.0 ? 1 : -1;
+      continue;
+    }
+    if (last == 0) continue;
+    const auto band = std::min(kBands - 1, static_cast<int>((s.clearance_mm[i] - *lo) / width));
+    ++(last > 0 ? opening : closing)[static_cast<std::size_t>(band)];
+  }
+  bool any_opening = false, any_closing = false;
+  for (int b = 0; b < kBands; ++b) {
+    const std::size_t up = opening[static_cast<std::size_t>(b)];
+    const std::size_t down = closing[static_cast<std::size_t>(b)];
+    if (up + down < kLeastSamples) continue;
+    if (static_cast<double>(std::max(up, down)) < kOneWayShare * static_cast<double>(up + down)) {
+      return false;
+    }
+    any_opening = any_opening || up > down;
+    any_closing = any_closing || down > up;
+  }
+  return any_opening && any_closing;
+}
+
+// A static nonlinearity named on sessions whose every clearance is reached from one side only
+// cannot be told from a hysteresis (an output that depends on the direction of the last move,
+// outside the library): there that is a function of clearance too.
+std::optional<std::string> one_sided_protocol_reason(const Diagnosis& diagnosis,
+                                                     const RecordingSeries& calibration,
+                                                     const RecordingSeries& heldout) {
+  const bool named = std::any_of(diagnosis.effects.begin(), diagnosis.effects.end(),
+                                 [](const EffectFinding& f) { return f.name == "nonlinearity"; });
+  if (!named || !last_move_set_by_clearance(calibration) || !last_move_set_by_clearance(heldout)) {
+    return std::nullopt;
+  }
+  return "in both sessions each clearance is reached from one side only (the micrometer's last "
+         "move before a clearance went the same way at least 95 % of the time there), so the "
+         "static nonlinearity cannot be told from a hysteresis, an output that depends on the "
+         "direction of the last move (outside the library); a session that reaches each "
+         "clearance from both sides would tell them apart";
+}
+
 // The two parts of the data, each with the twin replayed on its inputs.
 struct Parts {
   const RecordingSeries& calibration;
@@ -1464,6 +1523,9 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
                                                          recognise_vibration(parts, selection));
   verdict(selection, verdict_noise, result);
   if (auto why = clock_reason(result.diagnosis, result.detail.partial)) {
+    result.detail.reasons.push_back(*why);
+  }
+  if (auto why = one_sided_protocol_reason(result.diagnosis, calibration, heldout)) {
     result.detail.reasons.push_back(*why);
   }
   measure_how_far(heldout, selection, result);
