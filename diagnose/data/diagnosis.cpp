@@ -186,13 +186,13 @@ struct AlarmTiming {
   bool exceeds() const { return gap_s > floor_s + kAlarmMarginS; }
 };
 
-// The alarm-timing gap of `real` against the twin `sim_v`, and its floor, the largest of the null
-// replicas' (`alarm_floor`).
+// The alarm-timing gap of `real` (its filtered clearance `f_real`) against the twin's alarm
+// changes `a_sim`, and its floor, the largest of the null replicas' (`alarm_floor`).
 AlarmTiming alarm_timing(const RecordingSeries& real, const std::vector<double>& f_real,
-                         const std::vector<double>& f_sim, const std::vector<double>& alarm_floor) {
+                         const std::vector<AlarmChange>& a_sim,
+                         const std::vector<double>& alarm_floor) {
   const double record_s = real.t_s.back() - real.t_s.front();
   const auto a_real = alarm_changes(real.t_s, f_real);
-  const auto a_sim = alarm_changes(real.t_s, f_sim);
   return {alarm_timing_gap(a_real, a_sim, record_s),
           *std::max_element(alarm_floor.begin(), alarm_floor.end()), a_real.size(), a_sim.size()};
 }
@@ -218,7 +218,7 @@ std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<
         filtered_floor.push_back(rms_of(minus(f_noisy, f_sim)));
         alarm_floor.push_back(alarm_timing_gap(alarm_changes(real.t_s, f_noisy), a_sim, record_s));
       });
-  const AlarmTiming alarm = alarm_timing(real, f_real, f_sim, alarm_floor);
+  const AlarmTiming alarm = alarm_timing(real, f_real, a_sim, alarm_floor);
 
   std::vector<StageGap> stages;
   stages.push_back({"voltage", "V", rms_of(minus(real.voltage_v, sim_v)), median_of(voltage_floor),
@@ -260,7 +260,7 @@ AlarmTiming heldout_alarm_timing(const RecordingSeries& heldout, const std::vect
                           alarm_floor.push_back(alarm_timing_gap(
                               alarm_changes(heldout.t_s, f_noisy), a_sim, record_s));
                         });
-  return alarm_timing(heldout, f_real, f_sim, alarm_floor);
+  return alarm_timing(heldout, f_real, a_sim, alarm_floor);
 }
 
 // The alarm-timing stage counts only when the held-out part shows it too: a stage that the
