@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -45,11 +46,13 @@ double sweep_temperature(double t) {
                    : 20.0 + (peak - 20.0) * std::exp(-(t - 360.0) / 200.0);
 }
 
-// A recording of the twin with `effects`; `gain_step` multiplies the voltage from half-way on
-// (an effect the library does not have).
-RecordingSeries twin_recording(const std::vector<sim::EffectSettings>& effects, std::uint64_t seed,
-                               double phase_s, double gain_step = 1.0,
-                               double duration_s = kDurationS) {
+// A recording of the twin with `effects` over `duration_s`: the micrometer reads
+// `reference_mm(t)` while the sensor sees `sensed_mm(t)`; `gain_step` multiplies the voltage from
+// half-way on (an effect the library does not have).
+RecordingSeries recording_of(const std::vector<sim::EffectSettings>& effects, std::uint64_t seed,
+                             double duration_s, const std::function<double(double)>& reference_mm,
+                             const std::function<double(double)>& sensed_mm,
+                             double gain_step = 1.0) {
   sim::TwinConfig config;
   config.noise.voltage_std_v = kNoiseV;
   config.effects = effects;
@@ -58,13 +61,21 @@ RecordingSeries twin_recording(const std::vector<sim::EffectSettings>& effects, 
   const int n = static_cast<int>(duration_s * kFsHz);
   for (int i = 0; i <= n; ++i) {
     const double t = i / kFsHz;
-    const sim::Reading r = twin.step({t, sweep_clearance(t, phase_s), sweep_temperature(t)});
+    const sim::Reading r = twin.step({t, sensed_mm(t), sweep_temperature(t)});
     series.t_s.push_back(t);
-    series.clearance_mm.push_back(sweep_clearance(t, phase_s));
+    series.clearance_mm.push_back(reference_mm(t));
     series.temp_c.push_back(r.temp_c);
     series.voltage_v.push_back(t > duration_s / 2 ? r.voltage_v * gain_step : r.voltage_v);
   }
   return series;
+}
+
+// The twin on the triangle sweep (shifted by `phase_s`).
+RecordingSeries twin_recording(const std::vector<sim::EffectSettings>& effects, std::uint64_t seed,
+                               double phase_s, double gain_step = 1.0,
+                               double duration_s = kDurationS) {
+  const auto sweep = [phase_s](double t) { return sweep_clearance(t, phase_s); };
+  return recording_of(effects, seed, duration_s, sweep, sweep, gain_step);
 }
 
 struct Case {
@@ -380,22 +391,11 @@ RecordingSeries late_warning_recording(std::uint64_t seed, double phase_s) {
            sweep_clearance(crossing_s + 1.0, phase_s) > sweep_clearance(crossing_s, phase_s))) {
     crossing_s += 0.1;
   }
-  sim::TwinConfig config;
-  config.noise.voltage_std_v = kNoiseV;
-  sim::SensorTwin twin(config, seed);
-  RecordingSeries series;
-  const int n = static_cast<int>(kLongDurationS * kFsHz);
-  for (int i = 0; i <= n; ++i) {
-    const double t = i / kFsHz;
-    const double reference_mm = sweep_clearance(t, phase_s);
-    const double read_mm = reference_mm - (std::abs(t - crossing_s) <= 4.0 ? 0.2 : 0.0);
-    const sim::Reading r = twin.step({t, read_mm, sweep_temperature(t)});
-    series.t_s.push_back(t);
-    series.clearance_mm.push_back(reference_mm);
-    series.temp_c.push_back(r.temp_c);
-    series.voltage_v.push_back(r.voltage_v);
-  }
-  return series;
+  const auto reference = [phase_s](double t) { return sweep_clearance(t, phase_s); };
+  const auto read = [phase_s, crossing_s](double t) {
+    return sweep_clearance(t, phase_s) - (std::abs(t - crossing_s) <= 4.0 ? 0.2 : 0.0);
+  };
+  return recording_of({}, seed, kLongDurationS, reference, read);
 }
 
 const StageGap& alarm_stage(const DiagnosisResult& r) {
@@ -440,20 +440,8 @@ double staircase_clearance(double t, double phase_s) {
 
 RecordingSeries staircase_recording(const std::vector<sim::EffectSettings>& effects,
                                     std::uint64_t seed, double phase_s) {
-  sim::TwinConfig config;
-  config.noise.voltage_std_v = kNoiseV;
-  config.effects = effects;
-  sim::SensorTwin twin(config, seed);
-  RecordingSeries series;
-  for (int i = 0; i <= static_cast<int>(kDurationS * kFsHz); ++i) {
-    const double t = i / kFsHz;
-    const sim::Reading r = twin.step({t, staircase_clearance(t, phase_s), sweep_temperature(t)});
-    series.t_s.push_back(t);
-    series.clearance_mm.push_back(staircase_clearance(t, phase_s));
-    series.temp_c.push_back(r.temp_c);
-    series.voltage_v.push_back(r.voltage_v);
-  }
-  return series;
+  const auto stairs = [phase_s](double t) { return staircase_clearance(t, phase_s); };
+  return recording_of(effects, seed, kDurationS, stairs, stairs);
 }
 
 bool says_one_sided(const DiagnosisResult& r) {
