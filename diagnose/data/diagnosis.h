@@ -37,7 +37,7 @@ struct EffectFinding {
 
 struct Diagnosis {
   // "explained" (what the selected effects leave is within 10 % of the noise), "partly
-  // explained" (they leave more, but take at least 80 % of the held-out gap above the noise),
+  // explained" (they leave more, but take at least 90 % of the held-out gap above the noise),
   // "unexplained" or "none".
   std::string status;
   std::vector<EffectFinding> effects;  // selected, in selection order (empty unless explained,

@@ -1018,10 +1018,13 @@ std::vector<double> find_lines(const std::vector<double>& t, const std::vector<d
   std::vector<double> left = gap;
   std::vector<int> lines_near(nominals_hz.size(), 0);
   std::vector<bool> done(nominals_hz.size(), false);
+  // How many lines were kept when an alias last fell short: with no line kept since, what is
+  // left is the same and so would the answer be.
+  std::vector<std::size_t> short_at(nominals_hz.size(), std::numeric_limits<std::size_t>::max());
   for (bool kept_one = true; kept_one;) {
     kept_one = false;
     for (std::size_t a = 0; a < nominals_hz.size(); ++a) {
-      while (!done[a] && lines_near[a] < kMainsLinesPerAlias) {
+      while (!done[a] && lines_near[a] < kMainsLinesPerAlias && short_at[a] != found.size()) {
         const double f = refine_line(t, left, nominals_hz[a]);
         if (std::any_of(found.begin(), found.end(),
                         [&](double g) { return std::abs(g - f) < 0.5 * kMainsStepHz; })) {
@@ -1036,7 +1039,10 @@ std::vector<double> find_lines(const std::vector<double>& t, const std::vector<d
         for (std::size_t i = 0; i < gap.size(); ++i) after[i] = gap[i] - tones[i];
         const double per_line = static_cast<double>(values) / static_cast<double>(trial.size()) + 1;
         const double chance = mean_square(after) * per_line / static_cast<double>(gap.size());
-        if (mean_square(left) - mean_square(after) <= kMainsLineFactor * chance) break;
+        if (mean_square(left) - mean_square(after) <= kMainsLineFactor * chance) {
+          short_at[a] = found.size();
+          break;
+        }
         found = std::move(trial);
         left = std::move(after);
         ++lines_near[a];
