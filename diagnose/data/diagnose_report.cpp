@@ -21,6 +21,7 @@ nlohmann::ordered_json finding_json(const EffectFinding& f) {
           {"heldout_rms_before", f.heldout_rms_before},
           {"heldout_rms_after", f.heldout_rms_after},
           {"shrink_pct", f.shrink_pct},
+          {"heldout_rms_without", f.heldout_rms_without},
           {"inclusion", f.inclusion},
           {"noise_type", f.noise_type},
           {"evidence", f.evidence}};

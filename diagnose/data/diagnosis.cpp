@@ -638,6 +638,8 @@ struct Selection {
   bool free_shapes = false;  // whether the free-shape families compete (the second pass)
   // One sentence per pick that another class explained as well (issue 11 item 2).
   std::vector<std::string> confounded;
+  // One sentence per pick that the backward steps took out (drop_unneeded_picks).
+  std::vector<std::string> dropped;
 };
 
 // The recorded voltage less what the free-shape picks add: what the replayed effects must meet.
@@ -1167,6 +1169,124 @@ void measure_inclusion(Selection& selection) {
   }
 }
 
+// The held-out gap that the picks marked in `kept` leave (the twin's own effects and the
+// converter's placed boundaries always in), each with its parameters from the final fit.
+std::vector<double> heldout_error_with(const Parts& parts, const Selection& selection,
+                                       const std::vector<bool>& kept) {
+  std::vector<double> target = ho_target(parts, selection);
+  std::vector<bool> in_library(selection.modelled.size(), true);
+  for (std::size_t j = 0; j < kept.size(); ++j) {
+    if (kept[j]) continue;
+    const int index = selection.modelled_index[j];
+    if (index >= 0) {
+      in_library[static_cast<std::size_t>(index)] = false;
+      continue;
+    }
+    // A free shape: what it added comes back into the target.
+    const Step& step = selection.steps[j];
+    const std::vector<double>& added = step.candidates[step.chosen].free_shape->heldout_voltage_v;
+    for (std::size_t i = 0; i < target.size(); ++i) target[i] += added[i];
+  }
+  // The library's effects stay in the order they were fitted in.
+  std::vector<sim::EffectSettings> library;
+  for (std::size_t m = 0; m < selection.modelled.size(); ++m) {
+    if (in_library[m]) library.push_back(selection.modelled[m]);
+  }
+  return minus(target, parts.ho_replay.voltage(library));
+}
+
+// The held-out gap's RMS with every pick but pick `j`.
+double heldout_rms_without(const Parts& parts, const Selection& selection, std::size_t j) {
+  std::vector<bool> kept(selection.findings.size(), true);
+  kept[j] = false;
+  return rms_of(heldout_error_with(parts, selection, kept));
+}
+
+// Takes pick `j` out of the selection: its effect or free shape, its finding and its round.
+void remove_pick(Selection& selection, std::size_t j) {
+  const int index = selection.modelled_index[j];
+  if (index >= 0) {
+    selection.modelled.erase(selection.modelled.begin() + index);
+    for (int& other : selection.modelled_index) other -= other > index ? 1 : 0;
+  } else {
+    const FreeShapeFit& shape =
+        *selection.steps[j].candidates[selection.steps[j].chosen].free_shape;
+    for (std::size_t i = 0; i < selection.cal_free_v.size(); ++i) {
+      selection.cal_free_v[i] -= shape.cal_voltage_v[i];
+    }
+    for (std::size_t i = 0; i < selection.ho_free_v.size(); ++i) {
+      selection.ho_free_v[i] -= shape.heldout_voltage_v[i];
+    }
+  }
+  const auto at = [j](auto& v) { v.erase(v.begin() + static_cast<long>(j)); };
+  at(selection.findings);
+  at(selection.steps);
+  at(selection.modelled_index);
+}
+
+// Backward steps after the greedy forward ones: a pick that the final model does not need (taking
+// it out raises the held-out mean square by less than the least gain a pick must make) is taken
+// out, the least needed first, until every pick left is needed. A pick taken first for what it
+// explained alone can be made redundant by a later one (a static nonlinearity that took the
+// calibration part's offset of a log-time ageing, which the refit handed back to the ageing).
+// Each one taken out leaves a reason line.
+void drop_unneeded_picks(const Parts& parts, Selection& selection) {
+  const double margin = kMinGainOfNoiseVariance * selection.sigma * selection.sigma;
+  const auto refresh_error = [&] {
+    selection.current_error =
+        heldout_error_with(parts, selection, std::vector<bool>(selection.findings.size(), true));
+  };
+  refresh_error();
+  while (selection.findings.size() > 1) {
+    const double now = rms_of(selection.current_error);
+    std::size_t least = 0;
+    double least_cost = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < selection.findings.size(); ++j) {
+      const double without = heldout_rms_without(parts, selection, j);
+      const double cost = without * without - now * now;
+      if (cost < least_cost) {
+        least_cost = cost;
+        least = j;
+      }
+    }
+    if (least_cost >= margin) break;
+    selection.dropped.push_back(fmt::format(
+        "{} was selected, but the effects selected after it make it unneeded: without it the "
+        "held-out gap's mean square changes by {:.3g} V^2, less than the {:.3g} V^2 a pick must "
+        "take; not named",
+        selection.findings[least].name, least_cost, margin));
+    // Its confounding sentences said it was the one reported.
+    const std::string lead = selection.findings[least].name + " and ";
+    std::erase_if(selection.confounded,
+                  [&](const std::string& line) { return line.starts_with(lead); });
+    remove_pick(selection, least);
+    refresh_error();
+  }
+}
+
+// Each pick as the final fit has it, in the order the rounds took them: the held-out gap's RMS
+// with every pick but this one (what the final model needs it for), and its before and after with
+// the picks listed before it (what the refits and the backward steps left of each round's own
+// figures). The order stays the greedy one: ranking by that need was tried and named the wrong
+// class first as often as the right one, since a constant offset is shared between classes as the
+// fits happen to split it (an ageing's offset against a nonlinearity curve's level), and the
+// need of each follows that split.
+void measure_picks_in_final_fit(const Parts& parts, Selection& selection) {
+  const std::size_t picks = selection.findings.size();
+  std::vector<bool> kept(picks, false);
+  double before = rms_of(selection.ho_gap);
+  for (std::size_t k = 0; k < picks; ++k) {
+    EffectFinding& f = selection.findings[k];
+    f.heldout_rms_without = heldout_rms_without(parts, selection, k);
+    kept[k] = true;
+    f.heldout_rms_before = before;
+    f.heldout_rms_after = rms_of(heldout_error_with(parts, selection, kept));
+    f.shrink_pct = 100.0 * (f.heldout_rms_before - f.heldout_rms_after) /
+                   std::max(f.heldout_rms_before, 1e-30);
+    before = f.heldout_rms_after;
+  }
+}
+
 std::string grid_evidence(const AdcGrid& grid) {
   return fmt::format(
       "the recorded voltages of both parts lie on one converter grid (estimated from their "
@@ -1247,9 +1367,9 @@ void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selecti
   finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
                        std::max(finding.heldout_rms_before, 1e-30);
   // Findings are listed largest first. The picks are in the order the rounds took them, each
-  // taking sqrt(before^2 - after^2) of the held-out gap's RMS; the converter's size is what its
-  // rounding puts in the gap, LSB / sqrt(12), which the grid itself shows whether or not the
-  // twin's converter reproduces the codes.
+  // taking sqrt(before^2 - after^2) of the held-out gap's RMS; the converter's size
+  // is what its rounding puts in the gap, LSB / sqrt(12), which the grid itself shows whether or
+  // not the twin's converter reproduces the codes.
   const double rounding_rms = grid->lsb_v / std::sqrt(12.0);
   const auto smaller = std::find_if(
       selection.findings.begin(), selection.findings.end(), [&](const EffectFinding& f) {
@@ -1419,6 +1539,7 @@ void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisRes
   }
   if (diagnosis.status != "none") {
     reasons.insert(reasons.end(), selection.confounded.begin(), selection.confounded.end());
+    reasons.insert(reasons.end(), selection.dropped.begin(), selection.dropped.end());
   }
   if (diagnosis.stage.empty()) diagnosis.stage = "none";
 }
@@ -1517,6 +1638,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   Selection selection =
       select_in_two_passes(parts, options, replay_nominal_twin(parts, options, result), result);
   measure_inclusion(selection);
+  drop_unneeded_picks(parts, selection);
+  measure_picks_in_final_fit(parts, selection);
   // Noise-type effects, recognised from their signatures in both parts.
   recognise_quantization(parts, result.detail.white_noise, selection);
   const VerdictNoise verdict_noise = with_converter_grid(selection, result.detail.white_noise,

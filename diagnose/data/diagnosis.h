@@ -33,6 +33,9 @@ struct EffectFinding {
   double inclusion = 0.0;                // share of bootstrap rounds that selected it, 0..1
   bool noise_type = false;               // identified from its signature, not by a bias it removes
   std::string evidence;                  // one sentence: why it was selected
+  // A bias-type pick: the held-out gap RMS with every selected effect but this one, V (what the
+  // final model needs it for; 0 for noise types).
+  double heldout_rms_without = 0.0;
 };
 
 struct Diagnosis {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -33,6 +34,19 @@ constexpr int kClearanceKnots = 25;
 // How far a curve of temperature goes on beyond the calibration part's range, in knot spacings
 // (about 10 degC for a 20-80 degC session) before it is held.
 constexpr double kTemperatureReach = 1.0;
+// How far a curve of clearance may go on along its end segments beyond the calibration part's
+// range, in mm, before it is held: a held-out session whose micrometer travels further (half a
+// millimetre past 2 mm) meets a characteristic error that a smooth one (the library's polynomial
+// of voltage too) continues, and a ripple does not. Which of the two each end is, the calibration
+// part says (choose_reach).
+constexpr double kClearanceReachMm = 1.0;
+// The fewest calibration samples in an end's band that decide its reach (choose_reach).
+constexpr std::size_t kLeastSamplesToDecideReach = 100;
+// A curve of temperature goes on kTemperatureReach knot spacings past an end, or this many where
+// the calibration part says so (a quadratic offset or gain of a held-out session that heats 15-20
+// degC further), judged on a band of kTemperatureBand knot spacings at each end.
+constexpr double kTemperatureFarReach = 3.0;
+constexpr double kTemperatureBand = 1.5;
 
 // Knots of the compression surface: five in voltage over the top of the range (the lowest held
 // at 0), three in temperature.
@@ -55,18 +69,19 @@ constexpr double kRidge = 1e-3;
 
 // Piecewise-linear "hat" functions on evenly spread knots: hat k is 1 at knot k, 0 at the others;
 // beyond the ends the end hats stay at 1 (the curve is held constant there).
-// With `reach` > 0 the curve goes on along its end segments for up to `reach` knot spacings
-// beyond the ends before it is held: a temperature the held-out session reaches a little past the
+// With a reach > 0 the curve goes on along its end segment for up to that many knot spacings
+// beyond that end before it is held: a temperature the held-out session reaches a little past the
 // calibration one's, where holding the curve flat would break a trend every formula continues.
 struct Hats {
   std::vector<double> knots;
-  double reach = 0.0;
+  double reach_below = 0.0, reach_above = 0.0;
+  void reach_both(double reach) { reach_below = reach_above = reach; }
   double weight(std::size_t k, double x) const {
     const double lo = knots.front(), hi = knots.back();
     const double step = (hi - lo) / static_cast<double>(knots.size() - 1);
     if (step <= 0.0) return k == 0 ? 1.0 : 0.0;
     const double last = static_cast<double>(knots.size() - 1);
-    const double u = std::clamp((x - lo) / step, -reach, last + reach);
+    const double u = std::clamp((x - lo) / step, -reach_below, last + reach_above);
     if (u < 0.0) return k == 0 ? 1.0 - u : k == 1 ? u : 0.0;
     if (u > last) {
       const double beyond = u - last;
@@ -76,13 +91,22 @@ struct Hats {
   }
 };
 
-Hats hats_over(const std::vector<double>& x, int count) {
-  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+double knot_spacing(const Hats& hats) {
+  return (hats.knots.back() - hats.knots.front()) / static_cast<double>(hats.knots.size() - 1);
+}
+
+// `count` knots spread evenly from lo to hi.
+Hats hats_between(double lo, double hi, std::size_t count) {
   Hats hats;
-  for (int k = 0; k < count; ++k) {
-    hats.knots.push_back(*lo + (*hi - *lo) * k / static_cast<double>(count - 1));
+  for (std::size_t k = 0; k < count; ++k) {
+    hats.knots.push_back(lo + (hi - lo) * static_cast<double>(k) / static_cast<double>(count - 1));
   }
   return hats;
+}
+
+Hats hats_over(const std::vector<double>& x, int count) {
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  return hats_between(*lo, *hi, static_cast<std::size_t>(count));
 }
 
 // One part of the data, as a family reads it.
@@ -156,6 +180,67 @@ Eigen::MatrixXd matrix(std::size_t rows, std::size_t cols) {
 // Least squares with a relative ridge (defined below).
 Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& y);
 
+// How far a curve goes on past each end of the calibration part's range, decided on that part
+// itself: the family is fitted again with its knots over the range less `band` at each end, and
+// the samples in each band are predicted with the curve going on `near` and `far` past that end
+// (both in the variable's units); the end keeps `far` when that leaves less there, over at least
+// kLeastSamplesToDecideReach samples, else `near`. `columns_with(h)` are the family's columns on
+// the calibration part with hats `h`; `x` is the variable the hats are over.
+void choose_reach(Hats& hats, const std::vector<double>& x, const std::vector<double>& gap_v,
+                  double band, double near, double far,
+                  const std::function<Eigen::MatrixXd(const Hats&)>& columns_with) {
+  const auto in_knots = [](const Hats& h, double distance) {
+    const double spacing = knot_spacing(h);
+    return spacing > 0.0 ? distance / spacing : 0.0;
+  };
+  hats.reach_both(in_knots(hats, near));
+  const double lo = hats.knots.front(), hi = hats.knots.back();
+  const double inner_lo = lo + band, inner_hi = hi - band;
+  if (inner_hi - inner_lo < band) return;
+  const Hats inner = hats_between(inner_lo, inner_hi, hats.knots.size());
+  const Eigen::MatrixXd all = columns_with(inner);
+  std::vector<Eigen::Index> rows;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (x[i] >= inner_lo && x[i] <= inner_hi) rows.push_back(static_cast<Eigen::Index>(i));
+  }
+  Eigen::MatrixXd a(static_cast<Eigen::Index>(rows.size()), all.cols());
+  Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    a.row(static_cast<Eigen::Index>(r)) = all.row(rows[r]);
+    y(static_cast<Eigen::Index>(r)) = gap_v[static_cast<std::size_t>(rows[r])];
+  }
+  const Eigen::VectorXd beta = ridge_solve(a, y);
+  // What the inner fit, going on `reach` past one end, leaves on the samples in that end's band.
+  const auto left_in_band = [&](bool below, double reach) {
+    Hats way = inner;
+    way.reach_both(in_knots(inner, near));
+    (below ? way.reach_below : way.reach_above) = in_knots(inner, reach);
+    const Eigen::VectorXd fitted = columns_with(way) * beta;
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (below ? x[i] >= inner_lo : x[i] <= inner_hi) continue;
+      sum += std::pow(gap_v[i] - fitted(static_cast<Eigen::Index>(i)), 2);
+      ++n;
+    }
+    return std::pair{sum, n};
+  };
+  for (const bool below : {true, false}) {
+    const auto [at_near, n] = left_in_band(below, near);
+    if (n < kLeastSamplesToDecideReach || left_in_band(below, far).first >= at_near) continue;
+    (below ? hats.reach_below : hats.reach_above) = in_knots(hats, far);
+  }
+}
+
+// choose_reach for a curve of temperature: one knot spacing or kTemperatureFarReach past an end,
+// judged on a band of kTemperatureBand spacings.
+void choose_temperature_reach(Hats& hats, const Part& calibration, const std::vector<double>& gap_v,
+                              const std::function<Eigen::MatrixXd(const Hats&)>& columns_with) {
+  const double spacing = knot_spacing(hats);
+  choose_reach(hats, calibration.series.temp_c, gap_v, kTemperatureBand * spacing,
+               kTemperatureReach * spacing, kTemperatureFarReach * spacing, columns_with);
+}
+
 // A curve of one variable through hats: temperature offset, temperature gain, nonlinearity.
 class CurveFamily : public Family {
  public:
@@ -172,8 +257,25 @@ class CurveFamily : public Family {
       for (std::size_t k = 0; k < kAgeKnots; ++k) used_.push_back(k);
     } else {
       hats_ = hats_over(calibration.series.temp_c, kKnots);
-      hats_.reach = kTemperatureReach;
+      hats_.reach_both(kTemperatureReach);
       for (std::size_t k = 0; k < kKnots; ++k) used_.push_back(k);
+    }
+  }
+
+  // Curves of clearance and of temperature go on past an end as far as the calibration part says
+  // (choose_reach): a curve of clearance held or going on kClearanceReachMm, a curve of
+  // temperature going on one knot spacing or kTemperatureFarReach.
+  void search(const Part& calibration, const std::vector<double>& gap_v) override {
+    const auto columns_with = [&](const Hats& hats) {
+      CurveFamily with = *this;
+      with.hats_ = hats;
+      return with.columns(calibration);
+    };
+    if (variable_ == "d") {
+      choose_reach(hats_, calibration.series.clearance_mm, gap_v, kClearanceReachMm, 0.0,
+                   kClearanceReachMm, columns_with);
+    } else if (variable_ != "V" && variable_ != "age") {
+      choose_temperature_reach(hats_, calibration, gap_v, columns_with);
     }
   }
 
@@ -240,7 +342,16 @@ class PivotGainFamily : public Family {
  public:
   explicit PivotGainFamily(const Part& calibration)
       : hats_(hats_over(calibration.series.temp_c, kKnots)) {
-    hats_.reach = kTemperatureReach;
+    hats_.reach_both(kTemperatureReach);
+  }
+
+  // As a curve of temperature does (CurveFamily::search).
+  void search(const Part& calibration, const std::vector<double>& gap_v) override {
+    choose_temperature_reach(hats_, calibration, gap_v, [&](const Hats& hats) {
+      PivotGainFamily with = *this;
+      with.hats_ = hats;
+      return with.columns(calibration);
+    });
   }
 
   std::vector<std::string> names() const override {
@@ -386,7 +497,7 @@ class KneeCompressionFamily : public Family {
  public:
   explicit KneeCompressionFamily(const Part& calibration)
       : temp_(hats_over(calibration.series.temp_c, kKneeTempKnots)) {
-    temp_.reach = kTemperatureReach;
+    temp_.reach_both(kTemperatureReach);
     const auto [lo, hi] = std::minmax_element(calibration.replay.nominal_voltage().begin(),
                                               calibration.replay.nominal_voltage().end());
     top_v_ = *hi;
@@ -625,7 +736,7 @@ class KneeCompressionFamily : public Family {
   Hats height_hats() const {
     Hats h;
     for (std::size_t j = 0; j < kKneeHeightKnots; ++j) h.knots.push_back(height_knot(j));
-    h.reach = kHeightReach;
+    h.reach_both(kHeightReach);
     return h;
   }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -152,6 +153,45 @@ TEST(AltSelftestCommand, OnePairWritesItsSessionsAndItsTruth) {
   EXPECT_EQ(again.status, 0) << again.err;
   EXPECT_EQ(again.out.rfind("verdict: " + j["pairs"][0]["verdict"].get<std::string>(), 0), 0u)
       << again.out;
+}
+
+// Two development pairs (seed 413 pair 2 and seed 416 pair 33: a log-time ageing across sessions
+// two days apart). The greedy rounds took a static nonlinearity first for the calibration part's
+// offset, then the ageing took the held-out gap.
+AltPairResult development_pair(std::uint64_t seed, int pair) {
+  SelftestOptions options;
+  options.cases = 40;
+  options.only_case = pair;
+  options.seed = seed;
+  options.jobs = 1;
+  const std::vector<AltPairResult> results = run_alt_selftest(options);
+  EXPECT_EQ(results.size(), 1u);
+  return results.front();
+}
+
+TEST(AltSelftest, APickThatTheLaterPicksMakeUnneededIsTakenOut) {
+  const AltPairResult r = development_pair(413, 2);
+  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
+  EXPECT_EQ(r.diagnosis.effects[0].name, "ageing_drift");
+  EXPECT_TRUE(r.score.top_correct);
+}
+
+TEST(AltSelftest, EveryPickLeftIsNeededByTheFinalFit) {
+  const AltPairResult r = development_pair(416, 33);
+  const std::vector<EffectFinding>& effects = r.diagnosis.effects;
+  ASSERT_GE(effects.size(), 2u);
+  const double now = r.diagnosis.heldout_rms_after;
+  const double least_gain = 0.02 * r.diagnosis.noise_std_v * r.diagnosis.noise_std_v;
+  for (std::size_t i = 0; i < effects.size(); ++i) {
+    EXPECT_GE(std::pow(effects[i].heldout_rms_without, 2) - now * now, least_gain)
+        << effects[i].name;
+    // The figures are the final fit's, chained in the listed order.
+    if (i + 1 < effects.size()) {
+      EXPECT_DOUBLE_EQ(effects[i + 1].heldout_rms_before, effects[i].heldout_rms_after);
+    }
+  }
+  EXPECT_DOUBLE_EQ(effects.back().heldout_rms_after, now);
 }
 
 TEST(AltSelftestCommand, AnUnknownRealityIsABadArgument) {

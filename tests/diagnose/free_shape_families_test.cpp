@@ -504,6 +504,50 @@ TEST(Coverage, AHeldOutSessionThatMissesTheGapsCellIsSaidToMissIt) {
   })) << ::testing::PrintToString(reasons);
 }
 
+// A held-out session whose micrometer travels half a millimetre further than the calibration's
+// (down to 1.5 mm, where the calibration stopped at 2.1 mm) meets the characteristic error there
+// as it goes on: the curve of clearance must continue beyond the calibration's range, not be held
+// at its last value.
+TEST(Reach, ANonlinearityIsContinuedWhereTheHeldOutMicrometerTravelsFurther) {
+  // A characteristic error that rises steeply towards small clearances (no library formula).
+  const auto rising_when_close = [](const Truth& truth) {
+    Session s = unchanged(truth);
+    s.voltage = [d = truth.clearance_mm](std::size_t i, double v) {
+      return v + 0.2 * std::exp(-(d[i] - 1.5) / 0.8);
+    };
+    return s;
+  };
+  Truth stops_short = bench_truth(0.0, 600.0);
+  for (double& d : stops_short.clearance_mm) d = std::max(d, 2.1);
+  const Truth travels_further = bench_truth(70.0, 800.0);
+  const DiagnosisResult r = diagnose_in_detail(
+      record(stops_short, rising_when_close(stops_short), kNoiseV, 41),
+      record(travels_further, rising_when_close(travels_further), kNoiseV, 42), {});
+  EXPECT_EQ(r.diagnosis.status, "explained") << ::testing::PrintToString(r.detail.reasons);
+  ASSERT_FALSE(r.diagnosis.effects.empty());
+  EXPECT_EQ(r.diagnosis.effects.front().name, "nonlinearity");
+}
+
+// A held-out session that heats 20 degC further than the calibration's (95 against 75 degC) meets a
+// quadratic temperature offset that has gone on bending: the curve of temperature must go on past
+// the calibration's range as far as the calibration part's own top says, not one knot spacing.
+TEST(Reach, ATemperatureCurveGoesOnWhereTheHeldOutSessionHeatsFurther) {
+  const auto quadratic_offset = [](const Truth& truth) {
+    Session s = unchanged(truth);
+    s.voltage = [c = truth.ambient_c](std::size_t i, double v) {
+      return v - 0.15 * std::pow((c[i] - 20.0) / 60.0, 2);
+    };
+    return s;
+  };
+  const Truth short_heating = bench_truth(0.0, 300.0), long_heating = bench_truth(70.0, 800.0);
+  const DiagnosisResult r =
+      diagnose_in_detail(record(short_heating, quadratic_offset(short_heating), kNoiseV, 43),
+                         record(long_heating, quadratic_offset(long_heating), kNoiseV, 44), {});
+  EXPECT_EQ(r.diagnosis.status, "explained") << ::testing::PrintToString(r.detail.reasons);
+  ASSERT_FALSE(r.diagnosis.effects.empty());
+  EXPECT_EQ(r.diagnosis.effects.front().name, "temp_offset_drift");
+}
+
 // No effect at all, at three noise levels from a fine 5 mV to 0.15 V: "none", every seed.
 class NullPairs : public ::testing::TestWithParam<double> {};
 
