@@ -202,7 +202,10 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
       {"heldout_max_before_v", h.max_before},       {"heldout_max_after_v", h.max_after},
       {"region_rms_before_v", h.region_rms_before}, {"region_rms_after_v", h.region_rms_after},
       {"region_heldout_samples", h.region_samples}, {"band_rms_before_v", h.band_rms_before},
-      {"band_rms_after_v", h.band_rms_after}};
+      {"band_rms_after_v", h.band_rms_after},
+      {"worst_window", {{"from_s", h.worst_window.from_s},
+                        {"to_s", h.worst_window.to_s},
+                        {"rms_after_v", h.worst_window.rms_v}}}};
   nlohmann::ordered_json regions = nlohmann::ordered_json::array();
   for (const RegionCell& c : d.regions) regions.push_back(region_json(c));
   j["regions"] = regions;
@@ -248,9 +251,11 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
     text << fmt::format("  nearest: {} ({})\n", g.nearest->name, g.nearest->evidence);
   }
   text << fmt::format(
-      "  how far: held-out RMS {:.4f} -> {:.4f} V, max {:.4f} -> {:.4f} V; noise {:.4f} V\n",
+      "  how far: held-out RMS {:.4f} -> {:.4f} V, max {:.4f} -> {:.4f} V; noise {:.4f} V; "
+      "most left in {:.1f}-{:.1f} s: {:.4f} V RMS\n",
       d.how_far.rms_before, d.how_far.rms_after, d.how_far.max_before, d.how_far.max_after,
-      d.noise_std_v);
+      d.noise_std_v, d.how_far.worst_window.from_s, d.how_far.worst_window.to_s,
+      d.how_far.worst_window.rms_v);
   if (d.adc_grid) {
     text << fmt::format(
         "  converter grid: LSB {:.4g} mV, codes {:.6g} to {:.6g} V ({} used); analog noise {:.4f} "

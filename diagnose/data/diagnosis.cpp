@@ -48,6 +48,16 @@ constexpr double kExplainedRatio = 1.10;
 // issue 11 asks of a bias-type class: on the twin's own self-test (seed 3) three classes together
 // took 78-86 % of a gain step that no class models, and would have been claimed.
 constexpr double kPartlyExplainedShare = 0.90;
+// "Explained" also asks the noise level of what is left in every window of the held-out samples
+// that lie within the calibration's clearance and temperature ranges (a 64th of them, at least 100
+// samples; worst_window): twice the noise in one of them is something the picks miss there. A gain
+// step at 0.66 of a session, taken for a temperature gain because the session is below 38 C almost
+// only after it, left 1.10 times the noise over the session and 2.26 times it in one 64th (the
+// twin's seed 4, case 49). The in-library and null cases of the twin's seed 3 and of alternative
+// seed 413 leave at most 1.6 times in any 64th.
+constexpr std::size_t kLocalWindows = 64;
+constexpr std::size_t kLeastLocalWindowSamples = 100;
+constexpr double kLocalExplainedRatio = 2.0;
 // A candidate must remove at least this share of the noise variance from the held-out MSE.
 constexpr double kMinGainOfNoiseVariance = 0.02;
 
@@ -1464,20 +1474,36 @@ VerdictNoise with_converter_grid(const Selection& selection, const WhiteNoise& w
   return null_rms > noise.rms_v ? VerdictNoise{null_rms, noise.why + "; " + why} : noise;
 }
 
+// What the selected effects leave, against what the noise allows: over the held-out session, or,
+// when that is within it, in the window where the most is left.
+std::string what_is_left(const Selection& selection, double verdict_noise,
+                         const HeldoutWindow& worst) {
+  const double left_v = rms_of(selection.current_error);
+  if (left_v > kExplainedRatio * verdict_noise) {
+    return fmt::format("{:.4g} V is left where the noise allows {:.4g} V", left_v,
+                       kExplainedRatio * verdict_noise);
+  }
+  return fmt::format(
+      "{:.4g} V is left over the session, within the {:.4g} V the noise allows, but {:.4g} V "
+      "from {:.1f} to {:.1f} s, where it allows {:.4g} V",
+      left_v, kExplainedRatio * verdict_noise, worst.rms_v, worst.from_s, worst.to_s,
+      kLocalExplainedRatio * verdict_noise);
+}
+
 // The library effect an "unexplained" verdict came nearest to: the first it selected, or, when
 // none was significant, the candidate that lowered the held-out gap most; with how far it went.
-std::optional<EffectFinding> nearest_effect(const Selection& selection, double verdict_noise) {
+std::optional<EffectFinding> nearest_effect(const Selection& selection, double verdict_noise,
+                                            const HeldoutWindow& worst) {
   const bool picked = !selection.findings.empty();
   if (!picked && !selection.nearest_unpicked) return std::nullopt;
   EffectFinding nearest = picked ? selection.findings.front() : *selection.nearest_unpicked;
-  nearest.evidence = fmt::format(
-      "{}: it takes the held-out gap RMS from {:.4g} to {:.4g} V ({:.1f} %){}; {:.4g} V is left "
-      "where the noise allows {:.4g} V",
-      picked ? "selected, but the effects selected leave too much"
-             : "the nearest candidate, not significant",
-      nearest.heldout_rms_before, nearest.heldout_rms_after, nearest.shrink_pct,
-      picked && selection.findings.size() > 1 ? " on its own" : "", rms_of(selection.current_error),
-      kExplainedRatio * verdict_noise);
+  const std::string how_much_is_left = what_is_left(selection, verdict_noise, worst);
+  nearest.evidence =
+      fmt::format("{}: it takes the held-out gap RMS from {:.4g} to {:.4g} V ({:.1f} %){}; {}",
+                  picked ? "selected, but the effects selected leave too much"
+                         : "the nearest candidate, not significant",
+                  nearest.heldout_rms_before, nearest.heldout_rms_after, nearest.shrink_pct,
+                  picked && selection.findings.size() > 1 ? " on its own" : "", how_much_is_left);
   return nearest;
 }
 
@@ -1488,8 +1514,43 @@ double above_noise_share_taken(const Diagnosis& diagnosis, double noise) {
   return 1.0 - rms_above_noise(diagnosis.heldout_rms_after, noise) / before;
 }
 
+// The held-out window where what is left has the largest RMS. The windows run over the held-out
+// samples whose clearance and temperature lie within the calibration part's ranges (a 64th of
+// them, at least 100): beyond those ranges a curve is continued or held, and what it leaves there
+// says how well it guessed, not that something else is there (alternative pair 409/5: a range
+// compression fitted up to 78 C left 2.2 times the noise where the held-out session heated to
+// 87 C, and the class was right).
+HeldoutWindow worst_window(const RecordingSeries& calibration, const RecordingSeries& heldout,
+                           const std::vector<double>& error) {
+  const auto [t_lo, t_hi] =
+      std::minmax_element(calibration.temp_c.begin(), calibration.temp_c.end());
+  const auto [x_lo, x_hi] =
+      std::minmax_element(calibration.clearance_mm.begin(), calibration.clearance_mm.end());
+  std::vector<std::size_t> covered;
+  for (std::size_t i = 0; i < error.size(); ++i) {
+    if (heldout.temp_c[i] >= *t_lo && heldout.temp_c[i] <= *t_hi &&
+        heldout.clearance_mm[i] >= *x_lo && heldout.clearance_mm[i] <= *x_hi) {
+      covered.push_back(i);
+    }
+  }
+  const std::size_t n = covered.size();
+  const std::size_t length = std::max(n / kLocalWindows, kLeastLocalWindowSamples);
+  HeldoutWindow worst;
+  for (std::size_t begin = 0; begin + length <= n; begin += length) {
+    double sum_sq = 0.0;
+    for (std::size_t k = begin; k < begin + length; ++k)
+      sum_sq += error[covered[k]] * error[covered[k]];
+    const double rms = std::sqrt(sum_sq / static_cast<double>(length));
+    if (rms > worst.rms_v) {
+      worst = {heldout.t_s[covered[begin]], heldout.t_s[covered[begin + length - 1]], rms};
+    }
+  }
+  return worst;
+}
+
 // The status ("explained", "partly explained", "unexplained" or "none") and the reasons for it.
-void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisResult& result) {
+void verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
+             DiagnosisResult& result) {
   const double verdict_noise = noise.rms_v;
   Diagnosis& diagnosis = result.diagnosis;
   const std::vector<EffectFinding>& findings = selection.findings;
@@ -1501,12 +1562,26 @@ void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisRes
                   [](const EffectFinding& f) { return f.noise_type && f.name != "mains_pickup"; });
   const bool gap_exists = diagnosis.heldout_rms_before > kGapRatio * sigma ||
                           !diagnosis.stage.empty() || has_noise_type || !findings.empty();
-  const bool left_within_noise = diagnosis.heldout_rms_after <= kExplainedRatio * verdict_noise;
+  const HeldoutWindow worst =
+      worst_window(parts.calibration, parts.heldout, selection.current_error);
+  result.detail.how_far.worst_window = worst;
+  const bool left_within_noise_overall =
+      diagnosis.heldout_rms_after <= kExplainedRatio * verdict_noise;
+  const bool left_within_noise =
+      left_within_noise_overall && worst.rms_v <= kLocalExplainedRatio * verdict_noise;
   auto& reasons = result.detail.reasons;
   reasons.push_back(fmt::format(
       "held-out gap RMS {:.4g} V before, {:.4g} V after the selected effects; white noise {:.4g} V",
       diagnosis.heldout_rms_before, diagnosis.heldout_rms_after, sigma));
   if (!noise.why.empty()) reasons.push_back(noise.why);
+  if (!findings.empty() && left_within_noise_overall && !left_within_noise) {
+    reasons.push_back(fmt::format(
+        "what is left is within {:.0f} % of the noise over the held-out session, but {:.2f} times "
+        "the noise from {:.1f} to {:.1f} s (at most {:.1f} times is asked in every {}th of it): "
+        "the selected effects miss something there",
+        100.0 * (kExplainedRatio - 1.0), worst.rms_v / verdict_noise, worst.from_s, worst.to_s,
+        kLocalExplainedRatio, kLocalWindows));
+  }
   if (!findings.empty() && left_within_noise) {
     diagnosis.status = "explained";
     diagnosis.effects = findings;
@@ -1518,14 +1593,13 @@ void verdict(const Selection& selection, const VerdictNoise& noise, DiagnosisRes
     diagnosis.effects = findings;
     reasons.push_back(fmt::format(
         "the selected effects take {:.1f} % of the held-out gap above the noise (at least {:.0f} "
-        "% is asked), but {:.4g} V is left where the noise allows {:.4g} V: the rest is outside "
-        "the library or of a shape its families miss",
-        100.0 * share, 100.0 * kPartlyExplainedShare, diagnosis.heldout_rms_after,
-        kExplainedRatio * verdict_noise));
+        "% is asked), but {}: the rest is outside the library or of a shape its families miss",
+        100.0 * share, 100.0 * kPartlyExplainedShare,
+        what_is_left(selection, verdict_noise, worst)));
   } else if (gap_exists) {
     diagnosis.status = "unexplained";
     result.detail.partial = findings;
-    diagnosis.nearest = nearest_effect(selection, verdict_noise);
+    diagnosis.nearest = nearest_effect(selection, verdict_noise, worst);
     reasons.push_back(findings.empty()
                           ? "no library effect shrinks the held-out gap significantly"
                           : "the effects that help leave more than the noise: something outside "
@@ -1644,7 +1718,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   recognise_quantization(parts, result.detail.white_noise, selection);
   const VerdictNoise verdict_noise = with_converter_grid(selection, result.detail.white_noise,
                                                          recognise_vibration(parts, selection));
-  verdict(selection, verdict_noise, result);
+  verdict(parts, selection, verdict_noise, result);
   if (auto why = clock_reason(result.diagnosis, result.detail.partial)) {
     result.detail.reasons.push_back(*why);
   }

@@ -45,11 +45,20 @@ struct TimeSegment {
   double t_start_s = 0, t_end_s = 0, mean_v = 0;
 };
 
+// A stretch of the held-out session and the RMS of what the selected effects leave in it.
+struct HeldoutWindow {
+  double from_s = 0.0, to_s = 0.0;  // held-out t_s of its first and last sample
+  double rms_v = 0.0;
+};
+
 struct HowFar {
   double rms_before = 0, rms_after = 0, max_before = 0, max_after = 0;  // held-out, V
   double region_rms_before = 0, region_rms_after = 0;                   // in the where-region cell
   std::size_t region_samples = 0;                  // held-out samples in the where-region cell
   double band_rms_before = 0, band_rms_after = 0;  // in the where-band (PSD integrated)
+  // The 64th of the held-out samples within the calibration's clearance and temperature ranges
+  // where the most is left (diagnosis.cpp, worst_window).
+  HeldoutWindow worst_window;
 };
 
 struct DiagnosisDetail {
