@@ -197,15 +197,23 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   j["partial_effects"] = partial;
   j["nearest"] = g.nearest ? finding_json(*g.nearest) : nlohmann::ordered_json();
   const HowFar& h = d.how_far;
-  j["how_far"] = {
-      {"heldout_rms_before_v", h.rms_before},       {"heldout_rms_after_v", h.rms_after},
-      {"heldout_max_before_v", h.max_before},       {"heldout_max_after_v", h.max_after},
-      {"region_rms_before_v", h.region_rms_before}, {"region_rms_after_v", h.region_rms_after},
-      {"region_heldout_samples", h.region_samples}, {"band_rms_before_v", h.band_rms_before},
-      {"band_rms_after_v", h.band_rms_after},
-      {"worst_window", {{"from_s", h.worst_window.from_s},
-                        {"to_s", h.worst_window.to_s},
-                        {"rms_after_v", h.worst_window.rms_v}}}};
+  j["how_far"] = {{"heldout_rms_before_v", h.rms_before},
+                  {"heldout_rms_after_v", h.rms_after},
+                  {"heldout_max_before_v", h.max_before},
+                  {"heldout_max_after_v", h.max_after},
+                  {"region_rms_before_v", h.region_rms_before},
+                  {"region_rms_after_v", h.region_rms_after},
+                  {"region_heldout_samples", h.region_samples},
+                  {"band_rms_before_v", h.band_rms_before},
+                  {"band_rms_after_v", h.band_rms_after},
+                  {"worst_window",
+                   {{"from_s", h.worst_window.from_s},
+                    {"to_s", h.worst_window.to_s},
+                    {"rms_after_v", h.worst_window.rms_v}}},
+                  {"within_calibration",
+                   {{"heldout_samples", h.within_calibration_samples},
+                    {"rms_before_v", h.within_calibration_rms_before},
+                    {"rms_after_v", h.within_calibration_rms_after}}}};
   nlohmann::ordered_json regions = nlohmann::ordered_json::array();
   for (const RegionCell& c : d.regions) regions.push_back(region_json(c));
   j["regions"] = regions;

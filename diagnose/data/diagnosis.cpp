@@ -58,6 +58,10 @@ constexpr double kPartlyExplainedShare = 0.90;
 constexpr std::size_t kLocalWindows = 64;
 constexpr std::size_t kLeastLocalWindowSamples = 100;
 constexpr double kLocalExplainedRatio = 2.0;
+// A held-out session that goes beyond the calibration's clearance or temperature is explained
+// when what is left within the calibration's ranges is (verdict, explained_within_reach), if at
+// least this share of its samples lies within them.
+constexpr double kLeastShareWithinReach = 0.5;
 // A candidate must remove at least this share of the noise variance from the held-out MSE.
 constexpr double kMinGainOfNoiseVariance = 0.02;
 
@@ -1514,38 +1518,83 @@ double above_noise_share_taken(const Diagnosis& diagnosis, double noise) {
   return 1.0 - rms_above_noise(diagnosis.heldout_rms_after, noise) / before;
 }
 
-// The held-out window where what is left has the largest RMS. The windows run over the held-out
-// samples whose clearance and temperature lie within the calibration part's ranges (a 64th of
-// them, at least 100): beyond those ranges a curve is continued or held, and what it leaves there
-// says how well it guessed, not that something else is there (alternative pair 409/5: a range
-// compression fitted up to 78 C left 2.2 times the noise where the held-out session heated to
-// 87 C, and the class was right).
-HeldoutWindow worst_window(const RecordingSeries& calibration, const RecordingSeries& heldout,
-                           const std::vector<double>& error) {
+// The held-out samples whose clearance and temperature lie within the calibration part's ranges,
+// in time order: where the fitted curves are interpolated, not continued or held.
+struct CalibrationReach {
+  double temp_lo_c = 0.0, temp_hi_c = 0.0, clearance_lo_mm = 0.0, clearance_hi_mm = 0.0;
+  std::vector<std::size_t> heldout_within;
+};
+
+CalibrationReach calibration_reach(const RecordingSeries& calibration,
+                                   const RecordingSeries& heldout) {
+  CalibrationReach reach;
   const auto [t_lo, t_hi] =
       std::minmax_element(calibration.temp_c.begin(), calibration.temp_c.end());
   const auto [x_lo, x_hi] =
       std::minmax_element(calibration.clearance_mm.begin(), calibration.clearance_mm.end());
-  std::vector<std::size_t> covered;
-  for (std::size_t i = 0; i < error.size(); ++i) {
-    if (heldout.temp_c[i] >= *t_lo && heldout.temp_c[i] <= *t_hi &&
-        heldout.clearance_mm[i] >= *x_lo && heldout.clearance_mm[i] <= *x_hi) {
-      covered.push_back(i);
+  reach = {*t_lo, *t_hi, *x_lo, *x_hi, {}};
+  for (std::size_t i = 0; i < heldout.size(); ++i) {
+    if (heldout.temp_c[i] >= reach.temp_lo_c && heldout.temp_c[i] <= reach.temp_hi_c &&
+        heldout.clearance_mm[i] >= reach.clearance_lo_mm &&
+        heldout.clearance_mm[i] <= reach.clearance_hi_mm) {
+      reach.heldout_within.push_back(i);
     }
   }
-  const std::size_t n = covered.size();
+  return reach;
+}
+
+double rms_at(const std::vector<double>& values, const std::vector<std::size_t>& at) {
+  double sum_sq = 0.0;
+  for (std::size_t i : at) sum_sq += values[i] * values[i];
+  return at.empty() ? 0.0 : std::sqrt(sum_sq / static_cast<double>(at.size()));
+}
+
+// The held-out window where what is left has the largest RMS. The windows split the held-out
+// samples within the calibration's reach (a 64th of them, at least 100): beyond those ranges a
+// curve is continued or held, and what it leaves there says how well it guessed, not that
+// something else is there (alternative pair 409/5: a range compression fitted up to 78 C left 2.2
+// times the noise where the held-out session heated to 87 C, and the class was right).
+HeldoutWindow worst_window(const RecordingSeries& heldout, const CalibrationReach& reach,
+                           const std::vector<double>& error) {
+  const std::vector<std::size_t>& within = reach.heldout_within;
+  const std::size_t n = within.size();
   const std::size_t length = std::max(n / kLocalWindows, kLeastLocalWindowSamples);
   HeldoutWindow worst;
   for (std::size_t begin = 0; begin + length <= n; begin += length) {
-    double sum_sq = 0.0;
-    for (std::size_t k = begin; k < begin + length; ++k)
-      sum_sq += error[covered[k]] * error[covered[k]];
-    const double rms = std::sqrt(sum_sq / static_cast<double>(length));
-    if (rms > worst.rms_v) {
-      worst = {heldout.t_s[covered[begin]], heldout.t_s[covered[begin + length - 1]], rms};
-    }
+    const std::vector<std::size_t> window(
+        within.begin() + static_cast<std::ptrdiff_t>(begin),
+        within.begin() + static_cast<std::ptrdiff_t>(begin + length));
+    const double rms = rms_at(error, window);
+    if (rms > worst.rms_v) worst = {heldout.t_s[window.front()], heldout.t_s[window.back()], rms};
   }
   return worst;
+}
+
+// Why an "explained" holds where the calibration reaches and what is left beyond it.
+std::string beyond_reach_reason(const RecordingSeries& heldout, const CalibrationReach& reach,
+                                const Selection& selection) {
+  std::vector<std::size_t> beyond;
+  std::size_t next_within = 0;
+  for (std::size_t i = 0; i < heldout.size(); ++i) {
+    if (next_within < reach.heldout_within.size() && reach.heldout_within[next_within] == i) {
+      ++next_within;
+    } else {
+      beyond.push_back(i);
+    }
+  }
+  const auto [t_lo, t_hi] = std::minmax_element(heldout.temp_c.begin(), heldout.temp_c.end());
+  const auto [x_lo, x_hi] =
+      std::minmax_element(heldout.clearance_mm.begin(), heldout.clearance_mm.end());
+  return fmt::format(
+      "what is left is within {:.0f} % of the noise on the {} held-out samples within the "
+      "calibration's ranges ({:.1f}-{:.1f} C, {:.2f}-{:.2f} mm): {:.4g} V; the other {} lie "
+      "beyond them (the held-out part spans {:.1f}-{:.1f} C, {:.2f}-{:.2f} mm), where the fitted "
+      "curves are continued past what they were fitted on and leave {:.4g} V: a calibration "
+      "session that reaches there would tell their shape",
+      100.0 * (kExplainedRatio - 1.0), reach.heldout_within.size(), reach.temp_lo_c,
+      reach.temp_hi_c, reach.clearance_lo_mm, reach.clearance_hi_mm,
+      rms_at(selection.current_error, reach.heldout_within), beyond.size(), *t_lo, *t_hi, *x_lo,
+      *x_hi, rms_at(selection.current_error, beyond));
 }
 
 // The status ("explained", "partly explained", "unexplained" or "none") and the reasons for it.
@@ -1562,13 +1611,26 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
                   [](const EffectFinding& f) { return f.noise_type && f.name != "mains_pickup"; });
   const bool gap_exists = diagnosis.heldout_rms_before > kGapRatio * sigma ||
                           !diagnosis.stage.empty() || has_noise_type || !findings.empty();
-  const HeldoutWindow worst =
-      worst_window(parts.calibration, parts.heldout, selection.current_error);
-  result.detail.how_far.worst_window = worst;
+  const CalibrationReach reach = calibration_reach(parts.calibration, parts.heldout);
+  const HeldoutWindow worst = worst_window(parts.heldout, reach, selection.current_error);
+  HowFar& how = result.detail.how_far;
+  how.worst_window = worst;
+  how.within_calibration_samples = reach.heldout_within.size();
+  how.within_calibration_rms_before = rms_at(selection.raw_ho_gap, reach.heldout_within);
+  how.within_calibration_rms_after = rms_at(selection.current_error, reach.heldout_within);
   const bool left_within_noise_overall =
       diagnosis.heldout_rms_after <= kExplainedRatio * verdict_noise;
-  const bool left_within_noise =
-      left_within_noise_overall && worst.rms_v <= kLocalExplainedRatio * verdict_noise;
+  const bool left_within_noise_locally = worst.rms_v <= kLocalExplainedRatio * verdict_noise;
+  const bool left_within_noise = left_within_noise_overall && left_within_noise_locally;
+  // Explained where the calibration reaches: most held-out samples lie within its ranges, the gap
+  // stands above the noise there, and what is left there is within the noise, overall and in every
+  // window; what is left beyond is a curve continued past what it was fitted on.
+  const bool explained_within_reach =
+      !left_within_noise_overall && left_within_noise_locally &&
+      static_cast<double>(reach.heldout_within.size()) >=
+          kLeastShareWithinReach * static_cast<double>(selection.current_error.size()) &&
+      how.within_calibration_rms_before > kGapRatio * verdict_noise &&
+      how.within_calibration_rms_after <= kExplainedRatio * verdict_noise;
   auto& reasons = result.detail.reasons;
   reasons.push_back(fmt::format(
       "held-out gap RMS {:.4g} V before, {:.4g} V after the selected effects; white noise {:.4g} V",
@@ -1587,6 +1649,10 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
     diagnosis.effects = findings;
     reasons.push_back(fmt::format("what is left is within {:.0f} % of the noise",
                                   100.0 * (kExplainedRatio - 1.0)));
+  } else if (!findings.empty() && explained_within_reach) {
+    diagnosis.status = "explained";
+    diagnosis.effects = findings;
+    reasons.push_back(beyond_reach_reason(parts.heldout, reach, selection));
   } else if (const double share = above_noise_share_taken(diagnosis, verdict_noise);
              !findings.empty() && share >= kPartlyExplainedShare) {
     diagnosis.status = "partly explained";

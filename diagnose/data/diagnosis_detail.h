@@ -59,6 +59,10 @@ struct HowFar {
   // The 64th of the held-out samples within the calibration's clearance and temperature ranges
   // where the most is left (diagnosis.cpp, worst_window).
   HeldoutWindow worst_window;
+  // The held-out samples within the calibration's clearance and temperature ranges, and the gap's
+  // RMS on them before and after the selected effects, V.
+  std::size_t within_calibration_samples = 0;
+  double within_calibration_rms_before = 0, within_calibration_rms_after = 0;
 };
 
 struct DiagnosisDetail {

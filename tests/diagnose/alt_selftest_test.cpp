@@ -194,6 +194,19 @@ TEST(AltSelftest, EveryPickLeftIsNeededByTheFinalFit) {
   EXPECT_DOUBLE_EQ(effects.back().heldout_rms_after, now);
 }
 
+// Development pair 101/24: a range compression, weak where the calibration session went (up to
+// 57 C, 8.8 mm), strong where the held-out one went on to (75 C, 9.3 mm). Within the calibration's
+// ranges the fitted compression leaves the noise; beyond them its continued curve leaves 5 times
+// the noise. The class is named, as explained where the calibration reaches.
+TEST(AltSelftest, AGapExplainedWhereTheCalibrationReachesIsExplained) {
+  const AltPairResult r = development_pair(101, 24);
+  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_FALSE(r.diagnosis.effects.empty());
+  EXPECT_EQ(r.diagnosis.effects[0].name, "range_compression");
+  EXPECT_TRUE(r.score.top_correct);
+  EXPECT_GT(r.diagnosis.heldout_rms_after, 2.0 * r.diagnosis.noise_std_v);
+}
+
 TEST(AltSelftestCommand, AnUnknownRealityIsABadArgument) {
   const testing::FlangeOutcome o =
       testing::run_flange_captured({"diagnose", "--selftest", "--reality", "mars"});
