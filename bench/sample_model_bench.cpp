@@ -66,8 +66,9 @@ BenchSet load_set(const std::string& name) {
   return set;
 }
 
-void sample_model_block(benchmark::State& state, const BenchSet& set) {
-  flange::model::IirSampleModel model(set.config);
+void sample_model_block(benchmark::State& state, const BenchSet& set,
+                        flange::model::SampleKernel kernel = flange::model::SampleKernel::kAuto) {
+  flange::model::IirSampleModel model(set.config, kernel);
   std::vector<flange::model::SampleResult> out(set.words.size());
   for (auto _ : state) {
     model.reset();
@@ -76,6 +77,14 @@ void sample_model_block(benchmark::State& state, const BenchSet& set) {
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(set.words.size()));
+}
+
+// The two vector kernels, each forced (kAuto takes one of them by the CPU's maker).
+void split_vector_block(benchmark::State& state, const BenchSet& set) {
+  sample_model_block(state, set, flange::model::SampleKernel::kVector);
+}
+void merged_vector_block(benchmark::State& state, const BenchSet& set) {
+  sample_model_block(state, set, flange::model::SampleKernel::kVectorMerged);
 }
 
 void sample_model_step(benchmark::State& state, const BenchSet& set) {
@@ -185,7 +194,14 @@ int main(int argc, char** argv) {
         fn(s, set);
       })->Unit(benchmark::kMillisecond);
     };
-    add("SampleModel", sample_model_block);
+    add("SampleModel", [](benchmark::State& s, const BenchSet& b) { sample_model_block(s, b); });
+    using flange::model::SampleKernel;
+    if (flange::model::IirSampleModel::kernel_available(set.config, SampleKernel::kVector)) {
+      add("SampleModelVector", split_vector_block);
+    }
+    if (flange::model::IirSampleModel::kernel_available(set.config, SampleKernel::kVectorMerged)) {
+      add("SampleModelVectorMerged", merged_vector_block);
+    }
     add("SampleModelStep", sample_model_step);
     add("IirCore", cycle_model_step);
     add("ReferenceFilter", reference_block);
@@ -199,6 +215,13 @@ int main(int argc, char** argv) {
       "IirSampleModel::filter on the block, step = IirSampleModel::step per sample; reference = "
       "ReferenceFilter::process on the block, ref step = ReferenceFilter::step per sample\n",
       kSamples);
+  for (const BenchSet& set : sets) {
+    std::cout << fmt::format(
+        "{}: kAuto takes the {} kernel; vector (split sums) {}, vector-merged {}\n", set.name,
+        to_string(flange::model::IirSampleModel(set.config).kernel()),
+        rate_text(reporter.rate("SampleModelVector/" + set.name)),
+        rate_text(reporter.rate("SampleModelVectorMerged/" + set.name)));
+  }
   std::cout << fmt::format("{:<16} {:>11} {:>11} {:>11} {:>11} {:>11} {:>12} {:>11}\n", "set",
                            "sample", "step", "IirCore", "reference", "ref step", "sample/core",
                            "sample/ref");

@@ -100,6 +100,8 @@ const char* to_string(SampleKernel kernel) {
       return "merged";
     case SampleKernel::kVector:
       return "vector";
+    case SampleKernel::kVectorMerged:
+      return "vector-merged";
   }
   return "?";
 }
@@ -141,7 +143,11 @@ bool IirSampleModel::kernel_available(const CoreConfig& config, SampleKernel ker
     case SampleKernel::kMerged:
       return !can_wrap(config) && merged_fits_int64(config);
     case SampleKernel::kVector:
-      return vector::supported(config) && !can_wrap(config) && fits_52_bits(config);
+      return vector::supported(config, vector::Sums::kSplit) && !can_wrap(config) &&
+             fits_52_bits(config);
+    case SampleKernel::kVectorMerged:
+      return vector::supported(config, vector::Sums::kMerged) && !can_wrap(config) &&
+             merged_fits_int64(config);
   }
   return false;
 }
@@ -160,17 +166,26 @@ IirSampleModel::IirSampleModel(CoreConfig config, SampleKernel kernel)
   ext_min_ = std::int64_t{sample_min_} * (std::int64_t{1} << config_.feedback_shift);
   can_wrap_ = can_wrap(config_);
   if (kernel == SampleKernel::kAuto) {
-    if (kernel_available(config_, SampleKernel::kVector)) {
-      kernel = SampleKernel::kVector;
+    const SampleKernel first_vector =
+        vector::merged_preferred() ? SampleKernel::kVectorMerged : SampleKernel::kVector;
+    const SampleKernel second_vector =
+        first_vector == SampleKernel::kVector ? SampleKernel::kVectorMerged : SampleKernel::kVector;
+    if (kernel_available(config_, first_vector)) {
+      kernel = first_vector;
+    } else if (kernel_available(config_, second_vector)) {
+      kernel = second_vector;
     } else if (kernel_available(config_, SampleKernel::kMerged)) {
       kernel = SampleKernel::kMerged;
     } else {
       kernel = SampleKernel::kTwoPhase;
     }
   } else if (!kernel_available(config_, kernel)) {
-    throw std::invalid_argument(fmt::format(
-        "IirSampleModel: the {} kernel cannot compute {} exactly{}", to_string(kernel),
-        config_.name, kernel == SampleKernel::kVector ? " (or this CPU lacks AVX-512)" : ""));
+    throw std::invalid_argument(
+        fmt::format("IirSampleModel: the {} kernel cannot compute {} exactly{}", to_string(kernel),
+                    config_.name,
+                    kernel == SampleKernel::kVector || kernel == SampleKernel::kVectorMerged
+                        ? " (or this CPU lacks AVX-512)"
+                        : ""));
   }
   kernel_ = kernel;
 
@@ -217,8 +232,9 @@ IirSampleModel::IirSampleModel(CoreConfig config, SampleKernel kernel)
                   : m == 1 ? pick.template operator()<1>()
                            : &IirSampleModel::run_merged<0, 0>;
   }
-  if (kernel_ == SampleKernel::kVector) {
-    plan_ = std::make_shared<const vector::Plan>(vector::make_plan(config_));
+  if (kernel_ == SampleKernel::kVector || kernel_ == SampleKernel::kVectorMerged) {
+    plan_ = std::make_shared<const vector::Plan>(vector::make_plan(
+        config_, kernel_ == SampleKernel::kVector ? vector::Sums::kSplit : vector::Sums::kMerged));
   }
   history_.assign(static_cast<std::size_t>((2 * config_.num_sections + 1) * m), 0);
 }
@@ -352,6 +368,7 @@ void IirSampleModel::run(const std::int32_t* in, SampleResult* out, std::size_t 
   constexpr std::size_t kVectorMinBlock = 64;
   switch (kernel_) {
     case SampleKernel::kVector:
+    case SampleKernel::kVectorMerged:
       if (n < kVectorMinBlock && merged_run_ != nullptr) {
         (this->*merged_run_)(in, out, n);
       } else {

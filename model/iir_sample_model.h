@@ -17,10 +17,13 @@
 //   floor(X / 2^L) + H merges the phases into one sum with c = H 2^L + W (and E 2^L for the
 //   error terms): acc = (2^(F-1+L) + sum c_b u + sum c_a w + sum E 2^L e) >>> L. Used when every
 //   such sum also fits int64 (|c| < 2^34 and |u| < 2^24 for the generator's biquads).
-// - kVector (x86-64 with AVX-512F, VL and IFMA only, chosen at run time): kMerged's
-//   preconditions, every operand and ROM word within 32 bits and at most 8 sections; the sections
-//   run side by side in SIMD lanes, section k on sample n - 2k (model/iir_sample_vector.h), the
-//   older terms by exact 52-bit multiply-adds and the newest by 32 x 32 -> 64-bit products.
+// - kVector (x86-64 with AVX-512F, VL and IFMA only, chosen at run time): no wrap, every signal
+//   within 31 bits and at most 8 sections of order 1 or 2; the sections run side by side in SIMD
+//   lanes, section k on sample n - 2k (model/iir_sample_vector.h), the two phases' sums by exact
+//   52-bit multiply-adds of biased, non-negative operands.
+// - kVectorMerged (AVX-512F, VL and DQ): the same lanes with kMerged's one sum per section, one
+//   64-bit product per term. kAuto takes it before kVector on AMD, whose cores multiply 64-bit
+//   words in one short micro-op (vector::merged_preferred).
 // tests/model/iir_sample_model_test.cpp proves every kernel equal to IirCore on every checked-in
 // set, on random legal configurations and on an accumulator that wraps.
 #pragma once
@@ -47,7 +50,7 @@ struct SampleResult {
 };
 
 // How IirSampleModel computes (see the header comment); kAuto takes the fastest that applies.
-enum class SampleKernel { kAuto, kTwoPhase, kMerged, kVector };
+enum class SampleKernel { kAuto, kTwoPhase, kMerged, kVector, kVectorMerged };
 const char* to_string(SampleKernel kernel);
 
 class IirSampleModel {

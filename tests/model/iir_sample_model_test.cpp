@@ -22,13 +22,14 @@
 
 #include "filter_json.h"
 #include "iir_core.h"
+#include "iir_sample_vector.h"
 #include "sample_model_configs.h"
 
 namespace flange::model {
 namespace {
 
 constexpr SampleKernel kKernels[] = {SampleKernel::kTwoPhase, SampleKernel::kMerged,
-                                     SampleKernel::kVector};
+                                     SampleKernel::kVector, SampleKernel::kVectorMerged};
 
 std::vector<SampleKernel> available_kernels(const CoreConfig& config) {
   std::vector<SampleKernel> kernels;
@@ -232,6 +233,7 @@ TEST(IirSampleModel, AccumulatorWrapsLikeIirCore) {
   EXPECT_EQ(fast.kernel(), SampleKernel::kTwoPhase);
   EXPECT_FALSE(IirSampleModel::kernel_available(wrapping_config(), SampleKernel::kMerged));
   EXPECT_FALSE(IirSampleModel::kernel_available(wrapping_config(), SampleKernel::kVector));
+  EXPECT_FALSE(IirSampleModel::kernel_available(wrapping_config(), SampleKernel::kVectorMerged));
   EXPECT_THROW(IirSampleModel(wrapping_config(), SampleKernel::kMerged), std::invalid_argument);
   const SampleResult first = fast.step(127);
   EXPECT_EQ(first, (SampleResult{127, true}));
@@ -352,7 +354,8 @@ TEST(IirSampleModel, MatchesIirCoreOnRandomConfigurations) {
   std::cout << "random configurations: " << can_wrap << " can wrap, " << wrapped << " wrapped, "
             << saturating << " saturating; runs: two-phase " << runs[SampleKernel::kTwoPhase]
             << ", merged " << runs[SampleKernel::kMerged] << ", vector "
-            << runs[SampleKernel::kVector] << "\n";
+            << runs[SampleKernel::kVector] << ", vector-merged "
+            << runs[SampleKernel::kVectorMerged] << "\n";
   EXPECT_EQ(runs[SampleKernel::kTwoPhase], kTrials);
   EXPECT_GT(wrapped, 30) << "too few configurations whose sum wraps";
   EXPECT_GT(saturating, 50) << "too few configurations that saturate";
@@ -360,6 +363,11 @@ TEST(IirSampleModel, MatchesIirCoreOnRandomConfigurations) {
   if (IirSampleModel::kernel_available(testing::hand_made_configs().front().config,
                                        SampleKernel::kVector)) {
     EXPECT_GT(runs[SampleKernel::kVector], 60) << "the vector kernel is barely exercised";
+  }
+  if (IirSampleModel::kernel_available(testing::hand_made_configs().front().config,
+                                       SampleKernel::kVectorMerged)) {
+    EXPECT_GT(runs[SampleKernel::kVectorMerged], 60)
+        << "the vector-merged kernel is barely exercised";
   }
 }
 
@@ -417,13 +425,23 @@ TEST(IirSampleModel, BlocksOfAnyLengthMatchIirCore) {
 TEST(IirSampleModel, AutoTakesTheFastestExactKernel) {
   for (const testing::NamedConfig& named : testing::hand_made_configs()) {
     const IirSampleModel model(named.config);
-    const SampleKernel want = IirSampleModel::kernel_available(named.config, SampleKernel::kVector)
-                                  ? SampleKernel::kVector
-                                  : SampleKernel::kMerged;
+    // On AMD the merged sums' 64-bit products are the faster vector kernel, on Intel the split
+    // sums' multiply-adds (model/iir_sample_vector.h).
+    std::vector<SampleKernel> order = {SampleKernel::kVector, SampleKernel::kVectorMerged};
+    if (vector::merged_preferred()) std::swap(order[0], order[1]);
+    order.push_back(SampleKernel::kMerged);
+    SampleKernel want = SampleKernel::kTwoPhase;
+    for (const SampleKernel k : order) {
+      if (IirSampleModel::kernel_available(named.config, k)) {
+        want = k;
+        break;
+      }
+    }
     EXPECT_EQ(model.kernel(), want) << named.name;
     EXPECT_FALSE(model.accumulator_can_wrap()) << named.name;
   }
   EXPECT_STREQ(to_string(SampleKernel::kVector), "vector");
+  EXPECT_STREQ(to_string(SampleKernel::kVectorMerged), "vector-merged");
 }
 
 TEST(IirSampleModel, RejectsIllegalInputAndKeepsItsState) {
