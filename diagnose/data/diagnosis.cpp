@@ -10,6 +10,7 @@
 #include <numeric>
 #include <optional>
 #include <random>
+#include <span>
 #include <string>
 
 #include "adc_grid.h"
@@ -1517,11 +1518,12 @@ std::optional<EffectFinding> nearest_effect(const Selection& selection, double v
   return nearest;
 }
 
-// The share of the held-out gap's RMS above `noise` that the selected effects take.
-double above_noise_share_taken(const Diagnosis& diagnosis, double noise) {
-  const double before = rms_above_noise(diagnosis.heldout_rms_before, noise);
+// The share of a gap's RMS above `noise` that the selected effects take: from `rms_before` to
+// `rms_after`.
+double above_noise_share_taken(double rms_before, double rms_after, double noise) {
+  const double before = rms_above_noise(rms_before, noise);
   if (before <= 0.0) return 0.0;
-  return 1.0 - rms_above_noise(diagnosis.heldout_rms_after, noise) / before;
+  return 1.0 - rms_above_noise(rms_after, noise) / before;
 }
 
 // The held-out samples whose clearance and temperature lie within the calibration part's ranges,
@@ -1550,7 +1552,7 @@ CalibrationReach calibration_reach(const RecordingSeries& calibration,
   return reach;
 }
 
-double rms_at(const std::vector<double>& values, const std::vector<std::size_t>& at) {
+double rms_at(const std::vector<double>& values, std::span<const std::size_t> at) {
   double sum_sq = 0.0;
   for (std::size_t i : at) sum_sq += values[i] * values[i];
   return at.empty() ? 0.0 : std::sqrt(sum_sq / static_cast<double>(at.size()));
@@ -1568,27 +1570,25 @@ HeldoutWindow worst_window(const RecordingSeries& heldout, const CalibrationReac
   const std::size_t length = std::max(n / kLocalWindows, kLeastLocalWindowSamples);
   HeldoutWindow worst;
   for (std::size_t begin = 0; begin + length <= n; begin += length) {
-    const std::vector<std::size_t> window(
-        within.begin() + static_cast<std::ptrdiff_t>(begin),
-        within.begin() + static_cast<std::ptrdiff_t>(begin + length));
+    const auto window = std::span(within).subspan(begin, length);
     const double rms = rms_at(error, window);
     if (rms > worst.rms_v) worst = {heldout.t_s[window.front()], heldout.t_s[window.back()], rms};
   }
   return worst;
 }
 
-// Why an "explained" holds where the calibration reaches and what is left beyond it.
-// The share of the gap's RMS above `noise` on the samples `at` that the selected effects take.
-double above_noise_share_taken_at(const Selection& selection, const std::vector<std::size_t>& at,
+// The share of the gap's RMS above `noise` on the held-out samples `at` that the selected effects
+// take.
+double above_noise_share_taken_at(const Selection& selection, std::span<const std::size_t> at,
                                   double noise) {
-  const double before = rms_above_noise(rms_at(selection.raw_ho_gap, at), noise);
-  if (before <= 0.0) return 0.0;
-  return 1.0 - rms_above_noise(rms_at(selection.current_error, at), noise) / before;
+  return above_noise_share_taken(rms_at(selection.raw_ho_gap, at),
+                                 rms_at(selection.current_error, at), noise);
 }
 
-// Why an "explained" holds where the calibration reaches and what is left beyond it.
+// Why an "explained" holds where the calibration reaches and what is left beyond it, where the
+// selected effects take `beyond_share` of the gap above the noise.
 std::string beyond_reach_reason(const RecordingSeries& heldout, const CalibrationReach& reach,
-                                const Selection& selection, double verdict_noise) {
+                                const Selection& selection, double beyond_share) {
   const auto [t_lo, t_hi] = std::minmax_element(heldout.temp_c.begin(), heldout.temp_c.end());
   const auto [x_lo, x_hi] =
       std::minmax_element(heldout.clearance_mm.begin(), heldout.clearance_mm.end());
@@ -1602,8 +1602,7 @@ std::string beyond_reach_reason(const RecordingSeries& heldout, const Calibratio
       100.0 * (kExplainedRatio - 1.0), reach.heldout_within.size(), reach.temp_lo_c,
       reach.temp_hi_c, reach.clearance_lo_mm, reach.clearance_hi_mm,
       rms_at(selection.current_error, reach.heldout_within), reach.heldout_beyond.size(), *t_lo,
-      *t_hi, *x_lo, *x_hi,
-      100.0 * above_noise_share_taken_at(selection, reach.heldout_beyond, verdict_noise),
+      *t_hi, *x_lo, *x_hi, 100.0 * beyond_share,
       rms_at(selection.current_error, reach.heldout_beyond));
 }
 
@@ -1635,14 +1634,15 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
   // Explained where the calibration reaches: most held-out samples lie within its ranges, the gap
   // stands above the noise there, and what is left there is within the noise, overall and in every
   // window; what is left beyond is a curve continued past what it was fitted on.
+  const double beyond_share =
+      above_noise_share_taken_at(selection, reach.heldout_beyond, verdict_noise);
   const bool explained_within_reach =
       !left_within_noise_overall && left_within_noise_locally &&
       static_cast<double>(reach.heldout_within.size()) >=
           kLeastShareWithinReach * static_cast<double>(selection.current_error.size()) &&
       how.within_calibration_rms_before > kGapRatio * verdict_noise &&
       how.within_calibration_rms_after <= kExplainedRatio * verdict_noise &&
-      above_noise_share_taken_at(selection, reach.heldout_beyond, verdict_noise) >=
-          kLeastShareTakenBeyondReach;
+      beyond_share >= kLeastShareTakenBeyondReach;
   auto& reasons = result.detail.reasons;
   reasons.push_back(fmt::format(
       "held-out gap RMS {:.4g} V before, {:.4g} V after the selected effects; white noise {:.4g} V",
@@ -1664,8 +1664,9 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
   } else if (!findings.empty() && explained_within_reach) {
     diagnosis.status = "explained";
     diagnosis.effects = findings;
-    reasons.push_back(beyond_reach_reason(parts.heldout, reach, selection, verdict_noise));
-  } else if (const double share = above_noise_share_taken(diagnosis, verdict_noise);
+    reasons.push_back(beyond_reach_reason(parts.heldout, reach, selection, beyond_share));
+  } else if (const double share = above_noise_share_taken(
+                 diagnosis.heldout_rms_before, diagnosis.heldout_rms_after, verdict_noise);
              !findings.empty() && share >= kPartlyExplainedShare) {
     diagnosis.status = "partly explained";
     diagnosis.effects = findings;
