@@ -1259,18 +1259,22 @@ std::vector<double> as_vector(const Eigen::VectorXd& v) {
 // The held-out session's age when its clock restarts at 0 and no start times say it: the shift,
 // from 30 days before the calibration session's start to 30 days after its end, at which the
 // ageing curve best fits the held-out gap (one value fitted there, charged like the mains'
-// windows). Without it the held-out part is replayed at the calibration part's ages, which puts
-// a step or a settling seen in the calibration session back into the held-out one.
+// windows). One sensor records one session at a time, so the held-out session lies wholly after
+// the calibration session or wholly before it: a shift that overlaps them would replay the
+// calibration session's own ages, and a curve of age could then follow anything that happens at
+// the same time into each session (the twin's seed 8, case 20: a gain step at half of each
+// session, matched by a wavy "ageing" curve with the held-out session placed 75 s before the
+// calibration one).
 void place_heldout_age(const Family& shape, const Eigen::VectorXd& beta,
                        const RecordingSeries& calibration, const Part& heldout,
                        const std::vector<double>& ho_gap_v, FreeShapeFit& fit) {
   const double session_s = calibration.t_s.back() - calibration.t_s.front();
-  std::vector<double> shifts = {0.0};
+  const double heldout_s = heldout.series.t_s.back() - heldout.series.t_s.front();
+  std::vector<double> shifts;
   for (double after = 60.0; after <= 30.0 * kSecondsPerDay; after *= 1.25) {
     shifts.push_back(session_s + after);
-    shifts.push_back(-after);
+    shifts.push_back(-heldout_s - after);
   }
-  for (int k = 1; k < 8; ++k) shifts.push_back(session_s * k / 8.0);
   // Searched on the held-out rows a parameter search runs on (TwinReplay::search_replay), then
   // evaluated on every row.
   const TwinReplay& rows = heldout.replay.search_replay();
@@ -1284,7 +1288,7 @@ void place_heldout_age(const Family& shape, const Eigen::VectorXd& beta,
     }
     return sse;
   };
-  double best = sse_at(0.0), best_shift = 0.0;
+  double best = std::numeric_limits<double>::infinity(), best_shift = shifts.front();
   for (const double shift : shifts) {
     const double sse = sse_at(shift);
     if (sse < best) {
@@ -1292,10 +1296,8 @@ void place_heldout_age(const Family& shape, const Eigen::VectorXd& beta,
       best_shift = shift;
     }
   }
-  if (best_shift != 0.0) {
-    fit.heldout_voltage_v =
-        as_vector(shape.columns(Part{heldout.series, heldout.replay, best_shift}) * beta);
-  }
+  fit.heldout_voltage_v =
+      as_vector(shape.columns(Part{heldout.series, heldout.replay, best_shift}) * beta);
   fit.heldout_values = 1;
   fit.params["heldout_start_after_calibration_start_days"] = best_shift / kSecondsPerDay;
   fit.description += fmt::format(

@@ -144,6 +144,26 @@ TEST(DiagnoseSelftest, AGainStepThatATemperatureCurveTakesIsNotClaimed) {
       << r.diagnosis.nearest->evidence;
 }
 
+// A -4.1 % gain step at 0.51 of each session (the twin's seed 8, case 20), whose clocks restart at
+// 0 with no start times: an ageing curve with the held-out session placed 75 s before the
+// calibration one (overlapping it) followed the step into both, and with a temperature gain and a
+// thermal lag it was claimed. The held-out session may only lie wholly before or after the
+// calibration session; then no age curve carries the step across, and nothing is claimed.
+TEST(DiagnoseSelftest, AStepAtTheSameTimeInBothSessionsIsNotTakenForAgeing) {
+  SelftestOptions options;
+  options.seed = 8;
+  options.only_case = 20;
+  const std::vector<SelftestCaseResult> results = run_selftest(options);
+  ASSERT_EQ(results.size(), 1u);
+  const SelftestCaseResult& r = results.front();
+  ASSERT_EQ(r.spec.kind, SelftestKind::kOutside);
+  ASSERT_EQ(r.spec.outside.name, "gain_step");
+  EXPECT_EQ(r.diagnosis.status, "unexplained");
+  EXPECT_TRUE(r.diagnosis.effects.empty());
+  ASSERT_TRUE(r.diagnosis.nearest);
+  EXPECT_EQ(r.diagnosis.nearest->name, "temp_gain_drift");
+}
+
 TEST(DiagnoseSelftestCommand, SmallBlindSetMeetsTheAims) {
   const auto dir = testing::fresh_test_dir("diagnose_selftest");
   std::ostringstream out, err;
