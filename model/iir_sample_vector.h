@@ -13,11 +13,13 @@
 // - Sums::kSplit (kVector, AVX-512F/VL/IFMA): the contract's two phases, lo (W words) and hi
 //   (H and E words), by 52-bit multiply-adds (vpmadd52luq), the older hi terms modulo 2^52 and
 //   sign-extended; acc = hi + (lo >>> L). Loop-carried: y -> W_a[1] w multiply-add -> >>> L ->
-//   add -> y, 7 cycles a step.
+//   add -> y, 7 cycles of latency a step.
 // - Sums::kMerged (kVectorMerged, AVX-512F/VL/DQ): kMerged's one sum with c = H 2^L + W and
 //   E 2^L, by 64-bit products (vpmullq); y_ext = sum >>> (L + F), r = (sum >>> L) mod 2^F.
-//   Half the products, and 6 cycles a step where vpmullq is one 3-cycle micro-op (AMD Zen 4 on);
-//   on Intel it is three of 15 cycles, so kAuto takes it only on AMD (merged_preferred).
+//   Half the products, and 6 cycles of latency a step where vpmullq is one 3-cycle micro-op (AMD
+//   Zen 4 on); on Intel it is three of 15 cycles, so kAuto takes it only on AMD
+//   (merged_preferred). Measured, a step takes about 11 cycles on an AMD host, the split sums'
+//   about 13 (docs/benchmarks_core.md, "Stop 27").
 // A chunk of steps first runs without the clip test, only tracking y_ext's range; if some y_ext
 // left
 // [-2^(D-1+s), 2^(D-1+s) - 1] the chunk is run again from its start with the test and the clips.
