@@ -122,19 +122,26 @@ TEST(DiagnoseSelftest, ScoringCountsTopAllSpuriousAndExcessShrink) {
   EXPECT_TRUE(summary.top_aim_met);
 }
 
+// The twin's self-test case `case_index` of `seed` on its own, which must be an outside case with a
+// gain step (the kind the next two tests are about); the test stops if it is not.
+void run_gain_step_case(int seed, int case_index, SelftestCaseResult& result) {
+  SelftestOptions options;
+  options.seed = static_cast<std::uint64_t>(seed);
+  options.only_case = case_index;
+  const std::vector<SelftestCaseResult> results = run_selftest(options);
+  ASSERT_EQ(results.size(), 1u);
+  result = results.front();
+  ASSERT_EQ(result.spec.kind, SelftestKind::kOutside);
+  ASSERT_EQ(result.spec.outside.name, "gain_step");
+}
+
 // A -4.7 % gain step at 0.66 of each session (the twin's seed 4, case 49): the sessions are below
 // 38 C almost only after it, so a temperature gain curve takes it and leaves 1.10 times the noise
 // over the held-out session, within what "explained" allows there. Around the step it leaves more
 // than twice the noise: no effect is claimed, and the temperature gain is named as the nearest.
 TEST(DiagnoseSelftest, AGainStepThatATemperatureCurveTakesIsNotClaimed) {
-  SelftestOptions options;
-  options.seed = 4;
-  options.only_case = 49;
-  const std::vector<SelftestCaseResult> results = run_selftest(options);
-  ASSERT_EQ(results.size(), 1u);
-  const SelftestCaseResult& r = results.front();
-  ASSERT_EQ(r.spec.kind, SelftestKind::kOutside);
-  ASSERT_EQ(r.spec.outside.name, "gain_step");
+  SelftestCaseResult r;
+  ASSERT_NO_FATAL_FAILURE(run_gain_step_case(4, 49, r));
   EXPECT_EQ(r.diagnosis.status, "unexplained");
   EXPECT_TRUE(r.diagnosis.effects.empty());
   EXPECT_LE(r.diagnosis.heldout_rms_after, 1.10 * r.diagnosis.noise_std_v);
@@ -150,14 +157,8 @@ TEST(DiagnoseSelftest, AGainStepThatATemperatureCurveTakesIsNotClaimed) {
 // thermal lag it was claimed. The held-out session may only lie wholly before or after the
 // calibration session; then no age curve carries the step across, and nothing is claimed.
 TEST(DiagnoseSelftest, AStepAtTheSameTimeInBothSessionsIsNotTakenForAgeing) {
-  SelftestOptions options;
-  options.seed = 8;
-  options.only_case = 20;
-  const std::vector<SelftestCaseResult> results = run_selftest(options);
-  ASSERT_EQ(results.size(), 1u);
-  const SelftestCaseResult& r = results.front();
-  ASSERT_EQ(r.spec.kind, SelftestKind::kOutside);
-  ASSERT_EQ(r.spec.outside.name, "gain_step");
+  SelftestCaseResult r;
+  ASSERT_NO_FATAL_FAILURE(run_gain_step_case(8, 20, r));
   EXPECT_EQ(r.diagnosis.status, "unexplained");
   EXPECT_TRUE(r.diagnosis.effects.empty());
   ASSERT_TRUE(r.diagnosis.nearest);
