@@ -88,6 +88,10 @@ bool merged_fits_int64(const CoreConfig& c) {
 // sections) with up to this many sections. Everything else runs the general merged kernel.
 constexpr int kMaxFixedSections = 8;
 
+bool is_vector(SampleKernel kernel) {
+  return kernel == SampleKernel::kVector || kernel == SampleKernel::kVectorMerged;
+}
+
 }  // namespace
 
 const char* to_string(SampleKernel kernel) {
@@ -182,10 +186,7 @@ IirSampleModel::IirSampleModel(CoreConfig config, SampleKernel kernel)
   } else if (!kernel_available(config_, kernel)) {
     throw std::invalid_argument(
         fmt::format("IirSampleModel: the {} kernel cannot compute {} exactly{}", to_string(kernel),
-                    config_.name,
-                    kernel == SampleKernel::kVector || kernel == SampleKernel::kVectorMerged
-                        ? " (or this CPU lacks AVX-512)"
-                        : ""));
+                    config_.name, is_vector(kernel) ? " (or this CPU lacks AVX-512)" : ""));
   }
   kernel_ = kernel;
 
@@ -232,7 +233,7 @@ IirSampleModel::IirSampleModel(CoreConfig config, SampleKernel kernel)
                   : m == 1 ? pick.template operator()<1>()
                            : &IirSampleModel::run_merged<0, 0>;
   }
-  if (kernel_ == SampleKernel::kVector || kernel_ == SampleKernel::kVectorMerged) {
+  if (is_vector(kernel_)) {
     plan_ = std::make_shared<const vector::Plan>(vector::make_plan(
         config_, kernel_ == SampleKernel::kVector ? vector::Sums::kSplit : vector::Sums::kMerged));
   }

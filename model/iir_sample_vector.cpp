@@ -223,7 +223,6 @@ struct Ymm {
   FLANGE_TARGET static void store_dword(std::uintptr_t at, DwordMask k, V v) {
     _mm256_mask_storeu_epi32(reinterpret_cast<void*>(at), k, v);
   }
-  FLANGE_TARGET static V max(V a, V b) { return _mm256_max_epi64(a, b); }
   FLANGE_TARGET static V sllv(V a, V n) { return _mm256_sllv_epi64(a, n); }
 };
 
@@ -272,7 +271,6 @@ struct Zmm {
   FLANGE_TARGET static void store_dword(std::uintptr_t at, DwordMask k, V v) {
     _mm512_mask_storeu_epi32(reinterpret_cast<void*>(at), k, v);
   }
-  FLANGE_TARGET static V max(V a, V b) { return _mm512_max_epi64(a, b); }
   FLANGE_TARGET static V sllv(V a, V n) { return _mm512_sllv_epi64(a, n); }
 };
 
@@ -479,21 +477,26 @@ void run_lanes(const Plan& p, std::int64_t* history, const std::int32_t* in, Sam
   // Merged sums: r is kept times 2^L, and lo's words take their hi words: c = H 2^L + W.
   const int r_shift = kMergedSums ? p.split : 0;
   alignas(64) std::int64_t buf[kLanes];
-  const auto word = [&](int kind, int hi_kind) {
+  const auto word = [&](int kind) {
+    for (int k = 0; k < kLanes; ++k) buf[k] = p.words[lane_word(p, kind, k)];
+    return T::load(buf);
+  };
+  // A lo word, or with merged sums kMerged's word c = H 2^L + W (its hi word is then unused).
+  const auto lo_word = [&](int lo_kind, int hi_kind) {
     for (int k = 0; k < kLanes; ++k) {
-      buf[k] = p.words[lane_word(p, kind, k)];
+      buf[k] = p.words[lane_word(p, lo_kind, k)];
       if (kMergedSums) buf[k] += p.words[lane_word(p, hi_kind, k)] * (std::int64_t{1} << p.split);
     }
     return T::load(buf);
   };
   for (int i = 0; i <= m; ++i) {
-    c.wb[i] = word(kind_lo_b(m, i), kind_hi_b(m, i));
-    c.hb[i] = word(kind_hi_b(m, i), kind_hi_b(m, i));
+    c.wb[i] = lo_word(kind_lo_b(m, i), kind_hi_b(m, i));
+    c.hb[i] = word(kind_hi_b(m, i));
   }
   c.wa[0] = c.ha[0] = c.ee[0] = T::set1(0);
   for (int j = 1; j <= m; ++j) {
-    c.wa[j] = word(kind_lo_a(m, j), kind_hi_a(m, j));
-    c.ha[j] = word(kind_hi_a(m, j), kind_hi_a(m, j));
+    c.wa[j] = lo_word(kind_lo_a(m, j), kind_hi_a(m, j));
+    c.ha[j] = word(kind_hi_a(m, j));
   }
   // Per lane: whether r is kept negated (E[1] < 0, so that |E[1]| r is a product of non-negative
   // operands), the error words to match, and lo's preload (the merged sum's too: the same value).
