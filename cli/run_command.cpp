@@ -83,8 +83,9 @@ CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options) {
   cmd->add_flag("--lenient", run.lenient,
                 "flag bad rows (the filter holds its last input) instead of stopping");
   cmd->add_option("--threads", run.threads,
-                  "1: read, filter and write on one thread; 2: read and check the recording on a "
-                  "second thread (the same output); 0: 2 for a recording over 1 MiB")
+                  "1: read, filter and write on one thread; 2: read the recording ahead and "
+                  "write the output CSV behind on threads of their own (the same output); 0: 2 "
+                  "for a recording over 1 MiB")
       ->check(CLI::Range(0, 2))
       ->default_val(0);
   host::ThresholdConfig& t = run.thresholds;

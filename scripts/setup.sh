@@ -8,7 +8,7 @@ PACKAGES=(
   cmake ninja-build g++ make pkg-config ccache
   verilator libsystemc-dev yosys
   libeigen3-dev libgtest-dev libgmock-dev googletest libbenchmark-dev
-  libcli11-dev nlohmann-json3-dev libfmt-dev
+  libcli11-dev nlohmann-json3-dev libfmt-dev libfast-float-dev
   gnuplot-nox
   clang libclang-rt-14-dev python3
 )

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "recording_columns.h"
 
+#include <fast_float/fast_float.h>
 #include <fmt/format.h>
 
-#include <charconv>
 #include <cmath>
 #include <utility>
 
@@ -29,7 +29,7 @@ bool parse_into(std::string_view field, double& out) {
   const char* begin = field.data();
   const char* end = begin + field.size();
   if (begin != end && *begin == '+') ++begin;  // from_chars does not take a leading '+'
-  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  const auto [ptr, ec] = fast_float::from_chars(begin, end, value);
   if (ec != std::errc() || ptr != end || !std::isfinite(value)) return false;
   out = value;
   return true;
@@ -143,7 +143,7 @@ bool RecordingColumns::read_plain_line(RecordingRow& row, std::string_view line,
     // from_chars neither skips blanks nor takes '+': such a field stops it at once. A field it
     // takes up to the comma (or the line's end) is what split_fields and parse_number would read.
     starts[i] = at;
-    const auto [ptr, ec] = std::from_chars(at, end, values[i]);
+    const auto [ptr, ec] = fast_float::from_chars(at, end, values[i]);
     if (ec != std::errc() || ptr == at || !std::isfinite(values[i])) return false;
     if (i < 3) {
       if (ptr == end || *ptr != ',') return false;

@@ -3,11 +3,8 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -22,9 +19,9 @@
 #include "calibration.h"
 #include "filter_engine.h"
 #include "filter_json.h"
-#include "fixed_decimals.h"
 #include "input_error.h"
 #include "recording_batch_reader.h"
+#include "run_output_csv.h"
 #include "sample_scaling.h"
 
 namespace flange::host {
@@ -79,62 +76,8 @@ int region_index(double clearance_mm, double temp_c) {
   return t * RunTrace::kClearanceBins + c;
 }
 
-// A row's flags, a bit each; the flags column lists them in this order, joined by '|'.
-enum RowFlag : unsigned {
-  kBadRow = 1u << 0,
-  kOutsideCalibration = 1u << 1,
-  kClipped = 1u << 2,
-  kSaturated = 1u << 3,
-};
-constexpr std::pair<RowFlag, std::string_view> kFlagNames[] = {
-    {kBadRow, "bad_row"},
-    {kOutsideCalibration, "outside_calibration"},
-    {kClipped, "clipped"},
-    {kSaturated, "saturated"},
-};
-constexpr std::size_t kMaxFlagsChars = [] {
-  std::size_t chars = 0;
-  for (const auto& flag : kFlagNames) chars += flag.second.size() + 1;  // a name and its '|'
-  return chars;
-}();
-constexpr std::size_t kMaxAlarmChars = 8;  // "critical", the longest alarm_name()
-// The longest output row: four numbers, the alarm, every flag, five commas and the newline.
-constexpr std::size_t kMaxRowChars = 4 * kMaxFixed6Chars + kMaxAlarmChars + kMaxFlagsChars + 6;
-
-char* append(char* at, std::string_view text) {
-  std::memcpy(at, text.data(), text.size());
-  return at + text.size();
-}
-
-// One output row at `at` (room for kMaxRowChars); a bad row has no raw clearance.
-char* format_row(char* at, double t, const double* raw, double filt, double flange,
-                 std::string_view alarm, unsigned flags) {
-  at = write_fixed6(at, t);
-  *at++ = ',';
-  if (raw != nullptr) at = write_fixed6(at, *raw);
-  *at++ = ',';
-  at = write_fixed6(at, filt);
-  *at++ = ',';
-  at = write_fixed6(at, flange);
-  *at++ = ',';
-  at = append(at, alarm);
-  *at++ = ',';
-  bool first = true;
-  for (const auto& [flag, name] : kFlagNames) {
-    if ((flags & flag) == 0) continue;
-    if (!first) *at++ = '|';
-    at = append(at, name);
-    first = false;
-  }
-  *at++ = '\n';
-  return at;
-}
-
 // Rows wait in a block for the engine; everything after the filter runs once it returns.
 constexpr std::size_t kBlock = 4096;
-// The output buffer: a block's rows at their usual length (about 50 characters), written once the
-// block is done or the buffer is full.
-constexpr std::size_t kOutputChunkBytes = std::size_t{1} << 18;
 
 // What the stages after the filter need of a row.
 struct PendingRow {
@@ -187,8 +130,9 @@ struct References {
 // that carries over from row to row and block to block.
 class Pipeline {
  public:
-  // Loads the calibration, the filter and the engine, and opens the output CSV.
-  Pipeline(const RunOptions& options, RunTrace* trace);
+  // Loads the calibration, the filter and the engine, and opens the output CSV, written on a
+  // thread of its own when `write_behind`.
+  Pipeline(const RunOptions& options, RunTrace* trace, bool write_behind);
 
   // Calibrates one row and queues it for the engine; a full block goes through at once.
   void add(const RecordingRow& row);
@@ -197,13 +141,11 @@ class Pipeline {
 
  private:
   void start_summary();
-  void open_output_csv();
   void flag_bad_row(const RecordingRow& row, PendingRow& p);
   void check_sample_rate(const RecordingRow& row);
   void convert_to_sample(const RecordingRow& row, PendingRow& p);
   void finish_block();
   void finish_row(PendingRow& p, const EngineOutput& output);
-  void flush_output();
   ThresholdOutput raise_alarms(double t_s, double filt_mm);
   References add_errors(const PendingRow& p, double filt_mm);
   void add_to_trace(const PendingRow& p, double filt_mm, const References& references);
@@ -217,9 +159,8 @@ class Pipeline {
   const SampleScaling scaling_;
 
   RunSummary summary_;
-  std::ofstream out_;
-  std::vector<char> out_buffer_;  // output rows not yet written: [0, out_size_)
-  std::size_t out_size_ = 0;
+  std::optional<RunOutputCsv> out_;
+  std::vector<RunOutputRow> out_rows_;  // the block's, handed to out_ once it is done
   // The last delay_samples + 1 references (NaN for none), a ring: for delay-aligned errors.
   std::vector<double> recent_reference_;
   std::size_t recent_next_ = 0;  // where the next reference goes
@@ -235,7 +176,7 @@ class Pipeline {
   std::vector<EngineOutput> outputs_;
 };
 
-Pipeline::Pipeline(const RunOptions& options, RunTrace* trace)
+Pipeline::Pipeline(const RunOptions& options, RunTrace* trace, bool write_behind)
     : options_(options),
       trace_(trace),
       calibration_(load_calibration(options.calibration)),
@@ -249,7 +190,7 @@ Pipeline::Pipeline(const RunOptions& options, RunTrace* trace)
     trace_->spectrum_raw.emplace(256, filter_.design.fs_hz);
     trace_->spectrum_filt.emplace(256, filter_.design.fs_hz);
   }
-  open_output_csv();
+  if (options_.out_csv) out_.emplace(*options_.out_csv, write_behind);
   if (summary_.delay_samples >= 0) {
     recent_reference_.assign(static_cast<std::size_t>(summary_.delay_samples) + 1,
                              std::numeric_limits<double>::quiet_NaN());
@@ -265,14 +206,6 @@ void Pipeline::start_summary() {
   summary_.delay_samples = static_cast<int>(std::lround(delay));
   summary_.group_delay_s = delay / filter_.design.fs_hz;
   summary_.settle_samples = settle_samples(filter_.design);
-}
-
-void Pipeline::open_output_csv() {
-  if (!options_.out_csv) return;
-  out_.open(*options_.out_csv, std::ios::binary);
-  if (!out_) throw std::runtime_error("cannot write " + *options_.out_csv);
-  out_ << "t_s,clearance_raw_mm,clearance_filt_mm,flange_mm,alarm,flags\n";
-  out_buffer_.resize(kOutputChunkBytes + kMaxRowChars);
 }
 
 void Pipeline::add(const RecordingRow& row) {
@@ -339,12 +272,7 @@ void Pipeline::finish_block() {
   for (std::size_t k = 0; k < pending_.size(); ++k) finish_row(pending_[k], outputs_[k]);
   pending_.clear();
   inputs_.clear();
-  if (out_.is_open()) flush_output();  // block by block, as far as the run got
-}
-
-void Pipeline::flush_output() {
-  out_.write(out_buffer_.data(), static_cast<std::streamsize>(out_size_));
-  out_size_ = 0;
+  if (out_) out_->write(out_rows_);  // block by block, as far as the run got
 }
 
 void Pipeline::finish_row(PendingRow& p, const EngineOutput& output) {
@@ -355,13 +283,7 @@ void Pipeline::finish_row(PendingRow& p, const EngineOutput& output) {
   const double filt_mm = scaling_.unit_to_mm(output.unit);
   const ThresholdOutput alarm = raise_alarms(p.t_s, filt_mm);
   if (p.flags != 0) ++summary_.rows_flagged;
-  if (out_.is_open()) {
-    char* const end =
-        format_row(out_buffer_.data() + out_size_, p.t_s, p.good() ? &p.raw_mm : nullptr, filt_mm,
-                   alarm.flange_mm, alarm_name(alarm.level), p.flags);
-    out_size_ = static_cast<std::size_t>(end - out_buffer_.data());
-    if (out_size_ >= kOutputChunkBytes) flush_output();
-  }
+  if (out_) out_rows_.push_back({p.t_s, p.raw_mm, filt_mm, alarm.flange_mm, alarm.level, p.flags});
   const References references = add_errors(p, filt_mm);
   summary_.filtered.add(filt_mm, references.settled);
   if (trace_ != nullptr && p.good()) add_to_trace(p, filt_mm, references);
@@ -429,13 +351,13 @@ RunSummary Pipeline::finish(std::size_t rows_read) {
   summary_.rows_read = rows_read;
   summary_.rtl_mismatches = engine_->mismatches();
   summary_.final_alarm = alarm_name(final_level_);
-  if (out_.is_open() && !out_) throw std::runtime_error("cannot write " + *options_.out_csv);
+  if (out_) out_->finish();
   return std::move(summary_);
 }
 
-// Whether a second thread should read the recording ahead: not for a small file, where starting
-// it costs more than it saves, nor on one core.
-bool read_ahead(const RunOptions& options) {
+// Whether threads of their own should read the recording ahead and write the output behind: not
+// for a small file, where starting them costs more than it saves, nor on one core.
+bool use_helper_threads(const RunOptions& options) {
   if (options.threads != 0) return options.threads >= 2;
   constexpr std::uintmax_t kSmallRecordingBytes = std::uintmax_t{1} << 20;
   std::error_code error;
@@ -446,8 +368,9 @@ bool read_ahead(const RunOptions& options) {
 }  // namespace
 
 RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
-  Pipeline pipeline(options, trace);
-  RecordingBatchReader reader(options.input, options.lenient, read_ahead(options));
+  const bool helpers = use_helper_threads(options);
+  Pipeline pipeline(options, trace, helpers);
+  RecordingBatchReader reader(options.input, options.lenient, helpers);
   for (std::span<const RecordingRow> rows; !(rows = reader.next_rows()).empty();) {
     for (const RecordingRow& row : rows) pipeline.add(row);
   }

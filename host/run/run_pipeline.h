@@ -27,8 +27,9 @@ struct RunOptions {
   std::optional<std::string> out_csv;
   std::optional<std::string> report_dir;
   bool lenient = false;  // flag bad rows instead of stopping at the first
-  // 1: everything on one thread; 2: the recording is read and checked on a second thread, ahead
-  // of the filter (same output); 0: 2 for a recording over 1 MiB on a machine with two cores.
+  // 1: everything on one thread; 2: the recording is read and checked on a thread of its own,
+  // ahead of the filter, and the output CSV written on another, behind it (same output); 0: 2 for
+  // a recording over 1 MiB on a machine with two cores.
   int threads = 0;
   ThresholdConfig thresholds;
 };

@@ -168,7 +168,8 @@ TEST_F(RunCommand, WithTwoThreadsTheFirstBadLineIsReportedAndTheOutputIsTheSame)
   // The recording is read ahead in batches of 256 KiB (about 6,000 rows here) on a second thread:
   // a bad line in the second batch is reported with its own line, and when an earlier line is bad
   // too, only by its time order (found in file order, after the second thread has seen the later
-  // one), the earlier wins. The output as far as the run got is the same on one thread.
+  // one), the earlier wins. The output as far as the run got is the same on one thread (the
+  // thread writing the output behind the filter writes every row queued before the error).
   std::string text = read(dir_ / "bench.csv");
   const auto corrupt = [&text](const std::map<int, std::string>& changes) {
     std::istringstream lines(text);
