@@ -389,14 +389,18 @@ std::vector<double> best_lattice_point(Objective& objective, std::size_t dims, i
   return start;
 }
 
-// Minimises `search` (a GapRms on the replay's search rows): a coarse lattice, then Nelder-Mead
-// from its best point; the point found is scored by `score` (the same on every row).
-EffectFit minimise_gap_rms(const GapRms& search, const GapRms& score) {
+// Minimises `search` (a GapRms on the replay's search rows): a coarse lattice on `lattice` (the
+// same on the lattice rows), then Nelder-Mead on `search` from its best point; the point found
+// is scored by `score` (the same on every row).
+EffectFit minimise_gap_rms(const GapRms& lattice, const GapRms& search, const GapRms& score) {
   const std::size_t dims = search.dims();
+  Objective coarse;
+  coarse.value = [&](const std::vector<double>& unit) { return lattice(unit); };
+  const int points = lattice_points(dims);
+  const std::vector<double> start = best_lattice_point(coarse, dims, points);
   Objective objective;
   objective.value = [&](const std::vector<double>& unit) { return search(unit); };
-  const int points = lattice_points(dims);
-  const std::vector<double> start = best_lattice_point(objective, dims, points);
+  objective.evaluations = coarse.evaluations;
   const std::vector<double> unit =
       nelder_mead(objective, start, 0.5 / (points - 1), 100 * static_cast<int>(dims));
   return {score.settings_at(unit), score(unit), objective.evaluations + 1};
@@ -428,13 +432,16 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
   }
   const TwinReplay& search_replay = replay.search_replay();
   const std::vector<double> search_v = replay.at_search_rows(real_v);
+  const TwinReplay& lattice_replay = search_replay.lattice_replay();
+  const std::vector<double> lattice_v = search_replay.at_lattice_rows(search_v);
   EffectFit best;
   best.rms_v = std::numeric_limits<double>::infinity();
   for (const double mains_hz : mains_choices) {
     sim::ParamValues fixed;
     if (mains) fixed["mains_hz"] = mains_hz;
     const EffectFit fit =
-        minimise_gap_rms(GapRms(name, params, fixed, search_replay, search_v, modelled),
+        minimise_gap_rms(GapRms(name, params, fixed, lattice_replay, lattice_v, modelled),
+                         GapRms(name, params, fixed, search_replay, search_v, modelled),
                          GapRms(name, params, fixed, replay, real_v, modelled));
     if (fit.rms_v < best.rms_v) {
       best.settings = fit.settings;

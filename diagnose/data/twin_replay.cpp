@@ -28,11 +28,42 @@ std::size_t row_in_block(std::size_t block, std::size_t stride) {
 
 }  // namespace
 
-struct TwinReplay::SearchSubset {
+struct TwinReplay::Subset {
   RecordingSeries series;
   std::vector<std::size_t> rows;
   std::unique_ptr<TwinReplay> replay;
 };
+
+std::shared_ptr<const TwinReplay::Subset> TwinReplay::make_subset(
+    const RecordingSeries& series, const sim::PolynomialSensorModel& nominal, double age_offset_s,
+    std::size_t rows) {
+  auto subset = std::make_shared<Subset>();
+  const std::size_t n = series.size();
+  const std::size_t stride = (n + rows - 1) / rows;
+  for (std::size_t block = 0; block * stride < n; ++block) {
+    const std::size_t i = std::min(n - 1, block * stride + row_in_block(block, stride));
+    subset->rows.push_back(i);
+    subset->series.t_s.push_back(series.t_s[i]);
+    subset->series.clearance_mm.push_back(series.clearance_mm[i]);
+    subset->series.temp_c.push_back(series.temp_c[i]);
+    subset->series.voltage_v.push_back(series.voltage_v[i]);
+  }
+  subset->series.path = series.path;
+  subset->series.start_utc_s = series.start_utc_s;
+  subset->replay = std::make_unique<TwinReplay>(subset->series, nominal, age_offset_s);
+  return subset;
+}
+
+namespace {
+
+std::vector<double> at_rows(const std::vector<double>& full, const std::vector<std::size_t>& rows) {
+  std::vector<double> picked;
+  picked.reserve(rows.size());
+  for (const std::size_t i : rows) picked.push_back(full[i]);
+  return picked;
+}
+
+}  // namespace
 
 double interpolate_at(const std::vector<double>& t, const std::vector<double>& values, double t_s) {
   if (t_s <= t.front()) return values.front();
@@ -99,31 +130,24 @@ TwinReplay::TwinReplay(const RecordingSeries& series, const sim::PolynomialSenso
     temperature_sensitivity_[i] = v.clip == sim::RailClip::kNone ? -dd_dt * sensitivity_[i] : 0.0;
   }
   if (n > kSearchRows) {
-    auto subset = std::make_shared<SearchSubset>();
-    const std::size_t stride = (n + kSearchRows - 1) / kSearchRows;
-    for (std::size_t block = 0; block * stride < n; ++block) {
-      const std::size_t i = std::min(n - 1, block * stride + row_in_block(block, stride));
-      subset->rows.push_back(i);
-      subset->series.t_s.push_back(series.t_s[i]);
-      subset->series.clearance_mm.push_back(series.clearance_mm[i]);
-      subset->series.temp_c.push_back(series.temp_c[i]);
-      subset->series.voltage_v.push_back(series.voltage_v[i]);
-    }
-    subset->series.path = series.path;
-    subset->series.start_utc_s = series.start_utc_s;
-    subset->replay = std::make_unique<TwinReplay>(subset->series, nominal, age_offset_s);
-    search_ = std::move(subset);
+    search_ = make_subset(series, nominal, age_offset_s, kSearchRows);
+  } else if (n > kLatticeRows) {
+    lattice_ = make_subset(series, nominal, age_offset_s, kLatticeRows);
   }
 }
 
 const TwinReplay& TwinReplay::search_replay() const { return search_ ? *search_->replay : *this; }
 
 std::vector<double> TwinReplay::at_search_rows(const std::vector<double>& full) const {
-  if (!search_) return full;
-  std::vector<double> picked;
-  picked.reserve(search_->rows.size());
-  for (const std::size_t i : search_->rows) picked.push_back(full[i]);
-  return picked;
+  return search_ ? at_rows(full, search_->rows) : full;
+}
+
+const TwinReplay& TwinReplay::lattice_replay() const {
+  return lattice_ ? *lattice_->replay : *this;
+}
+
+std::vector<double> TwinReplay::at_lattice_rows(const std::vector<double>& search) const {
+  return lattice_ ? at_rows(search, lattice_->rows) : search;
 }
 
 std::shared_ptr<const TwinReplay::CoilSamples> TwinReplay::coil_samples(

@@ -63,6 +63,14 @@ class TwinReplay {
   const TwinReplay& search_replay() const;
   // `full` (one value per row of this replay) at the rows of search_replay().
   std::vector<double> at_search_rows(const std::vector<double>& full) const;
+  // The rows of a search replay (one of at most kSearchRows rows) a search's coarse lattice runs
+  // on: up to kLatticeRows rows this one; beyond, one row from each block, as above. A lattice
+  // only finds the basin that the search's refinement, on every search row, then descends: on a
+  // quarter of the rows the lattice costs a quarter (it was a third of a 100 Hz diagnosis).
+  static constexpr std::size_t kLatticeRows = 10000;
+  const TwinReplay& lattice_replay() const;
+  // `search` (one value per row of this search replay) at the rows of lattice_replay().
+  std::vector<double> at_lattice_rows(const std::vector<double>& search) const;
   double age_offset_s() const { return age_offset_s_; }
   double v_min_v() const { return nominal_.v_min_v(); }
 
@@ -75,8 +83,13 @@ class TwinReplay {
   using CoilSamples = std::vector<sim::ChainSample>;
   std::shared_ptr<const CoilSamples> coil_samples(
       const std::vector<sim::EffectSettings>& coil_effects, std::uint64_t seed) const;
-  struct SearchSubset;
-  std::shared_ptr<const SearchSubset> search_;  // null while the series has <= kSearchRows
+  // One row from each block of consecutive rows, and the replay of those rows.
+  struct Subset;
+  static std::shared_ptr<const Subset> make_subset(const RecordingSeries& series,
+                                                   const sim::PolynomialSensorModel& nominal,
+                                                   double age_offset_s, std::size_t rows);
+  std::shared_ptr<const Subset> search_;   // null while the series has <= kSearchRows
+  std::shared_ptr<const Subset> lattice_;  // null unless kLatticeRows < rows <= kSearchRows
   struct CoilCache {
     struct Entry {
       std::vector<sim::EffectSettings> coil_effects;

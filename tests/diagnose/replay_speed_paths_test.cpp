@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The shortcuts that keep a 100 Hz diagnosis fast must not change what it computes: the kept
-// coil states give the replay the twin would give, the search rows of a long log are an
-// increasing subset whose fit still recovers the effect, and the mains fit's tone sum scores
-// the point it finds exactly as a full replay does.
+// coil states give the replay the twin would give, the search rows of a long log and a search's
+// lattice rows are increasing subsets whose fit still recovers the effect, and the mains fit's
+// tone sum scores the point it finds exactly as a full replay does.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -99,6 +99,40 @@ TEST(ReplaySpeedPaths, ALongLogIsSearchedOnAnIncreasingSubsetOfItsRows) {
   double spread = 0.0;
   for (const double v : picked_tone) spread = std::max(spread, std::abs(v - picked_tone[0]));
   EXPECT_GT(spread, 0.5);
+}
+
+TEST(ReplaySpeedPaths, ASearchsLatticeRunsOnAQuarterOfItsRows) {
+  const sim::PolynomialSensorModel nominal = sim::PolynomialSensorModel::thesis_eq_3_14();
+  const RecordingSeries tiny = sweep({}, 6.0, 1500.0, 0.0, 5);  // 9,001 rows: every row
+  const TwinReplay tiny_replay(tiny, nominal);
+  EXPECT_EQ(&tiny_replay.lattice_replay(), &tiny_replay);
+
+  const RecordingSeries log = sweep({}, 6.0, 6600.0, 0.0, 2);  // 39,601 rows
+  const TwinReplay replay(log, nominal);
+  const TwinReplay& lattice = replay.search_replay().lattice_replay();
+  ASSERT_NE(&lattice, &replay);
+  EXPECT_LE(lattice.size(), TwinReplay::kLatticeRows);
+  EXPECT_GT(lattice.size(), TwinReplay::kLatticeRows * 3 / 4);
+  const std::vector<double> picked_t = replay.at_lattice_rows(log.t_s);
+  ASSERT_EQ(picked_t, lattice.times());
+  for (std::size_t i = 1; i < picked_t.size(); ++i) ASSERT_GT(picked_t[i], picked_t[i - 1]);
+  EXPECT_GT(picked_t.back(), log.t_s.back() - 2.0);  // spread over the whole session
+
+  // A 100 Hz log's lattice rows are a subset of its search rows.
+  const RecordingSeries long_log = sweep({}, 100.0, 1800.0, 0.0, 3);
+  const TwinReplay long_replay(long_log, nominal);
+  const TwinReplay& search = long_replay.search_replay();
+  EXPECT_EQ(&long_replay.lattice_replay(), &long_replay);  // a full replay has none of its own
+  EXPECT_EQ(search.at_lattice_rows(long_replay.at_search_rows(long_log.t_s)),
+            search.lattice_replay().times());
+
+  // The fit found from a lattice on those rows: a lag recovered, scored on every row.
+  const std::vector<sim::EffectSettings> truth = {effect("thermal_lag", {{"tau_s", 450}})};
+  const RecordingSeries lagged = sweep(truth, 6.0, 6600.0, 0.05, 6);
+  const TwinReplay lagged_replay(lagged, nominal);
+  const EffectFit fit = fit_effect("thermal_lag", lagged_replay, lagged.voltage_v, {});
+  EXPECT_NEAR(fit.settings.params.at("tau_s"), 450.0, 9.0);
+  EXPECT_DOUBLE_EQ(fit.rms_v, rms_gap(lagged.voltage_v, lagged_replay.voltage({fit.settings})));
 }
 
 TEST(ReplaySpeedPaths, A100HzLagIsFittedOnTheSearchRowsAndScoredOnEveryRow) {
