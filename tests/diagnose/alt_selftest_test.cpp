@@ -207,6 +207,21 @@ TEST(AltSelftest, AGapExplainedWhereTheCalibrationReachesIsExplained) {
   EXPECT_GT(r.diagnosis.heldout_rms_after, 2.0 * r.diagnosis.noise_std_v);
 }
 
+// Pair 430/23 (fresh at stop 27, development since): a quadratic temperature gain whose held-out
+// session heats to 93 C, the calibration's to 70 C, so only 45 % of its samples lie within the
+// calibration's ranges. There what is left is 0.98 times the noise; beyond, the continued curve
+// takes 89 % of the gap above the noise (1.42 times the noise left over the session). The less
+// of the session the calibration reaches, the more the continued curve must carry, and this one
+// does: explained. (With half the samples asked to lie within, as before stop 28: unexplained.)
+TEST(AltSelftest, AGapExplainedWhereTheCalibrationReachesCountsWhenTheCurveCarriesBeyond) {
+  const AltPairResult r = development_pair(430, 23);
+  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_FALSE(r.diagnosis.effects.empty());
+  EXPECT_EQ(r.diagnosis.effects[0].name, "temp_gain_drift");
+  EXPECT_TRUE(r.score.top_correct);
+  EXPECT_GT(r.diagnosis.heldout_rms_after, 1.3 * r.diagnosis.noise_std_v);
+}
+
 // Pair 425/19 (fresh when the reach rule was first run, development since): a magnetic
 // hysteresis, outside the library, on a micrometer that reaches each clearance from one side. A
 // static nonlinearity matches it within the calibration's ranges, but its continued curve takes
