@@ -194,17 +194,26 @@ TEST(AltSelftest, EveryPickLeftIsNeededByTheFinalFit) {
   EXPECT_DOUBLE_EQ(effects.back().heldout_rms_after, now);
 }
 
+// Development pair `pair` of `seed` is explained with `effect` first, the right class, though more
+// than `left_over_noise` times the noise is left over the held-out session (beyond the
+// calibration's ranges).
+void expect_explained_where_the_calibration_reaches(std::uint64_t seed, int pair,
+                                                    const std::string& effect,
+                                                    double left_over_noise) {
+  const AltPairResult r = development_pair(seed, pair);
+  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_FALSE(r.diagnosis.effects.empty());
+  EXPECT_EQ(r.diagnosis.effects[0].name, effect);
+  EXPECT_TRUE(r.score.top_correct);
+  EXPECT_GT(r.diagnosis.heldout_rms_after, left_over_noise * r.diagnosis.noise_std_v);
+}
+
 // Development pair 101/24: a range compression, weak where the calibration session went (up to
 // 57 C, 8.8 mm), strong where the held-out one went on to (75 C, 9.3 mm). Within the calibration's
 // ranges the fitted compression leaves the noise; beyond them its continued curve leaves 5 times
 // the noise. The class is named, as explained where the calibration reaches.
 TEST(AltSelftest, AGapExplainedWhereTheCalibrationReachesIsExplained) {
-  const AltPairResult r = development_pair(101, 24);
-  ASSERT_EQ(r.diagnosis.status, "explained");
-  ASSERT_FALSE(r.diagnosis.effects.empty());
-  EXPECT_EQ(r.diagnosis.effects[0].name, "range_compression");
-  EXPECT_TRUE(r.score.top_correct);
-  EXPECT_GT(r.diagnosis.heldout_rms_after, 2.0 * r.diagnosis.noise_std_v);
+  expect_explained_where_the_calibration_reaches(101, 24, "range_compression", 2.0);
 }
 
 // Pair 430/23 (fresh at stop 27, development since): a quadratic temperature gain whose held-out
@@ -214,12 +223,7 @@ TEST(AltSelftest, AGapExplainedWhereTheCalibrationReachesIsExplained) {
 // of the session the calibration reaches, the more the continued curve must carry, and this one
 // does: explained. (With half the samples asked to lie within, as before stop 28: unexplained.)
 TEST(AltSelftest, AGapExplainedWhereTheCalibrationReachesCountsWhenTheCurveCarriesBeyond) {
-  const AltPairResult r = development_pair(430, 23);
-  ASSERT_EQ(r.diagnosis.status, "explained");
-  ASSERT_FALSE(r.diagnosis.effects.empty());
-  EXPECT_EQ(r.diagnosis.effects[0].name, "temp_gain_drift");
-  EXPECT_TRUE(r.score.top_correct);
-  EXPECT_GT(r.diagnosis.heldout_rms_after, 1.3 * r.diagnosis.noise_std_v);
+  expect_explained_where_the_calibration_reaches(430, 23, "temp_gain_drift", 1.3);
 }
 
 // Pair 425/19 (fresh when the reach rule was first run, development since): a magnetic
