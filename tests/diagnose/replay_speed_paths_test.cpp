@@ -101,7 +101,7 @@ TEST(ReplaySpeedPaths, ALongLogIsSearchedOnAnIncreasingSubsetOfItsRows) {
   EXPECT_GT(spread, 0.5);
 }
 
-TEST(ReplaySpeedPaths, ASearchsLatticeRunsOnAQuarterOfItsRows) {
+TEST(ReplaySpeedPaths, TheSearchLatticeRunsOnAQuarterOfItsRows) {
   const sim::PolynomialSensorModel nominal = sim::PolynomialSensorModel::thesis_eq_3_14();
   const RecordingSeries tiny = sweep({}, 6.0, 1500.0, 0.0, 5);  // 9,001 rows: every row
   const TwinReplay tiny_replay(tiny, nominal);
