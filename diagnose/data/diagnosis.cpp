@@ -666,8 +666,8 @@ struct Selection {
   // the twin's plus converter_gain_offset_v (held in cal_free_v and ho_free_v as well).
   std::optional<double> converter_gain;
   double converter_gain_offset_v = 0.0;
-  bool quantisation_as_noise = false;             // its codes not reproduced: taken as noise
-  bool motion_before_picks = false;  // the vibration signature shows in both parts' first gaps
+  bool quantisation_as_noise = false;  // its codes not reproduced: taken as noise
+  bool motion_before_picks = false;    // the vibration signature shows in both parts' first gaps
   std::optional<EffectFinding> nearest_unpicked;  // the best candidate when none was significant
   // What the free-shape picks add to the twin's voltage, per part (zeros without any), and for
   // each bias-type pick the index of its effect in `modelled` (-1: a free shape, which has none).
