@@ -76,16 +76,17 @@ constexpr double kLeastShareWithinReach = 0.25;
 constexpr double kLeastShareTakenBeyondReach = 0.5;
 // A candidate must remove at least this share of the noise variance from the held-out MSE ...
 constexpr double kMinGainOfNoiseVariance = 0.02;
-// ... the first pick at least this share, unless mount motion shows before any pick. On pairs with
-// no effect the best first candidate gains at most 0.05 % (the twin's seed 11 and alternative seed
-// 433, 13 null pairs): 0.5 % is ten times that. Later picks keep 2 %: what they take is mostly
-// the misfit of an earlier pick's shape (alternative pair 433/23, a channel skew taking 0.4 %
-// after a log-time ageing; the twin's seed 11 case 32, an ageing taking 0.65 % after a
-// temperature gain). So does a first pick where the motion shows: motion moves the mean voltage,
-// where the sensor's curve bends and where it is one-sided (impacts), by amounts its signature
-// does not fix, and a static nonlinearity took that at 0.6-0.8 % (the twin's seed 11, cases 1 and
-// 13; alternative pair 432/32). At 2 % for every pick, a 133 s thermal lag at 0.07 V of noise,
-// which takes 0.9 %, was "none" (the twin's seed 11, cases 22 and 23).
+// ... the first pick at least this share, unless a noise-type class shows before any pick. On pairs
+// with no effect the best first candidate gains at most 0.05 % (the twin's seed 11 and
+// alternative seed 433, 13 null pairs): 0.5 % is ten times that. Later picks keep 2 %: what they
+// take is mostly the misfit of an earlier pick's shape (alternative pair 433/23, a channel skew
+// taking 0.4 % after a log-time ageing; the twin's seed 11 case 32, an ageing taking 0.65 % after
+// a temperature gain). So does a first pick where mount motion or a converter grid shows: motion
+// moves the mean voltage where the sensor's curve bends and where it is one-sided (impacts), and a
+// converter's rounding is a function of the voltage, by amounts their signatures do not fix; a
+// bias class took that at 0.6-1 % (the twin's seed 11, cases 1 and 13; alternative pairs 432/32,
+// 432/12 and 434/7). At 2 % for every pick, a 133 s thermal lag at 0.07 V of noise, which takes
+// 0.9 %, was "none" (the twin's seed 11, cases 22 and 23).
 constexpr double kMinFirstGainOfNoiseVariance = 0.005;
 
 std::vector<double> minus(const std::vector<double>& a, const std::vector<double>& b) {
@@ -667,7 +668,9 @@ struct Selection {
   std::optional<double> converter_gain;
   double converter_gain_offset_v = 0.0;
   bool quantisation_as_noise = false;  // its codes not reproduced: taken as noise
-  bool motion_before_picks = false;    // the vibration signature shows in both parts' first gaps
+  // Mount motion shows in both parts' first gaps, or both parts lie on one converter grid: a
+  // first pick then needs kMinGainOfNoiseVariance, like the later ones.
+  bool noise_type_before_picks = false;
   std::optional<EffectFinding> nearest_unpicked;  // the best candidate when none was significant
   // What the free-shape picks add to the twin's voltage, per part (zeros without any), and for
   // each bias-type pick the index of its effect in `modelled` (-1: a free shape, which has none).
@@ -841,11 +844,12 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   selection.raw_ho_gap = minus(parts.heldout.voltage_v, ho_base);
   place_converter_boundaries(parts, selection);
   selection.ho_gap = minus(ho_target(parts, selection), ho_base);
-  selection.motion_before_picks =
+  const bool motion =
       vibration_signature(minus(cal_target(parts, selection), cal_base),
                           parts.cal_replay.sensitivity_v_per_mm())
           .present &&
       vibration_signature(selection.ho_gap, parts.ho_replay.sensitivity_v_per_mm()).present;
+  selection.noise_type_before_picks = motion || shared_grid(parts).has_value();
   return selection;
 }
 
@@ -995,11 +999,12 @@ Pick prefer_library_formula(const std::vector<Candidate>& candidates, Pick pick,
 }
 
 // A gain is significant when it is a real share of the noise variance (kMinFirstGainOfNoiseVariance
-// for a first pick where no motion shows, else kMinGainOfNoiseVariance) and its block-bootstrap
+// for a first pick where no noise-type class shows, else kMinGainOfNoiseVariance) and its
+// block-bootstrap
 // 95 % lower bound is above zero.
 bool significant(const Pick& pick, const Selection& selection) {
   const double sigma = selection.sigma;
-  const double share = selection.steps.empty() && !selection.motion_before_picks
+  const double share = selection.steps.empty() && !selection.noise_type_before_picks
                            ? kMinFirstGainOfNoiseVariance
                            : kMinGainOfNoiseVariance;
   return pick.gain >= share * sigma * sigma && pick.lower > 0.0;
