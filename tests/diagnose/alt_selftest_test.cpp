@@ -238,6 +238,17 @@ TEST(AltSelftest, ACurveThatMatchesOnlyWhereTheCalibrationReachesIsNotClaimed) {
   EXPECT_TRUE(r.diagnosis.effects.empty());
 }
 
+// Pair 434/7 (fresh at stop 28, development since): a 17.5-times-the-noise rounding converter with
+// a dead-time reading lag at the noise level. The converter's rounding follows the voltage, and a
+// temperature offset takes 1 % of the noise variance of it: where both parts lie on one grid, a
+// first pick needs 2 % (0.5 % elsewhere), and only the quantisation is named.
+TEST(AltSelftest, OnAConverterGridAFirstPickNeedsTwoPercent) {
+  const AltPairResult r = development_pair(434, 7);
+  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
+  EXPECT_EQ(r.diagnosis.effects[0].name, "adc_quantization");
+}
+
 TEST(AltSelftestCommand, AnUnknownRealityIsABadArgument) {
   const testing::FlangeOutcome o =
       testing::run_flange_captured({"diagnose", "--selftest", "--reality", "mars"});
