@@ -1043,16 +1043,15 @@ double alias_hz(double f_hz, double fs_hz) {
   return std::min(folded, fs_hz - folded);
 }
 
-// Least squares of `gap` on the tones at `tones_hz` in windows of kMainsWindowS seconds (a
-// constant per window as a nuisance, left out of what is returned).
-// The mains windows of a part, [begin, end) row ranges of kMainsWindowS each; a short last
-// window joins the one before it.
-std::vector<std::pair<std::size_t, std::size_t>> mains_windows(const std::vector<double>& t) {
+// The mains windows of a part, [begin, end) row ranges of `window_s` each; a short last window
+// joins the one before it.
+std::vector<std::pair<std::size_t, std::size_t>> mains_windows(const std::vector<double>& t,
+                                                               double window_s = kMainsWindowS) {
   const std::size_t n = t.size();
   std::vector<std::pair<std::size_t, std::size_t>> windows;
   for (std::size_t begin = 0; begin < n;) {
     std::size_t end = begin;
-    while (end < n && t[end] < t[begin] + kMainsWindowS) ++end;
+    while (end < n && t[end] < t[begin] + window_s) ++end;
     if (n - end < (end - begin) / 2) end = n;
     windows.emplace_back(begin, end);
     begin = end;
@@ -1060,13 +1059,16 @@ std::vector<std::pair<std::size_t, std::size_t>> mains_windows(const std::vector
   return windows;
 }
 
+// Least squares of `gap` on the tones at `tones_hz` in windows of `window_s` seconds (a constant
+// per window as a nuisance, left out of what is returned).
 std::vector<double> windowed_tones(const std::vector<double>& t, const std::vector<double>& gap,
-                                   const std::vector<double>& tones_hz, int& values) {
+                                   const std::vector<double>& tones_hz, int& values,
+                                   double window_s = kMainsWindowS) {
   const std::size_t n = t.size();
   std::vector<double> out(n, 0.0);
   values = 0;
   const auto cols = static_cast<Eigen::Index>(1 + 2 * tones_hz.size());
-  for (const auto& [begin, end] : mains_windows(t)) {
+  for (const auto& [begin, end] : mains_windows(t, window_s)) {
     const auto rows = static_cast<Eigen::Index>(end - begin);
     if (rows > 2 * cols) {
       Eigen::MatrixXd a(rows, cols);
@@ -1232,7 +1234,28 @@ std::vector<double> MainsFamily::fitted(const Part& part, const std::vector<doub
                                         int& values) const {
   // Each part's own lines near the aliases kept: the grid wanders between sessions.
   const std::vector<double> lines = find_lines(part.series.t_s, gap_v, tones_hz_);
-  std::vector<double> tones = windowed_tones(part.series.t_s, gap_v, lines, values);
+  // Windows of 20 s, or 10 or 5 s where those fit better: a grid whose frequency wanders by
+  // 0.01 Hz turns a line by a third of a cycle across 20 s against the window's own frequency
+  // (alternative pair 436/36: 0.008 Hz over 19 min, and its second harmonic twice that, left 1.3
+  // times the noise with 20 s windows). Each window's values take about their share of white
+  // noise, values/n of its variance, off the mean square; what a window length leaves, times
+  // 1 + 2 values/n, is what it would leave on new noise, and the least is kept.
+  std::vector<double> tones;
+  double best = std::numeric_limits<double>::infinity();
+  const auto n = static_cast<double>(gap_v.size());
+  for (const double window_s : {kMainsWindowS, kMainsWindowS / 2, kMainsWindowS / 4}) {
+    int window_values = 0;
+    std::vector<double> fitted =
+        windowed_tones(part.series.t_s, gap_v, lines, window_values, window_s);
+    double left = 0.0;
+    for (std::size_t i = 0; i < gap_v.size(); ++i) left += std::pow(gap_v[i] - fitted[i], 2);
+    const double expected = left / n * (1.0 + 2.0 * window_values / n);
+    if (expected < best) {
+      best = expected;
+      tones = std::move(fitted);
+      values = window_values;
+    }
+  }
   values += static_cast<int>(lines.size());  // their frequencies
   return tones;
 }
@@ -1247,9 +1270,10 @@ void MainsFamily::describe(FreeShapeFit& fit, const std::vector<double>& cal_ton
   fit.params["rms_v"] = rms;
   fit.description = fmt::format(
       "lines at the aliases of the mains ({} on the calibration part), {:.3g} V RMS, their "
-      "amplitude and phase free in "
-      "every {:g} s window of each session (the mains' phase at a session's start is arbitrary)",
-      lines, rms, kMainsWindowS);
+      "amplitude and phase free in every {:g} s window of each session (the mains' phase at a "
+      "session's start is arbitrary; on the held-out session {:g} or {:g} s windows where they "
+      "fit better, for a grid whose frequency wanders)",
+      lines, rms, kMainsWindowS, kMainsWindowS / 2, kMainsWindowS / 4);
 }
 
 std::vector<double> as_vector(const Eigen::VectorXd& v) {
