@@ -1000,8 +1000,7 @@ Pick prefer_library_formula(const std::vector<Candidate>& candidates, Pick pick,
 
 // A gain is significant when it is a real share of the noise variance (kMinFirstGainOfNoiseVariance
 // for a first pick where no noise-type class shows, else kMinGainOfNoiseVariance) and its
-// block-bootstrap
-// 95 % lower bound is above zero.
+// block-bootstrap 95 % lower bound is above zero.
 bool significant(const Pick& pick, const Selection& selection) {
   const double sigma = selection.sigma;
   const double share = selection.steps.empty() && !selection.noise_type_before_picks
