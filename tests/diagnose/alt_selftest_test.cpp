@@ -155,9 +155,7 @@ TEST(AltSelftestCommand, OnePairWritesItsSessionsAndItsTruth) {
       << again.out;
 }
 
-// Two development pairs (seed 413 pair 2 and seed 416 pair 33: a log-time ageing across sessions
-// two days apart). The greedy rounds took a static nonlinearity first for the calibration part's
-// offset, then the ageing took the held-out gap.
+// Development pair `pair` of `seed`, run on its own.
 AltPairResult development_pair(std::uint64_t seed, int pair) {
   SelftestOptions options;
   options.cases = 40;
@@ -169,12 +167,20 @@ AltPairResult development_pair(std::uint64_t seed, int pair) {
   return results.front();
 }
 
-TEST(AltSelftest, APickThatTheLaterPicksMakeUnneededIsTakenOut) {
-  const AltPairResult r = development_pair(413, 2);
+// Development pair `pair` of `seed` is explained by `effect` alone, the right class.
+void expect_explained_by_one_effect(std::uint64_t seed, int pair, const std::string& effect) {
+  const AltPairResult r = development_pair(seed, pair);
   ASSERT_EQ(r.diagnosis.status, "explained");
   ASSERT_EQ(r.diagnosis.effects.size(), 1u);
-  EXPECT_EQ(r.diagnosis.effects[0].name, "ageing_drift");
+  EXPECT_EQ(r.diagnosis.effects[0].name, effect);
   EXPECT_TRUE(r.score.top_correct);
+}
+
+// Two development pairs (seed 413 pair 2 and seed 416 pair 33: a log-time ageing across sessions
+// two days apart). The greedy rounds took a static nonlinearity first for the calibration part's
+// offset, then the ageing took the held-out gap.
+TEST(AltSelftest, APickThatTheLaterPicksMakeUnneededIsTakenOut) {
+  expect_explained_by_one_effect(413, 2, "ageing_drift");
 }
 
 TEST(AltSelftest, EveryPickLeftIsNeededByTheFinalFit) {
@@ -243,10 +249,7 @@ TEST(AltSelftest, ACurveThatMatchesOnlyWhereTheCalibrationReachesIsNotClaimed) {
 // temperature offset takes 1 % of the noise variance of it: where both parts lie on one grid, a
 // first pick needs 2 % (0.5 % elsewhere), and only the quantisation is named.
 TEST(AltSelftest, OnAConverterGridAFirstPickNeedsTwoPercent) {
-  const AltPairResult r = development_pair(434, 7);
-  ASSERT_EQ(r.diagnosis.status, "explained");
-  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
-  EXPECT_EQ(r.diagnosis.effects[0].name, "adc_quantization");
+  expect_explained_by_one_effect(434, 7, "adc_quantization");
 }
 
 // Pair 436/36 (fresh at stop 29, development since): mains at 50 Hz, 0.0175 Hz off and wandering by
@@ -254,11 +257,7 @@ TEST(AltSelftest, OnAConverterGridAFirstPickNeedsTwoPercent) {
 // by up to a third of a cycle across a 20 s window: 1.3 times the noise was left, "unexplained".
 // The held-out windows shorten to 10 or 5 s where they fit better, and the mains is named.
 TEST(AltSelftest, AWanderingGridIsFollowedWithShorterWindows) {
-  const AltPairResult r = development_pair(436, 36);
-  ASSERT_EQ(r.diagnosis.status, "explained");
-  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
-  EXPECT_EQ(r.diagnosis.effects[0].name, "mains_pickup");
-  EXPECT_TRUE(r.score.top_correct);
+  expect_explained_by_one_effect(436, 36, "mains_pickup");
 }
 
 TEST(AltSelftestCommand, AnUnknownRealityIsABadArgument) {

@@ -170,28 +170,28 @@ TEST(DiagnoseSelftest, AStepAtTheSameTimeInBothSessionsIsNotTakenForAgeing) {
   EXPECT_EQ(r.diagnosis.nearest->name, "temp_gain_drift");
 }
 
+// Case `case_index` of `seed` holds `effect` alone, and the diagnosis explains it by that alone.
+void expect_explained_by_its_one_effect(int seed, int case_index, const std::string& effect) {
+  const SelftestCaseResult r = run_case(seed, case_index);
+  ASSERT_EQ(r.spec.truth.size(), 1u);
+  ASSERT_EQ(r.spec.truth.front().name, effect);
+  EXPECT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
+  EXPECT_EQ(r.diagnosis.effects.front().name, effect);
+}
+
 // A 133 s thermal lag at 0.07 V of noise (the twin's seed 11, case 22, fresh at stop 28): a
 // thermal lag takes 0.9 % of the noise variance off the held-out gap, with a bootstrap bound
 // above zero. The first pick needs 0.5 % (later ones 2 %); at 2 % the verdict was "none".
 TEST(DiagnoseSelftest, AWeakThermalLagIsNamedByTheFirstPicksLeastGain) {
-  const SelftestCaseResult r = run_case(11, 22);
-  ASSERT_EQ(r.spec.truth.size(), 1u);
-  ASSERT_EQ(r.spec.truth.front().name, "thermal_lag");
-  EXPECT_EQ(r.diagnosis.status, "explained");
-  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
-  EXPECT_EQ(r.diagnosis.effects.front().name, "thermal_lag");
+  expect_explained_by_its_one_effect(11, 22, "thermal_lag");
 }
 
 // Mount motion of 0.35 mm RMS (the twin's seed 11, case 1): where the sensor's curve bends it
 // moves the mean voltage, which a static nonlinearity takes at 0.6 % of the noise variance. Where
 // the motion shows before any pick, a first pick needs 2 %, and the motion is named alone.
 TEST(DiagnoseSelftest, MountMotionKeepsTheFirstPicksLeastGainAtTwoPercent) {
-  const SelftestCaseResult r = run_case(11, 1);
-  ASSERT_EQ(r.spec.truth.size(), 1u);
-  ASSERT_EQ(r.spec.truth.front().name, "vibration");
-  EXPECT_EQ(r.diagnosis.status, "explained");
-  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
-  EXPECT_EQ(r.diagnosis.effects.front().name, "vibration");
+  expect_explained_by_its_one_effect(11, 1, "vibration");
 }
 
 TEST(DiagnoseSelftestCommand, SmallBlindSetMeetsTheAims) {
