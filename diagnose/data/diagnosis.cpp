@@ -755,10 +755,11 @@ bool has_effect(const std::vector<sim::EffectSettings>& effects, const std::stri
 // fits the calibration part best is kept, and the mean offset it gives the twin's voltage there
 // joins the twin as a constant before any effect is fitted (a constant, not the converter itself,
 // so that the effects' fits stay smooth), if it lowers the calibration gap's mean square by the
-// least gain a pick must make. With them, a DAQ gain calibration the grid shows.
-void place_converter_boundaries(const Parts& parts, Selection& selection) {
+// least gain a pick must make. With them, a DAQ gain calibration the grid shows. `grid`: the
+// parts' shared grid (shared_grid), if any.
+void place_converter_boundaries(const Parts& parts, const std::optional<AdcGrid>& grid,
+                                Selection& selection) {
   if (has_effect(selection.modelled, "adc_quantization")) return;
-  const std::optional<AdcGrid> grid = shared_grid(parts);
   if (!grid) return;
   const std::vector<double>& cal_v = parts.calibration.voltage_v;
   const std::vector<double> twin_v = parts.cal_replay.voltage(selection.modelled);
@@ -842,14 +843,15 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   confirm_alarm_timing_on_heldout(parts.heldout, ho_base, options, detail);
   diagnosis.stage = first_significant_stage(detail.stages);
   selection.raw_ho_gap = minus(parts.heldout.voltage_v, ho_base);
-  place_converter_boundaries(parts, selection);
+  const std::optional<AdcGrid> grid = shared_grid(parts);
+  place_converter_boundaries(parts, grid, selection);
   selection.ho_gap = minus(ho_target(parts, selection), ho_base);
   const bool motion =
       vibration_signature(minus(cal_target(parts, selection), cal_base),
                           parts.cal_replay.sensitivity_v_per_mm())
           .present &&
       vibration_signature(selection.ho_gap, parts.ho_replay.sensitivity_v_per_mm()).present;
-  selection.noise_type_before_picks = motion || shared_grid(parts).has_value();
+  selection.noise_type_before_picks = motion || grid.has_value();
   return selection;
 }
 
