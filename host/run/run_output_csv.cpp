@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "run_output_csv.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cstring>
 #include <stdexcept>
 
@@ -24,6 +28,28 @@ constexpr std::size_t kMaxFlagsChars = [] {
 }();
 // The longest output row: four numbers, the alarm, every flag, five commas and the newline.
 constexpr std::size_t kMaxRowChars = 4 * kMaxFixed6Chars + kMaxAlarmChars + kMaxFlagsChars + 6;
+
+// Unlinks an earlier output at `path` before it is written again, when it is a regular file of
+// one name, and returns a descriptor that holds it until closed (-1 when nothing was unlinked).
+// Truncating it instead costs a 1 M-row run a fifth of its time on ext4: a file cut to zero and
+// written again is flushed to the disk at close (auto_da_alloc). Its blocks are freed, and
+// discarded, when the last descriptor closes, which the writing thread does while the others
+// work (docs/benchmarks.md, `flange run`). A symbolic link, a second hard link or a device
+// (/dev/null) is written through as before; a file that cannot be unlinked is left to the open,
+// which reports it.
+int unlink_earlier_output(const std::string& path) {
+  struct stat status {};
+  if (::lstat(path.c_str(), &status) != 0 || !S_ISREG(status.st_mode) || status.st_nlink != 1) {
+    return -1;
+  }
+  const int held = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (held < 0) return -1;
+  if (::unlink(path.c_str()) != 0) {
+    ::close(held);
+    return -1;
+  }
+  return held;
+}
 
 char* append(char* at, std::string_view text) {
   std::memcpy(at, text.data(), text.size());
@@ -56,11 +82,22 @@ char* format_row(char* at, const RunOutputRow& row) {
 }  // namespace
 
 RunOutputCsv::RunOutputCsv(const std::string& path, bool own_thread) : path_(path) {
+  const int earlier = unlink_earlier_output(path);
   out_.open(path, std::ios::binary);
-  if (!out_) throw std::runtime_error("cannot write " + path);
+  if (!out_) {
+    if (earlier >= 0) ::close(earlier);
+    throw std::runtime_error("cannot write " + path);
+  }
   out_ << kRunOutputHeader;
   buffer_.resize(kOutputChunkBytes + kMaxRowChars);  // a chunk and the row that ends it
-  if (own_thread) thread_ = std::thread([this] { write_behind(); });
+  if (!own_thread) {
+    if (earlier >= 0) ::close(earlier);
+    return;
+  }
+  thread_ = std::thread([this, earlier] {
+    if (earlier >= 0) ::close(earlier);  // frees the earlier output's blocks, off the others' way
+    write_behind();
+  });
 }
 
 RunOutputCsv::~RunOutputCsv() { stop_thread(); }

@@ -51,8 +51,9 @@ struct RunOutputRow {
 
 class RunOutputCsv {
  public:
-  // Creates `path` and writes the header (std::runtime_error when it cannot). own_thread: format
-  // and write the rows on a second thread, behind the caller.
+  // Creates `path` and writes the header (std::runtime_error when it cannot); an earlier regular
+  // file there is replaced, not truncated (the .cpp says why). own_thread: format and write the
+  // rows on a second thread, behind the caller.
   RunOutputCsv(const std::string& path, bool own_thread);
   // Writes what is still queued; an error then is lost (finish() reports it).
   ~RunOutputCsv();

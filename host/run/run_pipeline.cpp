@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -109,6 +110,24 @@ FilterFile load_filter_file(const std::string& coeffs, int channel) {
     throw InputError(error.what());
   }
   return file;
+}
+
+// The output CSV must not replace a file the run reads: the recording would be gone before it was
+// read, a calibration or coefficient file after.
+void check_output_is_not_an_input(const RunOptions& options) {
+  if (!options.out_csv) return;
+  const std::pair<const char*, const std::string*> inputs[] = {
+      {"--input", &options.input},
+      {"--calibration", &options.calibration},
+      {"--coeffs", &options.coeffs}};
+  for (const auto& [option, path] : inputs) {
+    std::error_code error;  // a file that does not exist yet is none of them
+    if (std::filesystem::equivalent(*options.out_csv, *path, error)) {
+      throw InputError(
+          fmt::format("{}: the output CSV is the file given to {}; choose another --out",
+                      *options.out_csv, option));
+    }
+  }
 }
 
 std::unique_ptr<FilterEngine> load_engine(const RunOptions& options) {
@@ -368,6 +387,7 @@ bool use_helper_threads(const RunOptions& options) {
 }  // namespace
 
 RunSummary run_pipeline(const RunOptions& options, RunTrace* trace) {
+  check_output_is_not_an_input(options);
   const bool helpers = use_helper_threads(options);
   Pipeline pipeline(options, trace, helpers);
   RecordingBatchReader reader(options.input, options.lenient, helpers);

@@ -4,6 +4,7 @@
 #include "run_output_csv.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -96,6 +97,41 @@ TEST_F(RunOutputCsvTest, AStoppedRunKeepsEveryRowGivenBeforeTheStop) {
     const std::string two_blocks = write_blocks(dir_ / "stopped.csv", own_thread, 2);
     EXPECT_EQ(std::count(two_blocks.begin(), two_blocks.end(), '\n'), 1 + 2 * 4096) << own_thread;
   }
+}
+
+ino_t inode_of(const std::filesystem::path& path) {
+  struct stat status {};
+  EXPECT_EQ(::stat(path.c_str(), &status), 0) << path;
+  return status.st_ino;
+}
+
+// An earlier output of one name is removed and written anew (truncating it costs ext4 a flush at
+// close); through a symbolic link or a second hard link the file is written in place as before.
+TEST_F(RunOutputCsvTest, AnEarlierOutputIsReplacedAndLinksAreWrittenThrough) {
+  const std::string fresh = write_blocks(dir_ / "fresh.csv", true, 99);
+  const std::string longer_old_text(2 * fresh.size(), 'x');
+
+  const std::filesystem::path plain = dir_ / "plain.csv";
+  std::ofstream(plain) << longer_old_text;
+  std::ifstream old_file(plain, std::ios::binary);  // sees the old file's bytes while open
+  EXPECT_EQ(write_blocks(plain, true, 99), fresh);
+  std::stringstream old_bytes;
+  old_bytes << old_file.rdbuf();
+  EXPECT_EQ(old_bytes.str(), longer_old_text);  // replaced, not truncated and overwritten
+
+  const std::filesystem::path target = dir_ / "target.csv", link = dir_ / "link.csv";
+  std::ofstream(target) << longer_old_text;
+  std::filesystem::create_symlink(target, link);
+  EXPECT_EQ(write_blocks(link, false, 99), fresh);
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_EQ(read_file(target), fresh);
+
+  const std::filesystem::path first = dir_ / "first.csv", second = dir_ / "second.csv";
+  std::ofstream(first) << longer_old_text;
+  std::filesystem::create_hard_link(first, second);
+  EXPECT_EQ(write_blocks(first, true, 99), fresh);
+  EXPECT_EQ(read_file(second), fresh);
+  EXPECT_EQ(inode_of(first), inode_of(second));
 }
 
 TEST_F(RunOutputCsvTest, AFileThatCannotBeCreatedIsAnError) {
