@@ -21,6 +21,7 @@
 #include "gaussian_source.h"
 #include "input_error.h"
 #include "quantised_noise.h"
+#include "residual_tests.h"
 #include "thresholds.h"
 #include "twin_replay.h"
 
@@ -1447,6 +1448,31 @@ double vibration_inclusion(const std::vector<double>& gap, const TwinReplay& rep
   return static_cast<double>(shows) / static_cast<double>(resamples.size());
 }
 
+// The motion's mean square in mm^2 on a part, from what is left there, regressed over the whole
+// part: the squared departures from its mean against the sensitivity squared, E = a + b (dV/dd)^2,
+// b. The signature's levels are taken about a moving mean of 49 samples, which takes with it the
+// part of the motion that the sampling aliases below about 0.1 Hz (a narrow resonance near a
+// multiple of fs: alternative pair 440/1, 26.6 Hz at 9 Hz, whose motion the levels put at 60 % of
+// its variance). Over the part a slow bias left by the picks would count as motion too, so this
+// counts only when the regression splits what is left into the noise and the motion: a, the part
+// not following the sensitivity, between half the noise variance and `white_allowed` squared
+// (440/1: 0.76 and 0.99 times sigma^2 on its two parts). A hysteresis that the picks left, whose
+// size grows faster than (dV/dd)^2, gave a < 0 (alternative outside pair 436/39). 0 otherwise.
+double motion_mean_square_over_part(const std::vector<double>& left,
+                                    const std::vector<double>& sensitivity_v_per_mm, double sigma,
+                                    double white_allowed) {
+  const double mean = mean_of(left);
+  std::vector<double> departure_sq(left.size()), s2(left.size());
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    departure_sq[i] = std::pow(left[i] - mean, 2);
+    s2[i] = std::pow(sensitivity_v_per_mm[i], 2);
+  }
+  const LineFit fit = line_fit(s2, departure_sq);
+  const bool noise_beside = fit.intercept >= 0.5 * sigma * sigma &&
+                            fit.intercept <= white_allowed * white_allowed;
+  return fit.fitted && fit.slope > 0.0 && noise_beside ? fit.slope : 0.0;
+}
+
 // vibration, recognised from its signature in both parts. Returns the noise the verdict
 // compares what is left with: the white voltage noise, or, with mount motion found, that plus
 // the motion's share, whose variance follows the sensitivity and so escapes the median-based
@@ -1472,6 +1498,19 @@ VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
     motion_variance += std::pow(ho_vibration.rms_mm * s, 2);
   }
   motion_variance /= static_cast<double>(std::max<std::size_t>(current_error.size(), 1));
+  // The same mount shakes both parts: the smaller of the two parts' mean squares, so that what a
+  // pick's shape misses on one part alone does not pass for motion.
+  const double session_mean_square_mm2 =
+      std::min(motion_mean_square_over_part(cal_after, parts.cal_replay.sensitivity_v_per_mm(),
+                                            sigma, kExplainedRatio * sigma),
+               motion_mean_square_over_part(current_error, parts.ho_replay.sensitivity_v_per_mm(),
+                                            sigma, kExplainedRatio * sigma));
+  double session_variance = 0.0;
+  for (const double s : parts.ho_replay.sensitivity_v_per_mm()) {
+    session_variance += session_mean_square_mm2 * s * s;
+  }
+  session_variance /= static_cast<double>(std::max<std::size_t>(current_error.size(), 1));
+  motion_variance = std::max(motion_variance, session_variance);
   const double verdict_noise =
       std::max({sigma, std::sqrt(0.5 * sum / static_cast<double>(current_error.size() - 1)),
                 std::sqrt(sigma * sigma + motion_variance)});
