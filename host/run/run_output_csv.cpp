@@ -35,11 +35,12 @@ constexpr std::size_t kMaxRowChars = 4 * kMaxFixed6Chars + kMaxAlarmChars + kMax
 // written again is flushed to the disk at close (auto_da_alloc). Its blocks are freed, and
 // discarded, when the last descriptor closes, which the writing thread does while the others
 // work (docs/benchmarks.md, `flange run`). A symbolic link, a second hard link or a device
-// (/dev/null) is written through as before; a file that cannot be unlinked is left to the open,
-// which reports it.
+// (/dev/null) is written through as before; a file that cannot be unlinked, or that we may not
+// write, is left to the open, which reports it.
 int unlink_earlier_output(const std::string& path) {
   struct stat status {};
-  if (::lstat(path.c_str(), &status) != 0 || !S_ISREG(status.st_mode) || status.st_nlink != 1) {
+  if (::lstat(path.c_str(), &status) != 0 || !S_ISREG(status.st_mode) || status.st_nlink != 1 ||
+      ::access(path.c_str(), W_OK) != 0) {  // a read-only file stays the open's to refuse
     return -1;
   }
   const int held = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);

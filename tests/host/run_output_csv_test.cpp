@@ -132,6 +132,15 @@ TEST_F(RunOutputCsvTest, AnEarlierOutputIsReplacedAndLinksAreWrittenThrough) {
   EXPECT_EQ(write_blocks(first, true, 99), fresh);
   EXPECT_EQ(read_file(second), fresh);
   EXPECT_EQ(inode_of(first), inode_of(second));
+
+  // A file we may not write is not replaced behind its permissions: the open refuses it.
+  if (::geteuid() != 0) {  // root may write anything
+    const std::filesystem::path read_only = dir_ / "read_only.csv";
+    std::ofstream(read_only) << longer_old_text;
+    std::filesystem::permissions(read_only, std::filesystem::perms::owner_read);
+    EXPECT_THROW(RunOutputCsv(read_only.string(), false), std::runtime_error);
+    EXPECT_EQ(read_file(read_only), longer_old_text);
+  }
 }
 
 TEST_F(RunOutputCsvTest, AFileThatCannotBeCreatedIsAnError) {
