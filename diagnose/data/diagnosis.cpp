@@ -1492,25 +1492,20 @@ VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
     sum += std::pow(current_error[i + 1] - current_error[i], 2);
   }
   // The motion's own variance on the held-out part, (rms_mm dV/dd)^2 on average, beside the white
-  // noise: motion whose aliases fall low escapes the differences.
-  double motion_variance = 0.0;
-  for (const double s : parts.ho_replay.sensitivity_v_per_mm()) {
-    motion_variance += std::pow(ho_vibration.rms_mm * s, 2);
-  }
-  motion_variance /= static_cast<double>(std::max<std::size_t>(current_error.size(), 1));
-  // The same mount shakes both parts: the smaller of the two parts' mean squares, so that what a
-  // pick's shape misses on one part alone does not pass for motion.
+  // noise: motion whose aliases fall low escapes the differences. rms_mm^2 is the signature's or,
+  // where larger, the mean square over the whole parts; the same mount shakes both, so the smaller
+  // of those two counts, and what a pick's shape misses on one part alone does not pass for motion.
   const double session_mean_square_mm2 =
       std::min(motion_mean_square_over_part(cal_after, parts.cal_replay.sensitivity_v_per_mm(),
                                             sigma, kExplainedRatio * sigma),
                motion_mean_square_over_part(current_error, parts.ho_replay.sensitivity_v_per_mm(),
                                             sigma, kExplainedRatio * sigma));
-  double session_variance = 0.0;
-  for (const double s : parts.ho_replay.sensitivity_v_per_mm()) {
-    session_variance += session_mean_square_mm2 * s * s;
-  }
-  session_variance /= static_cast<double>(std::max<std::size_t>(current_error.size(), 1));
-  motion_variance = std::max(motion_variance, session_variance);
+  const double motion_mean_square_mm2 =
+      std::max(ho_vibration.rms_mm * ho_vibration.rms_mm, session_mean_square_mm2);
+  double mean_sensitivity_sq = 0.0;
+  for (const double s : parts.ho_replay.sensitivity_v_per_mm()) mean_sensitivity_sq += s * s;
+  mean_sensitivity_sq /= static_cast<double>(std::max<std::size_t>(current_error.size(), 1));
+  const double motion_variance = motion_mean_square_mm2 * mean_sensitivity_sq;
   const double verdict_noise =
       std::max({sigma, std::sqrt(0.5 * sum / static_cast<double>(current_error.size() - 1)),
                 std::sqrt(sigma * sigma + motion_variance)});
