@@ -1030,8 +1030,7 @@ bool significant(const Pick& pick, const Selection& selection) {
 // predict; the best candidate's gain at a lag is what the best of them gains by chance, and the
 // largest over the lags is the least gain, kept between kLeastFirstGainOfNoiseVariance and
 // kMinFirstGainOfNoiseVariance of sigma^2. A gap too short to shift keeps the larger.
-double first_pick_least_gain(const std::vector<Candidate>& candidates,
-                             const Selection& selection) {
+double first_pick_least_gain(const std::vector<Candidate>& candidates, const Selection& selection) {
   const double variance = selection.sigma * selection.sigma;
   const std::vector<double>& gap = selection.current_error;
   const std::size_t n = gap.size();
@@ -1047,8 +1046,8 @@ double first_pick_least_gain(const std::vector<Candidate>& candidates,
         const std::size_t j = i + lag < n ? i + lag : i + lag - n;
         dot += gap[j] * (gap[i] - c.heldout_error[i]);
       }
-      best_at_lag[k] = std::max(best_at_lag[k], (2.0 * dot - own) / static_cast<double>(n) -
-                                                    chance_gain(c, selection));
+      best_at_lag[k] = std::max(
+          best_at_lag[k], (2.0 * dot - own) / static_cast<double>(n) - chance_gain(c, selection));
     }
   }
   const double chance = *std::max_element(best_at_lag.begin(), best_at_lag.end());
@@ -1515,8 +1514,8 @@ double motion_mean_square_over_part(const std::vector<double>& left,
     s2[i] = std::pow(sensitivity_v_per_mm[i], 2);
   }
   const LineFit fit = line_fit(s2, departure_sq);
-  const bool noise_beside = fit.intercept >= 0.5 * sigma * sigma &&
-                            fit.intercept <= white_allowed * white_allowed;
+  const bool noise_beside =
+      fit.intercept >= 0.5 * sigma * sigma && fit.intercept <= white_allowed * white_allowed;
   return fit.fitted && fit.slope > 0.0 && noise_beside ? fit.slope : 0.0;
 }
 
