@@ -1012,8 +1012,8 @@ Pick prefer_library_formula(const std::vector<Candidate>& candidates, Pick pick,
   return pick;
 }
 
-// A gain is significant when it is a real share of the noise variance (kMinFirstGainOfNoiseVariance
-// for a first pick where no noise-type class shows, else kMinGainOfNoiseVariance) and its
+// A gain is significant when it is a real share of the noise variance (for a first pick where no
+// noise-type class shows, first_pick_least_gain; else kMinGainOfNoiseVariance) and its
 // block-bootstrap 95 % lower bound is above zero.
 bool significant(const Pick& pick, const Selection& selection) {
   const double sigma = selection.sigma;
@@ -1190,7 +1190,7 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
   for (int round = 0; round < kMaxSelected; ++round) {
     std::vector<Candidate> candidates = score_candidates(parts, selection);
     if (candidates.empty()) break;
-    if (selection.steps.empty()) {
+    if (selection.steps.empty() && !selection.noise_type_before_picks) {  // else unused
       selection.first_pick_least_gain = first_pick_least_gain(candidates, selection);
     }
     const Pick pick =
