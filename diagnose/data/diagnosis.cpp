@@ -860,9 +860,11 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   selection.ho_gap = minus(ho_target(parts, selection), ho_base);
   const bool motion =
       vibration_signature(minus(cal_target(parts, selection), cal_base),
-                          parts.cal_replay.sensitivity_v_per_mm())
+                          parts.cal_replay.sensitivity_v_per_mm(), parts.calibration.clearance_mm)
           .present &&
-      vibration_signature(selection.ho_gap, parts.ho_replay.sensitivity_v_per_mm()).present;
+      vibration_signature(selection.ho_gap, parts.ho_replay.sensitivity_v_per_mm(),
+                          parts.heldout.clearance_mm)
+          .present;
   selection.noise_type_before_picks = motion || grid.has_value();
   return selection;
 }
@@ -1481,15 +1483,17 @@ void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selecti
 
 // The share of `resamples` of the held-out gap on which the vibration signature still shows.
 double vibration_inclusion(const std::vector<double>& gap, const TwinReplay& replay,
+                           const RecordingSeries& series,
                            const std::vector<std::vector<std::size_t>>& resamples) {
   int shows = 0;
   for (const auto& set : resamples) {
-    std::vector<double> gap_drawn, sens_drawn;
+    std::vector<double> gap_drawn, sens_drawn, clearance_drawn;
     for (std::size_t i : set) {
       gap_drawn.push_back(gap[i]);
       sens_drawn.push_back(replay.sensitivity_v_per_mm()[i]);
+      clearance_drawn.push_back(series.clearance_mm[i]);
     }
-    if (vibration_signature(gap_drawn, sens_drawn).present) ++shows;
+    if (vibration_signature(gap_drawn, sens_drawn, clearance_drawn).present) ++shows;
   }
   return static_cast<double>(shows) / static_cast<double>(resamples.size());
 }
@@ -1527,15 +1531,20 @@ VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
   const std::vector<double>& current_error = selection.current_error;
   const std::vector<double> cal_after =
       minus(cal_target(parts, selection), parts.cal_replay.voltage(selection.modelled));
-  const VibrationSignature cal_vibration =
-      vibration_signature(cal_after, parts.cal_replay.sensitivity_v_per_mm());
-  const VibrationSignature ho_vibration =
-      vibration_signature(current_error, parts.ho_replay.sensitivity_v_per_mm());
+  const VibrationSignature cal_vibration = vibration_signature(
+      cal_after, parts.cal_replay.sensitivity_v_per_mm(), parts.calibration.clearance_mm);
+  const VibrationSignature ho_vibration = vibration_signature(
+      current_error, parts.ho_replay.sensitivity_v_per_mm(), parts.heldout.clearance_mm);
   const double sigma = selection.sigma;
   if (!cal_vibration.present || !ho_vibration.present) return {sigma, ""};
+  // The mean squared difference over the pairs the signature took (at rest, where it rests).
+  const std::vector<bool> rest = pairs_at_rest(parts.heldout.clearance_mm);
   double sum = 0.0;
+  std::size_t pairs = 0;
   for (std::size_t i = 0; i + 1 < current_error.size(); ++i) {
+    if (!rest.empty() && !rest[i]) continue;
     sum += std::pow(current_error[i + 1] - current_error[i], 2);
+    ++pairs;
   }
   // The motion's own variance on the held-out part, (rms_mm dV/dd)^2 on average, beside the white
   // noise: motion whose aliases fall low escapes the differences. rms_mm^2 is the signature's or,
@@ -1553,14 +1562,15 @@ VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
   mean_sensitivity_sq /= static_cast<double>(std::max<std::size_t>(current_error.size(), 1));
   const double motion_variance = motion_mean_square_mm2 * mean_sensitivity_sq;
   const double verdict_noise =
-      std::max({sigma, std::sqrt(0.5 * sum / static_cast<double>(current_error.size() - 1)),
+      std::max({sigma, std::sqrt(0.5 * sum / static_cast<double>(std::max<std::size_t>(pairs, 1))),
                 std::sqrt(sigma * sigma + motion_variance)});
   EffectFinding finding;
   finding.name = "vibration";
   finding.params = {{"rms_mm", cal_vibration.rms_mm}};
   finding.noise_type = true;
   finding.heldout_rms_before = finding.heldout_rms_after = rms_of(current_error);
-  finding.inclusion = vibration_inclusion(current_error, parts.ho_replay, selection.resamples);
+  finding.inclusion =
+      vibration_inclusion(current_error, parts.ho_replay, parts.heldout, selection.resamples);
   finding.evidence = fmt::format(
       "the gap's sample-to-sample variance grows with the sensor's sensitivity squared "
       "(t = {:.1f} calibration, {:.1f} held-out): clearance motion, not voltage noise; "

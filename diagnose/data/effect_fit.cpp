@@ -477,25 +477,49 @@ VibrationSignature regress_on_sensitivity(const std::vector<double>& y,
 
 }  // namespace
 
+std::vector<bool> pairs_at_rest(const std::vector<double>& clearance_mm) {
+  constexpr double kMovingMm = 1e-4;  // a sample-to-sample change that is a move
+  constexpr double kLeastRestShare = 0.25;
+  const std::size_t n = clearance_mm.size();
+  if (n < 2) return {};
+  std::vector<bool> rest(n - 1);
+  std::size_t resting = 0;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    rest[i] = std::abs(clearance_mm[i + 1] - clearance_mm[i]) <= kMovingMm;
+    resting += rest[i] ? 1 : 0;
+  }
+  if (static_cast<double>(resting) < kLeastRestShare * static_cast<double>(n - 1)) return {};
+  return rest;
+}
+
 VibrationSignature vibration_signature(const std::vector<double>& gap_v,
-                                       const std::vector<double>& sensitivity_v_per_mm) {
+                                       const std::vector<double>& sensitivity_v_per_mm,
+                                       const std::vector<double>& clearance_mm) {
   const std::size_t n = gap_v.size();
   if (n < 2 * kLevelHalfWindow + 16) return {};
+  const std::vector<bool> rest = pairs_at_rest(clearance_mm);
+  const auto resting = [&](std::size_t pair) { return rest.empty() || rest[pair]; };
   // Squared first differences: motion white at fs.
-  std::vector<double> diff_sq(n - 1), diff_s2(n - 1);
+  std::vector<double> diff_sq, diff_s2;
   for (std::size_t i = 0; i + 1 < n; ++i) {
-    diff_sq[i] = std::pow(gap_v[i + 1] - gap_v[i], 2);
-    diff_s2[i] = std::pow(0.5 * (sensitivity_v_per_mm[i] + sensitivity_v_per_mm[i + 1]), 2);
+    if (!resting(i)) continue;
+    diff_sq.push_back(std::pow(gap_v[i + 1] - gap_v[i], 2));
+    diff_s2.push_back(std::pow(0.5 * (sensitivity_v_per_mm[i] + sensitivity_v_per_mm[i + 1]), 2));
   }
   const VibrationSignature by_differences = regress_on_sensitivity(diff_sq, diff_s2, 0.5);
   // Squared levels about a centred moving mean: motion whose aliases fall low in the band
-  // (a narrow resonance, sparse impacts), which differences pass only weakly.
+  // (a narrow resonance, sparse impacts), which differences pass only weakly. At rest, only
+  // windows without a move count.
   const std::size_t w = kLevelHalfWindow;
+  std::vector<std::size_t> moves_before(n, 0);  // moving pairs among 0 .. i-1
+  for (std::size_t i = 1; i < n; ++i)
+    moves_before[i] = moves_before[i - 1] + (resting(i - 1) ? 0 : 1);
   std::vector<double> level_sq, level_s2;
   double sum = 0.0;
   for (std::size_t i = 0; i < 2 * w + 1; ++i) sum += gap_v[i];
   for (std::size_t i = w; i + w < n; ++i) {
     if (i > w) sum += gap_v[i + w] - gap_v[i - w - 1];
+    if (moves_before[i + w] != moves_before[i - w]) continue;
     const double about_mean = gap_v[i] - sum / static_cast<double>(2 * w + 1);
     level_sq.push_back(about_mean * about_mean);
     level_s2.push_back(sensitivity_v_per_mm[i] * sensitivity_v_per_mm[i]);

@@ -44,7 +44,16 @@ struct VibrationSignature {
   double voltage_noise_std_v = 0;  // the white voltage noise beside it (the differences' a / 2)
   bool present = false;            // slope_t > 8 and the motion adds > 10 % to the variance
 };
+// Where the micrometer rests for a quarter of the session or more, only samples at rest count:
+// a bias that the picks leave changes where the clearance moves (a staircase's levels, a
+// hysteresis that flips with the move), and with the sensitivity there it passed for motion
+// (alternative outside pair 443/19). Mount motion shakes the rests as much as the moves.
+// `clearance_mm` empty: every sample counts.
 VibrationSignature vibration_signature(const std::vector<double>& gap_v,
-                                       const std::vector<double>& sensitivity_v_per_mm);
+                                       const std::vector<double>& sensitivity_v_per_mm,
+                                       const std::vector<double>& clearance_mm);
+// For each pair of neighbouring samples, whether the clearance rests across it; empty where it
+// rests for less than a quarter of the pairs (a sweep) or there is no clearance.
+std::vector<bool> pairs_at_rest(const std::vector<double>& clearance_mm);
 
 }  // namespace flange::diagnose
