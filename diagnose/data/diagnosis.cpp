@@ -573,9 +573,12 @@ std::optional<std::string> clock_reason(const Diagnosis& diagnosis,
 // every band of a twentieth of the range holding 30 or more samples at rest after the first move,
 // at least 95 % of them were last reached by a move the same way, and both ways occur (a
 // staircase that climbs in steps and drops back in one move). Then an output that depends on the
-// direction of the last move is a function of clearance. A sweep that never rests has no such
-// samples and says no: it reaches each clearance from both sides.
+// direction of the last move is a function of clearance. A sweep says no: it reaches each
+// clearance from both sides. It slows to under 1e-4 mm a sample only at its turning points, and
+// there each band is reached one way (alternative pair 442/7, a motorised sweep, was said to be
+// one-sided): a micrometer that rests for less than a quarter of the session is not asked.
 bool last_move_set_by_clearance(const RecordingSeries& s) {
+  if (pairs_at_rest(s.clearance_mm).empty()) return false;
   constexpr int kBands = 20;
   constexpr std::size_t kLeastSamples = 30;
   constexpr double kOneWayShare = 0.95;

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <sstream>
 
 #include "cli.h"
@@ -469,6 +470,22 @@ TEST(Diagnose, ANonlinearityOnAOneSidedStaircaseIsSaidToLookLikeAHysteresis) {
   ASSERT_FALSE(sweep.diagnosis.effects.empty()) << sweep.diagnosis.status;
   EXPECT_EQ(sweep.diagnosis.effects.front().name, "nonlinearity");
   EXPECT_FALSE(says_one_sided(sweep));
+
+  // A sine sweep slows to a standstill only at its turning points, where the last move set the
+  // side (alternative pair 442/7, a motorised sweep, was said to be one-sided): no reason either.
+  // Slow (a 900 s period), it lingers under 1e-4 mm a sample for about 40 samples at each.
+  constexpr double kSlowSweepS = 1800.0;
+  const auto sine = [](double phase_s) {
+    return [phase_s](double t) {
+      return 5.0 + 3.5 * std::sin(2.0 * std::numbers::pi * (t + phase_s) / 900.0);
+    };
+  };
+  const DiagnosisResult sine_sweep =
+      diagnose_in_detail(recording_of(effects, 83, kSlowSweepS, sine(0.0), sine(0.0)),
+                         recording_of(effects, 84, kSlowSweepS, sine(200.0), sine(200.0)), {});
+  ASSERT_FALSE(sine_sweep.diagnosis.effects.empty()) << sine_sweep.diagnosis.status;
+  EXPECT_EQ(sine_sweep.diagnosis.effects.front().name, "nonlinearity");
+  EXPECT_FALSE(says_one_sided(sine_sweep));
 }
 
 TEST(DiagnoseCommand, AnUnexplainedVerdictNamesTheNearestEffectInTextJsonAndHtml) {
