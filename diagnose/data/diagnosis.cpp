@@ -1225,7 +1225,8 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
   DiagnosisResult library_result = result;
   select_bias_effects(parts, options, library, library_result);
   const double left = rms_of(library.current_error);
-  if (left <= kExplainedRatio * library.sigma) {
+  const bool several_classes = library.findings.size() > 1;
+  if (left <= kExplainedRatio * library.sigma && !several_classes) {
     result = std::move(library_result);
     return library;
   }
@@ -1235,7 +1236,16 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
   select_bias_effects(parts, options, free, free_result);
   const double free_left = rms_of(free.current_error);
   const double sigma = std::min(library.sigma, free.sigma);
-  if (left * left - free_left * free_left >= kMinGainOfNoiseVariance * sigma * sigma) {
+  const double margin = kMinGainOfNoiseVariance * sigma * sigma;
+  const bool leaves_less = left * left - free_left * free_left >= margin;
+  // Fewer classes that leave as little: the library's formulas split between two classes what
+  // one class of another shape explains alone (alternative pair 447/13, a temperature gain about
+  // a mid-range pivot, which the library's nonlinearity and temperature gain shared, the
+  // nonlinearity first).
+  const bool fewer_classes = !free.findings.empty() &&
+                             free.findings.size() < library.findings.size() &&
+                             free_left * free_left - left * left < margin;
+  if (leaves_less || (several_classes && fewer_classes)) {
     result = std::move(free_result);
     return free;
   }
