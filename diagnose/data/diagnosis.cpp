@@ -578,21 +578,19 @@ std::optional<std::string> clock_reason(const Diagnosis& diagnosis,
 // there each band is reached one way (alternative pair 442/7, a motorised sweep, was said to be
 // one-sided): a micrometer that rests for less than a quarter of the session is not asked.
 bool last_move_set_by_clearance(const RecordingSeries& s) {
-  if (pairs_at_rest(s.clearance_mm).empty()) return false;
   constexpr int kBands = 20;
   constexpr std::size_t kLeastSamples = 30;
   constexpr double kOneWayShare = 0.95;
-  constexpr double kMovingMm = 1e-4;  // a sample-to-sample change that is a move
-  if (s.size() < 2) return false;
+  const std::vector<bool> rest = pairs_at_rest(s.clearance_mm);
+  if (rest.empty()) return false;
   const auto [lo, hi] = std::minmax_element(s.clearance_mm.begin(), s.clearance_mm.end());
   const double width = (*hi - *lo) / kBands;
   if (!(width > 0.0)) return false;
   std::vector<std::size_t> opening(kBands, 0), closing(kBands, 0);
   int last = 0;  // +1 after an opening move, -1 after a closing one, 0 before the first
   for (std::size_t i = 1; i < s.size(); ++i) {
-    const double step = s.clearance_mm[i] - s.clearance_mm[i - 1];
-    if (std::abs(step) > kMovingMm) {
-      last = step > 0.0 ? 1 : -1;
+    if (!rest[i - 1]) {
+      last = s.clearance_mm[i] > s.clearance_mm[i - 1] ? 1 : -1;
       continue;
     }
     if (last == 0) continue;

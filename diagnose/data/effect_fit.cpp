@@ -512,8 +512,9 @@ VibrationSignature vibration_signature(const std::vector<double>& gap_v,
   // windows without a move count.
   const std::size_t w = kLevelHalfWindow;
   std::vector<std::size_t> moves_before(n, 0);  // moving pairs among 0 .. i-1
-  for (std::size_t i = 1; i < n; ++i)
+  for (std::size_t i = 1; i < n; ++i) {
     moves_before[i] = moves_before[i - 1] + (resting(i - 1) ? 0 : 1);
+  }
   std::vector<double> level_sq, level_s2;
   double sum = 0.0;
   for (std::size_t i = 0; i < 2 * w + 1; ++i) sum += gap_v[i];
