@@ -176,6 +176,14 @@ void expect_explained_by_one_effect(std::uint64_t seed, int pair, const std::str
   EXPECT_TRUE(r.score.top_correct);
 }
 
+// Development pair `pair` of `seed` is an outside pair, and nothing is claimed on it.
+void expect_unclaimed_outside_pair(std::uint64_t seed, int pair) {
+  const AltPairResult r = development_pair(seed, pair);
+  ASSERT_EQ(r.spec.kind, AltPairKind::kOutside);
+  EXPECT_EQ(r.diagnosis.status, "unexplained");
+  EXPECT_TRUE(r.diagnosis.effects.empty());
+}
+
 // Development pair 413/2: a log-time ageing across sessions two days apart. The greedy rounds
 // took a static nonlinearity first for the calibration part's offset, then the ageing took the
 // held-out gap.
@@ -250,10 +258,7 @@ TEST(AltSelftest, AGapExplainedWhereTheCalibrationReachesCountsWhenTheCurveCarri
 // only 42 % of the gap above the noise where the held-out session goes to closer clearances:
 // nothing is claimed.
 TEST(AltSelftest, ACurveThatMatchesOnlyWhereTheCalibrationReachesIsNotClaimed) {
-  const AltPairResult r = development_pair(425, 19);
-  ASSERT_EQ(r.spec.kind, AltPairKind::kOutside);
-  EXPECT_EQ(r.diagnosis.status, "unexplained");
-  EXPECT_TRUE(r.diagnosis.effects.empty());
+  expect_unclaimed_outside_pair(425, 19);
 }
 
 // Pair 434/7 (fresh at stop 28, development since): a 17.5-times-the-noise rounding converter with
@@ -290,10 +295,7 @@ TEST(AltSelftest, MotionAliasedNearZeroHertzIsCountedOverTheSession) {
 // for more motion (the slope alone let it through, and four effects were claimed); the
 // regression's intercept, below zero, says it is not the noise beside a motion.
 TEST(AltSelftest, AHysteresisLeftByThePicksDoesNotPassForMotion) {
-  const AltPairResult r = development_pair(436, 39);
-  ASSERT_EQ(r.spec.kind, AltPairKind::kOutside);
-  EXPECT_EQ(r.diagnosis.status, "unexplained");
-  EXPECT_TRUE(r.diagnosis.effects.empty());
+  expect_unclaimed_outside_pair(436, 39);
 }
 
 // Pair 443/19 (fresh at stop 30, development since): a magnetic hysteresis on a sawtooth
@@ -301,10 +303,7 @@ TEST(AltSelftest, AHysteresisLeftByThePicksDoesNotPassForMotion) {
 // moves, and with the sensitivity there it passed for mount motion, whose noise then let the
 // verdict say "explained" by three effects. Taken at rest, the gap shows no motion.
 TEST(AltSelftest, ABiasThatChangesWithTheMovesDoesNotPassForMotion) {
-  const AltPairResult r = development_pair(443, 19);
-  ASSERT_EQ(r.spec.kind, AltPairKind::kOutside);
-  EXPECT_EQ(r.diagnosis.status, "unexplained");
-  EXPECT_TRUE(r.diagnosis.effects.empty());
+  expect_unclaimed_outside_pair(443, 19);
 }
 
 TEST(AltSelftestCommand, AnUnknownRealityIsABadArgument) {
