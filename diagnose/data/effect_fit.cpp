@@ -9,6 +9,7 @@
 #include <numbers>
 #include <utility>
 
+#include "recording_series.h"
 #include "residual_tests.h"
 
 namespace flange::diagnose {
@@ -476,21 +477,6 @@ VibrationSignature regress_on_sensitivity(const std::vector<double>& y,
 }
 
 }  // namespace
-
-std::vector<bool> pairs_at_rest(const std::vector<double>& clearance_mm) {
-  constexpr double kMovingMm = 1e-4;  // a sample-to-sample change that is a move
-  constexpr double kLeastRestShare = 0.25;
-  const std::size_t n = clearance_mm.size();
-  if (n < 2) return {};
-  std::vector<bool> rest(n - 1);
-  std::size_t resting = 0;
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    rest[i] = std::abs(clearance_mm[i + 1] - clearance_mm[i]) <= kMovingMm;
-    resting += rest[i] ? 1 : 0;
-  }
-  if (static_cast<double>(resting) < kLeastRestShare * static_cast<double>(n - 1)) return {};
-  return rest;
-}
 
 VibrationSignature vibration_signature(const std::vector<double>& gap_v,
                                        const std::vector<double>& sensitivity_v_per_mm,

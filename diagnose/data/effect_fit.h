@@ -52,8 +52,5 @@ struct VibrationSignature {
 VibrationSignature vibration_signature(const std::vector<double>& gap_v,
                                        const std::vector<double>& sensitivity_v_per_mm,
                                        const std::vector<double>& clearance_mm);
-// For each pair of neighbouring samples, whether the clearance rests across it; empty where it
-// rests for less than a quarter of the pairs (a sweep) or there is no clearance.
-std::vector<bool> pairs_at_rest(const std::vector<double>& clearance_mm);
 
 }  // namespace flange::diagnose

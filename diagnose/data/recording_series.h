@@ -22,6 +22,11 @@ struct RecordingSeries {
   std::size_t size() const { return t_s.size(); }
 };
 
+// For each pair of neighbouring rows, whether the micrometer rests across it (the clearance
+// changes by at most 1e-4 mm); empty where it rests for less than a quarter of the pairs (a sweep)
+// or there are fewer than two rows.
+std::vector<bool> pairs_at_rest(const std::vector<double>& clearance_mm);
+
 // Reads a recording strictly; every row needs the reference clearance. Throws host::InputError
 // naming the file, line and field.
 RecordingSeries read_recording_series(const std::string& path);
