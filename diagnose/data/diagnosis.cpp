@@ -690,6 +690,8 @@ struct Selection {
   std::vector<double> cal_free_v, ho_free_v;
   std::vector<int> modelled_index;
   bool free_shapes = false;  // whether the free-shape families compete (the second pass)
+  // Whether a library pick was given a free shape after the rounds (give_pick_a_free_shape).
+  bool shapes_refined = false;
   // One sentence per pick that another class explained as well (issue 11 item 2).
   std::vector<std::string> confounded;
   // One sentence per pick that the backward steps took out (drop_unneeded_picks).
@@ -870,6 +872,36 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   return selection;
 }
 
+// The two parts with the temperature the coil sees in place of the recorded one, for the free
+// shapes: with a late temperature channel modelled (a reading lag, a skew), a class of the
+// temperature follows the coil's, which leads the reading; the library's effects see it in the
+// replay already (ambient_from_recorded). A range compression's knee behind a sheathed
+// thermocouple falls with the coil's temperature, not with what the thermocouple shows yet.
+struct CoilParts {
+  RecordingSeries calibration, heldout;
+  std::unique_ptr<TwinReplay> cal_replay, ho_replay;
+};
+
+std::unique_ptr<const CoilParts> coil_parts(const Parts& parts,
+                                            const std::vector<sim::EffectSettings>& modelled) {
+  const bool late_temperature =
+      std::any_of(modelled.begin(), modelled.end(), [](const sim::EffectSettings& e) {
+        return (e.name == "thermal_lag" && e.params.at("tau_s") < 0.0) ||
+               (e.name == "channel_skew" && e.params.at("skew_s") > 0.0);
+      });
+  if (!late_temperature) return nullptr;
+  auto coil = std::make_unique<CoilParts>();
+  coil->calibration = parts.calibration;
+  coil->calibration.temp_c = ambient_from_recorded(parts.calibration, modelled);
+  coil->heldout = parts.heldout;
+  coil->heldout.temp_c = ambient_from_recorded(parts.heldout, modelled);
+  coil->cal_replay = std::make_unique<TwinReplay>(coil->calibration, parts.cal_replay.nominal(),
+                                                  parts.cal_replay.age_offset_s());
+  coil->ho_replay = std::make_unique<TwinReplay>(coil->heldout, parts.ho_replay.nominal(),
+                                                 parts.ho_replay.age_offset_s());
+  return coil;
+}
+
 // Every bias-type effect of the catalogue not yet modelled, fitted on top of `modelled` and
 // scored on the held-out part, in catalogue order.
 std::vector<Candidate> score_candidates(const Parts& parts, const Selection& selection) {
@@ -906,14 +938,19 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
   // The free shapes of the classes not yet modelled: least squares on the gap left, no refit;
   // in parallel too, taken in catalogue order.
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
+  const std::unique_ptr<const CoilParts> coil =
+      selection.free_shapes ? coil_parts(parts, modelled) : nullptr;
+  const RecordingSeries& free_cal = coil ? coil->calibration : parts.calibration;
+  const RecordingSeries& free_ho = coil ? coil->heldout : parts.heldout;
+  const TwinReplay& free_cal_replay = coil ? *coil->cal_replay : parts.cal_replay;
+  const TwinReplay& free_ho_replay = coil ? *coil->ho_replay : parts.ho_replay;
   std::vector<std::future<Candidate>> pending_free;
   for (const FreeShapeFamily& family : free_shape_families()) {
     if (!selection.free_shapes || class_taken(family.effect, selection)) continue;
     pending_free.push_back(std::async(std::launch::async, [&, family] {
       Candidate c;
-      c.free_shape = fit_free_shape(family, parts.calibration, parts.cal_replay, parts.heldout,
-                                    parts.ho_replay, cal_gap, selection.current_error,
-                                    parts.heldout_age_unknown);
+      c.free_shape = fit_free_shape(family, free_cal, free_cal_replay, free_ho, free_ho_replay,
+                                    cal_gap, selection.current_error, parts.heldout_age_unknown);
       // The class the fitted shape names (a compression whose knee does not move is a static
       // nonlinearity).
       c.fit.settings =
@@ -1212,6 +1249,98 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
   }
 }
 
+// Library pick `j` of `selection` given the free shape of its own class that fits best what the
+// other picks leave, when that lowers the held-out mean square by the least gain a pick must make
+// (after what fitting its held-out values would take from white noise); the library picks are then
+// refitted around it. Returns whether it was.
+bool give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_t j) {
+  const int index = selection.modelled_index[j];
+  if (index < 0) return false;
+  const std::string name = selection.modelled[static_cast<std::size_t>(index)].name;
+  std::vector<sim::EffectSettings> others = selection.modelled;
+  others.erase(others.begin() + index);
+  const std::vector<double> cal_gap =
+      minus(cal_target(parts, selection), parts.cal_replay.voltage(others));
+  const std::vector<double> ho_gap =
+      minus(ho_target(parts, selection), parts.ho_replay.voltage(others));
+  const std::unique_ptr<const CoilParts> coil = coil_parts(parts, others);
+  const RecordingSeries& cal = coil ? coil->calibration : parts.calibration;
+  const RecordingSeries& ho = coil ? coil->heldout : parts.heldout;
+  const TwinReplay& cal_replay = coil ? *coil->cal_replay : parts.cal_replay;
+  const TwinReplay& ho_replay = coil ? *coil->ho_replay : parts.ho_replay;
+  const double variance = selection.sigma * selection.sigma;
+  const double now = rms_of(selection.current_error);
+  std::optional<Candidate> best;
+  double best_ms = now * now - kMinGainOfNoiseVariance * variance;
+  for (const FreeShapeFamily& family : free_shape_families()) {
+    if (family.effect != name) continue;
+    Candidate c;
+    c.free_shape = fit_free_shape(family, cal, cal_replay, ho, ho_replay, cal_gap, ho_gap,
+                                  parts.heldout_age_unknown);
+    if (c.free_shape->family.effect != name) continue;  // it names another class
+    c.heldout_error = minus(ho_gap, c.free_shape->heldout_voltage_v);
+    const double after = rms_of(c.heldout_error);
+    const double ms = after * after + variance * c.free_shape->heldout_values /
+                                          static_cast<double>(c.heldout_error.size());
+    if (ms < best_ms) {
+      best_ms = ms;
+      c.fit.settings = sim::make_effect_settings(name, {}, "diagnose free shape");
+      c.fit.rms_v = rms_of(minus(cal_gap, c.free_shape->cal_voltage_v));
+      best = std::move(c);
+    }
+  }
+  if (!best) return false;
+  const FreeShapeFit& shape = *best->free_shape;
+  selection.modelled = std::move(others);
+  for (int& other : selection.modelled_index) other -= other > index ? 1 : 0;
+  selection.modelled_index[j] = -1;
+  for (std::size_t i = 0; i < selection.cal_free_v.size(); ++i) {
+    selection.cal_free_v[i] += shape.cal_voltage_v[i];
+  }
+  for (std::size_t i = 0; i < selection.ho_free_v.size(); ++i) {
+    selection.ho_free_v[i] += shape.heldout_voltage_v[i];
+  }
+  backfit(selection.modelled, selection.first_selected, parts.cal_replay,
+          cal_target(parts, selection));
+  selection.current_error =
+      minus(ho_target(parts, selection), parts.ho_replay.voltage(selection.modelled));
+  EffectFinding& finding = selection.findings[j];
+  finding.params = shape.params;
+  finding.evidence += fmt::format(
+      "; given a free shape of its class once the other picks were in (the library's formula "
+      "left {:.4g} V of held-out RMS, the free shape {:.4g} V): {}",
+      now, rms_of(selection.current_error), shape.description);
+  for (std::size_t k = 0; k < selection.findings.size(); ++k) {
+    const int m = selection.modelled_index[k];
+    if (m >= 0) {
+      selection.findings[k].params = selection.modelled[static_cast<std::size_t>(m)].params;
+    }
+  }
+  // Its round now chooses the free shape (the later rounds' scores were made beside the library's
+  // formula: measure_inclusion reads the final fit instead for such a selection).
+  Step& step = selection.steps[j];
+  step.candidates.push_back(std::move(*best));
+  step.chosen = step.candidates.size() - 1;
+  selection.shapes_refined = true;
+  return true;
+}
+
+// The library's classes with free shapes: after the library's pass, each of its picks in turn is
+// given the free shape of its own class where that fits what the others leave better
+// (give_pick_a_free_shape). The classes stay; their shapes and the library picks' values change.
+// A free pass picks its classes greedily, with each free curve fitted before the picks after it
+// and never refitted; a class whose shape departs from the library's alongside a second class
+// that the library's formula explains was lost there (alternative pair 449/27: a sheathed
+// thermocouple, which the library's lag explains, beside a range compression with a linear law
+// above its knee, whose free shape the first free round gave to a curve of clearance).
+Selection with_free_shapes_of_its_classes(const Parts& parts, const Selection& library) {
+  Selection refined = library;
+  for (std::size_t j = 0; j < refined.findings.size(); ++j) {
+    give_pick_a_free_shape(parts, refined, j);
+  }
+  return refined;
+}
+
 // The library's formulas first; only when what they leave is above the noise, a second pass
 // with the free-shape families competing too, kept when it leaves significantly less on held-out
 // data. A free curve fitted early is not refitted around later picks, so letting it compete
@@ -1222,7 +1351,18 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
   Selection library = start;
   DiagnosisResult library_result = result;
   select_bias_effects(parts, options, library, library_result);
-  const double left = rms_of(library.current_error);
+  double left = rms_of(library.current_error);
+  // The library's classes with shapes of their own, when they leave less: whether or not the
+  // library's formulas explained the pair, a shape that departs from them is reported.
+  if (!library.findings.empty()) {
+    Selection refined = with_free_shapes_of_its_classes(parts, library);
+    const double refined_left = rms_of(refined.current_error);
+    if (left * left - refined_left * refined_left >=
+        kMinGainOfNoiseVariance * library.sigma * library.sigma) {
+      library = std::move(refined);
+      left = refined_left;
+    }
+  }
   const bool several_classes = library.findings.size() > 1;
   if (left <= kExplainedRatio * library.sigma && !several_classes) {
     result = std::move(library_result);
@@ -1236,13 +1376,18 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
   const double sigma = std::min(library.sigma, free.sigma);
   const double margin = kMinGainOfNoiseVariance * sigma * sigma;
   const bool leaves_less = left * left - free_left * free_left >= margin;
-  // Fewer classes that leave as little: the library's formulas split between two classes what
-  // one class of another shape explains alone (alternative pair 447/13, a temperature gain about
-  // a mid-range pivot, which the library's nonlinearity and temperature gain shared, the
-  // nonlinearity first).
+  // Fewer classes that leave as little, or that leave the noise too: the library's formulas split
+  // between two classes what one class of another shape explains alone (alternative pair 447/13,
+  // a temperature gain about a mid-range pivot, which the library's nonlinearity and temperature
+  // gain shared, the nonlinearity first). Given free shapes of their own, the library's classes
+  // can share it more closely still (449/11, the same effect: a curve of clearance, a gain about a
+  // pivot and an offset line left 1.02 sigma, one free gain and a reading lag 1.09 sigma); where
+  // both leave the noise, the fewer classes are the explanation.
+  const bool both_leave_the_noise =
+      left <= kExplainedRatio * sigma && free_left <= kExplainedRatio * sigma;
   const bool fewer_classes = !free.findings.empty() &&
                              free.findings.size() < library.findings.size() &&
-                             free_left * free_left - left * left < margin;
+                             (free_left * free_left - left * left < margin || both_leave_the_noise);
   if (leaves_less || (several_classes && fewer_classes)) {
     result = std::move(free_result);
     return free;
@@ -1271,17 +1416,6 @@ double share_of_wins(const Step& step, const std::vector<double>& before,
   return static_cast<double>(wins) / static_cast<double>(resamples.size());
 }
 
-// Inclusion: the share of held-out resamples on which each step's choice still wins and gains
-// (the fits are not redone per round: it is the scoring that is resampled).
-void measure_inclusion(Selection& selection) {
-  const std::vector<Step>& steps = selection.steps;
-  for (std::size_t s = 0; s < steps.size(); ++s) {
-    const std::vector<double>& before =
-        s == 0 ? selection.ho_gap : steps[s - 1].candidates[steps[s - 1].chosen].heldout_error;
-    selection.findings[s].inclusion = share_of_wins(steps[s], before, selection.resamples);
-  }
-}
-
 // The held-out gap that the picks marked in `kept` leave (the twin's own effects and the
 // converter's placed boundaries always in), each with its parameters from the final fit.
 std::vector<double> heldout_error_with(const Parts& parts, const Selection& selection,
@@ -1306,6 +1440,35 @@ std::vector<double> heldout_error_with(const Parts& parts, const Selection& sele
     if (in_library[m]) library.push_back(selection.modelled[m]);
   }
   return minus(target, parts.ho_replay.voltage(library));
+}
+
+// Inclusion: the share of held-out resamples on which each step's choice still wins and gains
+// (the fits are not redone per round: it is the scoring that is resampled). Where a pick was given
+// a free shape after the rounds, the rounds' scores no longer add up to the final fit: there it is
+// the share of resamples on which the final fit without the pick leaves more.
+void measure_inclusion(const Parts& parts, Selection& selection) {
+  const std::vector<Step>& steps = selection.steps;
+  if (selection.shapes_refined) {
+    const std::vector<bool> all(selection.findings.size(), true);
+    const std::vector<double> with_all = heldout_error_with(parts, selection, all);
+    for (std::size_t j = 0; j < selection.findings.size(); ++j) {
+      std::vector<bool> kept = all;
+      kept[j] = false;
+      const std::vector<double> without = heldout_error_with(parts, selection, kept);
+      int needed = 0;
+      for (const auto& set : selection.resamples) {
+        needed += mean_square_on(without, set) > mean_square_on(with_all, set) ? 1 : 0;
+      }
+      selection.findings[j].inclusion =
+          static_cast<double>(needed) / static_cast<double>(selection.resamples.size());
+    }
+    return;
+  }
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    const std::vector<double>& before =
+        s == 0 ? selection.ho_gap : steps[s - 1].candidates[steps[s - 1].chosen].heldout_error;
+    selection.findings[s].inclusion = share_of_wins(steps[s], before, selection.resamples);
+  }
 }
 
 // The held-out gap's RMS with every pick but pick `j`.
@@ -1925,7 +2088,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
                     clock.kind == "unknown"};
   Selection selection =
       select_in_two_passes(parts, options, replay_nominal_twin(parts, options, result), result);
-  measure_inclusion(selection);
+  measure_inclusion(parts, selection);
   drop_unneeded_picks(parts, selection);
   measure_picks_in_final_fit(parts, selection);
   // Noise-type effects, recognised from their signatures in both parts.

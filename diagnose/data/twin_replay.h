@@ -73,6 +73,7 @@ class TwinReplay {
   std::vector<double> at_lattice_rows(const std::vector<double>& search) const;
   double age_offset_s() const { return age_offset_s_; }
   double v_min_v() const { return nominal_.v_min_v(); }
+  const sim::PolynomialSensorModel& nominal() const { return nominal_; }
 
  private:
   // Every sample as the coil sees it once the effects that move the coil or its temperature
