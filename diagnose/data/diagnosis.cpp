@@ -1270,15 +1270,23 @@ bool give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
   const TwinReplay& ho_replay = coil ? *coil->ho_replay : parts.ho_replay;
   const double variance = selection.sigma * selection.sigma;
   const double now = rms_of(selection.current_error);
-  std::optional<Candidate> best;
-  double best_ms = now * now - kMinGainOfNoiseVariance * variance;
+  // The class's families are fitted in parallel and taken in catalogue order.
+  std::vector<std::future<Candidate>> pending;
   for (const FreeShapeFamily& family : free_shape_families()) {
     if (family.effect != name) continue;
-    Candidate c;
-    c.free_shape = fit_free_shape(family, cal, cal_replay, ho, ho_replay, cal_gap, ho_gap,
-                                  parts.heldout_age_unknown);
+    pending.push_back(std::async(std::launch::async, [&, family] {
+      Candidate c;
+      c.free_shape = fit_free_shape(family, cal, cal_replay, ho, ho_replay, cal_gap, ho_gap,
+                                    parts.heldout_age_unknown);
+      c.heldout_error = minus(ho_gap, c.free_shape->heldout_voltage_v);
+      return c;
+    }));
+  }
+  std::optional<Candidate> best;
+  double best_ms = now * now - kMinGainOfNoiseVariance * variance;
+  for (std::future<Candidate>& fitted : pending) {
+    Candidate c = fitted.get();
     if (c.free_shape->family.effect != name) continue;  // it names another class
-    c.heldout_error = minus(ho_gap, c.free_shape->heldout_voltage_v);
     const double after = rms_of(c.heldout_error);
     const double ms = after * after + variance * c.free_shape->heldout_values /
                                           static_cast<double>(c.heldout_error.size());
@@ -1351,27 +1359,37 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
   Selection library = start;
   DiagnosisResult library_result = result;
   select_bias_effects(parts, options, library, library_result);
-  double left = rms_of(library.current_error);
   // The library's classes with shapes of their own, when they leave less: whether or not the
   // library's formulas explained the pair, a shape that departs from them is reported.
-  if (!library.findings.empty()) {
-    Selection refined = with_free_shapes_of_its_classes(parts, library);
-    const double refined_left = rms_of(refined.current_error);
-    if (left * left - refined_left * refined_left >=
-        kMinGainOfNoiseVariance * library.sigma * library.sigma) {
-      library = std::move(refined);
-      left = refined_left;
-    }
-  }
+  const auto with_shapes_of_its_classes = [&parts](Selection selection) {
+    if (selection.findings.empty()) return selection;
+    Selection refined = with_free_shapes_of_its_classes(parts, selection);
+    const double before = rms_of(selection.current_error), after = rms_of(refined.current_error);
+    const double margin = kMinGainOfNoiseVariance * selection.sigma * selection.sigma;
+    return before * before - after * after >= margin ? refined : selection;
+  };
   const bool several_classes = library.findings.size() > 1;
-  if (left <= kExplainedRatio * library.sigma && !several_classes) {
+  const auto explained_by_one_class = [&](const Selection& selection) {
+    return rms_of(selection.current_error) <= kExplainedRatio * selection.sigma && !several_classes;
+  };
+  if (explained_by_one_class(library)) {
     result = std::move(library_result);
-    return library;
+    return with_shapes_of_its_classes(std::move(library));
   }
+  // The refinement and the free pass do not depend on each other: they run at once, and the
+  // refined selection is taken alone when it explains with one class (the free pass then unused).
+  std::future<Selection> refining =
+      std::async(std::launch::async, with_shapes_of_its_classes, library);
   Selection free = start;
   free.free_shapes = true;
   DiagnosisResult free_result = result;
   select_bias_effects(parts, options, free, free_result);
+  library = refining.get();
+  if (explained_by_one_class(library)) {
+    result = std::move(library_result);
+    return library;
+  }
+  const double left = rms_of(library.current_error);
   const double free_left = rms_of(free.current_error);
   const double sigma = std::min(library.sigma, free.sigma);
   const double margin = kMinGainOfNoiseVariance * sigma * sigma;
