@@ -902,6 +902,19 @@ std::unique_ptr<const CoilParts> coil_parts(const Parts& parts,
   return coil;
 }
 
+// What the free shapes are fitted on: the parts as recorded, or `coil`'s copies of them.
+struct FreeShapeParts {
+  const RecordingSeries& calibration;
+  const TwinReplay& cal_replay;
+  const RecordingSeries& heldout;
+  const TwinReplay& ho_replay;
+};
+
+FreeShapeParts free_shape_parts(const Parts& parts, const CoilParts* coil) {
+  if (!coil) return {parts.calibration, parts.cal_replay, parts.heldout, parts.ho_replay};
+  return {coil->calibration, *coil->cal_replay, coil->heldout, *coil->ho_replay};
+}
+
 // Every bias-type effect of the catalogue not yet modelled, fitted on top of `modelled` and
 // scored on the held-out part, in catalogue order.
 std::vector<Candidate> score_candidates(const Parts& parts, const Selection& selection) {
@@ -940,17 +953,15 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
   const std::unique_ptr<const CoilParts> coil =
       selection.free_shapes ? coil_parts(parts, modelled) : nullptr;
-  const RecordingSeries& free_cal = coil ? coil->calibration : parts.calibration;
-  const RecordingSeries& free_ho = coil ? coil->heldout : parts.heldout;
-  const TwinReplay& free_cal_replay = coil ? *coil->cal_replay : parts.cal_replay;
-  const TwinReplay& free_ho_replay = coil ? *coil->ho_replay : parts.ho_replay;
+  const FreeShapeParts free_parts = free_shape_parts(parts, coil.get());
   std::vector<std::future<Candidate>> pending_free;
   for (const FreeShapeFamily& family : free_shape_families()) {
     if (!selection.free_shapes || class_taken(family.effect, selection)) continue;
     pending_free.push_back(std::async(std::launch::async, [&, family] {
       Candidate c;
-      c.free_shape = fit_free_shape(family, free_cal, free_cal_replay, free_ho, free_ho_replay,
-                                    cal_gap, selection.current_error, parts.heldout_age_unknown);
+      c.free_shape = fit_free_shape(family, free_parts.calibration, free_parts.cal_replay,
+                                    free_parts.heldout, free_parts.ho_replay, cal_gap,
+                                    selection.current_error, parts.heldout_age_unknown);
       // The class the fitted shape names (a compression whose knee does not move is a static
       // nonlinearity).
       c.fit.settings =
@@ -1264,10 +1275,7 @@ bool give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
   const std::vector<double> ho_gap =
       minus(ho_target(parts, selection), parts.ho_replay.voltage(others));
   const std::unique_ptr<const CoilParts> coil = coil_parts(parts, others);
-  const RecordingSeries& cal = coil ? coil->calibration : parts.calibration;
-  const RecordingSeries& ho = coil ? coil->heldout : parts.heldout;
-  const TwinReplay& cal_replay = coil ? *coil->cal_replay : parts.cal_replay;
-  const TwinReplay& ho_replay = coil ? *coil->ho_replay : parts.ho_replay;
+  const FreeShapeParts free_parts = free_shape_parts(parts, coil.get());
   const double variance = selection.sigma * selection.sigma;
   const double now = rms_of(selection.current_error);
   // The class's families are fitted in parallel and taken in catalogue order.
@@ -1276,8 +1284,9 @@ bool give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
     if (family.effect != name) continue;
     pending.push_back(std::async(std::launch::async, [&, family] {
       Candidate c;
-      c.free_shape = fit_free_shape(family, cal, cal_replay, ho, ho_replay, cal_gap, ho_gap,
-                                    parts.heldout_age_unknown);
+      c.free_shape =
+          fit_free_shape(family, free_parts.calibration, free_parts.cal_replay, free_parts.heldout,
+                         free_parts.ho_replay, cal_gap, ho_gap, parts.heldout_age_unknown);
       c.heldout_error = minus(ho_gap, c.free_shape->heldout_voltage_v);
       return c;
     }));

@@ -5,11 +5,13 @@
 // 200 degC behind a 400 s lag at 9 Hz), and no reading lag could be fitted on such a bench.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "effect_catalogue.h"
 #include "effect_fit.h"
 #include "sensor_twin.h"
+#include "twin_recording.h"
 #include "twin_replay.h"
 
 namespace flange::diagnose {
@@ -23,23 +25,15 @@ RecordingSeries oven_bench(const std::vector<sim::EffectSettings>& effects,
   config.noise.voltage_std_v = 0.02;
   config.noise.temperature_std_c = temperature_noise_c;
   config.effects = effects;
-  sim::SensorTwin twin(config, seed);
-  RecordingSeries series;
-  constexpr double kFs = 9.0, kDuration = 5400.0;
-  for (int i = 0; i <= static_cast<int>(kFs * kDuration); ++i) {
-    const double t = i / kFs;
+  const auto triangle = [](double t) {
     const double u = std::fmod(t, 300.0) / 300.0;
-    const double d = 2.0 + 7.0 * (u < 0.5 ? 2.0 * u : 2.0 - 2.0 * u);
+    return 2.0 + 7.0 * (u < 0.5 ? 2.0 * u : 2.0 - 2.0 * u);
+  };
+  const auto oven = [](double t) {
     const double heated = 20.0 + 70.0 * (1.0 - std::exp(-std::min(t, 3000.0) / 600.0));
-    const double temp =
-        t < 3000.0 ? heated : 20.0 + (heated - 20.0) * std::exp(-(t - 3000.0) / 900.0);
-    const sim::Reading r = twin.step({t, d, temp});
-    series.t_s.push_back(t);
-    series.clearance_mm.push_back(d);
-    series.temp_c.push_back(r.temp_c);
-    series.voltage_v.push_back(r.voltage_v);
-  }
-  return series;
+    return t < 3000.0 ? heated : 20.0 + (heated - 20.0) * std::exp(-(t - 3000.0) / 900.0);
+  };
+  return record_twin(config, seed, 9.0, 5400.0, triangle, oven);
 }
 
 sim::EffectSettings late_reading(double tau_s) {

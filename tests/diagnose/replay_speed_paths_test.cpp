@@ -10,6 +10,7 @@
 #include "effect_catalogue.h"
 #include "effect_fit.h"
 #include "sensor_twin.h"
+#include "twin_recording.h"
 #include "twin_replay.h"
 
 namespace flange::diagnose {
@@ -22,24 +23,16 @@ RecordingSeries sweep(const std::vector<sim::EffectSettings>& effects, double fs
   sim::TwinConfig config;
   config.noise.voltage_std_v = noise_v;
   config.effects = effects;
-  sim::SensorTwin twin(config, seed);
-  RecordingSeries series;
-  const auto n = static_cast<int>(duration_s * fs_hz);
-  for (int i = 0; i <= n; ++i) {
-    const double t = i / fs_hz;
+  const auto triangle = [](double t) {
     const double u = std::fmod(t, 300.0) / 300.0;
-    const double d = 1.5 + 8.5 * (u < 0.5 ? 2.0 * u : 2.0 - 2.0 * u);
-    const double temp = t < 0.5 * duration_s
-                            ? 20.0 + 75.0 * (1.0 - std::exp(-t / 400.0))
-                            : 20.0 + 75.0 * (1.0 - std::exp(-0.5 * duration_s / 400.0)) *
-                                         std::exp(-(t - 0.5 * duration_s) / 500.0);
-    const sim::Reading r = twin.step({t, d, temp});
-    series.t_s.push_back(t);
-    series.clearance_mm.push_back(d);
-    series.temp_c.push_back(r.temp_c);
-    series.voltage_v.push_back(r.voltage_v);
-  }
-  return series;
+    return 1.5 + 8.5 * (u < 0.5 ? 2.0 * u : 2.0 - 2.0 * u);
+  };
+  const auto blower = [duration_s](double t) {
+    return t < 0.5 * duration_s ? 20.0 + 75.0 * (1.0 - std::exp(-t / 400.0))
+                                : 20.0 + 75.0 * (1.0 - std::exp(-0.5 * duration_s / 400.0)) *
+                                             std::exp(-(t - 0.5 * duration_s) / 500.0);
+  };
+  return record_twin(config, seed, fs_hz, duration_s, triangle, blower);
 }
 
 sim::EffectSettings effect(const std::string& name, const sim::ParamValues& values) {

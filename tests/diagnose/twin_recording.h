@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// A recording the twin makes on a bench whose micrometer and oven follow given curves of time:
+// what the diagnosis's tests feed it where the twin's own scenarios do not fit.
+#pragma once
+
+#include <cstdint>
+
+#include "recording_series.h"
+#include "sensor_twin.h"
+
+namespace flange::diagnose {
+
+// Samples at `fs_hz` from t = 0 to `duration_s`; `clearance_mm(t)` and `temp_c(t)` are the
+// reference clearance and the oven's temperature. The recorded temperature is the twin's reading.
+template <class Clearance, class Temperature>
+RecordingSeries record_twin(const sim::TwinConfig& config, std::uint64_t seed, double fs_hz,
+                            double duration_s, Clearance clearance_mm, Temperature temp_c) {
+  sim::SensorTwin twin(config, seed);
+  RecordingSeries series;
+  const auto n = static_cast<int>(duration_s * fs_hz);
+  for (int i = 0; i <= n; ++i) {
+    const double t = i / fs_hz;
+    const double d = clearance_mm(t);
+    const sim::Reading r = twin.step({t, d, temp_c(t)});
+    series.t_s.push_back(t);
+    series.clearance_mm.push_back(d);
+    series.temp_c.push_back(r.temp_c);
+    series.voltage_v.push_back(r.voltage_v);
+  }
+  return series;
+}
+
+}  // namespace flange::diagnose
