@@ -1263,10 +1263,10 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
 // Library pick `j` of `selection` given the free shape of its own class that fits best what the
 // other picks leave, when that lowers the held-out mean square by the least gain a pick must make
 // (after what fitting its held-out values would take from white noise); the library picks are then
-// refitted around it. Returns whether it was.
-bool give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_t j) {
+// refitted around it.
+void give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_t j) {
   const int index = selection.modelled_index[j];
-  if (index < 0) return false;
+  if (index < 0) return;
   const std::string name = selection.modelled[static_cast<std::size_t>(index)].name;
   std::vector<sim::EffectSettings> others = selection.modelled;
   others.erase(others.begin() + index);
@@ -1306,7 +1306,7 @@ bool give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
       best = std::move(c);
     }
   }
-  if (!best) return false;
+  if (!best) return;
   const FreeShapeFit& shape = *best->free_shape;
   selection.modelled = std::move(others);
   for (int& other : selection.modelled_index) other -= other > index ? 1 : 0;
@@ -1339,7 +1339,6 @@ bool give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
   step.candidates.push_back(std::move(*best));
   step.chosen = step.candidates.size() - 1;
   selection.shapes_refined = true;
-  return true;
 }
 
 // The library's classes with free shapes: after the library's pass, each of its picks in turn is
