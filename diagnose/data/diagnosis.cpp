@@ -635,7 +635,8 @@ struct Parts {
   const RecordingSeries& heldout;
   TwinReplay cal_replay;
   TwinReplay ho_replay;
-  bool heldout_age_unknown;  // the sessions' clocks are unknown (session_clock's "unknown")
+  bool heldout_age_unknown;     // the sessions' clocks are unknown (session_clock's "unknown")
+  std::optional<AdcGrid> grid;  // the converter grid both parts lie on (shared_grid), if one
 };
 
 // A candidate effect fitted on the calibration part and scored on the held-out part.
@@ -748,12 +749,13 @@ bool same_grid(const AdcGrid& a, const AdcGrid& b) {
 }
 
 // The converter grid both parts lie on, if they lie on one.
-std::optional<AdcGrid> shared_grid(const Parts& parts) {
-  const auto cal_grid = estimate_adc_grid(parts.calibration.voltage_v);
-  const auto ho_grid = estimate_adc_grid(parts.heldout.voltage_v);
+std::optional<AdcGrid> shared_grid(const RecordingSeries& calibration,
+                                   const RecordingSeries& heldout) {
+  const auto cal_grid = estimate_adc_grid(calibration.voltage_v);
+  const auto ho_grid = estimate_adc_grid(heldout.voltage_v);
   if (!cal_grid || !ho_grid || !same_grid(*cal_grid, *ho_grid)) return std::nullopt;
-  std::vector<double> both = parts.calibration.voltage_v;
-  both.insert(both.end(), parts.heldout.voltage_v.begin(), parts.heldout.voltage_v.end());
+  std::vector<double> both = calibration.voltage_v;
+  both.insert(both.end(), heldout.voltage_v.begin(), heldout.voltage_v.end());
   return estimate_adc_grid(both);
 }
 
@@ -858,7 +860,7 @@ Selection replay_nominal_twin(const Parts& parts, const DiagnoseOptions& options
   confirm_alarm_timing_on_heldout(parts.heldout, ho_base, options, detail);
   diagnosis.stage = first_significant_stage(detail.stages);
   selection.raw_ho_gap = minus(parts.heldout.voltage_v, ho_base);
-  const std::optional<AdcGrid> grid = shared_grid(parts);
+  const std::optional<AdcGrid>& grid = parts.grid;
   place_converter_boundaries(parts, grid, selection);
   selection.ho_gap = minus(ho_target(parts, selection), ho_base);
   const bool motion =
@@ -1608,7 +1610,7 @@ std::string grid_evidence(const AdcGrid& grid) {
 // a truncating converter, a gain or offset calibration in the DAQ software), the quantisation is
 // taken as noise of LSB / sqrt(12), which the effective white noise already holds.
 void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selection& selection) {
-  const auto grid = shared_grid(parts);
+  const std::optional<AdcGrid>& grid = parts.grid;
   if (!grid) return;
   EffectFinding finding;
   finding.name = "adc_quantization";
@@ -2109,9 +2111,12 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   const SessionClock clock = session_clock(calibration, heldout);
   result.diagnosis.clock = clock.kind;
   if (clock.kind != "unknown") result.diagnosis.heldout_starts_after_s = clock.age_offset_s;
-  const Parts parts{calibration, heldout, TwinReplay(calibration, options.twin.nominal),
+  const Parts parts{calibration,
+                    heldout,
+                    TwinReplay(calibration, options.twin.nominal),
                     TwinReplay(heldout, options.twin.nominal, clock.age_offset_s),
-                    clock.kind == "unknown"};
+                    clock.kind == "unknown",
+                    shared_grid(calibration, heldout)};
   Selection selection =
       select_in_two_passes(parts, options, replay_nominal_twin(parts, options, result), result);
   measure_inclusion(parts, selection);
