@@ -886,12 +886,7 @@ struct CoilParts {
 
 std::unique_ptr<const CoilParts> coil_parts(const Parts& parts,
                                             const std::vector<sim::EffectSettings>& modelled) {
-  const bool late_temperature =
-      std::any_of(modelled.begin(), modelled.end(), [](const sim::EffectSettings& e) {
-        return (e.name == "thermal_lag" && e.params.at("tau_s") < 0.0) ||
-               (e.name == "channel_skew" && e.params.at("skew_s") > 0.0);
-      });
-  if (!late_temperature) return nullptr;
+  if (std::none_of(modelled.begin(), modelled.end(), delays_temperature_channel)) return nullptr;
   auto coil = std::make_unique<CoilParts>();
   coil->calibration = parts.calibration;
   coil->calibration.temp_c = ambient_from_recorded(parts.calibration, modelled);
@@ -1151,6 +1146,32 @@ void compare_with_library(const std::vector<Candidate>& candidates, const Pick& 
   }
 }
 
+// Adds `sign` times what a free shape adds to the twin's voltage to both parts' free voltages.
+void add_free_shape(Selection& selection, const FreeShapeFit& shape, double sign) {
+  for (std::size_t i = 0; i < selection.cal_free_v.size(); ++i) {
+    selection.cal_free_v[i] += sign * shape.cal_voltage_v[i];
+  }
+  for (std::size_t i = 0; i < selection.ho_free_v.size(); ++i) {
+    selection.ho_free_v[i] += sign * shape.heldout_voltage_v[i];
+  }
+}
+
+// Takes the library effect at `index` out of `modelled`; the picks' indices into it follow.
+void erase_library_effect(Selection& selection, int index) {
+  selection.modelled.erase(selection.modelled.begin() + index);
+  for (int& other : selection.modelled_index) other -= other > index ? 1 : 0;
+}
+
+// Each library pick's finding carries its effect's parameters as last refitted.
+void refresh_library_params(Selection& selection) {
+  for (std::size_t j = 0; j < selection.findings.size(); ++j) {
+    const int index = selection.modelled_index[j];
+    if (index >= 0) {
+      selection.findings[j].params = selection.modelled[static_cast<std::size_t>(index)].params;
+    }
+  }
+}
+
 // Adds the pick to the model. The earlier findings carry their parameters as refitted with it.
 void take_pick(std::vector<Candidate> candidates, const Pick& pick, Selection& selection) {
   const Candidate& chosen = candidates[pick.best];
@@ -1160,22 +1181,12 @@ void take_pick(std::vector<Candidate> candidates, const Pick& pick, Selection& s
   selection.current_error = chosen.heldout_error;
   selection.findings.push_back(finding);
   if (chosen.free_shape) {
-    for (std::size_t i = 0; i < selection.cal_free_v.size(); ++i) {
-      selection.cal_free_v[i] += chosen.free_shape->cal_voltage_v[i];
-    }
-    for (std::size_t i = 0; i < selection.ho_free_v.size(); ++i) {
-      selection.ho_free_v[i] += chosen.free_shape->heldout_voltage_v[i];
-    }
+    add_free_shape(selection, *chosen.free_shape, 1.0);
     selection.modelled_index.push_back(-1);
   } else {
     selection.modelled_index.push_back(static_cast<int>(selection.modelled.size()) - 1);
   }
-  for (std::size_t j = 0; j < selection.findings.size(); ++j) {
-    const int index = selection.modelled_index[j];
-    if (index >= 0) {
-      selection.findings[j].params = selection.modelled[static_cast<std::size_t>(index)].params;
-    }
-  }
+  refresh_library_params(selection);
   selection.steps.push_back({std::move(candidates), pick.best});
 }
 
@@ -1310,15 +1321,9 @@ void give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
   }
   if (!best) return;
   const FreeShapeFit& shape = *best->free_shape;
-  selection.modelled = std::move(others);
-  for (int& other : selection.modelled_index) other -= other > index ? 1 : 0;
+  erase_library_effect(selection, index);
   selection.modelled_index[j] = -1;
-  for (std::size_t i = 0; i < selection.cal_free_v.size(); ++i) {
-    selection.cal_free_v[i] += shape.cal_voltage_v[i];
-  }
-  for (std::size_t i = 0; i < selection.ho_free_v.size(); ++i) {
-    selection.ho_free_v[i] += shape.heldout_voltage_v[i];
-  }
+  add_free_shape(selection, shape, 1.0);
   backfit(selection.modelled, selection.first_selected, parts.cal_replay,
           cal_target(parts, selection));
   selection.current_error =
@@ -1329,12 +1334,7 @@ void give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
       "; given a free shape of its class once the other picks were in (the library's formula "
       "left {:.4g} V of held-out RMS, the free shape {:.4g} V): {}",
       now, rms_of(selection.current_error), shape.description);
-  for (std::size_t k = 0; k < selection.findings.size(); ++k) {
-    const int m = selection.modelled_index[k];
-    if (m >= 0) {
-      selection.findings[k].params = selection.modelled[static_cast<std::size_t>(m)].params;
-    }
-  }
+  refresh_library_params(selection);
   // Its round now chooses the free shape (the later rounds' scores were made beside the library's
   // formula: measure_inclusion reads the final fit instead for such a selection).
   Step& step = selection.steps[j];
@@ -1510,17 +1510,10 @@ double heldout_rms_without(const Parts& parts, const Selection& selection, std::
 void remove_pick(Selection& selection, std::size_t j) {
   const int index = selection.modelled_index[j];
   if (index >= 0) {
-    selection.modelled.erase(selection.modelled.begin() + index);
-    for (int& other : selection.modelled_index) other -= other > index ? 1 : 0;
+    erase_library_effect(selection, index);
   } else {
-    const FreeShapeFit& shape =
-        *selection.steps[j].candidates[selection.steps[j].chosen].free_shape;
-    for (std::size_t i = 0; i < selection.cal_free_v.size(); ++i) {
-      selection.cal_free_v[i] -= shape.cal_voltage_v[i];
-    }
-    for (std::size_t i = 0; i < selection.ho_free_v.size(); ++i) {
-      selection.ho_free_v[i] -= shape.heldout_voltage_v[i];
-    }
+    add_free_shape(selection, *selection.steps[j].candidates[selection.steps[j].chosen].free_shape,
+                   -1.0);
   }
   const auto at = [j](auto& v) { v.erase(v.begin() + static_cast<long>(j)); };
   at(selection.findings);

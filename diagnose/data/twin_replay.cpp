@@ -77,6 +77,11 @@ double interpolate_at(const std::vector<double>& t, const std::vector<double>& v
   return values[j - 1] + w * (values[j] - values[j - 1]);
 }
 
+bool delays_temperature_channel(const sim::EffectSettings& effect) {
+  return (effect.name == "channel_skew" && effect.params.at("skew_s") > 0.0) ||
+         (effect.name == "thermal_lag" && effect.params.at("tau_s") < 0.0);
+}
+
 namespace {
 
 // The slope of `x` at each sample: least squares over the samples within `half_width_s` of it

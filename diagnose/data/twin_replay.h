@@ -21,9 +21,13 @@ namespace flange::diagnose {
 // constant beyond the ends.
 double interpolate_at(const std::vector<double>& t, const std::vector<double>& values, double t_s);
 
+// Whether `effect` delays the temperature channel behind the coil: channel_skew with skew_s > 0,
+// thermal_lag with tau_s < 0 (what ambient_from_recorded undoes).
+bool delays_temperature_channel(const sim::EffectSettings& effect);
+
 // The twin's ambient temperature behind a recorded one: effects that delay the temperature
-// channel (channel_skew with skew_s > 0, thermal_lag with tau_s < 0) are undone, so that the
-// twin driven by the result records what was recorded. Others leave it as recorded.
+// channel (delays_temperature_channel) are undone, so that the twin driven by the result records
+// what was recorded. Others leave it as recorded.
 std::vector<double> ambient_from_recorded(const RecordingSeries& series,
                                           const std::vector<sim::EffectSettings>& effects);
 
