@@ -7,13 +7,15 @@
 #include <cmath>
 #include <future>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <numeric>
 #include <optional>
-#include <random>
 #include <span>
 #include <string>
 
 #include "adc_grid.h"
+#include "block_resamples.h"
 #include "diagnosis_detail.h"
 #include "effect_fit.h"
 #include "float_design.h"
@@ -104,22 +106,6 @@ std::vector<double> minus(const std::vector<double>& a, const std::vector<double
   return d;
 }
 
-// Block-bootstrap index sets: blocks of consecutive samples, drawn with replacement.
-std::vector<std::vector<std::size_t>> block_resamples(std::size_t n, int rounds,
-                                                      std::uint64_t seed) {
-  const std::size_t block = std::max<std::size_t>(32, n / 20);
-  std::mt19937_64 random(seed);
-  std::uniform_int_distribution<std::size_t> start(0, n > block ? n - block : 0);
-  std::vector<std::vector<std::size_t>> sets(static_cast<std::size_t>(rounds));
-  for (auto& set : sets) {
-    while (set.size() < n) {
-      const std::size_t s = start(random);
-      for (std::size_t i = s; i < std::min(n, s + block) && set.size() < n; ++i) set.push_back(i);
-    }
-  }
-  return sets;
-}
-
 double quantile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -127,12 +113,6 @@ double quantile(std::vector<double> v, double q) {
   const std::size_t lo = static_cast<std::size_t>(pos);
   const std::size_t hi = std::min(lo + 1, v.size() - 1);
   return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
-}
-
-double mean_square_on(const std::vector<double>& e, const std::vector<std::size_t>& idx) {
-  double s = 0.0;
-  for (std::size_t i : idx) s += e[i] * e[i];
-  return idx.empty() ? 0.0 : s / static_cast<double>(idx.size());
 }
 
 // The thesis's measurement filter (eq. 4.15: Butterworth order 5, 0.574 Hz at 6 Hz), at the
@@ -209,22 +189,33 @@ double median_of(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// Calls each(noisy_v, d_noisy, f_noisy) for kNullReplicas draws of the noisy twin (on the
-// recording's converter grid, if it has one) of `sim_v`, with its compensated and filtered
-// clearance.
+// Calls each(replica, noisy_v, d_noisy, f_noisy) for kNullReplicas draws of the noisy twin (on
+// the recording's converter grid, if it has one) of `sim_v`, with its compensated and filtered
+// clearance. The draws come from one stream in replica order, so the floors do not depend on the
+// threads; what each draw then costs (inversion, filter, alarms: most of it) runs two replicas at
+// a time, so `each` must only write to its replica's own place.
 template <class Each>
 void for_each_null_replica(const RecordingSeries& real, const std::vector<double>& sim_v,
                            const WhiteNoise& white, const sim::PolynomialSensorModel& model,
                            double fs_hz, std::uint64_t seed, Each each) {
+  constexpr std::size_t kInFlight = 2;
   sim::GaussianSource noise(seed);
-  std::vector<double> noisy_v(sim_v.size());
+  std::vector<std::future<void>> running;
   for (int replica = 0; replica < kNullReplicas; ++replica) {
+    std::vector<double> noisy_v(sim_v.size());
     for (std::size_t i = 0; i < sim_v.size(); ++i) {
       noisy_v[i] = white.noisy(sim_v[i], noise.standard_normal());
     }
-    const std::vector<double> d_noisy = clearance_of(model, noisy_v, real.temp_c);
-    each(noisy_v, d_noisy, measurement_filter(d_noisy, fs_hz));
+    if (running.size() == kInFlight) {
+      running.front().get();
+      running.erase(running.begin());
+    }
+    running.push_back(std::async(std::launch::async, [&, replica, noisy_v = std::move(noisy_v)] {
+      const std::vector<double> d_noisy = clearance_of(model, noisy_v, real.temp_c);
+      each(static_cast<std::size_t>(replica), noisy_v, d_noisy, measurement_filter(d_noisy, fs_hz));
+    }));
   }
+  for (std::future<void>& r : running) r.get();
 }
 
 struct AlarmTiming {
@@ -255,15 +246,16 @@ std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<
   const auto a_sim = alarm_changes(real.t_s, f_sim);
 
   // The noisy twin against the noiseless one: the floors every stage's gap is compared with.
-  std::vector<double> voltage_floor, clearance_floor, filtered_floor, alarm_floor;
+  std::vector<double> voltage_floor(kNullReplicas), clearance_floor(kNullReplicas),
+      filtered_floor(kNullReplicas), alarm_floor(kNullReplicas);
   for_each_null_replica(
       real, sim_v, white, model, fs_hz, sim::derive_seed(seed, 77),
-      [&](const std::vector<double>& noisy_v, const std::vector<double>& d_noisy,
-          const std::vector<double>& f_noisy) {
-        voltage_floor.push_back(rms_of(minus(noisy_v, sim_v)));
-        clearance_floor.push_back(rms_of(minus(d_noisy, d_sim)));
-        filtered_floor.push_back(rms_of(minus(f_noisy, f_sim)));
-        alarm_floor.push_back(alarm_timing_gap(alarm_changes(real.t_s, f_noisy), a_sim, record_s));
+      [&](std::size_t replica, const std::vector<double>& noisy_v,
+          const std::vector<double>& d_noisy, const std::vector<double>& f_noisy) {
+        voltage_floor[replica] = rms_of(minus(noisy_v, sim_v));
+        clearance_floor[replica] = rms_of(minus(d_noisy, d_sim));
+        filtered_floor[replica] = rms_of(minus(f_noisy, f_sim));
+        alarm_floor[replica] = alarm_timing_gap(alarm_changes(real.t_s, f_noisy), a_sim, record_s);
       });
   const AlarmTiming alarm = alarm_timing(real, f_real, a_sim, alarm_floor);
 
@@ -300,12 +292,12 @@ AlarmTiming heldout_alarm_timing(const RecordingSeries& heldout, const std::vect
       measurement_filter(clearance_of(model, sim_v, heldout.temp_c), fs_hz);
   const double record_s = heldout.t_s.back() - heldout.t_s.front();
   const auto a_sim = alarm_changes(heldout.t_s, f_sim);
-  std::vector<double> alarm_floor;
+  std::vector<double> alarm_floor(kNullReplicas);
   for_each_null_replica(heldout, sim_v, white, model, fs_hz, sim::derive_seed(seed, 78),
-                        [&](const std::vector<double>&, const std::vector<double>&,
-                            const std::vector<double>& f_noisy) {
-                          alarm_floor.push_back(alarm_timing_gap(
-                              alarm_changes(heldout.t_s, f_noisy), a_sim, record_s));
+                        [&](std::size_t replica, const std::vector<double>&,
+                            const std::vector<double>&, const std::vector<double>& f_noisy) {
+                          alarm_floor[replica] = alarm_timing_gap(
+                              alarm_changes(heldout.t_s, f_noisy), a_sim, record_s);
                         });
   return alarm_timing(heldout, f_real, a_sim, alarm_floor);
 }
@@ -375,10 +367,10 @@ std::vector<RegionCell> region_cells(const RecordingSeries& s, const std::vector
       cell.rms_v = rms_of(values);
       // Blocks of consecutive in-cell samples keep the gap's slow correlation in the interval.
       std::vector<double> biases, rmss;
-      for (const auto& set :
-           block_resamples(values.size(), rounds, seed + static_cast<unsigned>(k))) {
+      const BlockResamples resamples(values.size(), rounds, seed + static_cast<unsigned>(k));
+      for (std::size_t r = 0; r < resamples.size(); ++r) {
         std::vector<double> drawn;
-        for (std::size_t i : set) drawn.push_back(values[i]);
+        for (std::size_t i : resamples.indices(r)) drawn.push_back(values[i]);
         biases.push_back(mean_of(drawn));
         rmss.push_back(rms_of(drawn));
       }
@@ -630,6 +622,8 @@ std::optional<std::string> one_sided_protocol_reason(const Diagnosis& diagnosis,
 }
 
 // The two parts of the data, each with the twin replayed on its inputs.
+class LibraryRounds;
+
 struct Parts {
   const RecordingSeries& calibration;
   const RecordingSeries& heldout;
@@ -637,6 +631,7 @@ struct Parts {
   TwinReplay ho_replay;
   bool heldout_age_unknown;     // the sessions' clocks are unknown (session_clock's "unknown")
   std::optional<AdcGrid> grid;  // the converter grid both parts lie on (shared_grid), if one
+  std::shared_ptr<LibraryRounds> library_rounds;  // the library candidates both passes weigh
 };
 
 // A candidate effect fitted on the calibration part and scored on the held-out part.
@@ -647,6 +642,38 @@ struct Candidate {
   // A free-shape candidate (free_shape_fit.h): its curve, added to the voltage beside `with`
   // (then the modelled effects as they were).
   std::optional<FreeShapeFit> free_shape;
+};
+
+// The library's candidates of the rounds weighed so far, for the other pass: the free-shape pass's
+// first round weighs the same library candidates, on the same targets, as the library pass's first
+// round did, and so do its later rounds while it picks as the library pass did. They are fitted
+// once (their fits are a third of a 100 Hz diagnosis). A round is found again only when everything
+// its fits depend on is the same.
+class LibraryRounds {
+ public:
+  struct Key {
+    std::vector<std::string> names;  // the candidates' effects
+    std::vector<sim::EffectSettings> modelled;
+    std::size_t first_selected = 0;
+    std::vector<double> cal_v, ho_v;  // the calibration and held-out targets
+    bool operator==(const Key&) const = default;
+  };
+
+  std::optional<std::vector<Candidate>> find(const Key& key) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& [k, candidates] : rounds_) {
+      if (k == key) return candidates;
+    }
+    return std::nullopt;
+  }
+  void keep(Key key, const std::vector<Candidate>& candidates) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    rounds_.emplace_back(std::move(key), candidates);
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<std::pair<Key, std::vector<Candidate>>> rounds_;
 };
 
 // One round of the greedy selection that picked an effect: every candidate it weighed (their
@@ -664,12 +691,12 @@ struct Selection {
   // The held-out gap of the twin as given: ho_gap unless the converter's boundaries were placed
   // first (their offset is then in ho_gap, not here). What "before" means in the report.
   std::vector<double> raw_ho_gap;
-  std::vector<double> current_error;                // held-out gap `modelled` leaves
-  double sigma = 0.0;                               // the twin's white noise, V (>= 1e-9)
-  std::vector<std::vector<std::size_t>> resamples;  // held-out block-bootstrap index sets
-  std::vector<Step> steps;                          // one per bias-type pick
-  std::vector<EffectFinding> findings;              // in selection order
-  std::optional<AdcGrid> quantised_on;              // the converter grid, once recognised
+  std::vector<double> current_error;    // held-out gap `modelled` leaves
+  double sigma = 0.0;                   // the twin's white noise, V (>= 1e-9)
+  BlockResamples resamples;             // of the held-out part
+  std::vector<Step> steps;              // one per bias-type pick
+  std::vector<EffectFinding> findings;  // in selection order
+  std::optional<AdcGrid> quantised_on;  // the converter grid, once recognised
   // The converter's code boundaries, when placed before the picks (place_converter_boundaries),
   // and the constant offset they give the twin's voltage (held in cal_free_v and ho_free_v).
   std::optional<double> converter_threshold_lsb;
@@ -925,11 +952,14 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
       names.push_back(spec.name);
     }
   }
+  LibraryRounds::Key key{names, modelled, first_selected, cal_v, ho_v};
+  std::vector<Candidate> candidates;
+  if (auto weighed = parts.library_rounds->find(key)) candidates = std::move(*weighed);
   // Candidates are independent of each other: each is fitted in its own thread (the replays
   // are read-only), and the results are taken in catalogue order, so the outcome does not
   // depend on the threads.
   std::vector<std::future<Candidate>> pending;
-  for (const std::string& name : names) {
+  for (const std::string& name : candidates.empty() ? names : std::vector<std::string>{}) {
     pending.push_back(std::async(std::launch::async, [&, name] {
       Candidate c;
       c.fit = fit_effect(name, parts.cal_replay, cal_v, modelled);
@@ -943,8 +973,8 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
       return c;
     }));
   }
-  std::vector<Candidate> candidates;
-  for (std::size_t i = 0; i < names.size(); ++i) candidates.push_back(pending[i].get());
+  for (std::future<Candidate>& c : pending) candidates.push_back(c.get());
+  if (!pending.empty()) parts.library_rounds->keep(std::move(key), candidates);
   // The free shapes of the classes not yet modelled: least squares on the gap left, no refit;
   // in parallel too, taken in catalogue order.
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
@@ -999,11 +1029,12 @@ Pick pick_of(const std::vector<Candidate>& candidates, std::size_t index,
   Pick pick;
   pick.best = index;
   pick.gain = gain_of(candidates[index], selection);
+  const std::vector<double> now = selection.resamples.mean_squares(selection.current_error);
+  const std::vector<double> after =
+      selection.resamples.mean_squares(candidates[index].heldout_error);
   std::vector<double> gains;
-  for (const auto& set : selection.resamples) {
-    gains.push_back(mean_square_on(selection.current_error, set) -
-                    mean_square_on(candidates[index].heldout_error, set) -
-                    chance_gain(candidates[index], selection));
+  for (std::size_t r = 0; r < now.size(); ++r) {
+    gains.push_back(now[r] - after[r] - chance_gain(candidates[index], selection));
   }
   pick.lower = quantile(gains, 0.05);
   return pick;
@@ -1249,7 +1280,7 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
                          DiagnosisResult& result) {
   selection.current_error = selection.ho_gap;
   selection.resamples =
-      block_resamples(parts.heldout.size(), options.bootstrap_rounds, options.seed);
+      BlockResamples(parts.heldout.size(), options.bootstrap_rounds, options.seed);
   selection.first_selected = selection.modelled.size();
   for (int round = 0; round < kMaxSelected; ++round) {
     std::vector<Candidate> candidates = score_candidates(parts, selection);
@@ -1426,14 +1457,17 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
 
 // The share of `resamples` on which `step`'s choice still wins and gains over `before`.
 double share_of_wins(const Step& step, const std::vector<double>& before,
-                     const std::vector<std::vector<std::size_t>>& resamples) {
+                     const BlockResamples& resamples) {
+  const std::vector<double> base = resamples.mean_squares(before);
+  std::vector<std::vector<double>> after;
+  for (const Candidate& c : step.candidates)
+    after.push_back(resamples.mean_squares(c.heldout_error));
   int wins = 0;
-  for (const auto& set : resamples) {
-    const double base = mean_square_on(before, set);
+  for (std::size_t r = 0; r < resamples.size(); ++r) {
     std::size_t arg = 0;
     double best = -std::numeric_limits<double>::infinity();
     for (std::size_t c = 0; c < step.candidates.size(); ++c) {
-      const double gain = base - mean_square_on(step.candidates[c].heldout_error, set);
+      const double gain = base[r] - after[c][r];
       if (gain > best) {
         best = gain;
         arg = c;
@@ -1478,25 +1512,34 @@ void measure_inclusion(const Parts& parts, Selection& selection) {
   const std::vector<Step>& steps = selection.steps;
   if (selection.shapes_refined) {
     const std::vector<bool> all(selection.findings.size(), true);
-    const std::vector<double> with_all = heldout_error_with(parts, selection, all);
+    const std::vector<double> with_all =
+        selection.resamples.mean_squares(heldout_error_with(parts, selection, all));
+    // Each pick's replay and resamples in its own thread (as each round's below).
+    std::vector<std::future<double>> shares;
     for (std::size_t j = 0; j < selection.findings.size(); ++j) {
-      std::vector<bool> kept = all;
-      kept[j] = false;
-      const std::vector<double> without = heldout_error_with(parts, selection, kept);
-      int needed = 0;
-      for (const auto& set : selection.resamples) {
-        needed += mean_square_on(without, set) > mean_square_on(with_all, set) ? 1 : 0;
-      }
-      selection.findings[j].inclusion =
-          static_cast<double>(needed) / static_cast<double>(selection.resamples.size());
+      shares.push_back(std::async(std::launch::async, [&, j] {
+        std::vector<bool> kept = all;
+        kept[j] = false;
+        const std::vector<double> without =
+            selection.resamples.mean_squares(heldout_error_with(parts, selection, kept));
+        int needed = 0;
+        for (std::size_t r = 0; r < without.size(); ++r) needed += without[r] > with_all[r] ? 1 : 0;
+        return static_cast<double>(needed) / static_cast<double>(selection.resamples.size());
+      }));
     }
+    for (std::size_t j = 0; j < shares.size(); ++j)
+      selection.findings[j].inclusion = shares[j].get();
     return;
   }
+  std::vector<std::future<double>> shares;
   for (std::size_t s = 0; s < steps.size(); ++s) {
     const std::vector<double>& before =
         s == 0 ? selection.ho_gap : steps[s - 1].candidates[steps[s - 1].chosen].heldout_error;
-    selection.findings[s].inclusion = share_of_wins(steps[s], before, selection.resamples);
+    shares.push_back(std::async(std::launch::async, [&, s] {
+      return share_of_wins(steps[s], before, selection.resamples);
+    }));
   }
+  for (std::size_t s = 0; s < shares.size(); ++s) selection.findings[s].inclusion = shares[s].get();
 }
 
 // The held-out gap's RMS with every pick but pick `j`.
@@ -1678,12 +1721,11 @@ void recognise_quantization(const Parts& parts, const WhiteNoise& white, Selecti
 
 // The share of `resamples` of the held-out gap on which the vibration signature still shows.
 double vibration_inclusion(const std::vector<double>& gap, const TwinReplay& replay,
-                           const RecordingSeries& series,
-                           const std::vector<std::vector<std::size_t>>& resamples) {
+                           const RecordingSeries& series, const BlockResamples& resamples) {
   int shows = 0;
-  for (const auto& set : resamples) {
+  for (std::size_t r = 0; r < resamples.size(); ++r) {
     std::vector<double> gap_drawn, sens_drawn, clearance_drawn;
-    for (std::size_t i : set) {
+    for (std::size_t i : resamples.indices(r)) {
       gap_drawn.push_back(gap[i]);
       sens_drawn.push_back(replay.sensitivity_v_per_mm()[i]);
       clearance_drawn.push_back(series.clearance_mm[i]);
@@ -2104,12 +2146,19 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   const SessionClock clock = session_clock(calibration, heldout);
   result.diagnosis.clock = clock.kind;
   if (clock.kind != "unknown") result.diagnosis.heldout_starts_after_s = clock.age_offset_s;
+  // The held-out replay and the grid search beside the calibration replay: each inverts or
+  // scans a whole record.
+  auto ho_replay = std::async(std::launch::async, [&] {
+    return TwinReplay(heldout, options.twin.nominal, clock.age_offset_s);
+  });
+  auto grid = std::async(std::launch::async, [&] { return shared_grid(calibration, heldout); });
   const Parts parts{calibration,
                     heldout,
                     TwinReplay(calibration, options.twin.nominal),
-                    TwinReplay(heldout, options.twin.nominal, clock.age_offset_s),
+                    ho_replay.get(),
                     clock.kind == "unknown",
-                    shared_grid(calibration, heldout)};
+                    grid.get(),
+                    std::make_shared<LibraryRounds>()};
   Selection selection =
       select_in_two_passes(parts, options, replay_nominal_twin(parts, options, result), result);
   measure_inclusion(parts, selection);
