@@ -5,8 +5,11 @@
 # Each draw: two bench sessions of the twin with the given white noise and nothing else, seeds
 # SEED + 2i and SEED + 2i + 1 (another noise draw, another session), diagnosed as
 # `flange diagnose --real A --holdout B` reads them. Prints one row per noise level, with every
-# draw that was not "none" and what it named.
-#   bash bench/diagnose_null_rate.sh FS_HZ DURATION_S DRAWS SEED NOISE_V... [FLANGE=build/flange]
+# draw that was not "none" and what it named. With STARTS_APART_H=H the sessions are given start
+# times (--real-start, --holdout-start) H hours apart, so the ageing's held-out choices run too;
+# without, the clocks are unknown.
+#   bash bench/diagnose_null_rate.sh FS_HZ DURATION_S DRAWS SEED NOISE_V...
+#     [FLANGE=build/flange] [STARTS_APART_H=16]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 flange="${FLANGE:-$root/build/flange}"
@@ -16,6 +19,11 @@ if (($# < 5)); then
 fi
 fs="$1" duration="$2" draws="$3" seed="$4"
 shift 4
+starts=()
+if [[ -n "${STARTS_APART_H:-}" ]]; then
+  later=$(date -u -d "2026-01-01T00:00:00Z + ${STARTS_APART_H} hours" +%Y-%m-%dT%H:%M:%SZ)
+  starts=(--real-start 2026-01-01T00:00:00Z --holdout-start "$later")
+fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 "$flange" simulate --scenario bench --seed 1 --duration 600 --out "$work/x.csv" \
@@ -32,8 +40,8 @@ for noise in "$@"; do
       "$flange" simulate --scenario bench --fs "$fs" --duration "$duration" --seed $((s + part)) \
         --twin "$work/twin.json" --out "$work/$part.csv" > /dev/null
     done
-    verdict=$("$flange" diagnose --real "$work/0.csv" --holdout "$work/1.csv" --out "$work/d" \
-      | head -n 1)
+    verdict=$("$flange" diagnose --real "$work/0.csv" --holdout "$work/1.csv" "${starts[@]}" \
+      --out "$work/d" | head -n 1)
     if [[ "$verdict" == "verdict: none" ]]; then
       none=$((none + 1))
     else

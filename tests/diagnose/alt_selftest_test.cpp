@@ -311,6 +311,53 @@ TEST(AltSelftest, AWanderingGridIsFollowedWithShorterWindows) {
   expect_explained_by_one_effect(436, 36, "mains_pickup");
 }
 
+// Pair 447/35 (development): a log-time ageing, a ln(1 + age / 0.80 d), whose held-out session
+// starts 16 h after an hour-long calibration session (start times given). Over that hour the
+// settling barely bends, so the library's straight line carried it too far: 0.103 V was left,
+// 1.85 times the noise, "unexplained". The calibration part keeps the settlings it does not reject, and
+// the held-out level chooses among them (one value fitted there).
+TEST(AltSelftest, ASettlingAgeingIsCarriedToALaterSessionByItsLevelThere) {
+  const AltPairResult r = development_pair(447, 35);
+  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
+  EXPECT_EQ(r.diagnosis.effects[0].name, "ageing_drift");
+  EXPECT_GT(r.diagnosis.effects[0].params.count("settling_tau_days"), 0u);
+  EXPECT_TRUE(r.score.top_correct);
+}
+
+// Pair 448/35 (development): 50 Hz mains with odd harmonics at 6 Hz, where the third harmonic
+// (150 Hz) lands on 0 Hz: a constant in each session set by the mains' phase at its start, 0.33 V
+// here. The lines at 2 Hz were found, but the held-out session's own constant was not: 0.118 V
+// was left, 1.34 times the noise, "unexplained". Each session's constant joins the lines.
+TEST(AltSelftest, AMainsHarmonicOnZeroHertzIsAConstantOfEachSession) {
+  const AltPairResult r = development_pair(448, 35);
+  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
+  EXPECT_EQ(r.diagnosis.effects[0].name, "mains_pickup");
+  EXPECT_EQ(r.diagnosis.effects[0].params.at("dc_harmonic_hz"), 150.0);
+}
+
+// Pair 452/14 (fresh at stop 32, development since): a 6-bit rounding converter over +-10.24 V
+// (LSB 0.32 V) with 0.013 V of analog noise, on a sawtooth staircase. What the grid leaves over the
+// session was within the noise, but a dwell on a code boundary left 0.12 V in one 64th of it,
+// against twice the 0.054 V the grid leaves on average: "unexplained". On a code boundary the
+// signal flips between two codes at random, so a window may hold up to LSB / sqrt(2).
+TEST(AltSelftest, ADwellOnACodeBoundaryIsNotAMissOnACoarseGrid) {
+  expect_explained_by_one_effect(452, 14, "adc_quantization");
+}
+
+// Pair 450/27 (development): a clearance ripple of 3.9 mm period behind a 4.8 s delay of the
+// voltage channel, on a motorised sweep. The library's skew and a free curve of clearance were
+// picked, but the curve, added after the chain, followed the recorded clearance rather than the
+// one the late voltage was made at, and smeared the ripple wherever the micrometer moved: 1.3 times
+// the noise was left, "unexplained". The free shapes see the inputs the voltage was made at.
+TEST(AltSelftest, ARippleBehindALateVoltageChannelIsACurveOfTheClearanceItSaw) {
+  const AltPairResult r = development_pair(450, 27);
+  ASSERT_EQ(r.diagnosis.status, "explained");
+  EXPECT_TRUE(r.score.top_correct);
+  EXPECT_TRUE(r.score.all_found);
+}
+
 // Pair 440/1 (fresh at stop 30, development since): a narrow mount resonance at 26.6 Hz sampled at
 // 9 Hz, which the sampling aliases to within about 1.2 Hz of 0 Hz. The signature's levels, taken
 // about a moving mean of 49 samples, put the motion at 60 % of its variance, and 1.13 times what
