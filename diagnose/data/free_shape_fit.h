@@ -9,7 +9,8 @@
 //   temp_offset_drift  g(T): any curve of the recorded temperature
 //   nonlinearity       f(V): any curve of the twin's voltage, 0 at both ends of the part's range;
 //                      or f(d): any curve of the reference clearance (a function of clearance
-//                      alone, fine enough for a ripple of a few mm)
+//                      alone, fine enough for a ripple of a few mm); or a periodic curve of the
+//                      clearance, its period searched, repeated beyond the calibration's range
 //   range_compression  over the top of the range: a surface in V and T; or h(V - k(T)) above a
 //                      knee k(T) that falls as the coil heats (searched), h any curve; either is
 //                      named a nonlinearity when its change with T does not earn its place
@@ -20,10 +21,12 @@
 //                      linearly through the session
 //   mains_pickup       lines at the aliases of 50/60 Hz and their harmonics found on the
 //                      calibration part, amplitude and phase free in short windows of each part
-//                      (fitted on the held-out part's own gap: heldout_values says how many)
+//                      (fitted on the held-out part's own gap: heldout_values says how many),
+//                      with each part's own constant where a harmonic aliases to 0 Hz
 //   ageing_drift       a trend in the sensor's age, carried across sessions by their start times:
-//                      continuing (offset, rate and two logarithmic settling terms), or settled
-//                      (any curve of age over the calibration session, held after it: a step)
+//                      continuing (an offset and a line or a logarithmic settling, its curvature
+//                      chosen on the held-out level where the calibration leaves it open), or
+//                      settled (any curve of age over the calibration session, held after it)
 // Curves of one variable are piecewise linear between knots spread evenly over the calibration
 // part's range (held constant beyond it).
 #pragma once
@@ -52,9 +55,10 @@ struct FreeShapeFit {
   std::string description;                // "a free curve of T through -0.012 at 21 degC, ..."
   std::vector<double> cal_voltage_v;      // what it adds to the twin's voltage, calibration part
   std::vector<double> heldout_voltage_v;  // ... and held-out part
-  // Values fitted on the held-out part itself (the mains' windows; an ageing's held-out age when
-  // the clocks do not say it; 0 for the others): fitting them to white noise alone would lower
-  // its mean square by heldout_values / n of its variance.
+  // Values fitted on the held-out part itself (the mains' windows and a session's constant; an
+  // ageing's held-out age when the clocks do not say it, or its settling's curvature when they do;
+  // 0 for the others): fitting them to white noise alone would lower its mean square by
+  // heldout_values / n of its variance.
   int heldout_values = 0;
   // How many values the calibration fit chose (the curve's, plus a searched law's): what the
   // selection weighs when two candidates gain alike.

@@ -12,6 +12,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <tuple>
 
 #include "finding_class.h"
 #include "flange_in_process.h"
@@ -314,8 +315,8 @@ TEST(AltSelftest, AWanderingGridIsFollowedWithShorterWindows) {
 // Pair 447/35 (development): a log-time ageing, a ln(1 + age / 0.80 d), whose held-out session
 // starts 16 h after an hour-long calibration session (start times given). Over that hour the
 // settling barely bends, so the library's straight line carried it too far: 0.103 V was left,
-// 1.85 times the noise, "unexplained". The calibration part keeps the settlings it does not reject, and
-// the held-out level chooses among them (one value fitted there).
+// 1.85 times the noise, "unexplained". The calibration part keeps the settlings it does not reject,
+// and the held-out level chooses among them (one value fitted there).
 TEST(AltSelftest, ASettlingAgeingIsCarriedToALaterSessionByItsLevelThere) {
   const AltPairResult r = development_pair(447, 35);
   ASSERT_EQ(r.diagnosis.status, "explained");
@@ -356,6 +357,23 @@ TEST(AltSelftest, ARippleBehindALateVoltageChannelIsACurveOfTheClearanceItSaw) {
   ASSERT_EQ(r.diagnosis.status, "explained");
   EXPECT_TRUE(r.score.top_correct);
   EXPECT_TRUE(r.score.all_found);
+}
+
+// Pairs 453/4 and 454/3 (fresh at stop 33, development since): clearance ripples of 2.53 and
+// 2.67 mm period, whose held-out sessions go 1.1 mm (above) and 0.5-0.6 mm (at both ends) beyond
+// the calibration's clearance range. A curve of the clearance is held or continued along a line
+// there and left 2.0 and 1.3 times the noise: "unexplained". The periodic family repeats the ripple
+// and finds its period.
+TEST(AltSelftest, AClearanceRippleRepeatsBeyondTheCalibrationsRange) {
+  for (const auto& [seed, pair, period_mm] :
+       {std::tuple<std::uint64_t, int, double>{453, 4, 2.528}, {454, 3, 2.667}}) {
+    const AltPairResult r = development_pair(seed, pair);
+    ASSERT_EQ(r.diagnosis.status, "explained") << seed << "/" << pair;
+    ASSERT_EQ(r.diagnosis.effects.size(), 1u) << seed << "/" << pair;
+    EXPECT_EQ(r.diagnosis.effects[0].name, "nonlinearity") << seed << "/" << pair;
+    EXPECT_NEAR(r.diagnosis.effects[0].params.at("ripple_period_mm"), period_mm, 0.03)
+        << seed << "/" << pair;
+  }
 }
 
 // Pair 440/1 (fresh at stop 30, development since): a narrow mount resonance at 26.6 Hz sampled at
