@@ -975,42 +975,52 @@ FreeShapeParts free_shape_parts(const Parts& parts, const CoilParts* coil) {
   return {coil->calibration, *coil->cal_replay, coil->heldout, *coil->ho_replay};
 }
 
+// The library's candidates of a round (`round`: their names, the effects modelled and the
+// targets), each fitted on the calibration part, refitted with the picks before it and scored on
+// the held-out part. They are independent of each other: each is fitted in its own thread (the
+// replays are read-only), and the results are taken in catalogue order, so the outcome does not
+// depend on the threads.
+std::vector<Candidate> fit_library_candidates(const Parts& parts, const LibraryRounds::Key& round) {
+  std::vector<std::future<Candidate>> pending;
+  for (const std::string& name : round.names) {
+    pending.push_back(std::async(std::launch::async, [&, name] {
+      Candidate c;
+      c.fit = fit_effect(name, parts.cal_replay, round.cal_v, round.modelled);
+      c.with = round.modelled;
+      c.with.push_back(c.fit.settings);
+      // Each candidate is scored with the effects chosen before it refitted around it.
+      if (c.with.size() > round.first_selected + 1) {
+        backfit(c.with, round.first_selected, parts.cal_replay, round.cal_v);
+      }
+      c.heldout_error = minus(round.ho_v, parts.ho_replay.voltage(c.with));
+      return c;
+    }));
+  }
+  std::vector<Candidate> candidates;
+  for (std::future<Candidate>& c : pending) candidates.push_back(c.get());
+  return candidates;
+}
+
 // Every bias-type effect of the catalogue not yet modelled, fitted on top of `modelled` and
 // scored on the held-out part, in catalogue order.
 std::vector<Candidate> score_candidates(const Parts& parts, const Selection& selection) {
   const std::vector<sim::EffectSettings>& modelled = selection.modelled;
-  const std::size_t first_selected = selection.first_selected;
   const std::vector<double> cal_v = cal_target(parts, selection);
-  const std::vector<double> ho_v = ho_target(parts, selection);
   std::vector<std::string> names;
   for (const sim::EffectSpec& spec : sim::effect_catalogue()) {
     if (fitted_by_bias(spec.name) && !class_taken(spec.name, selection)) {
       names.push_back(spec.name);
     }
   }
-  LibraryRounds::Key key{names, modelled, first_selected, cal_v, ho_v};
+  LibraryRounds::Key key{names, modelled, selection.first_selected, cal_v,
+                         ho_target(parts, selection)};
   std::vector<Candidate> candidates;
-  if (auto weighed = parts.library_rounds->find(key)) candidates = std::move(*weighed);
-  // Candidates are independent of each other: each is fitted in its own thread (the replays
-  // are read-only), and the results are taken in catalogue order, so the outcome does not
-  // depend on the threads.
-  std::vector<std::future<Candidate>> pending;
-  for (const std::string& name : candidates.empty() ? names : std::vector<std::string>{}) {
-    pending.push_back(std::async(std::launch::async, [&, name] {
-      Candidate c;
-      c.fit = fit_effect(name, parts.cal_replay, cal_v, modelled);
-      c.with = modelled;
-      c.with.push_back(c.fit.settings);
-      // Each candidate is scored with the effects chosen before it refitted around it.
-      if (c.with.size() > first_selected + 1) {
-        backfit(c.with, first_selected, parts.cal_replay, cal_v);
-      }
-      c.heldout_error = minus(ho_v, parts.ho_replay.voltage(c.with));
-      return c;
-    }));
+  if (auto weighed = parts.library_rounds->find(key)) {
+    candidates = std::move(*weighed);
+  } else {
+    candidates = fit_library_candidates(parts, key);
+    parts.library_rounds->keep(std::move(key), candidates);
   }
-  for (std::future<Candidate>& c : pending) candidates.push_back(c.get());
-  if (!pending.empty()) parts.library_rounds->keep(std::move(key), candidates);
   // The free shapes of the classes not yet modelled: least squares on the gap left, no refit;
   // in parallel too, taken in catalogue order.
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
