@@ -975,13 +975,12 @@ FreeShapeParts free_shape_parts(const Parts& parts, const CoilParts* coil) {
   return {coil->calibration, *coil->cal_replay, coil->heldout, *coil->ho_replay};
 }
 
-// Whether `family` is weighed on these parts. On a converter grid the quantisation error repeats
-// with every LSB of voltage, which the sensor's sensitivity makes a ripple in the clearance of
-// about LSB / (dV/dd): the periodic family of the clearance took it for a nonlinearity (a 5-bit
-// grid, LSB 0.375 V, beside a temperature offset: a 0.97 mm "ripple" at 5 % of sigma^2; test
-// Diagnose.ACoarseConverterIsListedBeforeASmallerBiasEffect), so it is not weighed there.
+// Whether `family` is weighed on these parts (weighed_on_a_converter_grid: on a 5-bit grid, LSB
+// 0.375 V, beside a temperature offset, the periodic curve of the clearance took the quantisation
+// error for a 0.97 mm ripple at 5 % of sigma^2; test
+// Diagnose.ACoarseConverterIsListedBeforeASmallerBiasEffect).
 bool weighed_on(const FreeShapeFamily& family, const Parts& parts) {
-  return !(parts.grid && family.variable == "d, periodic");
+  return !parts.grid || weighed_on_a_converter_grid(family);
 }
 
 // The library's candidates of a round (`round`: their names, the effects modelled and the

@@ -1570,6 +1570,10 @@ const std::vector<FreeShapeFamily>& free_shape_families() {
   return families;
 }
 
+bool weighed_on_a_converter_grid(const FreeShapeFamily& family) {
+  return !(family.effect == "nonlinearity" && family.variable == "d, periodic");
+}
+
 FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries& calibration,
                             const TwinReplay& cal_replay, const RecordingSeries& heldout,
                             const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v,

@@ -49,6 +49,11 @@ struct FreeShapeFamily {
 // Every family, in the order they are scored.
 const std::vector<FreeShapeFamily>& free_shape_families();
 
+// Whether `family` is weighed where the recorded voltages lie on a converter grid. The periodic
+// curve of the clearance is not: the grid's quantisation error repeats with every LSB of voltage,
+// which the sensor's sensitivity makes a ripple of about LSB / (dV/dd) in the clearance.
+bool weighed_on_a_converter_grid(const FreeShapeFamily& family);
+
 struct FreeShapeFit {
   FreeShapeFamily family;
   std::map<std::string, double> params;   // the free values, named, plus the class's summary
