@@ -10,7 +10,9 @@
 
 #include "bench_scenario.h"
 #include "diagnosis_detail.h"
+#include "effect_classes.h"
 #include "parallel_cases.h"
+#include "selftest_draw.h"
 #include "sensor_twin.h"
 
 namespace flange::diagnose {
@@ -25,61 +27,16 @@ SelftestKind kind_of(int index) {
   return SelftestKind::kOutside;
 }
 
-// Draws from the case's own stream, so case k is the same whatever the number of cases.
-class Draw {
- public:
-  explicit Draw(std::uint64_t seed) : rng_(seed) {}
-  double uniform(double lo, double hi) {
-    return lo + (hi - lo) * std::uniform_real_distribution<double>(0.0, 1.0)(rng_);
-  }
-  double signed_magnitude(double lo, double hi) { return sign() * uniform(lo, hi); }
-  double sign() { return index(2) == 0 ? -1.0 : 1.0; }
-  int index(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng_); }
-  std::uint64_t seed() { return rng_(); }
+using Draw = SelftestDraw;
 
- private:
-  std::mt19937_64 rng_;
-};
-
-// Parameters of each library effect, drawn from a range whose low end already moves the bench
-// recording's voltage by about the thesis's repeatability (docs/diagnose.md, "Blind check").
+// Parameters of each library effect, drawn as the class table says (EffectClass::selftest_draw).
 sim::ParamValues draw_params(const std::string& name, Draw& draw) {
-  if (name == "temp_gain_drift")
-    return {{"gain_per_c", draw.signed_magnitude(0.5e-3, 3e-3)},
-            {"reference_c", draw.uniform(15, 25)}};
-  if (name == "temp_offset_drift")
-    return {{"offset_v_per_c", draw.signed_magnitude(1e-3, 5e-3)},
-            {"reference_c", draw.uniform(15, 25)}};
-  if (name == "thermal_lag") return {{"tau_s", draw.signed_magnitude(60, 900)}};
-  if (name == "range_compression")
-    return {{"onset_c", draw.uniform(30, 60)},
-            {"knee_drop_v_per_c", draw.uniform(0.02, 0.06)},
-            {"headroom_v", draw.uniform(0.2, 1.0)}};
-  if (name == "nonlinearity")
-    return {{"bow_v", draw.signed_magnitude(0.05, 0.25)},
-            {"s_curve_v", draw.signed_magnitude(0.03, 0.15)}};
-  if (name == "ageing_drift")
-    return {{"rate_v_per_day", draw.signed_magnitude(0.5, 2.0)},
-            {"start_age_days", draw.uniform(0.0, 0.5)}};
-  // A late temperature channel (skew_s > 0) moves the bench voltage by less than the noise
-  // (the blower changes the temperature by 0.13 degC/s at most); a late voltage channel shows on
-  // every micrometer step. Only the detectable side is drawn.
-  if (name == "channel_skew") return {{"skew_s", -draw.uniform(1.0, 8.0)}};
-  if (name == "mains_pickup")
-    return {{"amplitude_v", draw.uniform(0.05, 0.3)},
-            {"phase_deg", draw.uniform(-180, 180)},
-            {"harmonic_ratio", draw.uniform(0.1, 0.5)}};
-  if (name == "adc_quantization") {
-    const bool bipolar = draw.index(2) == 0;
-    return {{"bits", 8 + draw.index(5)}, {"v_min", bipolar ? -10.0 : 0.0}, {"v_max", 10.0}};
-  }
-  if (name == "vibration") return {{"rms_mm", draw.uniform(0.1, 0.5)}};
-  return {};
+  return effect_class(name).selftest_draw(draw);
 }
 
 // Noise-type effects add variance, not a bias the twin could subtract.
 bool removable(const std::string& name) {
-  return name != "vibration" && name != "adc_quantization";
+  return effect_class(name).identification == Identification::kByBias;
 }
 
 // Micrometer backlash: the disk follows the micrometer only once the play is taken up, so the

@@ -975,12 +975,10 @@ FreeShapeParts free_shape_parts(const Parts& parts, const CoilParts* coil) {
   return {coil->calibration, *coil->cal_replay, coil->heldout, *coil->ho_replay};
 }
 
-// Whether `family` is weighed on these parts (weighed_on_a_converter_grid: on a 5-bit grid, LSB
-// 0.375 V, beside a temperature offset, the periodic curve of the clearance took the quantisation
-// error for a 0.97 mm ripple at 5 % of sigma^2; test
+// Whether `family` is weighed on these parts (FreeShapeFamily::weighed_on_a_converter_grid; test
 // Diagnose.ACoarseConverterIsListedBeforeASmallerBiasEffect).
 bool weighed_on(const FreeShapeFamily& family, const Parts& parts) {
-  return !parts.grid || weighed_on_a_converter_grid(family);
+  return !parts.grid || family.weighed_on_a_converter_grid;
 }
 
 // The library's candidates of a round (`round`: their names, the effects modelled and the

@@ -9,34 +9,12 @@
 #include <numbers>
 #include <utility>
 
+#include "effect_classes.h"
 #include "recording_series.h"
 #include "residual_tests.h"
 
 namespace flange::diagnose {
 namespace {
-
-// A fitted parameter and the range searched (inside the catalogue's valid range; narrower
-// where the full range is physically absurd for a bench, e.g. a gain change of 1 per degree).
-struct FreeParam {
-  std::string key;
-  double lo, hi;
-};
-
-std::vector<FreeParam> free_params(const std::string& name) {
-  // The drifts' reference is the temperature the sensor was calibrated at: a room, 0-40 degC. A
-  // reference far outside it would let a temperature drift pose as a constant offset.
-  if (name == "temp_gain_drift") return {{"gain_per_c", -0.01, 0.01}, {"reference_c", 0, 40}};
-  if (name == "temp_offset_drift") return {{"offset_v_per_c", -0.05, 0.05}, {"reference_c", 0, 40}};
-  if (name == "thermal_lag") return {{"tau_s", -1800, 1800}};
-  if (name == "range_compression")
-    return {{"onset_c", -40, 150}, {"knee_drop_v_per_c", 0.0, 0.2}, {"headroom_v", 0.05, 3.0}};
-  if (name == "nonlinearity") return {{"bow_v", -1, 1}, {"s_curve_v", -1, 1}};
-  if (name == "ageing_drift") return {{"rate_v_per_day", -2, 2}, {"start_age_days", 0, 30}};
-  if (name == "channel_skew") return {{"skew_s", -10, 10}};
-  if (name == "mains_pickup")
-    return {{"amplitude_v", 0, 1}, {"phase_deg", -180, 180}, {"harmonic_ratio", 0, 1}};
-  return {};
-}
 
 // Lattice points per parameter for the starting search: finer in one dimension, where it is
 // cheap and where lags and skews have narrow basins.
@@ -220,7 +198,8 @@ void remove_ageing_line(std::vector<double>& gap, const std::vector<double>& t_s
 // ageing_drift is linear in time, gap = r (a0 + t / day): least squares of the gap on [1, t]
 // gives r and r a0 directly (a search over r and a0 crawls along the curved valley r a0 = c).
 // Over a record of hours r itself is poorly determined; their product, the offset, is not.
-EffectFit fit_ageing(const TwinReplay& replay, const std::vector<double>& real_v,
+EffectFit ageing_fit(const std::string& name, const TwinReplay& replay,
+                     const std::vector<double>& real_v,
                      const std::vector<sim::EffectSettings>& modelled) {
   const std::vector<double> sim_v = replay.voltage(modelled);
   std::vector<double> gap(sim_v.size());
@@ -230,7 +209,7 @@ EffectFit fit_ageing(const TwinReplay& replay, const std::vector<double>& real_v
   const double start_days = rate != 0.0 ? std::clamp(line.offset_v / rate, 0.0, 3650.0) : 0.0;
   EffectFit fit;
   fit.settings = sim::make_effect_settings(
-      "ageing_drift", {{"rate_v_per_day", rate}, {"start_age_days", start_days}}, "diagnose fit");
+      name, {{"rate_v_per_day", rate}, {"start_age_days", start_days}}, "diagnose fit");
   std::vector<sim::EffectSettings> with = modelled;
   with.push_back(fit.settings);
   const std::vector<double> fitted = replay.voltage(with);
@@ -259,8 +238,10 @@ std::vector<double> mains_standards_hz(const TwinReplay& replay) {
 class GapRms {
  public:
   // `fixed`: parameters held (mains_pickup's mains_hz); the others stay at their defaults.
-  GapRms(const std::string& name, const std::vector<FreeParam>& params, sim::ParamValues fixed,
-         const TwinReplay& replay, const std::vector<double>& real_v,
+  // `tones_on_the_cable`: the effect adds tones after every effect but the acquisition's (mains
+  // pickup), which lets each step sum the tones onto one replay (prepare_mains_tail).
+  GapRms(const std::string& name, const std::vector<SearchRange>& params, sim::ParamValues fixed,
+         bool tones_on_the_cable, const TwinReplay& replay, const std::vector<double>& real_v,
          const std::vector<sim::EffectSettings>& modelled)
       : name_(name),
         params_(params),
@@ -268,15 +249,15 @@ class GapRms {
         replay_(replay),
         real_v_(real_v),
         modelled_(modelled) {
-    // An ageing drift already modelled is linear in its offset and rate: it is solved by least
-    // squares at every point of the search (profiled out) rather than held, since a
-    // temperature effect and an ageing offset trade against each other along a narrow valley
-    // that one-effect-at-a-time refits crawl along.
+    // An ageing drift already modelled (the class profiled in other fits) is linear in its
+    // offset and rate: it is solved by least squares at every point of the search (profiled out)
+    // rather than held, since a temperature effect and an ageing offset trade against each other
+    // along a narrow valley that one-effect-at-a-time refits crawl along.
     for (const sim::EffectSettings& m : modelled) {
-      if (m.name != "ageing_drift") held_.push_back(m);
+      if (!effect_class(m.name).profiled_in_other_fits) held_.push_back(m);
     }
     profile_ageing_ = held_.size() < modelled.size();
-    if (name_ == "mains_pickup" && !any_after_wiring(modelled)) prepare_mains_tail();
+    if (tones_on_the_cable && !any_after_wiring(modelled)) prepare_mains_tail();
   }
 
   std::size_t dims() const { return params_.size(); }
@@ -360,7 +341,7 @@ class GapRms {
   std::vector<double> mains_base_v_;   // the twin without the tones, when mains_tail_ is used
 
   const std::string& name_;
-  const std::vector<FreeParam>& params_;
+  const std::vector<SearchRange>& params_;
   sim::ParamValues fixed_;
   const TwinReplay& replay_;
   const std::vector<double>& real_v_;
@@ -407,43 +388,26 @@ EffectFit minimise_gap_rms(const GapRms& lattice, const GapRms& search, const Ga
   return {score.settings_at(unit), score(unit), objective.evaluations + 1};
 }
 
-}  // namespace
-
-bool fitted_by_bias(const std::string& name) {
-  return name != "vibration" && name != "adc_quantization";
-}
-
-std::vector<std::string> fitted_keys(const std::string& name) {
-  std::vector<std::string> keys;
-  for (const FreeParam& p : free_params(name)) keys.push_back(p.key);
-  return keys;
-}
-
-EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
-                     const std::vector<double>& real_v,
-                     const std::vector<sim::EffectSettings>& modelled) {
-  if (name == "ageing_drift") return fit_ageing(replay, real_v, modelled);
-  const std::vector<FreeParam> params = free_params(name);
-  const bool mains = name == "mains_pickup";
-  const std::vector<double> mains_choices =
-      mains ? mains_standards_hz(replay) : std::vector<double>{0.0};
-  if (mains_choices.empty()) {
-    return {sim::make_effect_settings(name, {}, "diagnose fit"),
-            std::numeric_limits<double>::infinity(), 0};
-  }
+// The best of the fits of `name` over its search ranges with each of `choices` held (a class
+// whose parameter is chosen among a few values rather than searched: the mains standard).
+EffectFit best_over_fixed_choices(const std::string& name,
+                                  const std::vector<sim::ParamValues>& choices,
+                                  bool tones_on_the_cable, const TwinReplay& replay,
+                                  const std::vector<double>& real_v,
+                                  const std::vector<sim::EffectSettings>& modelled) {
+  const std::vector<SearchRange>& params = effect_class(name).search;
   const TwinReplay& search_replay = replay.search_replay();
   const std::vector<double> search_v = replay.at_search_rows(real_v);
   const TwinReplay& lattice_replay = search_replay.lattice_replay();
   const std::vector<double> lattice_v = search_replay.at_lattice_rows(search_v);
   EffectFit best;
   best.rms_v = std::numeric_limits<double>::infinity();
-  for (const double mains_hz : mains_choices) {
-    sim::ParamValues fixed;
-    if (mains) fixed["mains_hz"] = mains_hz;
-    const EffectFit fit =
-        minimise_gap_rms(GapRms(name, params, fixed, lattice_replay, lattice_v, modelled),
-                         GapRms(name, params, fixed, search_replay, search_v, modelled),
-                         GapRms(name, params, fixed, replay, real_v, modelled));
+  for (const sim::ParamValues& fixed : choices) {
+    const bool tones = tones_on_the_cable;
+    const EffectFit fit = minimise_gap_rms(
+        GapRms(name, params, fixed, tones, lattice_replay, lattice_v, modelled),
+        GapRms(name, params, fixed, tones, search_replay, search_v, modelled),
+        GapRms(name, params, fixed, tones, replay, real_v, modelled));
     if (fit.rms_v < best.rms_v) {
       best.settings = fit.settings;
       best.rms_v = fit.rms_v;
@@ -451,6 +415,48 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
     best.evaluations += fit.evaluations;
   }
   return best;
+}
+
+}  // namespace
+
+bool fitted_by_bias(const std::string& name) {
+  return effect_class(name).identification == Identification::kByBias;
+}
+
+std::vector<std::string> fitted_keys(const std::string& name) {
+  std::vector<std::string> keys;
+  for (const SearchRange& p : effect_class(name).search) keys.push_back(p.key);
+  return keys;
+}
+
+EffectFit fit_by_search(const std::string& name, const TwinReplay& replay,
+                        const std::vector<double>& real_v,
+                        const std::vector<sim::EffectSettings>& modelled) {
+  return best_over_fixed_choices(name, {sim::ParamValues{}}, false, replay, real_v, modelled);
+}
+
+EffectFit fit_mains(const std::string& name, const TwinReplay& replay,
+                    const std::vector<double>& real_v,
+                    const std::vector<sim::EffectSettings>& modelled) {
+  std::vector<sim::ParamValues> choices;
+  for (const double mains_hz : mains_standards_hz(replay)) choices.push_back({{"mains_hz", mains_hz}});
+  if (choices.empty()) {
+    return {sim::make_effect_settings(name, {}, "diagnose fit"),
+            std::numeric_limits<double>::infinity(), 0};
+  }
+  return best_over_fixed_choices(name, choices, true, replay, real_v, modelled);
+}
+
+EffectFit fit_ageing(const std::string& name, const TwinReplay& replay,
+                     const std::vector<double>& real_v,
+                     const std::vector<sim::EffectSettings>& modelled) {
+  return ageing_fit(name, replay, real_v, modelled);
+}
+
+EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
+                     const std::vector<double>& real_v,
+                     const std::vector<sim::EffectSettings>& modelled) {
+  return effect_class(name).fit(name, replay, real_v, modelled);
 }
 
 namespace {

@@ -14,7 +14,7 @@
 
 namespace flange::diagnose {
 
-// Effects fitted by their bias (all but vibration and adc_quantization).
+// Effects fitted by their bias (the class table's Identification::kByBias).
 bool fitted_by_bias(const std::string& name);
 
 struct EffectFit {
@@ -27,6 +27,21 @@ struct EffectFit {
 // RMS(real_v - replay(modelled + name)) over the replay's search rows (every row up to
 // TwinReplay::kSearchRows); rms_v is on every row.
 EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
+                     const std::vector<double>& real_v,
+                     const std::vector<sim::EffectSettings>& modelled);
+
+// The class table's fitters (EffectClass::fit). fit_by_search: a coarse lattice over the class's
+// search ranges, then Nelder-Mead from its best point. fit_mains: the same with the mains
+// standard (50 or 60 Hz) chosen among those whose fundamental does not alias to 0 Hz (infinite
+// RMS when neither is left). fit_ageing: the ageing drift is linear in time, gap = r (a0 + t /
+// day), solved by least squares of the gap on [1, t] within the catalogue's limits.
+EffectFit fit_by_search(const std::string& name, const TwinReplay& replay,
+                        const std::vector<double>& real_v,
+                        const std::vector<sim::EffectSettings>& modelled);
+EffectFit fit_mains(const std::string& name, const TwinReplay& replay,
+                    const std::vector<double>& real_v,
+                    const std::vector<sim::EffectSettings>& modelled);
+EffectFit fit_ageing(const std::string& name, const TwinReplay& replay,
                      const std::vector<double>& real_v,
                      const std::vector<sim::EffectSettings>& modelled);
 

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "effect_classes.h"
 #include "residual_tests.h"
 
 namespace flange::diagnose {
@@ -1553,25 +1554,8 @@ void place_heldout_age(const Family& shape, const Eigen::VectorXd& beta,
 }  // namespace
 
 const std::vector<FreeShapeFamily>& free_shape_families() {
-  static const std::vector<FreeShapeFamily> families = {
-      {"temp_gain_drift", "(V - v_min) T"},
-      {"temp_gain_drift", "(V - pivot) T"},
-      {"temp_offset_drift", "T"},
-      {"nonlinearity", "V"},
-      {"nonlinearity", "d"},
-      {"nonlinearity", "d, periodic"},
-      {"range_compression", "top of V, T"},
-      {"range_compression", "V over a moving knee"},
-      {"thermal_lag", "lagged T"},
-      {"channel_skew", "t"},
-      {"ageing_drift", "age, continuing"},
-      {"ageing_drift", "age, settled"},
-      {"mains_pickup", "aliased lines"}};
+  static const std::vector<FreeShapeFamily> families = all_free_shape_families();
   return families;
-}
-
-bool weighed_on_a_converter_grid(const FreeShapeFamily& family) {
-  return !(family.effect == "nonlinearity" && family.variable == "d, periodic");
 }
 
 FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries& calibration,

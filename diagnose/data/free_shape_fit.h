@@ -44,15 +44,13 @@ namespace flange::diagnose {
 struct FreeShapeFamily {
   std::string effect;
   std::string variable;  // "T", "(V - v_min) T", "V", "d", "lagged T", "t", "age, continuing", ...
+  // Whether it is weighed where the recorded voltages lie on a converter grid (the class table
+  // says why not, where not).
+  bool weighed_on_a_converter_grid = true;
 };
 
-// Every family, in the order they are scored.
+// Every family, in the order they are scored (the class table's, classes/effect_classes.h).
 const std::vector<FreeShapeFamily>& free_shape_families();
-
-// Whether `family` is weighed where the recorded voltages lie on a converter grid. The periodic
-// curve of the clearance is not: the grid's quantisation error repeats with every LSB of voltage,
-// which the sensor's sensitivity makes a ripple of about LSB / (dV/dd) in the clearance.
-bool weighed_on_a_converter_grid(const FreeShapeFamily& family);
 
 struct FreeShapeFit {
   FreeShapeFamily family;

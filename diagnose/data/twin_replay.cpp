@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "effect_catalogue.h"
+#include "effect_classes.h"
 
 namespace flange::diagnose {
 namespace {
@@ -78,8 +79,8 @@ double interpolate_at(const std::vector<double>& t, const std::vector<double>& v
 }
 
 bool delays_temperature_channel(const sim::EffectSettings& effect) {
-  return (effect.name == "channel_skew" && effect.params.at("skew_s") > 0.0) ||
-         (effect.name == "thermal_lag" && effect.params.at("tau_s") < 0.0);
+  const ChannelDelay delay = channel_delay_of(effect);
+  return delay.temperature_shift_s > 0.0 || delay.temperature_lag_tau_s > 0.0;
 }
 
 namespace {
@@ -127,8 +128,7 @@ std::vector<double> ambient_from_recorded(const RecordingSeries& series,
   const std::size_t n = ambient.size();
   // Undo in reverse chain order: the skew acts after the lag.
   for (const sim::EffectSettings& effect : effects) {
-    if (effect.name == "channel_skew" && effect.params.at("skew_s") > 0.0) {
-      const double skew_s = effect.params.at("skew_s");
+    if (const double skew_s = channel_delay_of(effect).temperature_shift_s; skew_s > 0.0) {
       std::vector<double> advanced(n);
       for (std::size_t i = 0; i < n; ++i) {
         advanced[i] = interpolate_at(series.t_s, ambient, series.t_s[i] + skew_s);
@@ -137,9 +137,9 @@ std::vector<double> ambient_from_recorded(const RecordingSeries& series,
     }
   }
   for (const sim::EffectSettings& effect : effects) {
-    if (effect.name == "thermal_lag" && effect.params.at("tau_s") < 0.0 && n >= 3) {
+    const double tau_s = channel_delay_of(effect).temperature_lag_tau_s;
+    if (tau_s > 0.0 && n >= 3) {
       // A first-order lag y' = (x - y) / tau inverts to x = y + tau y'.
-      const double tau_s = -effect.params.at("tau_s");
       const std::vector<double> slope =
           local_slopes(series.t_s, ambient, kSlopeWindowOfTau * tau_s);
       for (std::size_t i = 0; i < n; ++i) ambient[i] += tau_s * slope[i];
@@ -243,8 +243,8 @@ std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& 
   // The sensor's age at this series' t_s = 0, for the effects fitted on another session.
   std::vector<sim::EffectSettings> aged = effects;
   for (sim::EffectSettings& effect : aged) {
-    if (effect.name == "ageing_drift") {
-      effect.params["start_age_days"] += age_offset_s_ / kSecondsPerDay;
+    if (const std::string& age = effect_class(effect.name).age_param; !age.empty()) {
+      effect.params[age] += age_offset_s_ / kSecondsPerDay;
     }
   }
   std::vector<const sim::EffectSettings*> ordered;
@@ -260,7 +260,7 @@ std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& 
   std::vector<ChainStage> stages;
   for (const sim::EffectSettings* effect : ordered) {
     const ChainStage stage = sim::chain_stage_of(effect->name);
-    const bool moves_drive = effect->name == "channel_skew" && effect->params.at("skew_s") > 0.0;
+    const bool moves_drive = channel_delay_of(*effect).temperature_shift_s > 0.0;
     if (stage <= ChainStage::kThermal || moves_drive) coil_effects.push_back(*effect);
     if (stage <= ChainStage::kThermal) continue;
     chain.push_back(sim::make_effect(*effect, nominal_.v_min_v(), nominal_.v_max_v(), seed));

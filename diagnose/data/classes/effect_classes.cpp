@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: MIT
+#include "effect_classes.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "effect_fit.h"
+#include "selftest_draw.h"
+
+namespace flange::diagnose {
+namespace {
+
+// The drifts' reference is the temperature the sensor was calibrated at: a room, 0-40 degC. A
+// reference far outside it would let a temperature drift pose as a constant offset.
+EffectClass temp_gain_drift() {
+  return {
+      .name = "temp_gain_drift",
+      .search = {{"gain_per_c", -0.01, 0.01}, {"reference_c", 0, 40}},
+      .fit = fit_by_search,
+      .follows = "the temperature",
+      .families = {{"temp_gain_drift", "(V - v_min) T"}, {"temp_gain_drift", "(V - pivot) T"}},
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        return {{"gain_per_c", d.signed_magnitude(0.5e-3, 3e-3)},
+                {"reference_c", d.uniform(15, 25)}};
+      },
+  };
+}
+
+EffectClass temp_offset_drift() {
+  return {
+      .name = "temp_offset_drift",
+      .search = {{"offset_v_per_c", -0.05, 0.05}, {"reference_c", 0, 40}},
+      .fit = fit_by_search,
+      .follows = "the temperature",
+      .families = {{"temp_offset_drift", "T"}},
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        return {{"offset_v_per_c", d.signed_magnitude(1e-3, 5e-3)},
+                {"reference_c", d.uniform(15, 25)}};
+      },
+  };
+}
+
+EffectClass nonlinearity() {
+  return {
+      .name = "nonlinearity",
+      .search = {{"bow_v", -1, 1}, {"s_curve_v", -1, 1}},
+      .fit = fit_by_search,
+      .follows = "the voltage (clearance)",
+      .function_of_clearance_alone = true,
+      // A periodic curve of the clearance is not weighed on a converter grid: the grid's
+      // quantisation error repeats with every LSB of voltage, which the sensor's sensitivity makes
+      // a ripple of about LSB / (dV/dd) in the clearance.
+      .families = {{"nonlinearity", "V"},
+                   {"nonlinearity", "d"},
+                   {"nonlinearity", "d, periodic", /*weighed_on_a_converter_grid=*/false}},
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        return {{"bow_v", d.signed_magnitude(0.05, 0.25)},
+                {"s_curve_v", d.signed_magnitude(0.03, 0.15)}};
+      },
+  };
+}
+
+EffectClass range_compression() {
+  return {
+      .name = "range_compression",
+      .search = {{"onset_c", -40, 150}, {"knee_drop_v_per_c", 0.0, 0.2}, {"headroom_v", 0.05, 3.0}},
+      .fit = fit_by_search,
+      .follows = "the voltage (clearance)",
+      .families = {{"range_compression", "top of V, T"},
+                   {"range_compression", "V over a moving knee"}},
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        return {{"onset_c", d.uniform(30, 60)},
+                {"knee_drop_v_per_c", d.uniform(0.02, 0.06)},
+                {"headroom_v", d.uniform(0.2, 1.0)}};
+      },
+  };
+}
+
+// tau_s > 0: the coil lags the recorded temperature; tau_s < 0: the reading lags the coil.
+EffectClass thermal_lag() {
+  return {
+      .name = "thermal_lag",
+      .search = {{"tau_s", -1800, 1800}},
+      .fit = fit_by_search,
+      .follows = "the temperature's rate of change",
+      .channel_delay = [](const sim::EffectSettings& e) {
+        const double tau_s = e.params.at("tau_s");
+        return ChannelDelay{.temperature_lag_tau_s = tau_s < 0.0 ? -tau_s : 0.0};
+      },
+      .families = {{"thermal_lag", "lagged T"}},
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        return {{"tau_s", d.signed_magnitude(60, 900)}};
+      },
+  };
+}
+
+// skew_s > 0: the temperature channel is late; skew_s < 0: the voltage channel is.
+EffectClass channel_skew() {
+  return {
+      .name = "channel_skew",
+      .search = {{"skew_s", -10, 10}},
+      .fit = fit_by_search,
+      .follows = "the clearance's moves",
+      .channel_delay = [](const sim::EffectSettings& e) {
+        const double skew_s = e.params.at("skew_s");
+        return ChannelDelay{.temperature_shift_s = skew_s > 0.0 ? skew_s : 0.0,
+                            .voltage_shift_s = skew_s < 0.0 ? skew_s : 0.0};
+      },
+      .families = {{"channel_skew", "t"}},
+      // A late temperature channel moves the bench voltage by less than the noise (the blower
+      // changes the temperature by 0.13 degC/s at most); a late voltage channel shows on every
+      // micrometer step. Only the detectable side is drawn.
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        return {{"skew_s", -d.uniform(1.0, 8.0)}};
+      },
+  };
+}
+
+EffectClass ageing_drift() {
+  return {
+      .name = "ageing_drift",
+      .search = {{"rate_v_per_day", -2, 2}, {"start_age_days", 0, 30}},
+      .fit = fit_ageing,
+      .profiled_in_other_fits = true,
+      .follows = "the time",
+      .age_param = "start_age_days",
+      .families = {{"ageing_drift", "age, continuing"}, {"ageing_drift", "age, settled"}},
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        return {{"rate_v_per_day", d.signed_magnitude(0.5, 2.0)},
+                {"start_age_days", d.uniform(0.0, 0.5)}};
+      },
+  };
+}
+
+EffectClass mains_pickup() {
+  return {
+      .name = "mains_pickup",
+      .reported_as_noise = true,
+      .pick_note = "a tone: the mains line aliased by the sampling",
+      .search = {{"amplitude_v", 0, 1}, {"phase_deg", -180, 180}, {"harmonic_ratio", 0, 1}},
+      .fit = fit_mains,
+      .follows = "the spectrum",
+      .families = {{"mains_pickup", "aliased lines"}},
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        return {{"amplitude_v", d.uniform(0.05, 0.3)},
+                {"phase_deg", d.uniform(-180, 180)},
+                {"harmonic_ratio", d.uniform(0.1, 0.5)}};
+      },
+  };
+}
+
+EffectClass vibration() {
+  return {
+      .name = "vibration",
+      .identification = Identification::kBySignature,
+      .follows = "the sensor's sensitivity",
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        return {{"rms_mm", d.uniform(0.1, 0.5)}};
+      },
+  };
+}
+
+EffectClass adc_quantization() {
+  return {
+      .name = "adc_quantization",
+      .identification = Identification::kBySignature,
+      .follows = "the recorded codes",
+      .is_converter = true,
+      .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
+        const bool bipolar = d.index(2) == 0;
+        return {{"bits", 8 + d.index(5)}, {"v_min", bipolar ? -10.0 : 0.0}, {"v_max", 10.0}};
+      },
+  };
+}
+
+}  // namespace
+
+const std::vector<EffectClass>& effect_classes() {
+  static const std::vector<EffectClass> classes = {
+      temp_gain_drift(), temp_offset_drift(), nonlinearity(), range_compression(),
+      thermal_lag(),     channel_skew(),      ageing_drift(), mains_pickup(),
+      vibration(),       adc_quantization()};
+  return classes;
+}
+
+const EffectClass& effect_class(const std::string& name) {
+  for (const EffectClass& c : effect_classes()) {
+    if (c.name == name) return c;
+  }
+  throw std::out_of_range("no effect class " + name);
+}
+
+std::vector<std::string> bias_classes_in_catalogue_order() {
+  std::vector<std::string> names;
+  for (const sim::EffectSpec& spec : sim::effect_catalogue()) {
+    if (effect_class(spec.name).identification == Identification::kByBias) {
+      names.push_back(spec.name);
+    }
+  }
+  return names;
+}
+
+std::vector<FreeShapeFamily> all_free_shape_families() {
+  std::vector<FreeShapeFamily> families;
+  for (const EffectClass& c : effect_classes()) {
+    families.insert(families.end(), c.families.begin(), c.families.end());
+  }
+  return families;
+}
+
+ChannelDelay channel_delay_of(const sim::EffectSettings& effect) {
+  const EffectClass& c = effect_class(effect.name);
+  return c.channel_delay ? c.channel_delay(effect) : ChannelDelay{};
+}
+
+const std::string& converter_class() {
+  static const std::string name = [] {
+    for (const EffectClass& c : effect_classes()) {
+      if (c.is_converter) return c.name;
+    }
+    throw std::logic_error("the class table has no converter");
+  }();
+  return name;
+}
+
+}  // namespace flange::diagnose

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// The effect classes as data: one entry per class of the twin's library, holding everything the
+// diagnosis knows of it. No code outside effect_classes.cpp compares a class's name; the stages
+// ask the table. Adding a class is adding its effect to sim/src/effects/, one entry here and its
+// free-shape families (diagnose/data/README.md, "Adding an effect class").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "effect_catalogue.h"
+#include "free_shape_fit.h"
+
+namespace flange::diagnose {
+
+class TwinReplay;
+struct EffectFit;
+
+// How the diagnosis finds a class in the data.
+enum class Identification {
+  kByBias,       // fitted: its formula (or a free shape) lowers the gap on held-out data
+  kBySignature,  // recognised from what it does to the gap's variance or to the recorded codes
+};
+
+// One parameter the library fit varies, and the range searched: inside the catalogue's valid
+// range, narrower where the full range is physically absurd for a bench.
+struct SearchRange {
+  std::string key;
+  double lo = 0.0, hi = 0.0;
+};
+
+// How a class's settings make a channel late. The temperature channel behind the coil: a pure
+// delay (shift_s > 0: the temperature at t is the coil's at t - shift_s) or a first-order lag of
+// the reading (lag_tau_s > 0); the voltage channel: voltage_shift_s < 0 (the voltage at t was
+// made at t + voltage_shift_s).
+struct ChannelDelay {
+  double temperature_shift_s = 0.0;
+  double temperature_lag_tau_s = 0.0;
+  double voltage_shift_s = 0.0;
+};
+
+class SelftestDraw;
+
+// Fits a bias class on top of the effects modelled (effect_fit.h).
+using LibraryFitter = EffectFit (*)(const std::string& name, const TwinReplay& replay,
+                                    const std::vector<double>& real_v,
+                                    const std::vector<sim::EffectSettings>& modelled);
+
+struct EffectClass {
+  std::string name;  // its effect in the twin's library (sim::effect_catalogue)
+  Identification identification = Identification::kByBias;
+  // Reported as a noise-type effect although fitted by its bias (a tone whose phase is each
+  // session's own), with this phrase added to a pick's evidence.
+  bool reported_as_noise = false;
+  std::string pick_note{};
+  // The library fit: its free parameters with their ranges, and the fitter (a search over them,
+  // or a class's own closed form).
+  std::vector<SearchRange> search{};
+  LibraryFitter fit = nullptr;
+  // Solved by least squares inside every other class's fit (profiled out) rather than held
+  // there: a class linear in its values that trades against others along a narrow valley.
+  bool profiled_in_other_fits = false;
+  // What its effect follows, for saying which recording tells two classes apart.
+  std::string follows{};
+  // Replayed at the sensor's age: the parameter that carries the age from one session to the
+  // next (empty for classes that depend on time only through its differences).
+  std::string age_param{};
+  // A function of the clearance alone: on a protocol that reaches each clearance from one side
+  // only it cannot be told from a hysteresis (outside the library).
+  bool function_of_clearance_alone = false;
+  // The converter: its grid is found from the recorded codes (noise/adc_grid.h), and its code
+  // boundaries may be placed before the picks (noise/converter_boundaries.h).
+  bool is_converter = false;
+  // The channel delays a setting of this class makes.
+  ChannelDelay (*channel_delay)(const sim::EffectSettings&) = nullptr;
+  // The shape-free families that stand for it (free_shape_fit.h), in the order they are scored.
+  std::vector<FreeShapeFamily> families{};
+  // The blind self-test's draw of its parameters: each range's low end moves a bench recording's
+  // voltage by about the thesis's repeatability (docs/diagnose.md, "How it is checked").
+  sim::ParamValues (*selftest_draw)(SelftestDraw& draw) = nullptr;
+};
+
+// Every class, in the order their free-shape families are scored.
+const std::vector<EffectClass>& effect_classes();
+
+// The class of library effect `name`. Throws std::out_of_range for a name not in the table.
+const EffectClass& effect_class(const std::string& name);
+
+// The classes fitted by their bias, in the twin's catalogue order (the order library candidates
+// are fitted and weighed in).
+std::vector<std::string> bias_classes_in_catalogue_order();
+
+// Every free-shape family of every class, in scoring order.
+std::vector<FreeShapeFamily> all_free_shape_families();
+
+// The delays `effect` makes (zero for classes without any).
+ChannelDelay channel_delay_of(const sim::EffectSettings& effect);
+
+// The converter class's name (the one entry with is_converter).
+const std::string& converter_class();
+
+}  // namespace flange::diagnose

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+// Every number that decides the diagnosis's selection, significance and verdict, one name per
+// role, each with what it bounds and the test that pins it (docs/diagnose.md, "Criteria").
+// Gains are in shares of the twin's white-noise variance sigma^2; ratios are of RMS to the noise.
+#pragma once
+
+#include <cstddef>
+
+namespace flange::diagnose::criteria {
+
+// ---- The held-out score's resolution -------------------------------------------------------
+// A change of 2 % of sigma^2 in the held-out mean square is a change of 1 % of sigma in its RMS:
+// well below what the verdict's ratios resolve (a gap at 5 %, explained within 10 %), so a gain
+// smaller than that cannot turn a verdict, and two scores closer than that cannot be ordered by
+// the data. Every role below that compares held-out mean squares uses this resolution; each has
+// its own name so that the role can change alone.
+inline constexpr double kScoreResolution = 0.02;
+
+// Significance: a later pick (or a first pick where a noise-type class shows before any pick)
+// must lower the held-out mean square by this share of sigma^2, and the gain's block-bootstrap
+// lower bound (kGainLowerQuantile) must be above zero.
+// Test: SelectionRules.ASignificantCandidateIsTaken, SelectionRules.ASmallGainIsNotSignificant.
+inline constexpr double kLeastGainOfAPick = kScoreResolution;
+// The one-sided bootstrap bound a gain must clear: its 5 % quantile over held-out block
+// resamples, i.e. a gain that chance alone gives no more than 1 time in 20.
+// Test: SelectionRules.AGainThatResamplesDoNotConfirmIsNotSignificant.
+inline constexpr double kGainLowerQuantile = 0.05;
+
+// A first pick where no noise-type class shows needs the largest gain the best candidate makes by
+// chance against the held-out gap shifted in time (kChanceShifts lags), kept within these two
+// shares of sigma^2. The upper one is ten times the largest gain the best first candidate makes
+// on pairs without any effect (the null self-test pairs); the lower one four times it, so that a
+// small real effect (a reading lag at high noise) is not lost where chance gains are small.
+// Test: SelectionRules.TheFirstPickNeedsWhatChanceGivesWithinItsBounds.
+inline constexpr double kMostLeastGainOfAFirstPick = 0.005;
+inline constexpr double kLeastLeastGainOfAFirstPick = 0.002;
+inline constexpr std::size_t kChanceShifts = 64;
+
+// Tie: when free shapes compete, candidates whose gains lie within this share of sigma^2 of the
+// best cannot be ordered by the data; the one with fewer fitted values is taken (parsimony).
+// Test: SelectionRules.ATieGoesToFewerValues.
+inline constexpr double kTieMargin = kScoreResolution;
+
+// Preference: a free shape is taken over its class's library formula only when it gains this
+// share of sigma^2 more on held-out data (the formula is the simpler, physical description).
+// Test: SelectionRules.TheLibraryFormulaIsPreferredWhenAFreeShapeGainsNoMore.
+inline constexpr double kFreeShapeMustGainOverFormula = kScoreResolution;
+
+// Confounding: a candidate of another class that gains within this share of sigma^2 of the pick
+// explains the held-out gap alike; the pick stands and the reasons say the two are confounded.
+// Test: SelectionRules.AnotherClassWithinTheMarginIsConfounded.
+inline constexpr double kConfoundingMargin = kScoreResolution;
+
+// Acceptance: a library pick is given a free shape of its own class after the rounds (and the
+// refined selection is kept) only when that lowers the held-out mean square by this share.
+// Test: Diagnose.ALibraryPickIsGivenAFreeShapeOnlyWhenItGains (diagnose_test.cpp).
+inline constexpr double kRefinementAcceptance = kScoreResolution;
+
+// Pass comparison: the free-shape pass replaces the library pass when it leaves less by this
+// share of sigma^2, or names fewer classes while leaving no more than this share more.
+// Test: SelectionRules.TheFreePassMustLeaveLessByTheMargin.
+inline constexpr double kPassComparisonMargin = kScoreResolution;
+
+// Removal: a backward step takes out a pick whose absence raises the held-out mean square by
+// less than this share of sigma^2 (it is not needed once the later picks are in).
+// Test: SelectionRules.ABackwardStepDropsAnUnneededPick.
+inline constexpr double kRemovalMargin = kScoreResolution;
+
+// Converter placement: the converter's code boundaries (and a DAQ gain calibration) are placed
+// before the picks only when they lower the calibration gap's mean square by this share.
+// Test: Diagnose.ATruncatingConverterIsPlacedBeforeThePicks (diagnose_test.cpp).
+inline constexpr double kConverterPlacementGain = kScoreResolution;
+
+// The most bias-type picks: three effects at once is as many as a bench pair's two sessions can
+// separate; more would fit the noise of one session.
+// Test: SelectionRules.AtMostThreePicks.
+inline constexpr int kMostPicks = 3;
+
+// ---- The verdict ---------------------------------------------------------------------------
+// A gap exists when the held-out RMS exceeds the noise by 5 % (what 1 % of sigma in resolution
+// and the noise estimate's own spread, a few % on a bench session, leave unambiguous).
+// Test: Verdict.NoGapIsNone.
+inline constexpr double kGapRatio = 1.05;
+// Explained: what the picks leave on held-out data is within 10 % of the noise.
+// Test: Verdict.LeftWithinTheNoiseIsExplained.
+inline constexpr double kExplainedRatio = 1.10;
+// Partly explained: picks that leave more still take at least this share of the held-out gap's
+// RMS above the noise; below it several classes together can take most of an effect that none of
+// them models, which would be a false claim.
+// Test: Verdict.PicksThatTakeMostButLeaveMoreArePartlyExplained.
+inline constexpr double kPartlyExplainedShare = 0.90;
+// Explained also asks the noise level of what is left in every window of the held-out samples
+// within the calibration's ranges: a 64th of them, at least 100 samples (a window's RMS then
+// varies by about 7 % by chance), at most twice the noise in each; twice the noise in one window
+// is something the picks miss there.
+// Test: Verdict.AWindowLeftAtTwiceTheNoiseIsNotExplained.
+inline constexpr std::size_t kLocalWindows = 64;
+inline constexpr std::size_t kLeastLocalWindowSamples = 100;
+inline constexpr double kLocalExplainedRatio = 2.0;
+// A held-out session that goes beyond the calibration's clearance or temperature is explained
+// when what is left within the calibration's ranges is, if at least this share of its samples
+// lies within them ...
+// Test: Verdict.ExplainedWithinReachNeedsAQuarterWithin.
+inline constexpr double kLeastShareWithinReach = 0.25;
+// ... and if the picks' continued curves take at least this share of the gap above the noise
+// beyond the ranges, and at least the share of the samples that lie there: a curve that leaves
+// most of the gap beyond explains only what it was fitted on.
+// Test: Verdict.ExplainedWithinReachNeedsTheCurvesToCarryBeyond.
+inline constexpr double kLeastShareTakenBeyondReach = 0.5;
+
+// ---- Locate --------------------------------------------------------------------------------
+// The fewest samples a clearance x temperature cell needs to be the where-region, and the
+// held-out part to say anything about it: the cell's bias is then known to sigma / sqrt(30),
+// about a fifth of the noise.
+// Test: Locate.ACellNeedsThirtySamples.
+inline constexpr std::size_t kLeastSamplesPerCell = 30;
+// A stage's gap is significant above 1.5 times its noise floor (the median of kNullReplicas
+// draws of the noisy twin, whose spread is a few %).
+// Test: Diagnose.NominalTwinAgainstItselfIsNone (diagnose_test.cpp).
+inline constexpr double kStageSignificanceRatio = 1.5;
+inline constexpr int kNullReplicas = 32;
+// The alarm-timing stage: its floor is the largest of the replicas (passed by noise about 1 time
+// in kNullReplicas + 1), so it must show on the held-out part too, by at least this much.
+inline constexpr double kAlarmMarginS = 1.0;
+// The where-band: PSD bins above twice the white-noise level.
+inline constexpr double kBandPsdRatio = 2.0;
+// Lags of the whiteness and independence tests.
+inline constexpr std::size_t kResidualTestLags = 25;
+
+// ---- The recognisers -----------------------------------------------------------------------
+// Mount motion: the gap's variance follows (dV/dd)^2 with a t statistic above 8 (a chance slope
+// that large has odds far below 1e-9 on a bench session's thousands of samples) and adds at least
+// a tenth to the variance.
+// Test: VibrationSignature.MotionIsFoundAndVoltageNoiseIsNot (diagnose_test.cpp).
+inline constexpr double kMotionSlopeT = 8.0;
+inline constexpr double kMotionLeastShare = 0.1;
+
+// ---- Protocol ------------------------------------------------------------------------------
+// A protocol reaches each clearance from one side only when, in every band of a twentieth of the
+// range holding 30 or more samples at rest, at least 95 % were last reached by a move the same way.
+// Test: Verdict.AOneSidedProtocolCannotTellANonlinearityFromAHysteresis.
+inline constexpr int kProtocolBands = 20;
+inline constexpr std::size_t kLeastSamplesPerProtocolBand = 30;
+inline constexpr double kOneWayShare = 0.95;
+
+// ---- Input ---------------------------------------------------------------------------------
+// The fewest samples in each part: a 16-sample spectrum with about 15 segments, and the tests.
+inline constexpr std::size_t kLeastSamplesPerPart = 256;
+// The two parts' sample rates must agree within 1 %.
+inline constexpr double kSampleRateAgreement = 0.01;
+
+}  // namespace flange::diagnose::criteria
