@@ -11,6 +11,7 @@
 #include "adc_grid.h"
 #include "diagnosis.h"
 #include "residual_tests.h"
+#include "sample_rate.h"
 #include "white_noise.h"
 
 namespace flange::diagnose {
@@ -96,9 +97,5 @@ struct DiagnosisResult {
 // diagnose() with the detail kept.
 DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
                                    const RecordingSeries& heldout, const DiagnoseOptions& options);
-
-// The sample rate of a series from its median step (Hz). Throws InputError for fewer than two
-// samples or a non-increasing time.
-double sample_rate_hz(const RecordingSeries& series);
 
 }  // namespace flange::diagnose

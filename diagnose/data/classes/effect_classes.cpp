@@ -154,6 +154,7 @@ EffectClass vibration() {
       .name = "vibration",
       .identification = Identification::kBySignature,
       .follows = "the sensor's sensitivity",
+      .is_mount_motion = true,
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"rms_mm", d.uniform(0.1, 0.5)}};
       },
@@ -213,14 +214,19 @@ ChannelDelay channel_delay_of(const sim::EffectSettings& effect) {
   return c.channel_delay ? c.channel_delay(effect) : ChannelDelay{};
 }
 
-const std::string& converter_class() {
-  static const std::string name = [] {
-    for (const EffectClass& c : effect_classes()) {
-      if (c.is_converter) return c.name;
-    }
-    throw std::logic_error("the class table has no converter");
-  }();
-  return name;
+namespace {
+
+const std::string& name_of_the_one(bool EffectClass::*property) {
+  for (const EffectClass& c : effect_classes()) {
+    if (c.*property) return c.name;
+  }
+  throw std::logic_error("the class table lacks a class it needs");
 }
+
+}  // namespace
+
+const std::string& converter_class() { return name_of_the_one(&EffectClass::is_converter); }
+
+const std::string& motion_class() { return name_of_the_one(&EffectClass::is_mount_motion); }
 
 }  // namespace flange::diagnose

@@ -71,6 +71,9 @@ struct EffectClass {
   // The converter: its grid is found from the recorded codes (noise/adc_grid.h), and its code
   // boundaries may be placed before the picks (noise/converter_boundaries.h).
   bool is_converter = false;
+  // Mount motion: found from how the gap's variance follows the sensitivity
+  // (signatures/vibration_signature.h).
+  bool is_mount_motion = false;
   // The channel delays a setting of this class makes.
   ChannelDelay (*channel_delay)(const sim::EffectSettings&) = nullptr;
   // The shape-free families that stand for it (free_shape_fit.h), in the order they are scored.
@@ -96,7 +99,8 @@ std::vector<FreeShapeFamily> all_free_shape_families();
 // The delays `effect` makes (zero for classes without any).
 ChannelDelay channel_delay_of(const sim::EffectSettings& effect);
 
-// The converter class's name (the one entry with is_converter).
+// The converter class's name (the one entry with is_converter), and mount motion's.
 const std::string& converter_class();
+const std::string& motion_class();
 
 }  // namespace flange::diagnose

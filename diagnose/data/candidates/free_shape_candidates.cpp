@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#include "free_shape_candidates.h"
+
+#include <future>
+
+#include "residual_tests.h"
+#include "series_arithmetic.h"
+
+namespace flange::diagnose {
+
+Candidate free_shape_candidate(const FreeShapeFamily& family, const FreeShapeRound& round) {
+  Candidate c;
+  c.free_shape = fit_free_shape(family, round.calibration.series, round.calibration.replay,
+                                round.heldout.series, round.heldout.replay, round.cal_gap_v,
+                                round.ho_gap_v, round.heldout_age_unknown);
+  c.fit.settings = sim::make_effect_settings(c.free_shape->family.effect, {}, "diagnose free shape");
+  c.fit.rms_v = rms_of(minus(round.cal_gap_v, c.free_shape->cal_voltage_v));
+  c.with = round.modelled;
+  c.heldout_error = minus(round.ho_gap_v, c.free_shape->heldout_voltage_v);
+  return c;
+}
+
+std::vector<Candidate> free_shape_candidates(const std::vector<FreeShapeFamily>& families,
+                                             const FreeShapeRound& round) {
+  std::vector<std::future<Candidate>> pending;
+  for (const FreeShapeFamily& family : families) {
+    pending.push_back(std::async(std::launch::async,
+                                 [&round, family] { return free_shape_candidate(family, round); }));
+  }
+  std::vector<Candidate> candidates;
+  for (std::future<Candidate>& c : pending) candidates.push_back(c.get());
+  return candidates;
+}
+
+}  // namespace flange::diagnose

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// The library's candidates of a round: each class's formula fitted on the calibration part with
+// the picks before it refitted around it, and scored on the held-out part.
+#pragma once
+
+#include <mutex>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "candidate.h"
+#include "parts.h"
+
+namespace flange::diagnose {
+
+// The library's candidates of the rounds weighed so far, for the other pass: the free-shape pass's
+// first round weighs the same library candidates, on the same targets, as the library pass's first
+// round did, and so do its later rounds while it picks as the library pass did. They are fitted
+// once (their fits are a third of a 100 Hz diagnosis). A round is found again only when everything
+// its fits depend on is the same.
+class LibraryRounds {
+ public:
+  struct Key {
+    std::vector<std::string> names;  // the candidates' effects
+    std::vector<sim::EffectSettings> modelled;
+    std::size_t first_selected = 0;
+    std::vector<double> cal_v, ho_v;  // the calibration and held-out targets
+    bool operator==(const Key&) const = default;
+  };
+
+  std::optional<std::vector<Candidate>> find(const Key& key) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& [k, candidates] : rounds_) {
+      if (k == key) return candidates;
+    }
+    return std::nullopt;
+  }
+  void keep(Key key, const std::vector<Candidate>& candidates) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    rounds_.emplace_back(std::move(key), candidates);
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<std::pair<Key, std::vector<Candidate>>> rounds_;
+};
+
+// One round of the greedy selection that picked an effect: every candidate it weighed (their
+
+// Refits every selected effect (from `first` on) once, with the others held. A greedy pick is
+// fitted before the effects found after it, so it soaks up part of them (an offset drift takes
+// some of an ageing offset); the refit hands that part back. A refit is kept only where it
+// lowers the calibration RMS, since fit_effect searches afresh rather than from the last fit.
+void backfit(std::vector<sim::EffectSettings>& modelled, std::size_t first,
+             const TwinReplay& replay, const std::vector<double>& real_v);
+
+// The library's candidates of a round (`round`: their names, the effects modelled and the
+// targets), each fitted on the calibration part, refitted with the picks before it and scored on
+// the held-out part, in the order of round.names. Found in parts.library_rounds when the other
+// pass weighed the same round; else fitted (each in its own thread: the replays are read-only;
+// the results are taken in order, so the outcome does not depend on the threads) and kept there.
+std::vector<Candidate> library_candidates(const Parts& parts, LibraryRounds::Key round);
+
+}  // namespace flange::diagnose

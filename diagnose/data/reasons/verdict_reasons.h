@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// The sentences that explain a verdict (DiagnosisDetail::reasons), each from the figures it states.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diagnosis.h"
+#include "diagnosis_detail.h"
+#include "recording_series.h"
+
+namespace flange::diagnose::reasons {
+
+// The held-out gap before and after the picks, against the white noise.
+std::string heldout_summary(double before_v, double after_v, double sigma_v);
+
+// What is left is within the noise over the session but not in its worst window.
+std::string missed_in_a_window(double worst_ratio, double from_s, double to_s,
+                               double allowed_ratio);
+
+std::string explained();
+
+// Explained where the calibration reaches, with what the continued curves take beyond it.
+struct BeyondReach {
+  std::size_t within = 0, beyond = 0;  // held-out samples within and beyond
+  double temp_lo_c = 0, temp_hi_c = 0, clearance_lo_mm = 0, clearance_hi_mm = 0;  // the reach
+  double heldout_temp_lo_c = 0, heldout_temp_hi_c = 0;
+  double heldout_clearance_lo_mm = 0, heldout_clearance_hi_mm = 0;
+  double left_within_v = 0, left_beyond_v = 0, beyond_share = 0;
+};
+std::string explained_within_reach(const BeyondReach& b);
+
+std::string partly_explained(double share, const std::string& what_is_left);
+
+// What the picks leave against what the noise allows: over the session, or in its worst window.
+std::string what_is_left(double left_v, double allowed_v, double worst_v, double from_s,
+                         double to_s, double window_allowed_v);
+
+std::string unexplained(bool any_findings);
+std::string none();
+
+// The nearest effect's evidence for an "unexplained" verdict.
+std::string nearest(bool picked, const EffectFinding& nearest, bool several_picks,
+                    const std::string& what_is_left);
+
+// The verdict's noise: the converter grid modelled, or the quantisation taken as noise, or motion.
+std::string quantisation_as_noise(double effective_std_v);
+std::string converter_grid_modelled(double null_rms_v, double analog_std_v, double lsb_v);
+std::string motion_in_the_noise(double verdict_noise_v, double sigma_v);
+
+// The clocks, when they bear on the verdict: the start times were used, or they were missing and
+// an age effect was weighed.
+std::optional<std::string> clock(const Diagnosis& diagnosis,
+                                 const std::vector<EffectFinding>& partial);
+
+// A static function of clearance named where each clearance is reached from one side only.
+std::string one_sided_protocol();
+
+// The held-out part barely enters the cell where the calibration gap stands out most.
+std::string coverage(std::size_t heldout_samples, const RegionCell& cell);
+
+}  // namespace flange::diagnose::reasons

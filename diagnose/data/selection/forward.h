@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// The forward steps: greedy rounds of bias-type picks, each scored on held-out data.
+#pragma once
+
+#include <vector>
+
+#include "candidate.h"
+#include "diagnosis_detail.h"
+#include "parts.h"
+#include "scoring.h"
+#include "selection.h"
+
+namespace flange::diagnose {
+
+// The round's candidates: every bias class of the catalogue not yet modelled, its library formula
+// fitted on top of `modelled` (library_candidates), in catalogue order; then, in the free-shape
+// pass, the free shapes of the classes not yet modelled (the families the class table lists,
+// in its order, where they are weighed on these parts).
+std::vector<Candidate> round_candidates(const Parts& parts, const Selection& selection);
+
+// What a round is scored against.
+RoundScore round_score(const Selection& selection);
+
+// The least gain the next pick must make: first_pick_least_gain for a first pick where no
+// noise-type class shows before any pick, else criteria::kLeastGainOfAPick of sigma^2.
+double least_gain_of_next_pick(const Selection& selection);
+
+// The finding for a chosen candidate: its fit and how far it shrinks the held-out gap.
+EffectFinding finding_for_choice(const Candidate& chosen, const Choice& choice,
+                                 const std::vector<double>& current_error);
+
+// Adds the choice to the model as a pick; the earlier picks carry their parameters as refitted
+// with it.
+void take_pick(std::vector<Candidate> candidates, const Choice& choice, Selection& selection);
+
+// Greedy selection of bias-type effects: at most criteria::kMostPicks, stopping at the first round
+// whose best candidate is not significant; with options.estimate_noise, the noise is estimated
+// again after each pick from what the picks leave (kept if lower: a deterministic effect in the
+// gap, a mains tone or a lag on the steps, inflates the difference-based estimate).
+void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Selection& selection,
+                         DiagnosisResult& result);
+
+}  // namespace flange::diagnose

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+#include "inclusion.h"
+
+#include <future>
+#include <limits>
+
+#include "final_fit.h"
+
+namespace flange::diagnose {
+namespace {
+
+// The share of resamples on which the final fit without each pick leaves more than with it; each
+// pick's replay and resamples in its own thread.
+void measure_need_in_final_fit(const Parts& parts, Selection& selection) {
+  const std::vector<bool> all(selection.picks.size(), true);
+  const std::vector<double> with_all =
+      selection.resamples.mean_squares(heldout_error_with(parts, selection, all));
+  std::vector<std::future<double>> shares;
+  for (std::size_t j = 0; j < selection.picks.size(); ++j) {
+    shares.push_back(std::async(std::launch::async, [&, j] {
+      std::vector<bool> kept = all;
+      kept[j] = false;
+      const std::vector<double> without =
+          selection.resamples.mean_squares(heldout_error_with(parts, selection, kept));
+      int needed = 0;
+      for (std::size_t r = 0; r < without.size(); ++r) needed += without[r] > with_all[r] ? 1 : 0;
+      return static_cast<double>(needed) / static_cast<double>(selection.resamples.size());
+    }));
+  }
+  for (std::size_t j = 0; j < shares.size(); ++j) {
+    selection.picks[j].finding.inclusion = shares[j].get();
+  }
+}
+
+}  // namespace
+
+double share_of_wins(const Step& step, const std::vector<double>& before,
+                     const BlockResamples& resamples) {
+  const std::vector<double> base = resamples.mean_squares(before);
+  std::vector<std::vector<double>> after;
+  for (const Candidate& c : step.candidates) {
+    after.push_back(resamples.mean_squares(c.heldout_error));
+  }
+  int wins = 0;
+  for (std::size_t r = 0; r < resamples.size(); ++r) {
+    std::size_t arg = 0;
+    double best = -std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < step.candidates.size(); ++c) {
+      const double gain = base[r] - after[c][r];
+      if (gain > best) {
+        best = gain;
+        arg = c;
+      }
+    }
+    if (arg == step.chosen && best > 0.0) ++wins;
+  }
+  return static_cast<double>(wins) / static_cast<double>(resamples.size());
+}
+
+void measure_inclusion(const Parts& parts, Selection& selection) {
+  if (selection.shapes_refined) {
+    measure_need_in_final_fit(parts, selection);
+    return;
+  }
+  const std::vector<Pick>& picks = selection.picks;
+  std::vector<std::future<double>> shares;
+  for (std::size_t s = 0; s < picks.size(); ++s) {
+    const std::vector<double>& before =
+        s == 0 ? selection.ho_gap : picks[s - 1].chosen().heldout_error;
+    shares.push_back(std::async(std::launch::async, [&, s] {
+      return share_of_wins(picks[s].step, before, selection.resamples);
+    }));
+  }
+  for (std::size_t s = 0; s < shares.size(); ++s) {
+    selection.picks[s].finding.inclusion = shares[s].get();
+  }
+}
+
+}  // namespace flange::diagnose

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+#include "refinement.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coil_parts.h"
+#include "criteria.h"
+#include "evidence.h"
+#include "free_shape_candidates.h"
+#include "library_candidates.h"
+#include "residual_tests.h"
+#include "series_arithmetic.h"
+
+namespace flange::diagnose {
+namespace {
+
+// The best of `candidates` of class `name` by held-out mean square (with what fitting its held-out
+// values takes from white noise), when it is below `below_ms`.
+std::optional<Candidate> best_of_class(std::vector<Candidate> candidates, const std::string& name,
+                                       double variance, double below_ms) {
+  std::optional<Candidate> best;
+  double best_ms = below_ms;
+  for (Candidate& c : candidates) {
+    if (c.free_shape->family.effect != name) continue;  // it names another class
+    const double after = rms_of(c.heldout_error);
+    const double ms = after * after + variance * c.free_shape->heldout_values /
+                                          static_cast<double>(c.heldout_error.size());
+    if (ms < best_ms) {
+      best_ms = ms;
+      best = std::move(c);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+void give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_t j) {
+  const int index = selection.picks[j].modelled_index;
+  if (index < 0) return;
+  const std::string name = selection.modelled[static_cast<std::size_t>(index)].name;
+  std::vector<sim::EffectSettings> others = selection.modelled;
+  others.erase(others.begin() + index);
+  const std::vector<double> cal_gap =
+      minus(cal_target(parts, selection), parts.cal_replay.voltage(others));
+  const std::vector<double> ho_gap =
+      minus(ho_target(parts, selection), parts.ho_replay.voltage(others));
+  const CoilParts coil(parts, others);
+  const double variance = selection.noise_v * selection.noise_v;
+  const double now = rms_of(selection.current_error);
+  std::vector<FreeShapeFamily> families;
+  for (const FreeShapeFamily& family : free_shape_families()) {
+    if (family.effect != name) continue;
+    if (parts.grid && !family.weighed_on_a_converter_grid) continue;
+    families.push_back(family);
+  }
+  const FreeShapeRound round{coil.calibration(), coil.heldout(), cal_gap,
+                             ho_gap,             others,         parts.heldout_age_unknown};
+  std::optional<Candidate> best =
+      best_of_class(free_shape_candidates(families, round), name, variance,
+                    now * now - criteria::kRefinementAcceptance * variance);
+  if (!best) return;
+  const FreeShapeFit& shape = *best->free_shape;
+  erase_library_effect(selection, index);
+  Pick& pick = selection.picks[j];
+  pick.modelled_index = -1;
+  add_free_shape(selection, shape, 1.0);
+  backfit(selection.modelled, selection.first_selected, parts.cal_replay,
+          cal_target(parts, selection));
+  selection.current_error =
+      minus(ho_target(parts, selection), parts.ho_replay.voltage(selection.modelled));
+  pick.finding.params = shape.params;
+  pick.finding.evidence +=
+      evidence::given_a_free_shape(now, rms_of(selection.current_error), shape.description);
+  refresh_library_params(selection);
+  // Its round now chooses the free shape (the later rounds' scores were made beside the library's
+  // formula: measure_inclusion reads the final fit instead for such a selection).
+  pick.step.candidates.push_back(std::move(*best));
+  pick.step.chosen = pick.step.candidates.size() - 1;
+  selection.shapes_refined = true;
+}
+
+Selection with_free_shapes_of_its_classes(const Parts& parts, const Selection& library) {
+  Selection refined = library;
+  for (std::size_t j = 0; j < refined.picks.size(); ++j) {
+    give_pick_a_free_shape(parts, refined, j);
+  }
+  return refined;
+}
+
+}  // namespace flange::diagnose

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+#include "scoring.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "criteria.h"
+#include "residual_tests.h"
+#include "series_arithmetic.h"
+
+namespace flange::diagnose {
+
+double chance_gain(const Candidate& c, double noise_v) {
+  if (!c.free_shape || c.free_shape->heldout_values == 0) return 0.0;
+  return noise_v * noise_v * c.free_shape->heldout_values /
+         static_cast<double>(std::max<std::size_t>(c.heldout_error.size(), 1));
+}
+
+double gain_of(const Candidate& c, const RoundScore& round) {
+  const double now = rms_of(round.current_error), after = rms_of(c.heldout_error);
+  return now * now - after * after - chance_gain(c, round.noise_v);
+}
+
+Choice choice_of(const std::vector<Candidate>& candidates, std::size_t index,
+                 const RoundScore& round) {
+  Choice choice;
+  choice.best = index;
+  choice.gain = gain_of(candidates[index], round);
+  const std::vector<double> now = round.resamples.mean_squares(round.current_error);
+  const std::vector<double> after = round.resamples.mean_squares(candidates[index].heldout_error);
+  std::vector<double> gains;
+  for (std::size_t r = 0; r < now.size(); ++r) {
+    gains.push_back(now[r] - after[r] - chance_gain(candidates[index], round.noise_v));
+  }
+  choice.lower = quantile(gains, criteria::kGainLowerQuantile);
+  return choice;
+}
+
+Choice best_candidate(const std::vector<Candidate>& candidates, const RoundScore& round,
+                      bool free_shapes_compete) {
+  std::size_t best = 0;
+  double best_gain = -std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (gain_of(candidates[c], round) > best_gain) {
+      best_gain = gain_of(candidates[c], round);
+      best = c;
+    }
+  }
+  if (free_shapes_compete) {
+    const double margin = criteria::kTieMargin * round.noise_v * round.noise_v;
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      if (gain_of(candidates[c], round) >= best_gain - margin &&
+          free_values_of(candidates[c]) < free_values_of(candidates[best])) {
+        best = c;
+      }
+    }
+  }
+  return choice_of(candidates, best, round);
+}
+
+Choice prefer_library_formula(const std::vector<Candidate>& candidates, Choice choice,
+                              const RoundScore& round) {
+  const Candidate& best = candidates[choice.best];
+  if (!best.free_shape) return choice;
+  const double margin = criteria::kFreeShapeMustGainOverFormula * round.noise_v * round.noise_v;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (candidates[c].free_shape || candidates[c].fit.settings.name != best.fit.settings.name) {
+      continue;
+    }
+    if (choice.gain - gain_of(candidates[c], round) < margin) {
+      return choice_of(candidates, c, round);
+    }
+  }
+  return choice;
+}
+
+bool significant(const Choice& choice, double least_gain) {
+  return choice.gain >= least_gain && choice.lower > 0.0;
+}
+
+double first_pick_least_gain(const std::vector<Candidate>& candidates, const RoundScore& round) {
+  constexpr std::size_t kShifts = criteria::kChanceShifts;
+  const double variance = round.noise_v * round.noise_v;
+  const std::vector<double>& gap = round.current_error;
+  const std::size_t n = gap.size();
+  if (n < 10 * kShifts) return criteria::kMostLeastGainOfAFirstPick * variance;
+  std::vector<double> best_at_lag(kShifts, -std::numeric_limits<double>::infinity());
+  for (const Candidate& c : candidates) {
+    double own = 0.0;  // the prediction's own sum of squares, the same at every lag
+    for (std::size_t i = 0; i < n; ++i) own += std::pow(gap[i] - c.heldout_error[i], 2);
+    for (std::size_t k = 0; k < kShifts; ++k) {
+      const std::size_t lag = n / 10 + k * (8 * n / 10) / (kShifts - 1);
+      double dot = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t j = i + lag < n ? i + lag : i + lag - n;
+        dot += gap[j] * (gap[i] - c.heldout_error[i]);
+      }
+      best_at_lag[k] = std::max(best_at_lag[k], (2.0 * dot - own) / static_cast<double>(n) -
+                                                    chance_gain(c, round.noise_v));
+    }
+  }
+  const double chance = *std::max_element(best_at_lag.begin(), best_at_lag.end());
+  return std::clamp(chance, criteria::kLeastLeastGainOfAFirstPick * variance,
+                    criteria::kMostLeastGainOfAFirstPick * variance);
+}
+
+}  // namespace flange::diagnose

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// How a round scores its candidates on held-out data, and the rules that choose among them:
+// significance, tie, preference of the library's formula, and the first pick's chance gain
+// (docs/diagnose.md, "Selection"; the criteria are in criteria.h).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "block_resamples.h"
+#include "candidate.h"
+
+namespace flange::diagnose {
+
+// What a round's candidates are scored against: the held-out gap the picks so far leave, the
+// held-out resamples, and the noise level of the round.
+struct RoundScore {
+  const std::vector<double>& current_error;
+  const BlockResamples& resamples;
+  double noise_v = 0.0;
+};
+
+// A candidate chosen in a round: its index, its held-out mean-square gain (V^2) and the gain's
+// block-bootstrap criteria::kGainLowerQuantile quantile.
+struct Choice {
+  std::size_t best = 0;
+  double gain = 0.0;
+  double lower = 0.0;
+};
+
+// What fitting a candidate's held-out values (the mains' windows, a session's constant) would
+// take from white noise alone: heldout_values / n of its variance, charged against every gain.
+double chance_gain(const Candidate& c, double noise_v);
+
+// The held-out mean-square gain of candidate `c` over what the picks leave now.
+double gain_of(const Candidate& c, const RoundScore& round);
+
+// Candidate `index` as a choice: its gain and the gain's bootstrap lower quantile.
+Choice choice_of(const std::vector<Candidate>& candidates, std::size_t index,
+                 const RoundScore& round);
+
+// The candidate that lowers the held-out mean square most (the first of equals). When free shapes
+// compete, the fewest values win among those within criteria::kTieMargin of sigma^2 of the best:
+// a family with more freedom must earn it on held-out data.
+Choice best_candidate(const std::vector<Candidate>& candidates, const RoundScore& round,
+                      bool free_shapes_compete);
+
+// When the choice is a free shape whose class's library formula gains within
+// criteria::kFreeShapeMustGainOverFormula of sigma^2 as much, the library's formula.
+Choice prefer_library_formula(const std::vector<Candidate>& candidates, Choice choice,
+                              const RoundScore& round);
+
+// A gain is significant when it is at least `least_gain` (V^2) and its bootstrap lower bound is
+// above zero.
+bool significant(const Choice& choice, double least_gain);
+
+// The least gain a first pick must make, from the data at hand: each candidate's held-out
+// prediction (what it takes off the gap) scored against the held-out gap circularly shifted by
+// criteria::kChanceShifts lags spread over its middle 80 %. Shifted, the gap keeps its own level,
+// spectrum and slow structure, but no longer lines up with what the candidates predict; the best
+// candidate's gain at a lag is what the best of them gains by chance, and the largest over the
+// lags is the least gain, kept between criteria::kLeastLeastGainOfAFirstPick and
+// criteria::kMostLeastGainOfAFirstPick of sigma^2. A gap too short to shift keeps the larger.
+double first_pick_least_gain(const std::vector<Candidate>& candidates, const RoundScore& round);
+
+}  // namespace flange::diagnose

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+#include "two_passes.h"
+
+#include <algorithm>
+#include <future>
+
+#include "criteria.h"
+#include "forward.h"
+#include "refinement.h"
+#include "residual_tests.h"
+
+namespace flange::diagnose {
+namespace {
+
+// The library's classes with shapes of their own, when they leave less by
+// criteria::kRefinementAcceptance of sigma^2: whether or not the library's formulas explained
+// the pair, a shape that departs from them is reported.
+Selection with_shapes_where_they_gain(const Parts& parts, Selection selection) {
+  if (selection.picks.empty()) return selection;
+  Selection refined = with_free_shapes_of_its_classes(parts, selection);
+  const double before = rms_of(selection.current_error), after = rms_of(refined.current_error);
+  const double margin = criteria::kRefinementAcceptance * selection.noise_v * selection.noise_v;
+  return before * before - after * after >= margin ? refined : selection;
+}
+
+// Whether the free pass replaces the library pass: it leaves less by
+// criteria::kPassComparisonMargin of sigma^2, or it names fewer classes where the library pass
+// named several, leaving no more than that margin more, or where both leave the noise (the
+// library's formulas can split between two classes what one class of another shape explains
+// alone; where both leave the noise, the fewer classes are the explanation).
+bool free_pass_wins(const Selection& library, const Selection& free, bool several_classes) {
+  const double left = rms_of(library.current_error);
+  const double free_left = rms_of(free.current_error);
+  const double sigma = std::min(library.noise_v, free.noise_v);
+  const double margin = criteria::kPassComparisonMargin * sigma * sigma;
+  const bool leaves_less = left * left - free_left * free_left >= margin;
+  const bool both_leave_the_noise = left <= criteria::kExplainedRatio * sigma &&
+                                    free_left <= criteria::kExplainedRatio * sigma;
+  const bool fewer_classes = !free.picks.empty() && free.picks.size() < library.picks.size() &&
+                             (free_left * free_left - left * left < margin || both_leave_the_noise);
+  return leaves_less || (several_classes && fewer_classes);
+}
+
+}  // namespace
+
+Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& options,
+                               const Selection& start, DiagnosisResult& result) {
+  Selection library = start;
+  DiagnosisResult library_result = result;
+  select_bias_effects(parts, options, library, library_result);
+  const bool several_classes = library.picks.size() > 1;
+  const auto explained_by_one_class = [&](const Selection& selection) {
+    return rms_of(selection.current_error) <= criteria::kExplainedRatio * selection.noise_v &&
+           !several_classes;
+  };
+  if (explained_by_one_class(library)) {
+    result = std::move(library_result);
+    return with_shapes_where_they_gain(parts, std::move(library));
+  }
+  // The refinement and the free pass do not depend on each other: they run at once, and the
+  // refined selection is taken alone when it explains with one class (the free pass then unused).
+  std::future<Selection> refining =
+      std::async(std::launch::async, with_shapes_where_they_gain, std::cref(parts), library);
+  Selection free = start;
+  free.free_shapes = true;
+  DiagnosisResult free_result = result;
+  select_bias_effects(parts, options, free, free_result);
+  library = refining.get();
+  if (explained_by_one_class(library)) {
+    result = std::move(library_result);
+    return library;
+  }
+  if (free_pass_wins(library, free, several_classes)) {
+    result = std::move(free_result);
+    return free;
+  }
+  result = std::move(library_result);
+  return library;
+}
+
+}  // namespace flange::diagnose

@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// The library's formulas first; only when what they leave is above the noise, a second pass with
+// the free-shape families competing too, kept when it leaves significantly less on held-out data
+// or names fewer classes that leave as little. A free curve fitted early is not refitted around
+// later picks, so letting it compete from the start would let it take part of an effect the
+// library explains exactly (an offset curve of T takes the hysteresis of a thermal lag).
+#pragma once
+
+#include "diagnosis_detail.h"
+#include "parts.h"
+#include "selection.h"
+
+namespace flange::diagnose {
+
+Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& options,
+                               const Selection& start, DiagnosisResult& result);
+
+}  // namespace flange::diagnose

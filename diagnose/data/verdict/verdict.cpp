@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+#include "verdict.h"
+
+#include <algorithm>
+#include <numbers>
+
+#include "criteria.h"
+#include "effect_classes.h"
+#include "reach.h"
+#include "residual_tests.h"
+#include "series_arithmetic.h"
+#include "verdict_reasons.h"
+
+namespace flange::diagnose {
+namespace {
+
+// What may be left in any one window of the held-out session: criteria::kLocalExplainedRatio
+// times the noise; with the converter's grid modelled, at least LSB / sqrt(2). Below the LSB the
+// noise does not spread evenly over the code boundaries: a signal that dwells on a boundary for a
+// window flips between two codes at random, half the time off the twin's one code, whatever the
+// noise.
+double window_allowance(const Selection& selection, double verdict_noise) {
+  const double allowance = criteria::kLocalExplainedRatio * verdict_noise;
+  if (!selection.quantised_on || selection.quantisation_as_noise) return allowance;
+  return std::max(allowance, selection.quantised_on->lsb_v / std::numbers::sqrt2);
+}
+
+bool left_within_noise_overall(const VerdictFigures& f) {
+  return f.rms_after <= criteria::kExplainedRatio * f.noise_v;
+}
+
+bool left_within_noise_locally(const VerdictFigures& f) {
+  return f.worst_window_v <= f.window_allowance_v;
+}
+
+double partly_share(const VerdictFigures& f) {
+  return above_noise_share_taken(f.rms_before, f.rms_after, f.noise_v);
+}
+
+// What the picks leave against what the noise allows, as a sentence.
+std::string what_is_left(const Selection& selection, double verdict_noise,
+                         const HeldoutWindow& worst) {
+  return reasons::what_is_left(rms_of(selection.current_error),
+                               criteria::kExplainedRatio * verdict_noise, worst.rms_v, worst.from_s,
+                               worst.to_s, window_allowance(selection, verdict_noise));
+}
+
+// The library effect an "unexplained" verdict came nearest to: the first it selected, or, when
+// none was significant, the candidate that lowered the held-out gap most; with how far it went.
+std::optional<EffectFinding> nearest_effect(const Selection& selection,
+                                            const std::vector<EffectFinding>& findings,
+                                            double verdict_noise, const HeldoutWindow& worst) {
+  const bool picked = !findings.empty();
+  if (!picked && !selection.nearest_unpicked) return std::nullopt;
+  EffectFinding nearest = picked ? findings.front() : *selection.nearest_unpicked;
+  nearest.evidence = reasons::nearest(picked, nearest, findings.size() > 1,
+                                      what_is_left(selection, verdict_noise, worst));
+  return nearest;
+}
+
+reasons::BeyondReach beyond_reach(const RecordingSeries& heldout, const CalibrationReach& reach,
+                                  const Selection& selection, double beyond_share) {
+  const auto [t_lo, t_hi] = std::minmax_element(heldout.temp_c.begin(), heldout.temp_c.end());
+  const auto [x_lo, x_hi] =
+      std::minmax_element(heldout.clearance_mm.begin(), heldout.clearance_mm.end());
+  return {reach.heldout_within.size(),
+          reach.heldout_beyond.size(),
+          reach.temp_lo_c,
+          reach.temp_hi_c,
+          reach.clearance_lo_mm,
+          reach.clearance_hi_mm,
+          *t_lo,
+          *t_hi,
+          *x_lo,
+          *x_hi,
+          rms_at(selection.current_error, reach.heldout_within),
+          rms_at(selection.current_error, reach.heldout_beyond),
+          beyond_share};
+}
+
+// The verdict's figures, with the held-out figures the report shows filled into `how`.
+VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
+                               const std::vector<EffectFinding>& findings,
+                               const Diagnosis& diagnosis, const CalibrationReach& reach,
+                               double verdict_noise, HowFar& how) {
+  const double sigma = selection.noise_v;
+  const bool has_noise_type = std::any_of(findings.begin(), findings.end(), [](const auto& f) {
+    return f.noise_type && effect_class(f.name).identification == Identification::kBySignature;
+  });
+  VerdictFigures f;
+  f.any_findings = !findings.empty();
+  f.gap_exists = diagnosis.heldout_rms_before > criteria::kGapRatio * sigma ||
+                 !diagnosis.stage.empty() || has_noise_type || !findings.empty();
+  f.noise_v = verdict_noise;
+  f.rms_before = diagnosis.heldout_rms_before;
+  f.rms_after = diagnosis.heldout_rms_after;
+  how.worst_window = worst_window(parts.heldout, reach, selection.current_error);
+  how.within_calibration_samples = reach.heldout_within.size();
+  how.within_calibration_rms_before = rms_at(selection.raw_ho_gap, reach.heldout_within);
+  how.within_calibration_rms_after = rms_at(selection.current_error, reach.heldout_within);
+  f.worst_window_v = how.worst_window.rms_v;
+  f.window_allowance_v = window_allowance(selection, verdict_noise);
+  f.share_within = static_cast<double>(reach.heldout_within.size()) /
+                   static_cast<double>(selection.current_error.size());
+  f.within_before_v = how.within_calibration_rms_before;
+  f.within_after_v = how.within_calibration_rms_after;
+  f.beyond_share_taken =
+      above_noise_share_taken(rms_at(selection.raw_ho_gap, reach.heldout_beyond),
+                              rms_at(selection.current_error, reach.heldout_beyond), verdict_noise);
+  return f;
+}
+
+}  // namespace
+
+Decision decide(const VerdictFigures& f) {
+  const bool overall = left_within_noise_overall(f);
+  const bool locally = left_within_noise_locally(f);
+  const bool within_reach =
+      !overall && locally && f.share_within >= criteria::kLeastShareWithinReach &&
+      f.within_before_v > criteria::kGapRatio * f.noise_v &&
+      f.within_after_v <= criteria::kExplainedRatio * f.noise_v &&
+      f.beyond_share_taken >=
+          std::max(criteria::kLeastShareTakenBeyondReach, 1.0 - f.share_within);
+  if (f.any_findings && overall && locally) return Decision::kExplained;
+  if (f.any_findings && within_reach) return Decision::kExplainedWithinReach;
+  if (f.any_findings && partly_share(f) >= criteria::kPartlyExplainedShare) {
+    return Decision::kPartlyExplained;
+  }
+  return f.gap_exists ? Decision::kUnexplained : Decision::kNone;
+}
+
+std::string status_of(Decision decision) {
+  switch (decision) {
+    case Decision::kExplained:
+    case Decision::kExplainedWithinReach:
+      return "explained";
+    case Decision::kPartlyExplained:
+      return "partly explained";
+    case Decision::kUnexplained:
+      return "unexplained";
+    case Decision::kNone:
+      break;
+  }
+  return "none";
+}
+
+void verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
+             DiagnosisResult& result) {
+  Diagnosis& diagnosis = result.diagnosis;
+  const std::vector<EffectFinding> findings = findings_of(selection);
+  diagnosis.heldout_rms_before = rms_of(selection.raw_ho_gap);
+  diagnosis.heldout_rms_after = rms_of(selection.current_error);
+  const CalibrationReach reach = calibration_reach(parts.calibration, parts.heldout);
+  HowFar& how = result.detail.how_far;
+  const VerdictFigures f =
+      verdict_figures(parts, selection, findings, diagnosis, reach, noise.rms_v, how);
+  const Decision decision = decide(f);
+  diagnosis.status = status_of(decision);
+  auto& reasons = result.detail.reasons;
+  reasons.push_back(reasons::heldout_summary(f.rms_before, f.rms_after, selection.noise_v));
+  if (!noise.why.empty()) reasons.push_back(noise.why);
+  if (f.any_findings && left_within_noise_overall(f) && !left_within_noise_locally(f)) {
+    reasons.push_back(reasons::missed_in_a_window(f.worst_window_v / f.noise_v,
+                                                  how.worst_window.from_s, how.worst_window.to_s,
+                                                  f.window_allowance_v / f.noise_v));
+  }
+  switch (decision) {
+    case Decision::kExplained:
+      reasons.push_back(reasons::explained());
+      break;
+    case Decision::kExplainedWithinReach:
+      reasons.push_back(reasons::explained_within_reach(
+          beyond_reach(parts.heldout, reach, selection, f.beyond_share_taken)));
+      break;
+    case Decision::kPartlyExplained:
+      reasons.push_back(reasons::partly_explained(
+          partly_share(f), what_is_left(selection, noise.rms_v, how.worst_window)));
+      break;
+    case Decision::kUnexplained:
+      result.detail.partial = findings;
+      diagnosis.nearest = nearest_effect(selection, findings, noise.rms_v, how.worst_window);
+      reasons.push_back(reasons::unexplained(f.any_findings));
+      break;
+    case Decision::kNone:
+      reasons.push_back(reasons::none());
+      break;
+  }
+  if (decision == Decision::kExplained || decision == Decision::kExplainedWithinReach ||
+      decision == Decision::kPartlyExplained) {
+    diagnosis.effects = findings;
+  }
+  if (diagnosis.status != "none") {
+    reasons.insert(reasons.end(), selection.confounded.begin(), selection.confounded.end());
+    reasons.insert(reasons.end(), selection.dropped.begin(), selection.dropped.end());
+  }
+  if (diagnosis.stage.empty()) diagnosis.stage = "none";
+}
+
+}  // namespace flange::diagnose

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// The verdict: "explained", "partly explained", "unexplained" or "none", with its reasons
+// (docs/diagnose.md, "Verdict"). decide() holds the rules on the figures alone; verdict() gathers
+// the figures from the selection and writes the diagnosis.
+#pragma once
+
+#include <string>
+
+#include "diagnosis_detail.h"
+#include "parts.h"
+#include "selection.h"
+#include "verdict_noise.h"
+
+namespace flange::diagnose {
+
+// The figures the verdict decides on (RMS in V, shares in 0..1).
+struct VerdictFigures {
+  bool any_findings = false;
+  bool gap_exists = false;  // the held-out gap, a stage, or any finding shows a gap
+  double noise_v = 0.0;     // what is left is compared with this (VerdictNoise)
+  double rms_before = 0.0, rms_after = 0.0;  // the held-out gap before and after the picks
+  double worst_window_v = 0.0;               // the worst window within reach (worst_window)
+  double window_allowance_v = 0.0;           // what any one window may hold
+  double share_within = 0.0;  // of the held-out samples, within the calibration's ranges
+  double within_before_v = 0.0, within_after_v = 0.0;  // the gap there, before and after
+  double beyond_share_taken = 0.0;  // of the gap above the noise beyond the ranges, taken
+};
+
+enum class Decision { kExplained, kExplainedWithinReach, kPartlyExplained, kUnexplained, kNone };
+
+// The rules:
+// - explained: a finding, and what is left is within criteria::kExplainedRatio of the noise over
+//   the session and within the window allowance in every window;
+// - explained within reach: what is left is above that over the session but within it on the
+//   held-out samples within the calibration's ranges (at least criteria::kLeastShareWithinReach of
+//   them, with a gap there above criteria::kGapRatio of the noise) and in every window, and the
+//   continued curves take at least the larger of criteria::kLeastShareTakenBeyondReach and the
+//   share of samples beyond of the gap above the noise there;
+// - partly explained: the picks take at least criteria::kPartlyExplainedShare of the gap above the
+//   noise;
+// - unexplained: a gap exists; none: none does.
+Decision decide(const VerdictFigures& f);
+
+// "explained", "partly explained", "unexplained" or "none".
+std::string status_of(Decision decision);
+
+// The status and the reasons for it, into `result`.
+void verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
+             DiagnosisResult& result);
+
+}  // namespace flange::diagnose
