@@ -35,7 +35,7 @@ struct InputFiles {
   std::string good =
       write_file(dir / "good.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,2,20,1\n1,3,20,2\n")
           .string();
-  // 40 rows: fewer than 5-fold cross-validation in 64-row blocks needs (it crashed before).
+  // 40 rows: fewer than 5-fold cross-validation in 64-row blocks needs.
   std::string short_calibration =
       write_file(dir / "short.csv",
                  [] {
