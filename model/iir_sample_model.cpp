@@ -156,6 +156,52 @@ bool IirSampleModel::kernel_available(const CoreConfig& config, SampleKernel ker
   return false;
 }
 
+namespace {
+
+// `kernel`, or for kAuto the fastest kernel that computes `config` exactly on this machine: a
+// vector kernel (the merged sums first where merged_preferred), then the merged one, else the
+// two-phase one. Throws std::invalid_argument when `kernel` cannot compute `config`.
+SampleKernel chosen_kernel(const CoreConfig& config, SampleKernel kernel) {
+  if (kernel == SampleKernel::kAuto) {
+    const SampleKernel first_vector =
+        vector::merged_preferred() ? SampleKernel::kVectorMerged : SampleKernel::kVector;
+    const SampleKernel second_vector =
+        first_vector == SampleKernel::kVector ? SampleKernel::kVectorMerged : SampleKernel::kVector;
+    if (IirSampleModel::kernel_available(config, first_vector)) return first_vector;
+    if (IirSampleModel::kernel_available(config, second_vector)) return second_vector;
+    if (IirSampleModel::kernel_available(config, SampleKernel::kMerged)) {
+      return SampleKernel::kMerged;
+    }
+    return SampleKernel::kTwoPhase;
+  }
+  if (!IirSampleModel::kernel_available(config, kernel)) {
+    throw std::invalid_argument(
+        fmt::format("IirSampleModel: the {} kernel cannot compute {} exactly{}", to_string(kernel),
+                    config.name, is_vector(kernel) ? " (or this CPU lacks AVX-512)" : ""));
+  }
+  return kernel;
+}
+
+// Per section the merged words c_b[0..M] (c = H 2^L + W), c_a[1..M] and E[1..M] 2^L.
+std::vector<std::int64_t> merged_words(const CoreConfig& config) {
+  const int m = config.section_order;
+  const int split = config.split_shift();
+  std::vector<std::int64_t> merged;
+  for (int k = 0; k < config.num_sections; ++k) {
+    const std::int64_t* w = config.rom.data() + k * config.terms();
+    for (int i = 0; i <= m; ++i) {
+      merged.push_back(w[config.hi_b(i)] * (std::int64_t{1} << split) + w[config.lo_b(i)]);
+    }
+    for (int j = 1; j <= m; ++j) {
+      merged.push_back(w[config.hi_a(j)] * (std::int64_t{1} << split) + w[config.lo_a(j)]);
+    }
+    for (int j = 1; j <= m; ++j) merged.push_back(w[config.err(j)] * (std::int64_t{1} << split));
+  }
+  return merged;
+}
+
+}  // namespace
+
 IirSampleModel::IirSampleModel(CoreConfig config, SampleKernel kernel)
     : config_(std::move(config)) {
   validate_core_config(config_);
@@ -169,43 +215,12 @@ IirSampleModel::IirSampleModel(CoreConfig config, SampleKernel kernel)
   ext_max_ = (std::int64_t{sample_max_} + 1) * (std::int64_t{1} << config_.feedback_shift) - 1;
   ext_min_ = std::int64_t{sample_min_} * (std::int64_t{1} << config_.feedback_shift);
   can_wrap_ = can_wrap(config_);
-  if (kernel == SampleKernel::kAuto) {
-    const SampleKernel first_vector =
-        vector::merged_preferred() ? SampleKernel::kVectorMerged : SampleKernel::kVector;
-    const SampleKernel second_vector =
-        first_vector == SampleKernel::kVector ? SampleKernel::kVectorMerged : SampleKernel::kVector;
-    if (kernel_available(config_, first_vector)) {
-      kernel = first_vector;
-    } else if (kernel_available(config_, second_vector)) {
-      kernel = second_vector;
-    } else if (kernel_available(config_, SampleKernel::kMerged)) {
-      kernel = SampleKernel::kMerged;
-    } else {
-      kernel = SampleKernel::kTwoPhase;
-    }
-  } else if (!kernel_available(config_, kernel)) {
-    throw std::invalid_argument(
-        fmt::format("IirSampleModel: the {} kernel cannot compute {} exactly{}", to_string(kernel),
-                    config_.name, is_vector(kernel) ? " (or this CPU lacks AVX-512)" : ""));
-  }
-  kernel_ = kernel;
+  kernel_ = chosen_kernel(config_, kernel);
 
   const int m = config_.section_order;
   // The merged words also serve the vector kernel's short blocks (all kernels share the state).
   if (kernel_ != SampleKernel::kTwoPhase && merged_fits_int64(config_)) {
-    const int split = config_.split_shift();
-    for (int k = 0; k < config_.num_sections; ++k) {
-      const std::int64_t* w = config_.rom.data() + k * config_.terms();
-      for (int i = 0; i <= m; ++i) {
-        merged_.push_back(w[config_.hi_b(i)] * (std::int64_t{1} << split) + w[config_.lo_b(i)]);
-      }
-      for (int j = 1; j <= m; ++j) {
-        merged_.push_back(w[config_.hi_a(j)] * (std::int64_t{1} << split) + w[config_.lo_a(j)]);
-      }
-      for (int j = 1; j <= m; ++j) {
-        merged_.push_back(w[config_.err(j)] * (std::int64_t{1} << split));
-      }
-    }
+    merged_ = merged_words(config_);
     const auto pick = [this]<int kOrder>() -> MergedRun {
       switch (config_.num_sections) {
         case 1:

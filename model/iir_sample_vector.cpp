@@ -464,15 +464,13 @@ FLANGE_TARGET inline void finish_samples(const Plan& p, const std::int32_t* y, s
   for (; i < end; ++i) scalar(i);
 }
 
-// The kernel for `lanes` = T::kLanes, M = kOrder, the sums and the sign of the H_a[1] words.
-template <class T, int kOrder, Sums kSums, bool kSignedHa1>
-void run_lanes(const Plan& p, std::int64_t* history, const std::int32_t* in, SampleResult* out,
-               std::size_t n) {
-  using V = typename T::V;
-  constexpr int m = kOrder;
+// The lanes' words and the kernel's constants, lane k holding section k's. `flip` (all 0 on entry)
+// gets per lane what r is xor-ed with: 2^F - 1 (times 2^L with merged sums) where r is kept
+// negated, else 0.
+template <class T, int m, Sums kSums>
+FLANGE_TARGET inline void lane_words(const Plan& p, std::int64_t* flip, Words<T, m>& c) {
   constexpr int kLanes = T::kLanes;
   const int sections = p.sections;
-  Words<T, m> c;
   constexpr bool kMergedSums = kSums == Sums::kMerged;
   // Merged sums: r is kept times 2^L, and lo's words take their hi words: c = H 2^L + W.
   const int r_shift = kMergedSums ? p.split : 0;
@@ -500,7 +498,6 @@ void run_lanes(const Plan& p, std::int64_t* history, const std::int32_t* in, Sam
   }
   // Per lane: whether r is kept negated (E[1] < 0, so that |E[1]| r is a product of non-negative
   // operands), the error words to match, and lo's preload (the merged sum's too: the same value).
-  alignas(64) std::int64_t flip[kLanes] = {};
   for (int k = 0; k < sections; ++k) flip[k] = p.words[lane_word(p, kind_err(m, 1), k)] < 0;
   for (int j = 1; j <= m; ++j) {
     for (int k = 0; k < kLanes; ++k) {
@@ -533,15 +530,23 @@ void run_lanes(const Plan& p, std::int64_t* history, const std::int32_t* in, Sam
     flip[k] = flip[k] ? p.mask_f : 0;
   }
   c.pre_lo = T::load(buf);
-  for (std::int64_t& f : flip) f <<= r_shift;
+  for (int k = 0; k < kLanes; ++k) flip[k] <<= r_shift;
   c.flip = T::load(flip);
   c.shift_lo = T::set1(p.split);
   c.shift_acc = T::set1(kMergedSums ? p.split + p.frac : p.frac);
   c.mask_f = T::set1(p.mask_f << r_shift);
   c.ext_max = T::set1(p.ext_max - p.ext_min);
-  const auto lane_mask = static_cast<__mmask8>((1u << sections) - 1);
-  const V out_of_range = T::set1(~(2 * p.bias - 1));  // 2Y = 2^(D+s)
+}
 
+// The lanes' state from the load registers (lane k's u from line k, w from line k + 1, r from
+// line K + 1 + k; line l's words of ages 1..M at history[l M ..]).
+template <class T, int m, Sums kSums>
+FLANGE_TARGET inline void load_state(const Plan& p, std::int64_t* history, const std::int64_t* flip,
+                                     State<T>& s) {
+  constexpr int kLanes = T::kLanes;
+  const int sections = p.sections;
+  const int r_shift = kSums == Sums::kMerged ? p.split : 0;
+  alignas(64) std::int64_t buf[kLanes];
   const auto line = [&](int l, int age) -> std::int64_t& {
     return history[static_cast<std::size_t>(l * m + age - 1)];
   };
@@ -559,7 +564,6 @@ void run_lanes(const Plan& p, std::int64_t* history, const std::int32_t* in, Sam
     }
     return T::load(buf);
   };
-  State<T> s;
   s.u1 = gather(0, 1, p.bias, false);
   s.w1 = gather(1, 1, p.bias, false);
   s.r1 = gather(sections + 1, 1, p.half_f, true);
@@ -567,86 +571,19 @@ void run_lanes(const Plan& p, std::int64_t* history, const std::int32_t* in, Sam
   s.w2 = m == 2 ? gather(1, 2, p.bias, false) : T::set1(0);
   s.r2 = m == 2 ? gather(sections + 1, 2, p.half_f, true) : T::set1(0);
   s.y1 = s.y2 = T::set1(0);
+}
 
-  const int last = sections - 1;
-  const std::size_t skew = static_cast<std::size_t>(2 * last);
-  const std::size_t steps = n + skew;
-  // The inputs x << s of a chunk of steps, widened: x[c0 + j] at [kLanes - 1 + j], the top lane of
-  // the load at [j] (only the top lane is used).
-  alignas(64) std::int64_t xs[kChunk + kLanes] = {};
-  // The last section's y_ext of the samples a chunk finishes, [c0 - skew, c1 - skew), one per
-  // step: a masked store of lane K - 1's low dword alone, at an address 2(K - 1) dwords early
-  // (masked-out lanes never touch memory). finish_samples then writes them to out.
-  alignas(64) std::int32_t ys[kChunk];
-  std::uint8_t ring[kRing] = {};
-  std::size_t dirty_until = 0;  // every sample marked in the ring is below this
-  const auto y_mask = static_cast<typename T::DwordMask>(1u << (2 * last));
-  const std::uintptr_t y_base =
-      reinterpret_cast<std::uintptr_t>(ys) - 8 * static_cast<std::uintptr_t>(last);
-  const auto masked_step = [&](std::size_t t, std::size_t c0) __attribute__((always_inline)) {
-    unsigned active = 0;
-    for (int k = 0; k < sections; ++k) {
-      const auto lag = static_cast<std::size_t>(2 * k);
-      if (t >= lag && t - lag < n) active |= 1u << k;
-    }
-    const __mmask8 clipped = lane_step<T, m, kSums, kSignedHa1, true>(
-        c, s, xs + (t - c0), static_cast<__mmask8>(active));
-    if (clipped) record_clips(ring, dirty_until, clipped, t);
-    if (active >> last) T::store_dword(y_base + 4 * (t - c0), y_mask, s.y1);
+// Back to the load registers: line k's words from lane k's input history, line K from the last
+// lane's output history, the errors less 2^(F-1); the biases undone.
+template <class T, int m, Sums kSums>
+FLANGE_TARGET inline void store_state(const Plan& p, const State<T>& s, const std::int64_t* flip,
+                                      std::int64_t* history) {
+  const int sections = p.sections;
+  const int r_shift = kSums == Sums::kMerged ? p.split : 0;
+  alignas(64) std::int64_t buf[T::kLanes];
+  const auto line = [&](int l, int age) -> std::int64_t& {
+    return history[static_cast<std::size_t>(l * m + age - 1)];
   };
-  const V shift_in = T::set1(p.shift), bias = T::set1(p.bias);
-  for (std::size_t c0 = 0; c0 < steps; c0 += kChunk) {
-    const std::size_t c1 = std::min(steps, c0 + kChunk);
-    // This chunk's inputs x << s, widened and biased by Y.
-    const std::size_t inputs_end = std::max(c0, std::min(c1, n));
-    std::size_t t = c0;
-    for (; t + T::kLanes <= inputs_end; t += T::kLanes) {
-      T::store(xs + kLanes - 1 + (t - c0), T::add(T::sllv(T::widen32(in + t), shift_in), bias));
-    }
-    for (; t < inputs_end; ++t)
-      xs[kLanes - 1 + (t - c0)] = (std::int64_t{in[t]} << p.shift) + p.bias;
-    std::fill(xs + kLanes - 1 + (inputs_end - c0), xs + kLanes - 1 + (c1 - c0), 0);
-
-    t = c0;
-    for (; t < std::min(c1, skew); ++t) masked_step(t, c0);
-    // Every lane active: first without the clip test, tracking y_ext's range; if some y_ext left
-    // it (a clip, rare for a useful filter), back to the state before and again with the test.
-    const std::size_t full_end = std::max(t, std::min(c1, n));
-    while (t < full_end) {
-      // A part of kPart steps; a rerun repeats only the part that left the range.
-      const std::size_t part_begin = t, part_end = std::min(full_end, t + kPart);
-      const State<T> before = s;
-      Seen<T> seen{T::set1(0)};
-      for (; t + 1 < part_end; t += 2) {  // two steps a turn: the history moves by renaming
-        lane_step<T, m, kSums, kSignedHa1, false, false>(c, s, xs + (t - c0), lane_mask, &seen);
-        T::store_dword(y_base + 4 * (t - c0), y_mask, s.y1);
-        lane_step<T, m, kSums, kSignedHa1, false, false>(c, s, xs + (t + 1 - c0), lane_mask, &seen);
-        T::store_dword(y_base + 4 * (t + 1 - c0), y_mask, s.y1);
-      }
-      if (t < part_end) {
-        lane_step<T, m, kSums, kSignedHa1, false, false>(c, s, xs + (t - c0), lane_mask, &seen);
-        T::store_dword(y_base + 4 * (t - c0), y_mask, s.y1);
-        ++t;
-      }
-      if (T::any_common(seen.bits, out_of_range)) {
-        s = before;
-        for (t = part_begin; t < part_end; ++t) {
-          const __mmask8 clipped =
-              lane_step<T, m, kSums, kSignedHa1, false>(c, s, xs + (t - c0), lane_mask);
-          if (clipped) record_clips(ring, dirty_until, clipped, t);
-          T::store_dword(y_base + 4 * (t - c0), y_mask, s.y1);
-        }
-      }
-    }
-    for (; t < c1; ++t) masked_step(t, c0);
-    // The samples this chunk finished; ys[j] is sample c0 + j - skew.
-    const std::size_t first = std::max(c0, skew), end = std::max(c1, skew);
-    finish_samples<T>(p, ys + (first - c0), ring, first - skew >= dirty_until, out, first - skew,
-                      end - skew);
-  }
-
-  // Back to the load registers: line k's words from lane k's input history, line K from the last
-  // lane's output history, the errors less 2^(F-1); the biases undone.
   const auto scatter = [&](typename T::V v, int first_line, int age, std::int64_t minus,
                            bool error) {
     T::store(buf, v);
@@ -658,8 +595,144 @@ void run_lanes(const Plan& p, std::int64_t* history, const std::int32_t* in, Sam
     scatter(age == 1 ? s.u1 : s.u2, 0, age, p.bias, false);
     scatter(age == 1 ? s.r1 : s.r2, sections + 1, age, p.half_f, true);
     T::store(buf, age == 1 ? s.w1 : s.w2);
-    line(sections, age) = buf[last] - p.bias;
+    line(sections, age) = buf[sections - 1] - p.bias;
   }
+}
+
+// The inputs of steps [c0, c1) of n samples as x << s, widened and biased by Y (shift_in = s,
+// bias = Y in every lane), x[c0 + j] at xs[kLanes - 1 + j]; 0 past the last sample.
+template <class T>
+FLANGE_TARGET inline void widen_inputs(const Plan& p, const std::int32_t* in, std::size_t n,
+                                       std::size_t c0, std::size_t c1, std::int64_t* xs,
+                                       typename T::V shift_in, typename T::V bias) {
+  constexpr int kLanes = T::kLanes;
+  const std::size_t inputs_end = std::max(c0, std::min(c1, n));
+  std::size_t t = c0;
+  for (; t + T::kLanes <= inputs_end; t += T::kLanes) {
+    T::store(xs + kLanes - 1 + (t - c0), T::add(T::sllv(T::widen32(in + t), shift_in), bias));
+  }
+  for (; t < inputs_end; ++t) xs[kLanes - 1 + (t - c0)] = (std::int64_t{in[t]} << p.shift) + p.bias;
+  std::fill(xs + kLanes - 1 + (inputs_end - c0), xs + kLanes - 1 + (c1 - c0), 0);
+}
+
+// Where the steps of the chunk from c0 put what they make: the last section's y_ext of step t as
+// ys[t - c0], by a masked store of lane K - 1's low dword alone at y_base + 4 (t - c0), 2(K - 1)
+// dwords before ys[t - c0] (masked-out lanes never touch memory); the samples' clips in the ring.
+template <class T>
+struct StepOutputs {
+  std::uintptr_t y_base;
+  typename T::DwordMask y_mask;
+  std::uint8_t* ring;
+  std::size_t* dirty_until;  // every sample marked in the ring is below this
+};
+
+// Step t of the chunk from c0 while the lanes fill or drain: section k is active while its sample
+// t - 2k is one of the n. With the clip test.
+template <class T, int m, Sums kSums, bool kSignedHa1>
+FLANGE_TARGET inline void masked_step(const Words<T, m>& c, State<T>& s, const std::int64_t* xs,
+                                      std::size_t c0, std::size_t t, int sections, std::size_t n,
+                                      StepOutputs<T> o) {
+  unsigned active = 0;
+  for (int k = 0; k < sections; ++k) {
+    const auto lag = static_cast<std::size_t>(2 * k);
+    if (t >= lag && t - lag < n) active |= 1u << k;
+  }
+  const __mmask8 clipped =
+      lane_step<T, m, kSums, kSignedHa1, true>(c, s, xs + (t - c0), static_cast<__mmask8>(active));
+  if (clipped) record_clips(o.ring, *o.dirty_until, clipped, t);
+  if (active >> (sections - 1)) T::store_dword(o.y_base + 4 * (t - c0), o.y_mask, s.y1);
+}
+
+// Steps [begin, end) of the chunk from c0 with every lane active (lane_mask): first without the
+// clip test, tracking y_ext's range; if some y_ext left it (a bit of out_of_range set: a clip,
+// rare for a useful filter), back to the state before and again with the test.
+template <class T, int m, Sums kSums, bool kSignedHa1>
+FLANGE_TARGET inline void full_steps(const Words<T, m>& c, State<T>& s, const std::int64_t* xs,
+                                     std::size_t c0, std::size_t begin, std::size_t end,
+                                     __mmask8 lane_mask, typename T::V out_of_range,
+                                     StepOutputs<T> o) {
+  const State<T> before = s;
+  Seen<T> seen{T::set1(0)};
+  std::size_t t = begin;
+  for (; t + 1 < end; t += 2) {  // two steps a turn: the history moves by renaming
+    lane_step<T, m, kSums, kSignedHa1, false, false>(c, s, xs + (t - c0), lane_mask, &seen);
+    T::store_dword(o.y_base + 4 * (t - c0), o.y_mask, s.y1);
+    lane_step<T, m, kSums, kSignedHa1, false, false>(c, s, xs + (t + 1 - c0), lane_mask, &seen);
+    T::store_dword(o.y_base + 4 * (t + 1 - c0), o.y_mask, s.y1);
+  }
+  if (t < end) {
+    lane_step<T, m, kSums, kSignedHa1, false, false>(c, s, xs + (t - c0), lane_mask, &seen);
+    T::store_dword(o.y_base + 4 * (t - c0), o.y_mask, s.y1);
+  }
+  if (T::any_common(seen.bits, out_of_range)) {
+    s = before;
+    for (t = begin; t < end; ++t) {
+      const __mmask8 clipped =
+          lane_step<T, m, kSums, kSignedHa1, false>(c, s, xs + (t - c0), lane_mask);
+      if (clipped) record_clips(o.ring, *o.dirty_until, clipped, t);
+      T::store_dword(o.y_base + 4 * (t - c0), o.y_mask, s.y1);
+    }
+  }
+}
+
+// The kernel for `lanes` = T::kLanes, M = kOrder, the sums and the sign of the H_a[1] words.
+// Section k works on sample t - 2k at step t, so n samples take n + 2(K - 1) steps, run in chunks
+// of kChunk and, where every lane is active, in parts of kPart without the clip test first. Its
+// helpers are inlined: a call in the loop would make the compiler keep the lanes' state in memory.
+template <class T, int kOrder, Sums kSums, bool kSignedHa1>
+void run_lanes(const Plan& p, std::int64_t* history, const std::int32_t* in, SampleResult* out,
+               std::size_t n) {
+  using V = typename T::V;
+  constexpr int m = kOrder;
+  constexpr int kLanes = T::kLanes;
+  const int sections = p.sections;
+  alignas(64) std::int64_t flip[kLanes] = {};
+  Words<T, m> c;
+  lane_words<T, m, kSums>(p, flip, c);
+  const auto lane_mask = static_cast<__mmask8>((1u << sections) - 1);
+  const V out_of_range = T::set1(~(2 * p.bias - 1));  // 2Y = 2^(D+s)
+
+  State<T> s;
+  load_state<T, m, kSums>(p, history, flip, s);
+
+  const int last = sections - 1;
+  const std::size_t skew = static_cast<std::size_t>(2 * last);
+  const std::size_t steps = n + skew;
+  // The inputs x << s of a chunk of steps, widened: x[c0 + j] at [kLanes - 1 + j], the top lane of
+  // the load at [j] (only the top lane is used).
+  alignas(64) std::int64_t xs[kChunk + kLanes] = {};
+  // The last section's y_ext of the samples a chunk finishes, [c0 - skew, c1 - skew), one per
+  // step (StepOutputs). finish_samples then writes them to out.
+  alignas(64) std::int32_t ys[kChunk];
+  std::uint8_t ring[kRing] = {};
+  std::size_t dirty_until = 0;  // every sample marked in the ring is below this
+  const auto y_mask = static_cast<typename T::DwordMask>(1u << (2 * last));
+  const std::uintptr_t y_base =
+      reinterpret_cast<std::uintptr_t>(ys) - 8 * static_cast<std::uintptr_t>(last);
+  const StepOutputs<T> o{y_base, y_mask, ring, &dirty_until};
+  const V shift_in = T::set1(p.shift), bias = T::set1(p.bias);
+  for (std::size_t c0 = 0; c0 < steps; c0 += kChunk) {
+    const std::size_t c1 = std::min(steps, c0 + kChunk);
+    widen_inputs<T>(p, in, n, c0, c1, xs, shift_in, bias);
+    std::size_t t = c0;
+    for (; t < std::min(c1, skew); ++t) {
+      masked_step<T, m, kSums, kSignedHa1>(c, s, xs, c0, t, sections, n, o);
+    }
+    // Every lane active: a part of kPart steps at a time; a rerun repeats only the part that left
+    // the range.
+    const std::size_t full_end = std::max(t, std::min(c1, n));
+    while (t < full_end) {
+      const std::size_t part_end = std::min(full_end, t + kPart);
+      full_steps<T, m, kSums, kSignedHa1>(c, s, xs, c0, t, part_end, lane_mask, out_of_range, o);
+      t = part_end;
+    }
+    for (; t < c1; ++t) masked_step<T, m, kSums, kSignedHa1>(c, s, xs, c0, t, sections, n, o);
+    // The samples this chunk finished; ys[j] is sample c0 + j - skew.
+    const std::size_t first = std::max(c0, skew), end = std::max(c1, skew);
+    finish_samples<T>(p, ys + (first - c0), ring, first - skew >= dirty_until, out, first - skew,
+                      end - skew);
+  }
+  store_state<T, m, kSums>(p, s, flip, history);
 }
 
 }  // namespace

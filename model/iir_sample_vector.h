@@ -19,10 +19,10 @@
 //   Half the products, and 6 cycles of latency a step where vpmullq is one 3-cycle micro-op (AMD
 //   Zen 4 on); on Intel it is three of 15 cycles, so kAuto takes it only on AMD
 //   (merged_preferred). Measured, a step takes about 11 cycles on an AMD host, the split sums'
-//   about 13 (docs/benchmarks_core.md, "Stop 27").
+//   about 13 (docs/benchmarks_core.md).
 // A chunk of steps first runs without the clip test, only tracking y_ext's range; if some y_ext
-// left
-// [-2^(D-1+s), 2^(D-1+s) - 1] the chunk is run again from its start with the test and the clips.
+// left [-2^(D-1+s), 2^(D-1+s) - 1] the chunk is run again from its start with the test and the
+// clips.
 // The last section's y_ext is rounded and clipped per chunk.
 #pragma once
 

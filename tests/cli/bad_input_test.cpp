@@ -35,7 +35,7 @@ struct InputFiles {
   std::string good =
       write_file(dir / "good.csv", "t_s,clearance_mm,temp_c,voltage_v\n0,2,20,1\n1,3,20,2\n")
           .string();
-  // 40 rows: fewer than 5-fold cross-validation in 64-row blocks needs (it crashed before).
+  // 40 rows: fewer than 5-fold cross-validation in 64-row blocks needs.
   std::string short_calibration =
       write_file(dir / "short.csv",
                  [] {
@@ -79,23 +79,39 @@ std::string command_text(const std::vector<std::string>& args) {
   return text;
 }
 
-TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
-  const InputFiles f("bad_input_table");
-  const std::vector<BadInput> table = {
+// `flange design`: ranges, numbers, channel lists and poles the format cannot hold.
+std::vector<BadInput> design_cases() {
+  return {
       {{"design", "--fs", "6", "--order", "40", "--fc", "1"}, 2, "--order"},
       {{"design", "--fs", "abc", "--order", "4", "--fc", "1"}, 2, "--fs: 'abc' is not a valid"},
-      {{"design", "--fs", "100", "--order", "4", "--fc", "1", "--channels", "33"}, 2,
+      {{"design", "--fs", "100", "--order", "4", "--fc", "1", "--channels", "33"},
+       2,
        "--channels: 33 is outside 1 to 32"},
-      {{"design", "--fs", "100", "--order", "4", "--fc", "1", "--channel-fc", "1,2"}, 2,
+      {{"design", "--fs", "100", "--order", "4", "--fc", "1", "--channel-fc", "1,2"},
+       2,
        "leave out --fc"},
-      {{"design", "--fs", "100", "--order", "4", "--channels", "3", "--channel-fc", "1,2"}, 2,
+      {{"design", "--fs", "100", "--order", "4", "--channels", "3", "--channel-fc", "1,2"},
+       2,
        "--channels 3 but --channel-fc names 2"},
       {{"design", "--fs", "100", "--order", "4", "--channel-fc", "1,60"}, 2, "--fc 60"},
-      {{"design", "--fs", "6", "--order", "5", "--structure", "df1", "--channel-fc", "0.01,2.9"}, 3,
+      {{"design", "--fs", "6", "--order", "5", "--structure", "df1", "--channel-fc", "0.01,2.9"},
+       3,
        "channel 0 (fc = 0.01 Hz): direct form (order 5) with 18-bit coefficients puts 1 pole"},
+  };
+}
+
+// `flange cosim` and `flange synth`: a coefficient set missing or not JSON.
+std::vector<BadInput> coefficient_set_cases(const InputFiles& f) {
+  return {
       {{"cosim", "--coeffs", f.out("missing.json")}, 2, "missing.json"},
       {{"cosim", "--coeffs", f.binary}, 2, "binary.csv"},
       {{"synth", "--coeffs", f.out("no_set")}, 2, "is missing"},
+  };
+}
+
+// `flange simulate`: a bad rate, an unknown effect, too many wheels.
+std::vector<BadInput> simulate_cases(const InputFiles& f) {
+  return {
       {{"simulate", "--scenario", "bench", "--seed", "1", "--fs", "-1", "--out", f.out("s.csv")},
        2,
        "--fs"},
@@ -103,11 +119,27 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
         f.out("s.csv")},
        2,
        "bogus"},
+      {{"simulate", "--scenario", "loco", "--seed", "1", "--wheels", "13", "--out", f.out("l")},
+       2,
+       "--wheels: 13 is outside its valid range: a whole number 1 to 12"},
+  };
+}
+
+// `flange calibrate`: a database without rows, not text, or too short.
+std::vector<BadInput> calibrate_cases(const InputFiles& f) {
+  return {
       {{"calibrate", "--data", f.header_only, "--out", f.out("m.json")}, 2, ":2: no data rows"},
       {{"calibrate", "--data", f.binary, "--out", f.out("m.json")}, 2, "not a text file"},
       {{"calibrate", "--data", f.short_calibration, "--out", f.out("m.json")},
        2,
        "40 points with a clearance reference; at least 257 are needed"},
+  };
+}
+
+// `flange run`: the recording, the calibration and a locomotive's manifest, each wrong in one way,
+// and options that exclude each other.
+std::vector<BadInput> run_cases(const InputFiles& f) {
+  return {
       {{"run", "--input", f.header_only, "--calibration", f.binary, "--coeffs", f.filter},
        2,
        "binary.csv"},
@@ -149,9 +181,12 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
       {{"run", "--calibration", f.out("none.json"), "--coeffs", f.filter},
        2,
        "--input REC.csv or --manifest locomotive.json is required"},
-      {{"simulate", "--scenario", "loco", "--seed", "1", "--wheels", "13", "--out", f.out("l")},
-       2,
-       "--wheels: 13 is outside its valid range: a whole number 1 to 12"},
+  };
+}
+
+// `flange stream`: the recording or manifest to replay, and the baud rate.
+std::vector<BadInput> stream_cases(const InputFiles& f) {
+  return {
       {{"stream", "--port", "/dev/null", "--input", f.header_only, "--out", f.out("b.csv")},
        2,
        ":2: no data rows"},
@@ -167,6 +202,12 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
        2,
        "--input excludes --manifest"},
       {{"stream", "--port", "/dev/null", "--out", f.out("s")}, 2, "give --input"},
+  };
+}
+
+// `flange diagnose` (a recording, the session clocks, the self-test's options) and `flange demo`.
+std::vector<BadInput> diagnose_and_demo_cases(const InputFiles& f) {
+  return {
       {{"diagnose", "--real", f.header_only, "--holdout-fraction", "0.3", "--out", f.out("d")},
        2,
        ":2: no data rows"},
@@ -191,20 +232,31 @@ TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
       {{"diagnose", "--selftest", "--reality", "alt", "--pairs", "0"}, 2, "not in range 1 to 1000"},
       {{"demo", "--out", f.good + "/inside_a_file"}, 1, "cannot create directories"},
   };
-  for (const BadInput& c : table) {
-    std::string err;
-    const int status = flange(c.args, err);
-    const std::string reproduce = command_text(c.args);
-    EXPECT_EQ(status, c.status) << reproduce << "\n" << err;
-    EXPECT_NE(err.find(c.expected), std::string::npos) << reproduce << "\n" << err;
-    ASSERT_FALSE(err.empty()) << reproduce;
-    EXPECT_EQ(err.find('\n'), err.size() - 1) << reproduce << ": more than one line\n" << err;
-    for (const char ch : err) {
-      const auto byte = static_cast<unsigned char>(ch);
-      EXPECT_TRUE(ch == '\n' || (byte >= 0x20 && byte < 0x7f))
-          << reproduce << ": raw byte " << static_cast<int>(byte) << " in\n"
-          << err;
-    }
+}
+
+// The case's exit status, and one line on stderr of printable ASCII that names what is wrong.
+void expect_one_clean_line(const BadInput& c) {
+  std::string err;
+  const int status = flange(c.args, err);
+  const std::string reproduce = command_text(c.args);
+  EXPECT_EQ(status, c.status) << reproduce << "\n" << err;
+  EXPECT_NE(err.find(c.expected), std::string::npos) << reproduce << "\n" << err;
+  ASSERT_FALSE(err.empty()) << reproduce;
+  EXPECT_EQ(err.find('\n'), err.size() - 1) << reproduce << ": more than one line\n" << err;
+  for (const char ch : err) {
+    const auto byte = static_cast<unsigned char>(ch);
+    EXPECT_TRUE(ch == '\n' || (byte >= 0x20 && byte < 0x7f))
+        << reproduce << ": raw byte " << static_cast<int>(byte) << " in\n"
+        << err;
+  }
+}
+
+TEST(BadInput, EverySubcommandAnswersInOneLineWithItsExitStatus) {
+  const InputFiles f("bad_input_table");
+  for (const std::vector<BadInput>& cases :
+       {design_cases(), coefficient_set_cases(f), simulate_cases(f), calibrate_cases(f),
+        run_cases(f), stream_cases(f), diagnose_and_demo_cases(f)}) {
+    for (const BadInput& c : cases) ASSERT_NO_FATAL_FAILURE(expect_one_clean_line(c));
   }
 }
 

@@ -157,7 +157,7 @@ TEST(AltSelftestCommand, OnePairWritesItsSessionsAndItsTruth) {
       << again.out;
 }
 
-// Development pair `pair` of `seed`, run on its own.
+// Pair `pair` of the alternative reality's seed `seed` (40 pairs a seed), run on its own.
 AltPairResult development_pair(std::uint64_t seed, int pair) {
   SelftestOptions options;
   options.cases = 40;
@@ -169,7 +169,7 @@ AltPairResult development_pair(std::uint64_t seed, int pair) {
   return results.front();
 }
 
-// Development pair `pair` of `seed` is explained by `effect` alone, the right class.
+// Pair `pair` of `seed` is explained by `effect` alone, the right class.
 void expect_explained_by_one_effect(std::uint64_t seed, int pair, const std::string& effect) {
   const AltPairResult r = development_pair(seed, pair);
   ASSERT_EQ(r.diagnosis.status, "explained");
@@ -178,7 +178,7 @@ void expect_explained_by_one_effect(std::uint64_t seed, int pair, const std::str
   EXPECT_TRUE(r.score.top_correct);
 }
 
-// Development pair `pair` of `seed` is an outside pair, and nothing is claimed on it.
+// Pair `pair` of `seed` is an outside pair, and nothing is claimed on it.
 void expect_unclaimed_outside_pair(std::uint64_t seed, int pair) {
   const AltPairResult r = development_pair(seed, pair);
   ASSERT_EQ(r.spec.kind, AltPairKind::kOutside);
@@ -186,30 +186,30 @@ void expect_unclaimed_outside_pair(std::uint64_t seed, int pair) {
   EXPECT_TRUE(r.diagnosis.effects.empty());
 }
 
-// Development pair 413/2: a log-time ageing across sessions two days apart. The greedy rounds
-// took a static nonlinearity first for the calibration part's offset, then the ageing took the
-// held-out gap.
+// Seed 413, pair 2: a log-time ageing across sessions two days apart. The greedy rounds take a
+// static nonlinearity first for the calibration part's offset, then the ageing takes the held-out
+// gap; with the ageing in, the nonlinearity is not needed and is taken out.
 TEST(AltSelftest, APickThatTheLaterPicksMakeUnneededIsTakenOut) {
   expect_explained_by_one_effect(413, 2, "ageing_drift");
 }
 
-// Two development pairs that the library's formulas split between two classes, the wrong one
-// first, and called "explained": 447/13, a temperature gain about a mid-range pivot (the library's
-// nonlinearity, then its temperature gain), and 448/32, a nonlinearity exponential in the
-// voltage (a temperature gain, then the nonlinearity and an ageing). One free-shape class leaves
-// as little, so it is named alone.
+// Two pairs that the library's formulas split between two classes, the wrong one first: seed
+// 447, pair 13, a temperature gain about a mid-range pivot (the library's nonlinearity, then its
+// temperature gain), and seed 448, pair 32, a nonlinearity exponential in the voltage (a
+// temperature gain, then the nonlinearity and an ageing). One free-shape class leaves as little,
+// so it is named alone.
 TEST(AltSelftest, OneClassOfAnotherShapeIsPreferredToTwoLibraryClasses) {
   expect_explained_by_one_effect(447, 13, "temp_gain_drift");
   expect_explained_by_one_effect(448, 32, "nonlinearity");
 }
 
-// Development pairs with a late thermocouple beside a class of the temperature: 444/7, a sheathed
-// reading lag with a saturating temperature offset, and 445/7, a reading lag with a dead time
-// beside a range compression with a linear law above a knee that falls along a parabola. Their
-// thermocouples read with 0.05-0.1 degC of noise, which the library's inverted lag once carried
-// into the coil's temperature multiplied by tau / dt; and the compression's shape is not the
-// library's, so its free shape is fitted once the lag is in (give_pick_a_free_shape). Both
-// classes are named, the lag as a reading lag.
+// Pairs with a late thermocouple beside a class of the temperature: seed 444, pair 7, a sheathed
+// reading lag with a saturating temperature offset, and seed 445, pair 7, a reading lag with a
+// dead time beside a range compression with a linear law above a knee that falls along a
+// parabola. Their thermocouples read with 0.05-0.1 degC of noise, which a plain inversion of the
+// lag would carry into the coil's temperature multiplied by tau / dt; and the compression's shape
+// is not the library's, so its free shape is fitted once the lag is in (give_pick_a_free_shape).
+// Both classes are named, the lag as a reading lag.
 TEST(AltSelftest, AClassBehindALateThermocoupleIsNamedWithTheLag) {
   for (const auto& [seed, pair] : {std::pair<std::uint64_t, int>{444, 7}, {445, 7}}) {
     const AltPairResult r = development_pair(seed, pair);
@@ -223,10 +223,11 @@ TEST(AltSelftest, AClassBehindALateThermocoupleIsNamedWithTheLag) {
   }
 }
 
-// Development pair 449/11: a temperature gain about a mid-range pivot at 4.5 times the noise.
-// The library's formulas took a nonlinearity, a temperature gain and a temperature offset; given
-// free shapes of their own they left 1.02 times the noise, the free pass's temperature gain and
-// reading lag 1.09 times. Both leave the noise, so the fewer classes are named, the gain first.
+// Seed 449, pair 11: a temperature gain about a mid-range pivot at 4.5 times the noise. The
+// library's formulas take a nonlinearity, a temperature gain and a temperature offset, which with
+// free shapes of their own leave 1.02 times the noise; the free pass's temperature gain and
+// reading lag leave 1.09 times. Both leave the noise, so the fewer classes are named, the gain
+// first.
 TEST(AltSelftest, FewerClassesAreNamedWhereBothPassesLeaveTheNoise) {
   const AltPairResult r = development_pair(449, 11);
   ASSERT_EQ(r.diagnosis.status, "explained");
@@ -236,8 +237,8 @@ TEST(AltSelftest, FewerClassesAreNamedWhereBothPassesLeaveTheNoise) {
   EXPECT_TRUE(r.score.top_correct);
 }
 
-// Pair 447/17 (development): a log-time ageing with a sensor's thermal lag, both named. (Pair
-// 416/33 had two picks here until stop 31; one free curve explains it since.)
+// Seed 447, pair 17: a log-time ageing with a sensor's thermal lag, both named. Each pick left
+// earns its place in the final fit: taking it out costs at least 2 % of the noise variance.
 TEST(AltSelftest, EveryPickLeftIsNeededByTheFinalFit) {
   const AltPairResult r = development_pair(447, 17);
   const std::vector<EffectFinding>& effects = r.diagnosis.effects;
@@ -255,7 +256,7 @@ TEST(AltSelftest, EveryPickLeftIsNeededByTheFinalFit) {
   EXPECT_DOUBLE_EQ(effects.back().heldout_rms_after, now);
 }
 
-// Development pair `pair` of `seed` is explained with `effect` first, the right class, though more
+// Pair `pair` of `seed` is explained with `effect` first, the right class, though more
 // than `left_over_noise` times the noise is left over the held-out session (beyond the
 // calibration's ranges).
 void expect_explained_where_the_calibration_reaches(std::uint64_t seed, int pair,
@@ -269,7 +270,7 @@ void expect_explained_where_the_calibration_reaches(std::uint64_t seed, int pair
   EXPECT_GT(r.diagnosis.heldout_rms_after, left_over_noise * r.diagnosis.noise_std_v);
 }
 
-// Development pair 101/24: a range compression, weak where the calibration session went (up to
+// Seed 101, pair 24: a range compression, weak where the calibration session went (up to
 // 57 C, 8.8 mm), strong where the held-out one went on to (75 C, 9.3 mm). Within the calibration's
 // ranges the fitted compression leaves the noise; beyond them its continued curve leaves 5 times
 // the noise. The class is named, as explained where the calibration reaches.
@@ -277,46 +278,45 @@ TEST(AltSelftest, AGapExplainedWhereTheCalibrationReachesIsExplained) {
   expect_explained_where_the_calibration_reaches(101, 24, "range_compression", 2.0);
 }
 
-// Pair 430/23 (fresh at stop 27, development since): a quadratic temperature gain whose held-out
-// session heats to 93 C, the calibration's to 70 C, so only 45 % of its samples lie within the
-// calibration's ranges. There what is left is 0.98 times the noise; beyond, the continued curve
-// takes 89 % of the gap above the noise (1.42 times the noise left over the session). The less
-// of the session the calibration reaches, the more the continued curve must carry, and this one
-// does: explained. (With half the samples asked to lie within, as before stop 28: unexplained.)
+// Seed 430, pair 23: a quadratic temperature gain whose held-out session heats to 93 C, the
+// calibration's to 70 C, so only 45 % of its samples lie within the calibration's ranges. There
+// what is left is 0.98 times the noise; beyond, the continued curve takes 89 % of the gap above
+// the noise (1.42 times the noise left over the session). The less of the session the calibration
+// reaches, the more the continued curve must carry, and this one does: explained, though fewer
+// than half of the samples lie within.
 TEST(AltSelftest, AGapExplainedWhereTheCalibrationReachesCountsWhenTheCurveCarriesBeyond) {
   expect_explained_where_the_calibration_reaches(430, 23, "temp_gain_drift", 1.3);
 }
 
-// Pair 425/19 (fresh when the reach rule was first run, development since): a magnetic
-// hysteresis, outside the library, on a micrometer that reaches each clearance from one side. A
-// static nonlinearity matches it within the calibration's ranges, but its continued curve takes
-// only 42 % of the gap above the noise where the held-out session goes to closer clearances:
-// nothing is claimed.
+// Seed 425, pair 19: a magnetic hysteresis, outside the library, on a micrometer that reaches
+// each clearance from one side. A static nonlinearity matches it within the calibration's ranges,
+// but its continued curve takes only 42 % of the gap above the noise where the held-out session
+// goes to closer clearances: nothing is claimed.
 TEST(AltSelftest, ACurveThatMatchesOnlyWhereTheCalibrationReachesIsNotClaimed) {
   expect_unclaimed_outside_pair(425, 19);
 }
 
-// Pair 434/7 (fresh at stop 28, development since): a 17.5-times-the-noise rounding converter with
-// a dead-time reading lag at the noise level. The converter's rounding follows the voltage, and a
-// temperature offset takes 1 % of the noise variance of it: where both parts lie on one grid, a
-// first pick needs 2 % (0.5 % elsewhere), and only the quantisation is named.
+// Seed 434, pair 7: a 17.5-times-the-noise rounding converter with a dead-time reading lag at the
+// noise level. The converter's rounding follows the voltage, and a temperature offset takes 1 % of
+// the noise variance of it: where both parts lie on one grid, a first pick needs 2 % (0.5 %
+// elsewhere), and only the quantisation is named.
 TEST(AltSelftest, OnAConverterGridAFirstPickNeedsTwoPercent) {
   expect_explained_by_one_effect(434, 7, "adc_quantization");
 }
 
-// Pair 436/36 (fresh at stop 29, development since): mains at 50 Hz, 0.0175 Hz off and wandering by
-// 0.008 Hz over 19 minutes, with a second harmonic. Against a line of fixed frequency that turns
-// by up to a third of a cycle across a 20 s window: 1.3 times the noise was left, "unexplained".
-// The held-out windows shorten to 10 or 5 s where they fit better, and the mains is named.
+// Seed 436, pair 36: mains at 50 Hz, 0.0175 Hz off and wandering by 0.008 Hz over 19 minutes,
+// with a second harmonic. A line of fixed frequency turns against it by up to a third of a cycle
+// across a 20 s window and would leave 1.3 times the noise; the held-out windows shorten to 10 or
+// 5 s where they fit better, and the mains is named.
 TEST(AltSelftest, AWanderingGridIsFollowedWithShorterWindows) {
   expect_explained_by_one_effect(436, 36, "mains_pickup");
 }
 
-// Pair 447/35 (development): a log-time ageing, a ln(1 + age / 0.80 d), whose held-out session
-// starts 16 h after an hour-long calibration session (start times given). Over that hour the
-// settling barely bends, so the library's straight line carried it too far: 0.103 V was left,
-// 1.85 times the noise, "unexplained". The calibration part keeps the settlings it does not reject,
-// and the held-out level chooses among them (one value fitted there).
+// Seed 447, pair 35: a log-time ageing, a ln(1 + age / 0.80 d), whose held-out session starts
+// 16 h after an hour-long calibration session (start times given). Over that hour the settling
+// barely bends, so a straight line carries it too far (it would leave 0.103 V, 1.85 times the
+// noise). The calibration part keeps the settlings it does not reject, and the held-out level
+// chooses among them (one value fitted there).
 TEST(AltSelftest, ASettlingAgeingIsCarriedToALaterSessionByItsLevelThere) {
   const AltPairResult r = development_pair(447, 35);
   ASSERT_EQ(r.diagnosis.status, "explained");
@@ -326,10 +326,10 @@ TEST(AltSelftest, ASettlingAgeingIsCarriedToALaterSessionByItsLevelThere) {
   EXPECT_TRUE(r.score.top_correct);
 }
 
-// Pair 448/35 (development): 50 Hz mains with odd harmonics at 6 Hz, where the third harmonic
-// (150 Hz) lands on 0 Hz: a constant in each session set by the mains' phase at its start, 0.33 V
-// here. The lines at 2 Hz were found, but the held-out session's own constant was not: 0.118 V
-// was left, 1.34 times the noise, "unexplained". Each session's constant joins the lines.
+// Seed 448, pair 35: 50 Hz mains with odd harmonics at 6 Hz, where the third harmonic (150 Hz)
+// lands on 0 Hz: a constant in each session set by the mains' phase at its start, 0.33 V here.
+// The lines at 2 Hz alone leave the held-out session's own constant (0.118 V, 1.34 times the
+// noise), so each session's constant joins the lines.
 TEST(AltSelftest, AMainsHarmonicOnZeroHertzIsAConstantOfEachSession) {
   const AltPairResult r = development_pair(448, 35);
   ASSERT_EQ(r.diagnosis.status, "explained");
@@ -338,20 +338,20 @@ TEST(AltSelftest, AMainsHarmonicOnZeroHertzIsAConstantOfEachSession) {
   EXPECT_EQ(r.diagnosis.effects[0].params.at("dc_harmonic_hz"), 150.0);
 }
 
-// Pair 452/14 (fresh at stop 32, development since): a 6-bit rounding converter over +-10.24 V
-// (LSB 0.32 V) with 0.013 V of analog noise, on a sawtooth staircase. What the grid leaves over the
-// session was within the noise, but a dwell on a code boundary left 0.12 V in one 64th of it,
-// against twice the 0.054 V the grid leaves on average: "unexplained". On a code boundary the
-// signal flips between two codes at random, so a window may hold up to LSB / sqrt(2).
+// Seed 452, pair 14: a 6-bit rounding converter over +-10.24 V (LSB 0.32 V) with 0.013 V of
+// analog noise, on a sawtooth staircase. What the grid leaves over the session is within the
+// noise, but a dwell on a code boundary leaves 0.12 V in one 64th of it, more than twice the
+// 0.054 V the grid leaves on average. On a code boundary the signal flips between two codes at
+// random, so a window may hold up to LSB / sqrt(2): such a window is not a miss.
 TEST(AltSelftest, ADwellOnACodeBoundaryIsNotAMissOnACoarseGrid) {
   expect_explained_by_one_effect(452, 14, "adc_quantization");
 }
 
-// Pair 450/27 (development): a clearance ripple of 3.9 mm period behind a 4.8 s delay of the
-// voltage channel, on a motorised sweep. The library's skew and a free curve of clearance were
-// picked, but the curve, added after the chain, followed the recorded clearance rather than the
-// one the late voltage was made at, and smeared the ripple wherever the micrometer moved: 1.3 times
-// the noise was left, "unexplained". The free shapes see the inputs the voltage was made at.
+// Seed 450, pair 27: a clearance ripple of 3.9 mm period behind a 4.8 s delay of the voltage
+// channel, on a motorised sweep. A free curve of clearance added after the chain would follow the
+// recorded clearance rather than the one the late voltage was made at, and smear the ripple
+// wherever the micrometer moves (1.3 times the noise left beside the skew); the free shapes see
+// the inputs the voltage was made at.
 TEST(AltSelftest, ARippleBehindALateVoltageChannelIsACurveOfTheClearanceItSaw) {
   const AltPairResult r = development_pair(450, 27);
   ASSERT_EQ(r.diagnosis.status, "explained");
@@ -359,11 +359,10 @@ TEST(AltSelftest, ARippleBehindALateVoltageChannelIsACurveOfTheClearanceItSaw) {
   EXPECT_TRUE(r.score.all_found);
 }
 
-// Pairs 453/4 and 454/3 (fresh at stop 33, development since): clearance ripples of 2.53 and
-// 2.67 mm period, whose held-out sessions go 1.1 mm (above) and 0.5-0.6 mm (at both ends) beyond
-// the calibration's clearance range. A curve of the clearance is held or continued along a line
-// there and left 2.0 and 1.3 times the noise: "unexplained". The periodic family repeats the ripple
-// and finds its period.
+// Seed 453, pair 4 and seed 454, pair 3: clearance ripples of 2.53 and 2.67 mm period, whose
+// held-out sessions go 1.1 mm (above) and 0.5-0.6 mm (at both ends) beyond the calibration's
+// clearance range. A curve of the clearance held or continued along a line there would leave 2.0
+// and 1.3 times the noise; the periodic family repeats the ripple and finds its period.
 TEST(AltSelftest, AClearanceRippleRepeatsBeyondTheCalibrationsRange) {
   for (const auto& [seed, pair, period_mm] :
        {std::tuple<std::uint64_t, int, double>{453, 4, 2.528}, {454, 3, 2.667}}) {
@@ -376,11 +375,11 @@ TEST(AltSelftest, AClearanceRippleRepeatsBeyondTheCalibrationsRange) {
   }
 }
 
-// Pair 440/1 (fresh at stop 30, development since): a narrow mount resonance at 26.6 Hz sampled at
-// 9 Hz, which the sampling aliases to within about 1.2 Hz of 0 Hz. The signature's levels, taken
-// about a moving mean of 49 samples, put the motion at 60 % of its variance, and 1.13 times what
-// the noise plus that motion allows was left: "unexplained". Over the whole session, with only the
-// noise left beside the motion, the motion's variance is all there.
+// Seed 440, pair 1: a narrow mount resonance at 26.6 Hz sampled at 9 Hz, which the sampling
+// aliases to within about 1.2 Hz of 0 Hz. Levels taken about a moving mean of 49 samples would see
+// only 60 % of the motion's variance (and leave 1.13 times what the noise plus that motion
+// allows); over the whole session, with only the noise left beside the motion, the motion's
+// variance is all there.
 TEST(AltSelftest, MotionAliasedNearZeroHertzIsCountedOverTheSession) {
   const AltPairResult r = development_pair(440, 1);
   ASSERT_EQ(r.diagnosis.status, "explained");
@@ -389,18 +388,18 @@ TEST(AltSelftest, MotionAliasedNearZeroHertzIsCountedOverTheSession) {
   EXPECT_TRUE(r.score.top_correct);
 }
 
-// Pair 436/39 (development): a magnetic hysteresis, outside the library, under mount motion. What
-// the picks leave of it grows faster than (dV/dd)^2, so regressed over the session it would pass
-// for more motion (the slope alone let it through, and four effects were claimed); the
-// regression's intercept, below zero, says it is not the noise beside a motion.
+// Seed 436, pair 39: a magnetic hysteresis, outside the library, under mount motion. What the
+// picks leave of it grows faster than (dV/dd)^2, so regressed over the session it would pass for
+// more motion if the slope alone were read; the regression's intercept, below zero, says it is
+// not the noise beside a motion.
 TEST(AltSelftest, AHysteresisLeftByThePicksDoesNotPassForMotion) {
   expect_unclaimed_outside_pair(436, 39);
 }
 
-// Pair 443/19 (fresh at stop 30, development since): a magnetic hysteresis on a sawtooth
-// staircase, outside the library. What a nonlinearity leaves of it changes where the clearance
-// moves, and with the sensitivity there it passed for mount motion, whose noise then let the
-// verdict say "explained" by three effects. Taken at rest, the gap shows no motion.
+// Seed 443, pair 19: a magnetic hysteresis on a sawtooth staircase, outside the library. What a
+// nonlinearity leaves of it changes where the clearance moves, and with the sensitivity there it
+// could pass for mount motion, whose noise would then cover the rest. Taken at rest, the gap
+// shows no motion.
 TEST(AltSelftest, ABiasThatChangesWithTheMovesDoesNotPassForMotion) {
   expect_unclaimed_outside_pair(443, 19);
 }

@@ -11,8 +11,8 @@
 namespace flange::diagnose {
 namespace {
 
-// The index sets as they were drawn before resamples were kept as blocks: every inclusion and
-// bootstrap quantile stays the one earlier diagnoses reported.
+// The index sets of the block bootstrap drawn index by index, the reference that the blocks
+// must reproduce: with the same index sets, every inclusion and bootstrap quantile is the same.
 std::vector<std::vector<std::size_t>> index_sets(std::size_t n, int rounds, std::uint64_t seed) {
   const std::size_t block = std::max<std::size_t>(32, n / 20);
   std::mt19937_64 random(seed);

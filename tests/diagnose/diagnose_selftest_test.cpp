@@ -140,10 +140,11 @@ void run_gain_step_case(int seed, int case_index, SelftestCaseResult& result) {
   ASSERT_EQ(result.spec.outside.name, "gain_step");
 }
 
-// A -4.7 % gain step at 0.66 of each session (the twin's seed 4, case 49): the sessions are below
-// 38 C almost only after it, so a temperature gain curve takes it and leaves 1.10 times the noise
-// over the held-out session, within what "explained" allows there. Around the step it leaves more
-// than twice the noise: no effect is claimed, and the temperature gain is named as the nearest.
+// A -4.7 % gain step at 0.66 of each session (fixture: the twin self-test's seed 4, case 49): the
+// sessions are below 38 C almost only after it, so a temperature gain curve takes it and leaves
+// 1.10 times the noise over the held-out session, within what "explained" allows there. Around the
+// step it leaves more than twice the noise: no effect is claimed, and the temperature gain is named
+// as the nearest.
 TEST(DiagnoseSelftest, AGainStepThatATemperatureCurveTakesIsNotClaimed) {
   SelftestCaseResult r;
   ASSERT_NO_FATAL_FAILURE(run_gain_step_case(4, 49, r));
@@ -156,11 +157,11 @@ TEST(DiagnoseSelftest, AGainStepThatATemperatureCurveTakesIsNotClaimed) {
       << r.diagnosis.nearest->evidence;
 }
 
-// A -4.1 % gain step at 0.51 of each session (the twin's seed 8, case 20), whose clocks restart at
-// 0 with no start times: an ageing curve with the held-out session placed 75 s before the
-// calibration one (overlapping it) followed the step into both, and with a temperature gain and a
-// thermal lag it was claimed. The held-out session may only lie wholly before or after the
-// calibration session; then no age curve carries the step across, and nothing is claimed.
+// A -4.1 % gain step at 0.51 of each session (fixture: the twin self-test's seed 8, case 20), whose
+// clocks restart at 0 with no start times. An ageing curve with the held-out session placed 75 s
+// before the calibration one (overlapping it) would follow the step into both. Two sessions cannot
+// overlap in time, so the held-out session may only lie wholly before or after the calibration
+// session; then no age curve carries the step across, and nothing is claimed.
 TEST(DiagnoseSelftest, AStepAtTheSameTimeInBothSessionsIsNotTakenForAgeing) {
   SelftestCaseResult r;
   ASSERT_NO_FATAL_FAILURE(run_gain_step_case(8, 20, r));
@@ -180,23 +181,25 @@ void expect_explained_by_its_one_effect(int seed, int case_index, const std::str
   EXPECT_EQ(r.diagnosis.effects.front().name, effect);
 }
 
-// A 133 s thermal lag at 0.07 V of noise (the twin's seed 11, case 22, fresh at stop 28): a
-// thermal lag takes 0.9 % of the noise variance off the held-out gap, with a bootstrap bound
-// above zero. The first pick needs 0.5 % (later ones 2 %); at 2 % the verdict was "none".
+// A 133 s thermal lag at 0.07 V of noise (fixture: the twin self-test's seed 11, case 22): a
+// thermal lag takes 0.9 % of the noise variance off the held-out gap, with a bootstrap bound above
+// zero. The first pick needs 0.5 % (later ones 2 %), so the lag is named; a first pick held to 2 %
+// would name nothing.
 TEST(DiagnoseSelftest, AWeakThermalLagIsNamedByTheFirstPicksLeastGain) {
   expect_explained_by_its_one_effect(11, 22, "thermal_lag");
 }
 
-// Mount motion of 0.35 mm RMS (the twin's seed 11, case 1): where the sensor's curve bends it
-// moves the mean voltage, which a static nonlinearity takes at 0.6 % of the noise variance. Where
-// the motion shows before any pick, a first pick needs 2 %, and the motion is named alone.
+// Mount motion of 0.35 mm RMS (fixture: the twin self-test's seed 11, case 1): where the sensor's
+// curve bends it moves the mean voltage, which a static nonlinearity takes at 0.6 % of the noise
+// variance. Where the motion shows before any pick, a first pick needs 2 %, and the motion is named
+// alone.
 TEST(DiagnoseSelftest, MountMotionKeepsTheFirstPicksLeastGainAtTwoPercent) {
   expect_explained_by_its_one_effect(11, 1, "vibration");
 }
 
-// A temperature-reading lag of 62 s at 0.07 V of noise (the twin's seed 15, case 25, fresh at stop
-// 30): the held-out gap is 1.017 times the noise, and a thermal lag takes 0.30 % of the noise
-// variance off it, the other candidates 0.08 % or less. Against 0.5 % it was "none"; what the
+// A temperature-reading lag of 62 s at 0.07 V of noise (fixture: the twin self-test's seed 15, case
+// 25): the held-out gap is 1.017 times the noise, and a thermal lag takes 0.30 % of the noise
+// variance off it, the other candidates 0.08 % or less. That is below a fixed 0.5 %, but what the
 // candidates gain by chance against the held-out gap shifted in time is less than 0.2 % here, and
 // the lag is named.
 TEST(DiagnoseSelftest, AWeakReadingLagIsNamedAboveWhatChanceGainsOnThisData) {

@@ -405,9 +405,8 @@ const StageGap& alarm_stage(const DiagnosisResult& r) {
 }
 
 // The alarm-timing floor is the largest of 32 null replicas, which noise alone passes about 1 time
-// in 33 (alternative-reality null pair 418/20 did). A late warning on the calibration part alone
-// no longer makes a gap: the stage is shown, not counted, and a null held-out part gives "none"
-// (before, "unexplained"). On both parts it counts.
+// in 33, so a late warning on the calibration part alone does not make a gap: the stage is shown,
+// not counted, and a null held-out part gives "none". On both parts it counts.
 TEST(Diagnose, AnAlarmTimingGapCountsOnlyWhenTheHeldOutPartShowsItToo) {
   const DiagnosisResult one = diagnose_in_detail(
       late_warning_recording(81, 0.0), twin_recording({}, 82, 70.0, 1.0, kLongDurationS), {});
@@ -453,8 +452,7 @@ bool says_one_sided(const DiagnosisResult& r) {
 
 // On a staircase that climbs in steps and drops back in one move, an output that depends on the
 // direction of the last move (a hysteresis, outside the library) is a function of clearance, so
-// a static nonlinearity named there comes with a reason that says it cannot be told from one
-// (alternative-reality outside pair 419/19: a magnetic hysteresis "explained" by a nonlinearity).
+// a static nonlinearity named there comes with a reason that says it cannot be told from one.
 // On the triangle sweep, which reaches each clearance from both sides, no such reason.
 TEST(Diagnose, ANonlinearityOnAOneSidedStaircaseIsSaidToLookLikeAHysteresis) {
   const std::vector<sim::EffectSettings> effects = {
@@ -472,7 +470,7 @@ TEST(Diagnose, ANonlinearityOnAOneSidedStaircaseIsSaidToLookLikeAHysteresis) {
   EXPECT_FALSE(says_one_sided(sweep));
 
   // A sine sweep slows to a standstill only at its turning points, where the last move set the
-  // side (alternative pair 442/7, a motorised sweep, was said to be one-sided): no reason either.
+  // side: it reaches each clearance from both sides, and no reason either.
   // Slow (a 900 s period), it lingers under 1e-4 mm a sample for about 40 samples at each.
   constexpr double kSlowSweepS = 1800.0;
   const auto sine = [](double phase_s) {

@@ -255,80 +255,109 @@ TEST(IirSampleModel, AccumulatorWrapsLikeIirCore) {
   EXPECT_EQ(c.mismatches, 0u) << "first at sample " << c.first_mismatch;
 }
 
+// A uniform whole number in [lo, hi] and a uniform real in [lo, hi) from the raw generator.
+int pick(std::mt19937_64& rng, int lo, int hi) {
+  return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1));
+}
+double real(std::mt19937_64& rng, double lo, double hi) {
+  return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
+
+// The shape and widths of a random configuration of `kind` (0, 1: random words; 2: random words,
+// wide P; 3: stable sections).
+void draw_widths(std::mt19937_64& rng, int kind, CoreConfig& c) {
+  c.num_sections = kind >= 2 ? pick(rng, 1, 8) : pick(rng, 1, 4);  // up to 8 vector lanes
+  c.section_order = kind == 3 ? pick(rng, 1, 2) : pick(rng, 1, 4);
+  c.filter_order = c.num_sections * c.section_order;
+  if (kind == 3) {
+    c.coef_width = pick(rng, 10, 18);
+    c.coef_frac_bits = c.coef_width - 3;  // words up to +-4: any stable biquad
+    c.sample_width = pick(rng, 4, 16);
+    c.feedback_shift =
+        pick(rng, std::max(0, c.coef_frac_bits - c.sample_width), 25 - c.sample_width);
+  } else {
+    c.sample_width = pick(rng, 2, 16);
+    c.coef_width = pick(rng, 2, 18);
+    c.feedback_shift = pick(rng, 0, 25 - c.sample_width);
+    c.coef_frac_bits = pick(rng, 1, c.sample_width + c.feedback_shift);
+  }
+  const int d_ext = c.sample_width + c.feedback_shift;
+  const int min_acc = std::max(
+      {c.coef_frac_bits + d_ext, d_ext + c.coef_width, c.coef_frac_bits + c.split_shift()});
+  c.acc_width = kind <= 1 ? min_acc : std::min(64, min_acc + pick(rng, 1, 24));
+}
+
+// A stable section's words: poles of radius < 1, zeros anywhere in [-2, 2].
+void append_stable_section(std::mt19937_64& rng, CoreConfig& c) {
+  testing::FloatSection s;
+  const double r = real(rng, 0.0, 0.999), theta = real(rng, 0.0, 3.14159);
+  s.a = c.section_order == 2 ? std::vector<double>{1.0, -2 * r * std::cos(theta), r * r}
+                             : std::vector<double>{1.0, -r};
+  for (int i = 0; i <= c.section_order; ++i) s.b.push_back(real(rng, -2.0, 2.0));
+  const std::vector<std::int64_t> words = testing::quantize_section(
+      s, {c.sample_width, c.coef_width, c.coef_frac_bits, c.feedback_shift, c.acc_width}, false);
+  c.rom.insert(c.rom.end(), words.begin(), words.end());
+}
+
+// A section of random words: lo words in [0, 2^L), hi words any signed C-bit word, E in [-3, 3].
+void append_random_section(std::mt19937_64& rng, CoreConfig& c) {
+  const int m = c.section_order;
+  const int split = c.split_shift();
+  const auto hi_max = (std::int64_t{1} << (c.coef_width - 1)) - 1;
+  for (int i = 0; i < 2 * m + 1; ++i) {  // lo words
+    c.rom.push_back(static_cast<std::int64_t>(rng() >> (64 - split)));
+  }
+  for (int i = 0; i < 2 * m + 1; ++i) {  // hi words
+    c.rom.push_back(static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(2 * hi_max + 2)) -
+                    hi_max - 1);
+  }
+  for (int j = 1; j <= m; ++j) {  // error-feedback words
+    c.rom.push_back(std::clamp<std::int64_t>(pick(rng, -3, 3), -hi_max - 1, hi_max));
+  }
+}
+
+// A random legal configuration of contract v2 (see the test below).
+CoreConfig random_configuration(std::mt19937_64& rng) {
+  CoreConfig c;
+  c.name = "random";
+  const int kind = pick(rng, 0, 3);
+  draw_widths(rng, kind, c);
+  for (int k = 0; k < c.num_sections; ++k) {
+    if (kind == 3) {
+      append_stable_section(rng, c);
+    } else {
+      append_random_section(rng, c);
+    }
+  }
+  return c;
+}
+
+// 6000 samples for D-bit words: uniform random words over the full range, a full-scale square, an
+// impulse and its ring-down, small uniform random words.
+std::vector<std::int32_t> random_configuration_stimulus(std::mt19937_64& rng, int sample_width) {
+  const auto hi = static_cast<std::int32_t>((std::int64_t{1} << (sample_width - 1)) - 1);
+  const std::int32_t lo = -hi - 1;
+  std::vector<std::int32_t> x;
+  for (int n = 0; n < 2000; ++n) x.push_back(uniform_word(rng, lo, hi));
+  for (int n = 0; n < 2000; ++n) x.push_back(n % 7 < 3 ? hi : lo);
+  for (int n = 0; n < 1000; ++n) x.push_back(n == 0 ? hi : 0);
+  for (int n = 0; n < 1000; ++n) x.push_back(uniform_word(rng, lo / 8, hi / 8));
+  return x;
+}
+
 // Random legal configurations of contract v2: lo words in [0, 2^L), hi words any signed C-bit
 // word, E small integers; most of them unstable, many wrapping (the narrowest accumulator), some
 // quantised stable sections. Every kernel must agree with IirCore wherever the contract allows
 // the configuration, not only where the generator's sets live.
 TEST(IirSampleModel, MatchesIirCoreOnRandomConfigurations) {
   std::mt19937_64 rng(7);
-  const auto pick = [&rng](int lo, int hi) {
-    return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1));
-  };
-  const auto real = [&rng](double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
-  };
   int can_wrap = 0, wrapped = 0, saturating = 0;
   std::map<SampleKernel, int> runs;
   constexpr int kTrials = 300;
   for (int trial = 0; trial < kTrials; ++trial) {
-    CoreConfig c;
-    c.name = "random";
-    const int kind = pick(0, 3);  // 0, 1: random words; 2: random words, wide P; 3: stable
-    c.num_sections = kind >= 2 ? pick(1, 8) : pick(1, 4);  // up to 8 lanes of the vector kernel
-    c.section_order = kind == 3 ? pick(1, 2) : pick(1, 4);
-    c.filter_order = c.num_sections * c.section_order;
-    if (kind == 3) {
-      c.coef_width = pick(10, 18);
-      c.coef_frac_bits = c.coef_width - 3;  // words up to +-4: any stable biquad
-      c.sample_width = pick(4, 16);
-      c.feedback_shift = pick(std::max(0, c.coef_frac_bits - c.sample_width), 25 - c.sample_width);
-    } else {
-      c.sample_width = pick(2, 16);
-      c.coef_width = pick(2, 18);
-      c.feedback_shift = pick(0, 25 - c.sample_width);
-      c.coef_frac_bits = pick(1, c.sample_width + c.feedback_shift);
-    }
-    const int d_ext = c.sample_width + c.feedback_shift;
-    const int min_acc = std::max(
-        {c.coef_frac_bits + d_ext, d_ext + c.coef_width, c.coef_frac_bits + c.split_shift()});
-    c.acc_width = kind <= 1 ? min_acc : std::min(64, min_acc + pick(1, 24));
-    const int split = c.split_shift();
-    const auto hi_max = (std::int64_t{1} << (c.coef_width - 1)) - 1;
-    for (int k = 0; k < c.num_sections; ++k) {
-      if (kind == 3) {
-        // A stable section: poles of radius < 1, zeros anywhere in [-2, 2].
-        testing::FloatSection s;
-        const double r = real(0.0, 0.999), theta = real(0.0, 3.14159);
-        s.a = c.section_order == 2 ? std::vector<double>{1.0, -2 * r * std::cos(theta), r * r}
-                                   : std::vector<double>{1.0, -r};
-        for (int i = 0; i <= c.section_order; ++i) s.b.push_back(real(-2.0, 2.0));
-        const std::vector<std::int64_t> words = testing::quantize_section(
-            s, {c.sample_width, c.coef_width, c.coef_frac_bits, c.feedback_shift, c.acc_width},
-            false);
-        c.rom.insert(c.rom.end(), words.begin(), words.end());
-        continue;
-      }
-      const int m = c.section_order;
-      for (int i = 0; i < 2 * m + 1; ++i) {  // lo words
-        c.rom.push_back(static_cast<std::int64_t>(rng() >> (64 - split)));
-      }
-      for (int i = 0; i < 2 * m + 1; ++i) {  // hi words
-        c.rom.push_back(
-            static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(2 * hi_max + 2)) - hi_max -
-            1);
-      }
-      for (int j = 1; j <= m; ++j) {  // error-feedback words
-        c.rom.push_back(std::clamp<std::int64_t>(pick(-3, 3), -hi_max - 1, hi_max));
-      }
-    }
+    const CoreConfig c = random_configuration(rng);
     ASSERT_NO_THROW(validate_core_config(c)) << "trial " << trial;
-    const auto hi = static_cast<std::int32_t>((std::int64_t{1} << (c.sample_width - 1)) - 1);
-    const std::int32_t lo = -hi - 1;
-    std::vector<std::int32_t> x;
-    for (int n = 0; n < 2000; ++n) x.push_back(uniform_word(rng, lo, hi));
-    for (int n = 0; n < 2000; ++n) x.push_back(n % 7 < 3 ? hi : lo);
-    for (int n = 0; n < 1000; ++n) x.push_back(n == 0 ? hi : 0);
-    for (int n = 0; n < 1000; ++n) x.push_back(uniform_word(rng, lo / 8, hi / 8));
+    const std::vector<std::int32_t> x = random_configuration_stimulus(rng, c.sample_width);
     const std::vector<SampleResult> want = core_results(c, x);
     for (const SampleKernel kernel : available_kernels(c)) {
       const Comparison r = compare(c, x, want, kernel);

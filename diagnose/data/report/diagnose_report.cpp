@@ -144,6 +144,77 @@ void plot_heldout(const std::filesystem::path& dir, const DiagnosisDetail& d) {
   coeffs::run_gnuplot(script, (dir / "heldout.svg").string());
 }
 
+nlohmann::ordered_json segments_json(const std::vector<TimeSegment>& segments) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const TimeSegment& s : segments) {
+    out.push_back({{"t_start_s", s.t_start_s}, {"t_end_s", s.t_end_s}, {"mean_v", s.mean_v}});
+  }
+  return out;
+}
+
+// Where the gap lies: its stage, region, band and segments, and the residual tests.
+nlohmann::ordered_json where_json(const Diagnosis& g, const DiagnosisDetail& d) {
+  nlohmann::ordered_json coherences = nlohmann::ordered_json::object();
+  for (const InputCoherence& c : d.coherences) {
+    coherences[c.input] = {{"in_band", c.in_band}, {"peak", c.peak}, {"peak_hz", c.peak_hz}};
+  }
+  return {{"stage", g.stage},
+          {"region",
+           d.where_region ? region_json(d.regions[*d.where_region]) : nlohmann::ordered_json()},
+          {"band_hz", d.band_hz ? nlohmann::ordered_json{d.band_hz->first, d.band_hz->second}
+                                : nlohmann::ordered_json()},
+          {"segments", segments_json(d.segments)},
+          {"coherence", coherences},
+          {"whiteness", test_json(d.whiteness)},
+          {"cross_correlation",
+           {{"temperature", test_json(d.vs_temperature)},
+            {"temperature_rate", test_json(d.vs_temperature_rate)},
+            {"clearance", test_json(d.vs_clearance)}}}};
+}
+
+nlohmann::ordered_json stages_json(const std::vector<StageGap>& stages) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const StageGap& s : stages) {
+    out.push_back({{"name", s.name},
+                   {"unit", s.unit},
+                   {"gap_rms", s.gap_rms},
+                   {"noise_floor", s.noise_floor},
+                   {"real_error_rms", s.real_error_rms},
+                   {"sim_error_rms", s.sim_error_rms},
+                   {"significant", s.significant},
+                   {"note", s.note}});
+  }
+  return out;
+}
+
+nlohmann::ordered_json findings_json(const std::vector<EffectFinding>& findings) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const EffectFinding& f : findings) out.push_back(finding_json(f));
+  return out;
+}
+
+// How far the gap shrinks on the held-out data: over it, in the region, in the band, in its worst
+// window and within the calibration's ranges.
+nlohmann::ordered_json how_far_json(const HowFar& h) {
+  return {{"heldout_rms_before_v", h.rms_before},
+          {"heldout_rms_after_v", h.rms_after},
+          {"heldout_max_before_v", h.max_before},
+          {"heldout_max_after_v", h.max_after},
+          {"region_rms_before_v", h.region_rms_before},
+          {"region_rms_after_v", h.region_rms_after},
+          {"region_heldout_samples", h.region_samples},
+          {"band_rms_before_v", h.band_rms_before},
+          {"band_rms_after_v", h.band_rms_after},
+          {"worst_window",
+           {{"from_s", h.worst_window.from_s},
+            {"to_s", h.worst_window.to_s},
+            {"rms_after_v", h.worst_window.rms_v}}},
+          {"within_calibration",
+           {{"heldout_samples", h.within_calibration_samples},
+            {"rms_before_v", h.within_calibration_rms_before},
+            {"rms_after_v", h.within_calibration_rms_after}}}};
+}
+
 }  // namespace
 
 nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::string& real,
@@ -157,63 +228,12 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   j["real"] = real;
   j["heldout"] = heldout;
   j["verdict"] = {{"status", g.status}, {"effects", names}, {"reasons", d.reasons}};
-  nlohmann::ordered_json segments = nlohmann::ordered_json::array();
-  for (const TimeSegment& s : d.segments) {
-    segments.push_back({{"t_start_s", s.t_start_s}, {"t_end_s", s.t_end_s}, {"mean_v", s.mean_v}});
-  }
-  nlohmann::ordered_json coherences = nlohmann::ordered_json::object();
-  for (const InputCoherence& c : d.coherences) {
-    coherences[c.input] = {{"in_band", c.in_band}, {"peak", c.peak}, {"peak_hz", c.peak_hz}};
-  }
-  j["where"] = {{"stage", g.stage},
-                {"region", d.where_region ? region_json(d.regions[*d.where_region])
-                                          : nlohmann::ordered_json()},
-                {"band_hz", d.band_hz ? nlohmann::ordered_json{d.band_hz->first, d.band_hz->second}
-                                      : nlohmann::ordered_json()},
-                {"segments", segments},
-                {"coherence", coherences},
-                {"whiteness", test_json(d.whiteness)},
-                {"cross_correlation",
-                 {{"temperature", test_json(d.vs_temperature)},
-                  {"temperature_rate", test_json(d.vs_temperature_rate)},
-                  {"clearance", test_json(d.vs_clearance)}}}};
-  nlohmann::ordered_json stages = nlohmann::ordered_json::array();
-  for (const StageGap& s : d.stages) {
-    stages.push_back({{"name", s.name},
-                      {"unit", s.unit},
-                      {"gap_rms", s.gap_rms},
-                      {"noise_floor", s.noise_floor},
-                      {"real_error_rms", s.real_error_rms},
-                      {"sim_error_rms", s.sim_error_rms},
-                      {"significant", s.significant},
-                      {"note", s.note}});
-  }
-  j["stages"] = stages;
-  nlohmann::ordered_json effects = nlohmann::ordered_json::array();
-  for (const EffectFinding& f : g.effects) effects.push_back(finding_json(f));
-  j["effects"] = effects;
-  nlohmann::ordered_json partial = nlohmann::ordered_json::array();
-  for (const EffectFinding& f : d.partial) partial.push_back(finding_json(f));
-  j["partial_effects"] = partial;
+  j["where"] = where_json(g, d);
+  j["stages"] = stages_json(d.stages);
+  j["effects"] = findings_json(g.effects);
+  j["partial_effects"] = findings_json(d.partial);
   j["nearest"] = g.nearest ? finding_json(*g.nearest) : nlohmann::ordered_json();
-  const HowFar& h = d.how_far;
-  j["how_far"] = {{"heldout_rms_before_v", h.rms_before},
-                  {"heldout_rms_after_v", h.rms_after},
-                  {"heldout_max_before_v", h.max_before},
-                  {"heldout_max_after_v", h.max_after},
-                  {"region_rms_before_v", h.region_rms_before},
-                  {"region_rms_after_v", h.region_rms_after},
-                  {"region_heldout_samples", h.region_samples},
-                  {"band_rms_before_v", h.band_rms_before},
-                  {"band_rms_after_v", h.band_rms_after},
-                  {"worst_window",
-                   {{"from_s", h.worst_window.from_s},
-                    {"to_s", h.worst_window.to_s},
-                    {"rms_after_v", h.worst_window.rms_v}}},
-                  {"within_calibration",
-                   {{"heldout_samples", h.within_calibration_samples},
-                    {"rms_before_v", h.within_calibration_rms_before},
-                    {"rms_after_v", h.within_calibration_rms_after}}}};
+  j["how_far"] = how_far_json(d.how_far);
   nlohmann::ordered_json regions = nlohmann::ordered_json::array();
   for (const RegionCell& c : d.regions) regions.push_back(region_json(c));
   j["regions"] = regions;
