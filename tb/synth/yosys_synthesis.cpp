@@ -41,7 +41,7 @@ std::string read_text(const fs::path& path) {
 
 // One Yosys run: read, synth_xilinx, stat, then ltp on a copy without sequential cells.
 YosysRun run_yosys(const SynthesisRequest& request, const std::string& top, const fs::path& work) {
-  const fs::path& root = request.source_dir;
+  const fs::path& root = request.data_dir;
   const fs::path& set = request.coeff_set;
   const fs::path rtl = root / "rtl";
   std::string sources = (rtl / "iir_mac.sv").string() + " " + (rtl / "iir_core.sv").string();
@@ -82,7 +82,6 @@ YosysRun run_yosys(const SynthesisRequest& request, const std::string& top, cons
 }
 
 }  // namespace
-
 
 Utilisation parse_utilisation(const std::string& stat_text, const std::string& ltp_text) {
   Utilisation u;
@@ -143,12 +142,12 @@ std::string check_utilisation(const Utilisation& core, const Utilisation& top,
   return failures;
 }
 
-fs::path find_coeff_set(const fs::path& source_dir, const std::string& coeffs) {
-  // A relative folder is looked up from the working folder, then from the repository root.
+fs::path find_coeff_set(const fs::path& data_dir, const std::string& coeffs) {
+  // A relative folder is looked up from the working folder, then from the data folder.
   fs::path set = fs::absolute(coeffs);
-  if (!fs::exists(set) && fs::path(coeffs).is_relative()) set = source_dir / coeffs;
+  if (!fs::exists(set) && fs::path(coeffs).is_relative()) set = data_dir / coeffs;
   for (const fs::path& f :
-       {source_dir / "rtl" / "iir_core.sv", set / "iir_coeffs_pkg.sv", set / "coeffs.mem"}) {
+       {data_dir / "rtl" / "iir_core.sv", set / "iir_coeffs_pkg.sv", set / "coeffs.mem"}) {
     if (!fs::exists(f)) throw std::invalid_argument(f.string() + " is missing");
   }
   return set;
