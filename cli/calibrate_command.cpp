@@ -11,6 +11,7 @@
 #include "calibration.h"
 #include "cli.h"
 #include "input_error.h"
+#include "version.h"
 
 namespace flange::cli {
 
@@ -80,10 +81,8 @@ int run_calibrate_command(const CalibrateOptions& options,
     }
     out << "  selected: " << calibration.fit.selection << "\n";
     out << "  d = " << calibration.fit.model.equation() << "   (d mm, V volts, T deg C)\n";
-    std::string generated_by = "flange";
-    for (const std::string& word : command_line) generated_by += " " + word;
     std::ofstream file(options.out, std::ios::binary);
-    file << calibration_json(calibration, generated_by).dump(1) << "\n";
+    file << calibration_json(calibration, runtime::generated_by(command_line)).dump(1) << "\n";
     file.close();
     if (!file) {
       err << "flange calibrate: --out " << options.out << ": cannot write\n";

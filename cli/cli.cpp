@@ -126,6 +126,8 @@ std::optional<int> parse_command_line(CLI::App& app, const std::vector<std::stri
     return app.exit(help, out, err);
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help, out, err);
+  } catch (const CLI::CallForVersion& version) {
+    return app.exit(version, out, err);
   } catch (const CLI::ParseError& error) {
     std::string where = "flange";
     const CLI::App* parsed = &app;
@@ -141,13 +143,17 @@ std::optional<int> parse_command_line(CLI::App& app, const std::vector<std::stri
 
 }  // namespace
 
-int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& raw_err) {
+int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& raw_err,
+               std::string_view commit) {
   PrintableStream err(raw_err);
   const host::ScopedInputNotes notes(err);
   CLI::App app{"flange: FPGA IIR filter for wheel-flange wear measurement"};
   app.name("flange");
   app.require_subcommand(1);
   app.fallthrough(false);
+  app.set_version_flag(
+      "--version", [commit] { return version_text(commit); },
+      "print the version, the git commit, the data folder and the Verilator and Yosys found");
   Subcommands subcommands;
   subcommands.add_to(app);
   if (const std::optional<int> status = parse_command_line(app, args, out, err)) return *status;

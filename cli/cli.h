@@ -5,7 +5,10 @@
 
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include "version_command.h"
 
 namespace flange::cli {
 
@@ -14,7 +17,9 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;      // a check failed or a file could not be read/written
 inline constexpr int kExitBadArgument = 2;  // an argument or input value is out of range
 
-// Runs `flange <args...>` and returns its exit status.
-int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+// Runs `flange <args...>` and returns its exit status. `commit` is the git commit `flange
+// --version` names: main.cpp passes the one recorded at build time.
+int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+               std::string_view commit = kCommitNotRecorded);
 
 }  // namespace flange::cli

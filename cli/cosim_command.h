@@ -18,8 +18,8 @@ CLI::App* add_cosim_command(CLI::App& app, CosimCommandOptions& options);
 
 // The RTL is Verilated per coefficient set (its package differs), so the first run for a set
 // builds a runner with Verilator (about 15 s) into a cache folder keyed by the content of the RTL,
-// the set's package and ROM image and the runner's sources: $FLANGE_COSIM_CACHE, or
-// <build>/cosim_cache. Returns 0, 1 (mismatch, or the build failed) or 2 (bad input).
+// the set's package and ROM image and the runner's sources (tb/runner/verilated_runner.h says
+// where). Returns 0, 1 (mismatch, or the build failed) or 2 (bad input).
 int run_cosim_command(const CosimCommandOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace flange::cli

@@ -11,6 +11,7 @@
 #include "cli.h"
 #include "design_error.h"
 #include "design_outputs.h"
+#include "version.h"
 
 namespace flange::cli {
 
@@ -126,7 +127,8 @@ int run_design_command(const DesignOptions& options, const std::vector<std::stri
       throw BadArgument(fmt::format("--channels: {} is outside 1 to {}", options.channels,
                                     coeffs::kMaxChannels));
     }
-    DesignRecord record = design_record(options, request, command_without_out(command_line));
+    DesignRecord record =
+        design_record(options, request, runtime::generated_by(command_without_out(command_line)));
     out << design_report(record);
     if (!record.analysis.rejection.empty()) {
       err << "flange design: " << record.analysis.rejection << "\n";

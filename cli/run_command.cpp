@@ -10,6 +10,7 @@
 #include "locomotive_run.h"
 #include "locomotive_summary.h"
 #include "run_report.h"
+#include "version.h"
 
 namespace flange::cli {
 
@@ -40,9 +41,8 @@ int run_manifest(const RunCommandOptions& options, const std::vector<std::string
   const host::LocomotiveRun run = host::run_locomotive(manifest, options.run, out_dir);
   out << host::locomotive_table_text(run);
   if (out_dir) {
-    std::string generated_by = "flange";
-    for (const std::string& word : command_line) generated_by += " " + word;
-    host::write_locomotive_summary_json(*out_dir / "summary.json", run, generated_by);
+    host::write_locomotive_summary_json(*out_dir / "summary.json", run,
+                                        runtime::generated_by(command_line));
     host::write_locomotive_report(*out_dir, run);
     out << "  wrote " << out_dir->string() << "/channel_XX.csv, summary.json and index.html\n";
   }

@@ -21,6 +21,7 @@
 #include "sim_error.h"
 #include "simulation.h"
 #include "twin_file.h"
+#include "version.h"
 
 namespace flange::cli {
 
@@ -259,9 +260,8 @@ void write_manifest(const std::filesystem::path& dir, int wheels,
     entry.file = host::channel_file_name(channel);
     channels.push_back(entry);
   }
-  std::string generated_by = "flange";
-  for (const std::string& word : command_line) generated_by += " " + word;
-  host::write_locomotive_manifest(dir / "locomotive.json", channels, generated_by);
+  host::write_locomotive_manifest(dir / "locomotive.json", channels,
+                                  runtime::generated_by(command_line));
 }
 
 void print_wheels(const Locomotive& locomotive, const std::vector<SimulationSummary>& summaries,

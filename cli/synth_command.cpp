@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "cli.h"
+#include "data_dir.h"
 #include "yosys_synthesis.h"
 
 namespace flange::cli {
@@ -16,10 +17,9 @@ CLI::App* add_synth_command(CLI::App& app, SynthOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "synth", "Yosys synthesis for the XC7A35T: core and Basys-3 top, utilisation and depth");
   cmd->add_option("--coeffs", options.coeffs,
-                  "coefficient set folder (iir_coeffs_pkg.sv, coeffs.mem)")
+                  "coefficient set folder (iir_coeffs_pkg.sv, coeffs.mem); a relative one is "
+                  "looked up in the working folder, then in the data folder (flange --version)")
       ->default_val(options.coeffs);
-  cmd->add_option("--source-dir", options.source_dir,
-                  "repository root holding rtl/ (default: the one this flange was built from)");
   cmd->add_option("--out", options.out, "Markdown report to write")->default_val(options.out);
   cmd->add_option("--yosys", options.yosys, "Yosys executable")->default_val(options.yosys);
   cmd->add_option("--max-core-lut-percent", options.max_core_lut_percent,
@@ -31,13 +31,15 @@ CLI::App* add_synth_command(CLI::App& app, SynthOptions& options) {
 
 int run_synth_command(const SynthOptions& options, std::ostream& out, std::ostream& err) {
   tb::SynthesisRequest request;
-  request.source_dir =
-      options.source_dir.empty() ? fs::path(FLANGE_SOURCE_DIR) : fs::path(options.source_dir);
   request.yosys = options.yosys;
   tb::SynthesisResult result;
   try {
-    request.coeff_set = tb::find_coeff_set(request.source_dir, options.coeffs);
+    request.data_dir = runtime::data_dir().root;
+    request.coeff_set = tb::find_coeff_set(request.data_dir, options.coeffs);
     result = tb::synthesise(request);
+  } catch (const runtime::DataDirNotFound& missing) {
+    err << "flange synth: " << missing.what() << "\n";
+    return kExitFailure;
   } catch (const std::invalid_argument& missing) {
     err << "flange synth: " << missing.what() << "\n";
     return kExitBadArgument;

@@ -11,7 +11,6 @@ namespace flange::cli {
 
 struct SynthOptions {
   std::string coeffs = "coeffs/measurement_sos";  // folder with iir_coeffs_pkg.sv, coeffs.mem
-  std::string source_dir;                         // repository root (default: compiled-in)
   std::string out = "docs/synthesis.md";
   std::string yosys = "yosys";
   // The core may use at most this share of the LUTs: 1.5 % since contract v2 (split coefficients

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "alt_truth.h"
+#include "version.h"
 
 namespace flange::diagnose {
 namespace {
@@ -177,12 +178,12 @@ nlohmann::json alt_selftest_json(const SelftestOptions& options,
                                  const std::vector<AltPairResult>& results,
                                  const AltSummary& summary) {
   nlohmann::json j;
-  j["generated_by"] =
+  j["generated_by"] = runtime::generated_by(
       options.only_case > 0
           ? fmt::format("flange diagnose --selftest --reality alt --case {} --seed {}",
                         options.only_case, options.seed)
           : fmt::format("flange diagnose --selftest --reality alt --pairs {} --seed {}",
-                        summary.pairs, options.seed);
+                        summary.pairs, options.seed));
   j["reality"] = "alt";
   j["seed"] = options.seed;
   j["pairs"] = nlohmann::json::array();

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "version.h"
+
 namespace flange::alt_reality {
 namespace {
 
@@ -34,16 +36,16 @@ nlohmann::json alt_truth_json(const AltPairSpec& spec) {
                      {"rms_v", e.rms_v},
                      {"rms_over_noise", e.rms_v / spec.fit.noise_v}});
   }
-  return {
-      {"generated_by", fmt::format("flange diagnose --selftest --reality alt --case {} --seed {}",
-                                   spec.index, spec.seed)},
-      {"note", "the truth of an alternative-reality pair; never read by the diagnosis"},
-      {"pair", spec.index},
-      {"seed", spec.seed},
-      {"kind", alt_pair_kind_name(spec.kind)},
-      {"truth", truth},
-      {"fit_session", session_plan_json(spec.fit)},
-      {"heldout_session", session_plan_json(spec.heldout)}};
+  return {{"generated_by", runtime::generated_by(fmt::format(
+                               "flange diagnose --selftest --reality alt --case {} --seed {}",
+                               spec.index, spec.seed))},
+          {"note", "the truth of an alternative-reality pair; never read by the diagnosis"},
+          {"pair", spec.index},
+          {"seed", spec.seed},
+          {"kind", alt_pair_kind_name(spec.kind)},
+          {"truth", truth},
+          {"fit_session", session_plan_json(spec.fit)},
+          {"heldout_session", session_plan_json(spec.heldout)}};
 }
 
 std::vector<std::filesystem::path> write_alt_pair(const std::filesystem::path& dir,

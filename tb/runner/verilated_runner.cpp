@@ -15,13 +15,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "data_dir.h"
+
 extern char** environ;
 
 namespace flange::tb {
 
 namespace {
-
-const fs::path kSource = FLANGE_SOURCE_DIR;
 
 std::string read_file(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -86,11 +86,21 @@ class BuildLock {
   int fd_;
 };
 
-fs::path cache_root() {
+fs::path cache_root(const runtime::DataDir& data) {
   if (const char* dir = std::getenv("FLANGE_COSIM_CACHE"); dir != nullptr && *dir != '\0') {
     return dir;
   }
-  return fs::path(FLANGE_BINARY_DIR) / "cosim_cache";
+  return data.runner_cache;
+}
+
+// ccache for the runner's compiler when the one found at build time is still there.
+std::vector<std::string> compiler_cache_environment() {
+  const fs::path ccache = FLANGE_CCACHE;
+  std::error_code ignored;
+  if (ccache.empty() || std::getenv("OBJCACHE") != nullptr || !fs::exists(ccache, ignored)) {
+    return {};
+  }
+  return {"OBJCACHE=" + ccache.string()};
 }
 
 }  // namespace
@@ -106,17 +116,20 @@ fs::path ensure_verilated_runner(const fs::path& filter_json, std::ostream& log)
     }
   }
   // The runner for this set: RTL, package and ROM image, and the runner's own code.
-  const std::vector<fs::path> rtl = {kSource / "rtl/iir_mac.sv", kSource / "rtl/iir_core.sv"};
-  const std::vector<fs::path> runner_sources = {kSource / "tb/cosim_main.cpp",
-                                                kSource / "tb/iir_core_dut.cpp"};
-  const std::vector<fs::path> libs = {FLANGE_TB_LIB, FLANGE_MODEL_LIB};
+  const runtime::DataDir data = runtime::data_dir();
+  const fs::path& root = data.root;
+  const std::vector<fs::path> rtl = {root / "rtl/iir_mac.sv", root / "rtl/iir_core.sv"};
+  const std::vector<fs::path> runner_sources = {root / "tb/cosim_main.cpp",
+                                                root / "tb/iir_core_dut.cpp"};
+  const std::vector<fs::path>& libs = data.runner_archives;
   std::uint64_t key = 0xcbf29ce484222325ull;
   for (const auto* group : {&rtl, &runner_sources, &libs}) {
     for (const fs::path& f : *group) key = fnv1a(key, read_file(f));
   }
   key = fnv1a(key, read_file(package));
   key = fnv1a(key, read_file(rom));
-  const fs::path dir = cache_root() / fmt::format("{}-{:016x}", set_dir.filename().string(), key);
+  const fs::path dir =
+      cache_root(data) / fmt::format("{}-{:016x}", set_dir.filename().string(), key);
   const fs::path runner = dir / "obj" / "flange_cosim_runner";
 
   // Tests and users may ask for the same runner at once: one builds, the others wait on the lock
@@ -128,7 +141,7 @@ fs::path ensure_verilated_runner(const fs::path& filter_json, std::ostream& log)
     fs::copy_file(rom, dir / "coeffs.mem", fs::copy_options::overwrite_existing);
     log << "building the Verilated core for " << set_dir.filename().string() << " in "
         << dir.string() << " (once per set)\n";
-    std::vector<std::string> cmd = {FLANGE_VERILATOR_BIN,
+    std::vector<std::string> cmd = {verilator_program(),
                                     "--cc",
                                     "--exe",
                                     "--build",
@@ -147,18 +160,14 @@ fs::path ensure_verilated_runner(const fs::path& filter_json, std::ostream& log)
                                     package.string()};
     for (const fs::path& f : rtl) cmd.push_back(f.string());
     for (const fs::path& f : runner_sources) cmd.push_back(f.string());
-    cmd.insert(cmd.end(),
-               {"-CFLAGS",
-                fmt::format("-std=c++20 -O2 -I{} -I{}", (kSource / "tb").string(),
-                            (kSource / "model").string()),
-                "-LDFLAGS", fmt::format("{} {} -lfmt", libs[0].string(), libs[1].string()), "-o",
-                "flange_cosim_runner"});
-    std::vector<std::string> env;
-    if (std::string(FLANGE_CCACHE).size() > 0 && std::getenv("OBJCACHE") == nullptr) {
-      env.push_back(std::string("OBJCACHE=") + FLANGE_CCACHE);
-    }
+    cmd.insert(
+        cmd.end(),
+        {"-CFLAGS",
+         fmt::format("-std=c++20 -O2 -I{} -I{}", (root / "tb").string(), (root / "model").string()),
+         "-LDFLAGS", fmt::format("{} {} -lfmt", libs[0].string(), libs[1].string()), "-o",
+         "flange_cosim_runner"});
     const fs::path build_log = dir / "build.log";
-    const int status = spawn(cmd, build_log, dir / "build.err", env);
+    const int status = spawn(cmd, build_log, dir / "build.err", compiler_cache_environment());
     if (status != 0 || !fs::exists(runner)) {
       fs::remove(runner);
       throw std::runtime_error(
@@ -168,6 +177,12 @@ fs::path ensure_verilated_runner(const fs::path& filter_json, std::ostream& log)
   }
 
   return runner;
+}
+
+std::string verilator_program() {
+  const fs::path found = FLANGE_VERILATOR_BIN;
+  std::error_code ignored;
+  return fs::exists(found, ignored) ? found.string() : "verilator";
 }
 
 int spawn_with_files(const std::vector<std::string>& argv, const fs::path& out_file,

@@ -52,9 +52,9 @@ class SynthesisFailed : public std::runtime_error {
 };
 
 struct SynthesisRequest {
-  std::filesystem::path source_dir;  // repository root holding rtl/
-  std::filesystem::path coeff_set;   // folder with iir_coeffs_pkg.sv and coeffs.mem
-  std::string yosys = "yosys";       // the executable
+  std::filesystem::path data_dir;   // holds rtl/ (runtime/data_dir.h)
+  std::filesystem::path coeff_set;  // folder with iir_coeffs_pkg.sv and coeffs.mem
+  std::string yosys = "yosys";      // the executable
 };
 
 struct YosysRun {
@@ -71,8 +71,8 @@ struct SynthesisResult {
 };
 
 // The coefficient set folder named `coeffs` (relative: from the working folder, then from
-// source_dir). Throws std::invalid_argument naming the first missing source.
-std::filesystem::path find_coeff_set(const std::filesystem::path& source_dir,
+// data_dir). Throws std::invalid_argument naming the first missing source.
+std::filesystem::path find_coeff_set(const std::filesystem::path& data_dir,
                                      const std::string& coeffs);
 
 // Runs Yosys on the core and on the board top (tens of seconds). Throws SynthesisFailed.

@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# diagnose/alt_reality/ includes only its own headers and standard or third-party ones (no
-# sim/, diagnose/, host/ or model/ header), and the diagnosis's own folders include nothing of
-# the alternative reality or its blind check. Usage: check_alt_reality_independent.sh SOURCE_DIR
+# diagnose/alt_reality/ includes only its own headers, runtime/'s (the version its files name,
+# nothing of the twin or the method) and standard or third-party ones (no sim/, diagnose/, host/
+# or model/ header), and the diagnosis's own folders include nothing of the alternative reality
+# or its blind check. Usage: check_alt_reality_independent.sh SOURCE_DIR
 set -euo pipefail
 root=${1:?source dir}
 alt=$root/diagnose/alt_reality
 status=0
-own=$(cd "$alt" && ls *.h)
+own=$(cd "$alt" && ls *.h; cd "$root/runtime" && ls *.h)
 while IFS= read -r line; do
   header=$(sed -E 's/.*#include "([^"]+)".*/\1/' <<<"${line#*:}")
   if ! grep -qx "$header" <<<"$own"; then

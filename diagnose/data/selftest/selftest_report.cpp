@@ -8,6 +8,7 @@
 
 #include "bench_scenario.h"
 #include "recording_writer.h"
+#include "version.h"
 
 namespace flange::diagnose {
 namespace {
@@ -162,11 +163,11 @@ nlohmann::json selftest_json(const SelftestOptions& options,
                              const std::vector<SelftestCaseResult>& results,
                              const SelftestSummary& summary, double duration_s) {
   nlohmann::json j;
-  j["generated_by"] = options.only_case > 0
-                          ? fmt::format("flange diagnose --selftest --case {} --seed {}",
-                                        options.only_case, options.seed)
-                          : fmt::format("flange diagnose --selftest --cases {} --seed {}",
-                                        summary.cases, options.seed);
+  j["generated_by"] = runtime::generated_by(
+      options.only_case > 0 ? fmt::format("flange diagnose --selftest --case {} --seed {}",
+                                          options.only_case, options.seed)
+                            : fmt::format("flange diagnose --selftest --cases {} --seed {}",
+                                          summary.cases, options.seed));
   j["duration_s"] = duration_s;
   j["cases"] = nlohmann::json::array();
   for (const SelftestCaseResult& r : results) j["cases"].push_back(case_json(r));
