@@ -14,6 +14,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "criteria.h"
 #include "finding_class.h"
 #include "flange_in_process.h"
 #include "test_files.h"
@@ -238,13 +239,15 @@ TEST(AltSelftest, FewerClassesAreNamedWhereBothPassesLeaveTheNoise) {
 }
 
 // Seed 447, pair 17: a log-time ageing with a sensor's thermal lag, both named. Each pick left
-// earns its place in the final fit: taking it out costs at least 2 % of the noise variance.
+// earns its place in the final fit: taking it out costs at least criteria::kRemovalMargin of the
+// noise variance.
 TEST(AltSelftest, EveryPickLeftIsNeededByTheFinalFit) {
   const AltPairResult r = development_pair(447, 17);
   const std::vector<EffectFinding>& effects = r.diagnosis.effects;
   ASSERT_GE(effects.size(), 2u);
   const double now = r.diagnosis.heldout_rms_after;
-  const double least_gain = 0.02 * r.diagnosis.noise_std_v * r.diagnosis.noise_std_v;
+  const double least_gain =
+      criteria::kRemovalMargin * r.diagnosis.noise_std_v * r.diagnosis.noise_std_v;
   for (std::size_t i = 0; i < effects.size(); ++i) {
     EXPECT_GE(std::pow(effects[i].heldout_rms_without, 2) - now * now, least_gain)
         << effects[i].name;
