@@ -53,7 +53,8 @@ inline constexpr double kConfoundingMargin = kScoreResolution;
 
 // Acceptance: a library pick is given a free shape of its own class after the rounds (and the
 // refined selection is kept) only when that lowers the held-out mean square by this share.
-// Test: Diagnose.ALibraryPickIsGivenAFreeShapeOnlyWhenItGains (diagnose_test.cpp).
+// Test: AltSelftest.FewerClassesAreNamedWhereBothPassesLeaveTheNoise (the library pass's classes
+// given free shapes of their own leave the noise).
 inline constexpr double kRefinementAcceptance = kScoreResolution;
 
 // Pass comparison: the free-shape pass replaces the library pass when it leaves less by this
@@ -68,7 +69,8 @@ inline constexpr double kRemovalMargin = kScoreResolution;
 
 // Converter placement: the converter's code boundaries (and a DAQ gain calibration) are placed
 // before the picks only when they lower the calibration gap's mean square by this share.
-// Test: Diagnose.ATruncatingConverterIsPlacedBeforeThePicks (diagnose_test.cpp).
+// Test: Diagnose.ATruncatingConverterIsNamedAloneWithItsBoundaries,
+// Diagnose.AConverterBehindADaqGainCalibrationIsNamedAloneWithItsGain.
 inline constexpr double kConverterPlacementGain = kScoreResolution;
 
 // The most bias-type picks: three effects at once is as many as a bench pair's two sessions can
@@ -112,15 +114,16 @@ inline constexpr double kLeastShareTakenBeyondReach = 0.5;
 // The fewest samples a clearance x temperature cell needs to be the where-region, and the
 // held-out part to say anything about it: the cell's bias is then known to sigma / sqrt(30),
 // about a fifth of the noise.
-// Test: Locate.ACellNeedsThirtySamples.
+// Test: Coverage.AHeldOutSessionThatMissesTheGapsCellIsSaidToMissIt.
 inline constexpr std::size_t kLeastSamplesPerCell = 30;
 // A stage's gap is significant above 1.5 times its noise floor (the median of kNullReplicas
 // draws of the noisy twin, whose spread is a few %).
-// Test: Diagnose.NominalTwinAgainstItselfIsNone (diagnose_test.cpp).
+// Test: Diagnose.NullRecordingGivesNone, NullPairs.GiveNone.
 inline constexpr double kStageSignificanceRatio = 1.5;
 inline constexpr int kNullReplicas = 32;
 // The alarm-timing stage: its floor is the largest of the replicas (passed by noise about 1 time
 // in kNullReplicas + 1), so it must show on the held-out part too, by at least this much.
+// Test: Diagnose.AnAlarmTimingGapCountsOnlyWhenTheHeldOutPartShowsItToo.
 inline constexpr double kAlarmMarginS = 1.0;
 // The where-band: PSD bins above twice the white-noise level.
 inline constexpr double kBandPsdRatio = 2.0;
@@ -131,14 +134,16 @@ inline constexpr std::size_t kResidualTestLags = 25;
 // Mount motion: the gap's variance follows (dV/dd)^2 with a t statistic above 8 (a chance slope
 // that large has odds far below 1e-9 on a bench session's thousands of samples) and adds at least
 // a tenth to the variance.
-// Test: VibrationSignature.MotionIsFoundAndVoltageNoiseIsNot (diagnose_test.cpp).
+// Test: LowAliasedMotion.ANarrowResonanceIsFoundAndExplainsTheGap,
+// LowAliasedMotion.AResonanceOnAMainsAliasIsMotionNotPickup.
 inline constexpr double kMotionSlopeT = 8.0;
 inline constexpr double kMotionLeastShare = 0.1;
 
 // ---- Protocol ------------------------------------------------------------------------------
 // A protocol reaches each clearance from one side only when, in every band of a twentieth of the
 // range holding 30 or more samples at rest, at least 95 % were last reached by a move the same way.
-// Test: Verdict.AOneSidedProtocolCannotTellANonlinearityFromAHysteresis.
+// Test: Verdict.AOneSidedProtocolCannotTellANonlinearityFromAHysteresis,
+// Diagnose.ANonlinearityOnAOneSidedStaircaseIsSaidToLookLikeAHysteresis.
 inline constexpr int kProtocolBands = 20;
 inline constexpr std::size_t kLeastSamplesPerProtocolBand = 30;
 inline constexpr double kOneWayShare = 0.95;
@@ -147,6 +152,7 @@ inline constexpr double kOneWayShare = 0.95;
 // The fewest samples in each part: a 16-sample spectrum with about 15 segments, and the tests.
 inline constexpr std::size_t kLeastSamplesPerPart = 256;
 // The two parts' sample rates must agree within 1 %.
+// Test (both): DiagnoseCommand.BadInputsGiveOneLineAndStatusTwo.
 inline constexpr double kSampleRateAgreement = 0.01;
 
 }  // namespace flange::diagnose::criteria
