@@ -116,10 +116,12 @@ EffectClass channel_skew() {
   };
 }
 
+// Solved in closed form (fit_ageing): a line in time within the catalogue's limits, which the
+// search ranges state.
 EffectClass ageing_drift() {
   return {
       .name = "ageing_drift",
-      .search = {{"rate_v_per_day", -2, 2}, {"start_age_days", 0, 30}},
+      .search = {{"rate_v_per_day", -2, 2}, {"start_age_days", 0, 3650}},
       .fit = fit_ageing,
       .profiled_in_other_fits = true,
       .follows = "the time",
