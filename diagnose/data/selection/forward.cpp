@@ -35,19 +35,8 @@ void compare_with_library(const std::vector<Candidate>& candidates, const Choice
 // which data would separate them.
 void note_confounding(const std::vector<Candidate>& candidates, const Choice& choice,
                       Selection& selection) {
-  const RoundScore round = round_score(selection);
   const Candidate& chosen = candidates[choice.best];
-  const double margin = criteria::kConfoundingMargin * selection.noise_v * selection.noise_v;
-  std::vector<std::string> alike;
-  for (const Candidate& c : candidates) {
-    const std::string& name = c.fit.settings.name;
-    if (name == chosen.fit.settings.name ||
-        std::find(alike.begin(), alike.end(), name) != alike.end()) {
-      continue;
-    }
-    if (gain_of(c, round) >= choice.gain - margin) alike.push_back(name);
-  }
-  for (const std::string& other : alike) {
+  for (const std::string& other : confounded_classes(candidates, choice, round_score(selection))) {
     selection.confounded.push_back(evidence::confounded(effect_class(chosen.fit.settings.name),
                                                         effect_class(other),
                                                         criteria::kConfoundingMargin));
@@ -71,6 +60,22 @@ void reestimate_noise(const Parts& parts, Selection& selection, DiagnosisResult&
 }
 
 }  // namespace
+
+std::vector<std::string> confounded_classes(const std::vector<Candidate>& candidates,
+                                            const Choice& choice, const RoundScore& round) {
+  const Candidate& chosen = candidates[choice.best];
+  const double margin = criteria::kConfoundingMargin * round.noise_v * round.noise_v;
+  std::vector<std::string> alike;
+  for (const Candidate& c : candidates) {
+    const std::string& name = c.fit.settings.name;
+    if (name == chosen.fit.settings.name ||
+        std::find(alike.begin(), alike.end(), name) != alike.end()) {
+      continue;
+    }
+    if (gain_of(c, round) >= choice.gain - margin) alike.push_back(name);
+  }
+  return alike;
+}
 
 RoundScore round_score(const Selection& selection) {
   return {selection.current_error, selection.resamples, selection.noise_v};

@@ -2,6 +2,7 @@
 // The forward steps: greedy rounds of bias-type picks, each scored on held-out data.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "candidate.h"
@@ -17,6 +18,12 @@ namespace flange::diagnose {
 // pass, the free shapes of the classes not yet modelled (the families the class table lists,
 // in its order, where they are weighed on these parts).
 std::vector<Candidate> round_candidates(const Parts& parts, const Selection& selection);
+
+// The classes other than the choice's whose candidates gain within criteria::kConfoundingMargin
+// of sigma^2 of the choice's gain, each once, in candidate order (what note_confounding names).
+// Public for its test (tests/diagnose/selection_rules_test.cpp).
+std::vector<std::string> confounded_classes(const std::vector<Candidate>& candidates,
+                                            const Choice& choice, const RoundScore& round);
 
 // What a round is scored against.
 RoundScore round_score(const Selection& selection);

@@ -23,6 +23,8 @@ Selection with_shapes_where_they_gain(const Parts& parts, Selection selection) {
   return before * before - after * after >= margin ? refined : selection;
 }
 
+}  // namespace
+
 // Whether the free pass replaces the library pass: it leaves less by
 // criteria::kPassComparisonMargin of sigma^2, or it names fewer classes where the library pass
 // named several, leaving no more than that margin more, or where both leave the noise (the
@@ -40,8 +42,6 @@ bool free_pass_wins(const Selection& library, const Selection& free, bool severa
                              (free_left * free_left - left * left < margin || both_leave_the_noise);
   return leaves_less || (several_classes && fewer_classes);
 }
-
-}  // namespace
 
 Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& options,
                                const Selection& start, DiagnosisResult& result) {

@@ -12,6 +12,10 @@
 
 namespace flange::diagnose {
 
+// Whether the free pass replaces the library pass (criteria::kPassComparisonMargin); public for
+// its test (tests/diagnose/selection_rules_test.cpp).
+bool free_pass_wins(const Selection& library, const Selection& free, bool several_classes);
+
 Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& options,
                                const Selection& start, DiagnosisResult& result);
 
