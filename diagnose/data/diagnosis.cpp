@@ -1041,9 +1041,11 @@ std::vector<Candidate> score_candidates(const Parts& parts, const Selection& sel
     }
     pending_free.push_back(std::async(std::launch::async, [&, family] {
       Candidate c;
-      c.free_shape = fit_free_shape(family, free_parts.calibration, free_parts.cal_replay,
-                                    free_parts.heldout, free_parts.ho_replay, cal_gap,
-                                    selection.current_error, parts.heldout_age_unknown);
+      c.free_shape = fit_free_shape(family, {{free_parts.calibration, free_parts.cal_replay},
+                                             {free_parts.heldout, free_parts.ho_replay},
+                                             cal_gap,
+                                             selection.current_error,
+                                             parts.heldout_age_unknown});
       // The class the fitted shape names (a compression whose knee does not move is a static
       // nonlinearity).
       c.fit.settings =
@@ -1383,9 +1385,11 @@ void give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
     if (family.effect != name || !weighed_on(family, parts)) continue;
     pending.push_back(std::async(std::launch::async, [&, family] {
       Candidate c;
-      c.free_shape =
-          fit_free_shape(family, free_parts.calibration, free_parts.cal_replay, free_parts.heldout,
-                         free_parts.ho_replay, cal_gap, ho_gap, parts.heldout_age_unknown);
+      c.free_shape = fit_free_shape(family, {{free_parts.calibration, free_parts.cal_replay},
+                                             {free_parts.heldout, free_parts.ho_replay},
+                                             cal_gap,
+                                             ho_gap,
+                                             parts.heldout_age_unknown});
       c.heldout_error = minus(ho_gap, c.free_shape->heldout_voltage_v);
       return c;
     }));
