@@ -5,10 +5,13 @@
 #include <stdexcept>
 
 #include "effect_fit.h"
+#include "family_makers.h"
 #include "selftest_draw.h"
 
 namespace flange::diagnose {
 namespace {
+
+namespace fs = free_shapes;
 
 // The drifts' reference is the temperature the sensor was calibrated at: a room, 0-40 degC. A
 // reference far outside it would let a temperature drift pose as a constant offset.
@@ -18,7 +21,8 @@ EffectClass temp_gain_drift() {
       .search = {{"gain_per_c", -0.01, 0.01}, {"reference_c", 0, 40}},
       .fit = fit_by_search,
       .follows = "the temperature",
-      .families = {{"temp_gain_drift", "(V - v_min) T"}, {"temp_gain_drift", "(V - pivot) T"}},
+      .families = {{"temp_gain_drift", "(V - v_min) T", fs::make_temperature_gain_curve},
+                   {"temp_gain_drift", "(V - pivot) T", fs::make_pivot_gain}},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"gain_per_c", d.signed_magnitude(0.5e-3, 3e-3)},
                 {"reference_c", d.uniform(15, 25)}};
@@ -32,7 +36,7 @@ EffectClass temp_offset_drift() {
       .search = {{"offset_v_per_c", -0.05, 0.05}, {"reference_c", 0, 40}},
       .fit = fit_by_search,
       .follows = "the temperature",
-      .families = {{"temp_offset_drift", "T"}},
+      .families = {{"temp_offset_drift", "T", fs::make_temperature_offset_curve}},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"offset_v_per_c", d.signed_magnitude(1e-3, 5e-3)},
                 {"reference_c", d.uniform(15, 25)}};
@@ -50,9 +54,10 @@ EffectClass nonlinearity() {
       // A periodic curve of the clearance is not weighed on a converter grid: the grid's
       // quantisation error repeats with every LSB of voltage, which the sensor's sensitivity makes
       // a ripple of about LSB / (dV/dd) in the clearance.
-      .families = {{"nonlinearity", "V"},
-                   {"nonlinearity", "d"},
-                   {"nonlinearity", "d, periodic", /*weighed_on_a_converter_grid=*/false}},
+      .families = {{"nonlinearity", "V", fs::make_voltage_curve},
+                   {"nonlinearity", "d", fs::make_clearance_curve},
+                   {"nonlinearity", "d, periodic", fs::make_clearance_ripple,
+                    /*weighed_on_a_converter_grid=*/false}},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"bow_v", d.signed_magnitude(0.05, 0.25)},
                 {"s_curve_v", d.signed_magnitude(0.03, 0.15)}};
@@ -66,8 +71,8 @@ EffectClass range_compression() {
       .search = {{"onset_c", -40, 150}, {"knee_drop_v_per_c", 0.0, 0.2}, {"headroom_v", 0.05, 3.0}},
       .fit = fit_by_search,
       .follows = "the voltage (clearance)",
-      .families = {{"range_compression", "top of V, T"},
-                   {"range_compression", "V over a moving knee"}},
+      .families = {{"range_compression", "top of V, T", fs::make_compression_surface},
+                   {"range_compression", "V over a moving knee", fs::make_moving_knee}},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"onset_c", d.uniform(30, 60)},
                 {"knee_drop_v_per_c", d.uniform(0.02, 0.06)},
@@ -87,7 +92,7 @@ EffectClass thermal_lag() {
         const double tau_s = e.params.at("tau_s");
         return ChannelDelay{.temperature_lag_tau_s = tau_s < 0.0 ? -tau_s : 0.0};
       },
-      .families = {{"thermal_lag", "lagged T"}},
+      .families = {{"thermal_lag", "lagged T", fs::make_lag}},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"tau_s", d.signed_magnitude(60, 900)}};
       },
@@ -106,7 +111,7 @@ EffectClass channel_skew() {
         return ChannelDelay{.temperature_shift_s = skew_s > 0.0 ? skew_s : 0.0,
                             .voltage_shift_s = skew_s < 0.0 ? skew_s : 0.0};
       },
-      .families = {{"channel_skew", "t"}},
+      .families = {{"channel_skew", "t", fs::make_skew}},
       // A late temperature channel moves the bench voltage by less than the noise (the blower
       // changes the temperature by 0.13 degC/s at most); a late voltage channel shows on every
       // micrometer step. Only the detectable side is drawn.
@@ -126,7 +131,8 @@ EffectClass ageing_drift() {
       .profiled_in_other_fits = true,
       .follows = "the time",
       .age_param = "start_age_days",
-      .families = {{"ageing_drift", "age, continuing"}, {"ageing_drift", "age, settled"}},
+      .families = {{"ageing_drift", "age, continuing", fs::make_continuing_ageing},
+                   {"ageing_drift", "age, settled", fs::make_settled_age_curve}},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"rate_v_per_day", d.signed_magnitude(0.5, 2.0)},
                 {"start_age_days", d.uniform(0.0, 0.5)}};
@@ -142,7 +148,7 @@ EffectClass mains_pickup() {
       .search = {{"amplitude_v", 0, 1}, {"phase_deg", -180, 180}, {"harmonic_ratio", 0, 1}},
       .fit = fit_mains,
       .follows = "the spectrum",
-      .families = {{"mains_pickup", "aliased lines"}},
+      .families = {{"mains_pickup", "aliased lines", fs::make_mains_lines}},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"amplitude_v", d.uniform(0.05, 0.3)},
                 {"phase_deg", d.uniform(-180, 180)},

@@ -76,7 +76,8 @@ struct EffectClass {
   bool is_mount_motion = false;
   // The channel delays a setting of this class makes.
   ChannelDelay (*channel_delay)(const sim::EffectSettings&) = nullptr;
-  // The shape-free families that stand for it (free_shape_fit.h), in the order they are scored.
+  // The shape-free families that stand for it (free_shape_fit.h), in the order they are scored,
+  // each with how to make it (candidates/free_shapes/family_makers.h).
   std::vector<FreeShapeFamily> families{};
   // The blind self-test's draw of its parameters: each range's low end moves a bench recording's
   // voltage by about the thesis's repeatability (docs/diagnose.md, "How it is checked").

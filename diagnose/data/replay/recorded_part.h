@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// A part of the recording with the twin replayed on its inputs: what every stage reads.
+// A part of the recording (the calibration part or the held-out one) with the twin replayed on
+// it: what a fit reads of one part.
 #pragma once
 
 #include "recording_series.h"
@@ -10,7 +11,9 @@ namespace flange::diagnose {
 struct RecordedPart {
   const RecordingSeries& series;
   const TwinReplay& replay;
-  double age_shift_s = 0.0;  // the part placed this much older than its replay's age offset says
+  // The part placed this much older than its replay's age offset says (the held-out session's
+  // place in the sensor's age, where its clock does not say it).
+  double age_shift_s = 0.0;
 };
 
 }  // namespace flange::diagnose

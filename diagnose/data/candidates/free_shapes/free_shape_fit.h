@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Shape-free families for the effect classes (issue 11 item 1; docs/diagnose.md, "Free shapes"):
-// the library's formula is one member of each, so a recording whose effect has another shape is
-// still named by its class. Every family is linear in its free values, fitted by least squares
+// Shape-free families for the effect classes (docs/diagnose.md, "Free shapes"): the library's
+// formula is one member of each, so a recording whose effect has another shape is still named by
+// its class. Every family but the mains' is linear in its free values, fitted by least squares
 // (with a light ridge, so near-collinear columns cannot trade huge opposite values) to the gap
 // the modelled effects leave on the calibration part; the same values, evaluated on the held-out
 // part's own variables, are what is scored there.
@@ -18,7 +18,7 @@
 //                      S any mix of first-order lags (the sensor lags: a mean delay tau_s > 0) and
 //                      of advances of the recorded temperature (the reading lags: tau_s < 0)
 //   channel_skew       s(t) dV/dt: the voltage channel off in time by a skew that may drift
-//                      linearly through the session
+//                      through the session (a quadratic in time)
 //   mains_pickup       lines at the aliases of 50/60 Hz and their harmonics found on the
 //                      calibration part, amplitude and phase free in short windows of each part
 //                      (fitted on the held-out part's own gap: heldout_values says how many),
@@ -28,22 +28,33 @@
 //                      chosen on the held-out level where the calibration leaves it open), or
 //                      settled (any curve of age over the calibration session, held after it)
 // Curves of one variable are piecewise linear between knots spread evenly over the calibration
-// part's range (held constant beyond it).
+// part's range (held constant beyond it). Each family is one file of this folder (family.h says
+// what a family does); the class table (classes/effect_classes.cpp) says which family stands for
+// which class and how to make it (family_makers.h).
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "recording_series.h"
-#include "twin_replay.h"
+#include "recorded_part.h"
 
 namespace flange::diagnose {
 
-// One family: the library effect (and so the class) it stands for, and its variable.
+namespace free_shapes {
+class Family;
+}  // namespace free_shapes
+
+// Makes a family's shape for a calibration part (family_makers.h).
+using MakeFreeShape = std::unique_ptr<free_shapes::Family> (*)(const RecordedPart& calibration);
+
+// One family: the library effect (and so the class) it stands for, its variable and how to make
+// it.
 struct FreeShapeFamily {
   std::string effect;
   std::string variable;  // "T", "(V - v_min) T", "V", "d", "lagged T", "t", "age, continuing", ...
+  MakeFreeShape make = nullptr;
   // Whether it is weighed where the recorded voltages lie on a converter grid (the class table
   // says why not, where not).
   bool weighed_on_a_converter_grid = true;
@@ -68,14 +79,21 @@ struct FreeShapeFit {
   int free_values = 0;
 };
 
-// Fits `family` to `cal_gap_v` (the calibration gap the modelled effects leave); `ho_gap_v`, the
-// held-out gap they leave, is read only by the families with heldout_values. With
-// `heldout_age_unknown` (the held-out clock restarts at 0 and no start times were given), an
-// ageing family's held-out part is placed at the age, before or after the calibration session,
-// that fits its gap best (docs/diagnose.md, "Sessions and time").
-FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const RecordingSeries& calibration,
-                            const TwinReplay& cal_replay, const RecordingSeries& heldout,
-                            const TwinReplay& ho_replay, const std::vector<double>& cal_gap_v,
-                            const std::vector<double>& ho_gap_v, bool heldout_age_unknown = false);
+// What a family is fitted to: the two parts, the gap the modelled effects leave on each, and
+// whether the held-out part's age is unknown (its clock restarts at 0 and no start times were
+// given).
+struct FreeShapeInputs {
+  RecordedPart calibration, heldout;
+  const std::vector<double>& cal_gap_v;
+  const std::vector<double>& ho_gap_v;
+  bool heldout_age_unknown = false;
+};
+
+// Fits `family` to `in.cal_gap_v` (the calibration gap the modelled effects leave);
+// `in.ho_gap_v`, the held-out gap they leave, is read only by the families with heldout_values.
+// With `in.heldout_age_unknown`, a family of the sensor's age places the held-out part at the
+// age, before or after the calibration session, that fits its gap best (docs/diagnose.md,
+// "Sessions and time").
+FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const FreeShapeInputs& in);
 
 }  // namespace flange::diagnose

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#include "lag_family.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "family_makers.h"
+#include "ridge_solve.h"
+
+namespace flange::diagnose::free_shapes {
+
+std::vector<std::string> LagFamily::names() const {
+  std::vector<std::string> out;
+  for (double tau : kLags) out.push_back(fmt::format("weight_lag_{:g}s", tau));
+  for (double lead : kLeads) out.push_back(fmt::format("weight_advance_{:g}s", lead));
+  return out;
+}
+
+Eigen::MatrixXd LagFamily::columns(const RecordedPart& part) const {
+  const std::vector<double>& t = part.series.t_s;
+  const std::vector<double>& temp = part.series.temp_c;
+  const std::vector<double>& dv_dt = part.replay.temperature_sensitivity_v_per_c();
+  const std::size_t n = t.size();
+  Eigen::MatrixXd a = matrix(n, kLags.size() + kLeads.size());
+  for (std::size_t k = 0; k < kLags.size(); ++k) {
+    // A first-order lag stepped by each sample's own interval (short against every tau).
+    double lagged = temp.empty() ? 0.0 : temp.front();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i > 0) lagged += (temp[i] - lagged) * (1.0 - std::exp(-(t[i] - t[i - 1]) / kLags[k]));
+      a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = dv_dt[i] * (lagged - temp[i]);
+    }
+  }
+  for (std::size_t k = 0; k < kLeads.size(); ++k) {
+    const auto col = static_cast<Eigen::Index>(kLags.size() + k);
+    for (std::size_t i = 0; i < n; ++i) {
+      a(static_cast<Eigen::Index>(i), col) =
+          dv_dt[i] * (interpolate_at(t, temp, t[i] + kLeads[k]) - temp[i]);
+    }
+  }
+  return a;
+}
+
+void LagFamily::summarise(const Eigen::VectorXd& beta, const RecordedPart&,
+                          std::map<std::string, double>& params) const {
+  params["tau_s"] = mean_delay_s(beta);
+}
+
+std::string LagFamily::describe(const Eigen::VectorXd& beta) const {
+  std::string text = fmt::format(
+      "the coil's temperature off the recorded one by a free mix of lags and advances (mean "
+      "delay {:.0f} s; weights",
+      mean_delay_s(beta));
+  const std::vector<std::string> n = names();
+  for (std::size_t j = 0; j < n.size(); ++j) {
+    text += fmt::format("{} {} {:.2f}", j == 0 ? "" : ",", n[j].substr(7),
+                        beta(static_cast<Eigen::Index>(j)));
+  }
+  return text + ")";
+}
+
+double LagFamily::mean_delay_s(const Eigen::VectorXd& beta) const {
+  double delay = 0.0;
+  for (std::size_t k = 0; k < kLags.size(); ++k) {
+    delay += beta(static_cast<Eigen::Index>(k)) * kLags[k];
+  }
+  for (std::size_t k = 0; k < kLeads.size(); ++k) {
+    delay -= beta(static_cast<Eigen::Index>(kLags.size() + k)) * kLeads[k];
+  }
+  return delay;
+}
+
+std::unique_ptr<Family> make_lag(const RecordedPart&) { return std::make_unique<LagFamily>(); }
+
+}  // namespace flange::diagnose::free_shapes

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// The coil at a temperature S T other than the recorded T, S any mix of first-order lags (the
+// sensor lags: a mean delay tau_s > 0) and of advances of the recorded temperature (the reading
+// lags: tau_s < 0): dV/dT (S T - T).
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "family.h"
+
+namespace flange::diagnose::free_shapes {
+
+class LagFamily : public LinearFamily {
+ public:
+  std::vector<std::string> names() const override;
+  Eigen::MatrixXd columns(const RecordedPart& part) const override;
+  // The mix's mean delay: each lag delays by its tau, each advance by minus its lead. A positive
+  // one is the sensor lagging (the library's thermal_lag with tau_s > 0), a negative one the
+  // reading lagging (tau_s < 0).
+  void summarise(const Eigen::VectorXd& beta, const RecordedPart& calibration,
+                 std::map<std::string, double>& params) const override;
+  std::string describe(const Eigen::VectorXd& beta) const override;
+
+  double mean_delay_s(const Eigen::VectorXd& beta) const;
+
+  // Time constants and advances a factor of four apart, 30 s to 16 min: the bench's heating and
+  // cooling take tens of minutes, so shorter ones look alike and longer ones exceed a session.
+  static constexpr std::array<double, 3> kLags = {60.0, 240.0, 960.0};
+  static constexpr std::array<double, 3> kLeads = {30.0, 120.0, 480.0};
+};
+
+}  // namespace flange::diagnose::free_shapes

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+#include "ridge_solve.h"
+
+#include <algorithm>
+
+namespace flange::diagnose::free_shapes {
+
+Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& y) {
+  Eigen::MatrixXd normal = a.transpose() * a;
+  const double largest = normal.diagonal().maxCoeff();
+  for (Eigen::Index j = 0; j < normal.rows(); ++j) {
+    normal(j, j) += kRidge * normal(j, j) + 1e-12 * std::max(largest, 1e-300);
+  }
+  return normal.ldlt().solve(a.transpose() * y);
+}
+
+Eigen::MatrixXd matrix(std::size_t rows, std::size_t cols) {
+  return Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+}
+
+std::vector<double> as_vector(const Eigen::VectorXd& v) {
+  return std::vector<double>(v.data(), v.data() + v.size());
+}
+
+}  // namespace flange::diagnose::free_shapes
