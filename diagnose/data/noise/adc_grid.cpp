@@ -9,6 +9,8 @@
 #include <numbers>
 #include <set>
 
+#include "effect_classes.h"
+
 namespace flange::diagnose {
 namespace {
 
@@ -151,7 +153,7 @@ double AdcGrid::quantise(double volts) const {
 
 sim::EffectSettings AdcGrid::as_effect() const {
   return sim::make_effect_settings(
-      "adc_quantization", {{"bits", static_cast<double>(bits)}, {"v_min", v_min}, {"v_max", v_max}},
+      converter_class(), {{"bits", static_cast<double>(bits)}, {"v_min", v_min}, {"v_max", v_max}},
       "diagnose grid");
 }
 
