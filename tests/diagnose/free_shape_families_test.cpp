@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Effects of the library's classes in shapes that are not the library's formulas (issue 11 item
-// 1), two shapes per class, each named by its class through its free family
+// Effects of the library's classes in shapes that are not the library's formulas, two shapes per
+// class, each named by its class through its free family
 // (diagnose/data/candidates/free_shapes/free_shape_fit.h); and recordings with no effect at three
 // noise levels, which must give "none". The recordings are made here, not by the twin: the nominal
 // eq. 3.14 model inverted for a bench sweep, then the effect written by hand.
