@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Issue 11 item 7: a 45-minute pair must diagnose in under 10 s on 2 cores. Times
+# A 45-minute pair must diagnose in under 10 s on 2 cores. Times
 # `flange diagnose --real A --holdout B` on four pairs of bench sessions (2700 s, a thermal lag
 # of 300 s), at 6 Hz and at 100 Hz, each as made (explained: the library pass ends it) and with
 # the voltage x 1.04 from half-way in both sessions (a gain step outside the library: the

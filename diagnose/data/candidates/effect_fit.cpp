@@ -195,31 +195,6 @@ void remove_ageing_line(std::vector<double>& gap, const std::vector<double>& t_s
   }
 }
 
-// ageing_drift is linear in time, gap = r (a0 + t / day): least squares of the gap on [1, t]
-// gives r and r a0 directly (a search over r and a0 crawls along the curved valley r a0 = c).
-// Over a record of hours r itself is poorly determined; their product, the offset, is not.
-EffectFit ageing_fit(const std::string& name, const TwinReplay& replay,
-                     const std::vector<double>& real_v,
-                     const std::vector<sim::EffectSettings>& modelled) {
-  const std::vector<double> sim_v = replay.voltage(modelled);
-  std::vector<double> gap(sim_v.size());
-  for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v[i] - sim_v[i];
-  const AgeingLine line = ageing_line(gap, replay.times());
-  const double rate = line.rate_v_per_day;
-  const double start_days = rate != 0.0 ? std::clamp(line.offset_v / rate, 0.0, 3650.0) : 0.0;
-  EffectFit fit;
-  fit.settings = sim::make_effect_settings(
-      name, {{"rate_v_per_day", rate}, {"start_age_days", start_days}}, "diagnose fit");
-  std::vector<sim::EffectSettings> with = modelled;
-  with.push_back(fit.settings);
-  const std::vector<double> fitted = replay.voltage(with);
-  double sum = 0.0;
-  for (std::size_t i = 0; i < fitted.size(); ++i) sum += std::pow(real_v[i] - fitted[i], 2);
-  fit.rms_v = std::sqrt(sum / static_cast<double>(fitted.size()));
-  fit.evaluations = 2;
-  return fit;
-}
-
 // Mains: the frequency aliases (any mains_hz gives a line at its alias), so it is chosen between
 // the two mains standards rather than fitted continuously. A standard whose fundamental aliases
 // to DC (60 Hz at 6 Hz) is an offset, not a tone, and is left to the offset effects.
@@ -447,11 +422,31 @@ EffectFit fit_mains(const std::string& name, const TwinReplay& replay,
   return best_over_fixed_choices(name, choices, true, replay, real_v, modelled);
 }
 
+// ageing_drift is linear in time, gap = r (a0 + t / day): least squares of the gap on [1, t]
+// gives r and r a0 directly (a search over r and a0 crawls along the curved valley r a0 = c).
+// Over a record of hours r itself is poorly determined; their product, the offset, is not.
 EffectFit fit_ageing(const std::string& name, const TwinReplay& replay,
                      const std::vector<double>& real_v,
                      const std::vector<sim::EffectSettings>& modelled) {
-  return ageing_fit(name, replay, real_v, modelled);
+  const std::vector<double> sim_v = replay.voltage(modelled);
+  std::vector<double> gap(sim_v.size());
+  for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v[i] - sim_v[i];
+  const AgeingLine line = ageing_line(gap, replay.times());
+  const double rate = line.rate_v_per_day;
+  const double start_days = rate != 0.0 ? std::clamp(line.offset_v / rate, 0.0, 3650.0) : 0.0;
+  EffectFit fit;
+  fit.settings = sim::make_effect_settings(
+      name, {{"rate_v_per_day", rate}, {"start_age_days", start_days}}, "diagnose fit");
+  std::vector<sim::EffectSettings> with = modelled;
+  with.push_back(fit.settings);
+  const std::vector<double> fitted = replay.voltage(with);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < fitted.size(); ++i) sum += std::pow(real_v[i] - fitted[i], 2);
+  fit.rms_v = std::sqrt(sum / static_cast<double>(fitted.size()));
+  fit.evaluations = 2;
+  return fit;
 }
+
 
 EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
                      const std::vector<double>& real_v,

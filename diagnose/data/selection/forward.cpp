@@ -96,8 +96,8 @@ std::vector<Candidate> round_candidates(const Parts& parts, const Selection& sel
   }
   std::vector<Candidate> candidates = library_candidates(
       parts, {names, modelled, selection.first_selected, cal_v, ho_target(parts, selection)});
-  const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
   if (!selection.free_shapes) return candidates;
+  const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
   std::vector<FreeShapeFamily> families;
   for (const FreeShapeFamily& family : free_shape_families()) {
     if (class_taken(family.effect, selection)) continue;
