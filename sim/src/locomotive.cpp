@@ -10,13 +10,36 @@
 
 namespace flange::sim {
 
+namespace {
+
+std::vector<FlangeWear> spread_flanges(const LocoRun& run, int wheels) {
+  if (wheels < 1 || wheels > kMaxWheels) {
+    throw std::out_of_range(
+        fmt::format("wheels = {} is outside its valid range 1 to {}", wheels, kMaxWheels));
+  }
+  const FlangeWear nominal{run.initial_clearance_mm, run.wear_over_run_mm};
+  std::vector<FlangeWear> flanges;
+  for (int channel = 0; channel < wheels; ++channel) {
+    flanges.push_back(flange_wear(nominal, run.spread, channel));
+  }
+  return flanges;
+}
+
+}  // namespace
+
 Locomotive::Locomotive(const LocoRun& run, int wheels, double fs_hz, double duration_s)
+    : Locomotive(run, spread_flanges(run, wheels), fs_hz, duration_s) {}
+
+Locomotive::Locomotive(const LocoRun& run, const std::vector<FlangeWear>& flanges, double fs_hz,
+                       double duration_s)
     : run_(run),
       fs_hz_(fs_hz),
       duration_s_(duration_s),
       sample_count_(sample_count_for(fs_hz, duration_s)),
       lap_m_(lap_length_m(run.track)),
-      heating_(run.brakes) {
+      heating_(run.brakes),
+      flanges_(flanges) {
+  const int wheels = static_cast<int>(flanges.size());
   if (wheels < 1 || wheels > kMaxWheels) {
     throw std::out_of_range(
         fmt::format("wheels = {} is outside its valid range 1 to {}", wheels, kMaxWheels));
@@ -24,10 +47,6 @@ Locomotive::Locomotive(const LocoRun& run, int wheels, double fs_hz, double dura
   const int axles = (wheels + 1) / 2;
   for (int axle = 1; axle <= axles; ++axle) {
     axles_.push_back({axle_offset_m(run.axles, axle), WheelsetLateral(run.wheelset)});
-  }
-  const FlangeWear nominal{run.initial_clearance_mm, run.wear_over_run_mm};
-  for (int channel = 0; channel < wheels; ++channel) {
-    flanges_.push_back(flange_wear(nominal, run.spread, channel));
   }
   truth_.resize(static_cast<std::size_t>(wheels));
 }

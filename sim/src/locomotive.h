@@ -41,6 +41,10 @@ class Locomotive {
  public:
   // wheels in 1 .. kMaxWheels (channels 0 .. wheels - 1), fs_hz > 0, duration_s >= 0.
   Locomotive(const LocoRun& run, int wheels, double fs_hz, double duration_s);
+  // Wheels 0 .. flanges.size() - 1 (1 to kMaxWheels) with these flanges instead of the spread
+  // around run's nominal one: a fleet's wheels, each worn as its own history left it.
+  Locomotive(const LocoRun& run, const std::vector<FlangeWear>& flanges, double fs_hz,
+             double duration_s);
 
   int wheels() const { return static_cast<int>(flanges_.size()); }
   std::int64_t sample_count() const { return sample_count_; }
