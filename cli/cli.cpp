@@ -19,6 +19,7 @@
 #include "simulate_command.h"
 #include "stream_command.h"
 #include "synth_command.h"
+#include "wear_command.h"
 
 namespace flange::cli {
 
@@ -51,6 +52,7 @@ struct Subcommands {
   DiagnoseCommandOptions diagnose_options;
   HwDiagnoseOptions hw_diagnose_options;    // --hw: the float design against the Verilated RTL
   SelftestCommandOptions selftest_options;  // --selftest: the blind check of the data layer
+  WearOptions wear_options;
   CLI::App* design = nullptr;
   CLI::App* calibrate = nullptr;
   CLI::App* run = nullptr;
@@ -60,6 +62,7 @@ struct Subcommands {
   CLI::App* synth = nullptr;
   CLI::App* stream = nullptr;
   CLI::App* diagnose = nullptr;
+  CLI::App* wear = nullptr;
 
   void add_to(CLI::App& app) {
     design = add_design_command(app, design_options);
@@ -71,6 +74,7 @@ struct Subcommands {
     synth = add_synth_command(app, synth_options);
     stream = add_stream_command(app, stream_options);
     diagnose = add_diagnose_command(app, diagnose_options);
+    wear = add_wear_command(app, wear_options);
     add_hw_diagnose_options(*diagnose, hw_diagnose_options);
     add_selftest_options(*diagnose, selftest_options);
     // The three layers of diagnose take different inputs: say so rather than ignore one.
@@ -93,6 +97,7 @@ struct Subcommands {
     if (synth->parsed()) return run_synth_command(synth_options, out, err);
     if (stream->parsed()) return run_stream_command(stream_options, out, err);
     if (diagnose->parsed()) return run_diagnose_layer(out, err);
+    if (wear->parsed()) return run_wear_command(wear_options, args, out, err);
     return kExitBadArgument;
   }
 

@@ -16,6 +16,8 @@
 #include "cli.h"
 #include "effect_argument.h"
 #include "effect_catalogue.h"
+#include "fleet_plan.h"
+#include "fleet_simulation.h"
 #include "loco_scenario.h"
 #include "locomotive_manifest.h"
 #include "sim_error.h"
@@ -137,11 +139,14 @@ void report_aliasing(const TwinConfig& config, const SimulateOptions& options, d
 
 CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
   CLI::App* cmd = app.add_subcommand(
-      "simulate", "Run a bench or locomotive scenario through the sensor twin into a recording");
+      "simulate",
+      "Run a bench or locomotive scenario through the sensor twin into a recording, or a "
+      "depot's fleet over days through the chain into a store");
   cmd->add_option("--scenario", options.scenario,
-                  "bench: the thesis's heated micrometer protocol; loco: a locomotive run")
+                  "bench: the thesis's heated micrometer protocol; loco: a locomotive run; fleet: "
+                  "locomotives over days into --store (docs/fleet.md)")
       ->required()
-      ->check(CLI::IsMember({"bench", "loco"}));
+      ->check(CLI::IsMember({"bench", "loco", "fleet"}));
   cmd->add_option("--effect", options.effects,
                   "switch an effect on: NAME or NAME:key=value[,key=value...] (repeatable); "
                   "names and keys in docs/sensor_twin.md");
@@ -149,17 +154,25 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
       ->check(positive_up_to(kMaxSampleRateHz, "Hz"));
   cmd->add_option("--duration", options.duration_s, "record length in s (bench 6600, loco 300)")
       ->check(positive_up_to(kMaxDurationS, "s"));
-  cmd->add_option("--seed", options.seed, "seed of the twin's random numbers")
-      ->required()
+  cmd->add_option("--seed", options.seed,
+                  "seed of the twin's random numbers (required for bench and loco; fleet: 0 "
+                  "when left out)")
       ->check(seed_range());
   cmd->add_option("--out", options.out,
                   "recording to write (CSV); with --wheels above 1 a folder for channel_XX.csv "
-                  "and locomotive.json")
-      ->required();
+                  "and locomotive.json; fleet: the folder for the truth file and the bench "
+                  "calibration (default: the SQLite store's folder)");
   cmd->add_option("--wheels", options.wheels,
                   "loco: wheels of the six-axle locomotive to simulate, each with its own "
                   "sensor (1 to 12; default 1, the leading left wheel)")
       ->check(whole_number_in(1, sim::kMaxWheels));
+  cmd->add_option("--locomotives", options.locomotives,
+                  "fleet: locomotives in the depot (1 to 100)")
+      ->check(whole_number_in(1, sim::kMaxFleetLocomotives));
+  cmd->add_option("--days", options.days, "fleet: days to simulate (1 to 3650)")
+      ->check(whole_number_in(1, sim::kMaxFleetDays));
+  cmd->add_option("--store", options.store,
+                  "fleet: the store every run goes into: sqlite:PATH or postgresql://...");
   cmd->add_option("--twin", options.twin, "twin file (JSON) to start from");
   cmd->add_option("--save-twin", options.save_twin, "write the twin used to this JSON file");
   cmd->add_option("--calibration", options.calibration,
@@ -177,11 +190,22 @@ struct SimulationPlan {
   double fs_hz = 0.0;
   double duration_s = 0.0;
   TwinConfig config;
+  std::uint64_t seed = 0;
+  std::filesystem::path out;
 };
 
 SimulationPlan plan_simulation(const SimulateOptions& options) {
   SimulationPlan plan;
   plan.bench = options.scenario == "bench";
+  if (!options.seed) throw BadArgument("--seed is required: a whole number 0 to 2^64-1");
+  if (!options.out) throw BadArgument("--out is required: the recording (or folder) to write");
+  plan.seed = *options.seed;
+  plan.out = *options.out;
+  for (const auto& [given, name] : {std::pair{options.locomotives.has_value(), "--locomotives"},
+                                    {options.days.has_value(), "--days"},
+                                    {options.store.has_value(), "--store"}}) {
+    if (given) throw BadArgument(std::string(name) + ": only the fleet scenario takes it");
+  }
   if (plan.bench && options.wheels) {
     throw BadArgument("--wheels: only the loco scenario has wheels; leave it out for bench");
   }
@@ -206,7 +230,7 @@ void print_header(const SimulateOptions& options, const SimulationPlan& plan, st
     effects += (effects.empty() ? "" : ", ") + effect.name;
   }
   out << fmt::format("simulate: {} scenario, {} samples at {:.6g} Hz over {:.6g} s, seed {}\n",
-                     options.scenario, samples, plan.fs_hz, plan.duration_s, options.seed);
+                     options.scenario, samples, plan.fs_hz, plan.duration_s, plan.seed);
   out << fmt::format("  twin: noise {:.6g} V, effects: {}\n", plan.config.noise.voltage_std_v,
                      effects.empty() ? "none" : effects);
 }
@@ -220,16 +244,16 @@ int simulate_recording(const SimulateOptions& options, const SimulationPlan& pla
   } else {
     scenario = std::make_unique<LocoScenario>(plan.loco, plan.fs_hz, plan.duration_s);
   }
-  SensorTwin twin(plan.config, options.seed);
-  std::ofstream csv(options.out, std::ios::binary);
+  SensorTwin twin(plan.config, plan.seed);
+  std::ofstream csv(plan.out, std::ios::binary);
   if (!csv) {
-    err << "flange simulate: " << options.out.string() << ": cannot write the recording\n";
+    err << "flange simulate: " << plan.out.string() << ": cannot write the recording\n";
     return kExitFailure;
   }
   const SimulationSummary summary = run_simulation(*scenario, twin, csv);
   csv.close();
   if (!csv) {
-    err << "flange simulate: " << options.out.string() << ": writing the recording failed\n";
+    err << "flange simulate: " << plan.out.string() << ": writing the recording failed\n";
     return kExitFailure;
   }
   print_header(options, plan, summary.samples, out);
@@ -240,7 +264,7 @@ int simulate_recording(const SimulateOptions& options, const SimulationPlan& pla
                      summary.clips.low, plan.config.nominal.v_min_v(), summary.clips.high,
                      plan.config.nominal.v_max_v());
   report_aliasing(plan.config, options, plan.fs_hz, plan.loco, out);
-  out << "  wrote " << options.out.string();
+  out << "  wrote " << plan.out.string();
   if (options.save_twin) out << " and " << options.save_twin->string();
   out << "\n";
   return kExitOk;
@@ -291,7 +315,7 @@ void print_wheels(const Locomotive& locomotive, const std::vector<SimulationSumm
 int simulate_locomotive(const SimulateOptions& options, const SimulationPlan& plan,
                         const std::vector<std::string>& command_line, std::ostream& out,
                         std::ostream& err) {
-  const std::filesystem::path& dir = options.out;
+  const std::filesystem::path& dir = plan.out;
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   if (error || !std::filesystem::is_directory(dir)) {
@@ -303,7 +327,7 @@ int simulate_locomotive(const SimulateOptions& options, const SimulationPlan& pl
   std::vector<std::ofstream> files;
   std::vector<std::ostream*> streams;
   for (int c = 0; c < locomotive.wheels(); ++c) {
-    twins.emplace_back(plan.config, sim::wheel_seed(options.seed, c));
+    twins.emplace_back(plan.config, sim::wheel_seed(plan.seed, c));
     files.emplace_back(dir / host::channel_file_name(c), std::ios::binary);
     if (!files.back()) {
       err << "flange simulate: " << (dir / host::channel_file_name(c)).string()
@@ -326,7 +350,7 @@ int simulate_locomotive(const SimulateOptions& options, const SimulationPlan& pl
   }
   write_manifest(dir, locomotive.wheels(), command_line);
   print_header(options, plan, locomotive.sample_count(), out);
-  print_wheels(locomotive, summaries, options.seed, out);
+  print_wheels(locomotive, summaries, plan.seed, out);
   report_aliasing(plan.config, options, plan.fs_hz, plan.loco, out);
   out << "  wrote " << (dir / "locomotive.json").string() << " and " << locomotive.wheels()
       << " recordings beside it";
@@ -341,6 +365,7 @@ int run_simulate_command(const SimulateOptions& options,
                          const std::vector<std::string>& command_line, std::ostream& out,
                          std::ostream& err) {
   try {
+    if (options.scenario == "fleet") return run_fleet_simulation(options, command_line, out, err);
     const SimulationPlan plan = plan_simulation(options);
     if (options.save_twin) save_twin(plan.config, *options.save_twin);
     if (options.wheels.value_or(1) > 1) {

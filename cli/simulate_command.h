@@ -13,18 +13,24 @@
 namespace flange::cli {
 
 struct SimulateOptions {
-  std::string scenario;              // bench or loco
+  std::string scenario;              // bench, loco or fleet
   std::vector<std::string> effects;  // NAME or NAME:key=value,...; one effect per argument
   std::optional<double> fs_hz;       // default: 6 Hz (bench), 100 Hz (loco)
   std::optional<double> duration_s;  // default: the scenario's own (6600 s bench, 300 s loco)
-  std::uint64_t seed = 0;
-  std::filesystem::path out;
+  std::optional<std::uint64_t> seed;  // required for bench and loco; fleet: 0 by default
+  // bench: the recording; loco with --wheels above 1: a folder; fleet: the folder for the truth
+  // file and the depot's bench calibration (default: the SQLite store's folder).
+  std::optional<std::filesystem::path> out;
   std::optional<std::filesystem::path> twin;         // start from this twin file
   std::optional<std::filesystem::path> save_twin;    // write the twin used, effects included
   std::optional<std::filesystem::path> calibration;  // model.json as the nominal model
   // loco only: wheels 1 to 12 (channels 0..N-1: axle c/2 + 1, left then right). Above 1, out
   // is a folder that gets channel_XX.csv and locomotive.json (docs/locomotive.md).
   std::optional<int> wheels;
+  // fleet only (docs/fleet.md): locomotives 1 to 100, days 1 to 3650, the store's URL.
+  std::optional<int> locomotives;
+  std::optional<int> days;
+  std::optional<std::string> store;
 };
 
 // Registers the subcommand on `app`; the returned pointer tells whether it was chosen.

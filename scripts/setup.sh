@@ -9,7 +9,7 @@ PACKAGES=(
   verilator libsystemc-dev yosys
   libeigen3-dev libgtest-dev libgmock-dev googletest libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libfast-float-dev
-  gnuplot-nox
+  gnuplot-nox libboost-dev
   clang libclang-rt-14-dev python3
 )
 

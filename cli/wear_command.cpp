@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+#include "wear_command.h"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <ostream>
+
+#include "cli.h"
+#include "fleet_truth_check.h"
+#include "fleet_truth_file.h"
+#include "fleet_wear.h"
+#include "input_error.h"
+#include "sim_error.h"
+#include "store.h"
+#include "version.h"
+#include "wear_outputs.h"
+#include "wear_report.h"
+
+namespace flange::cli {
+namespace {
+
+using host::WheelHistory;
+
+std::string key_text(const host::WheelKey& key) {
+  return fmt::format("{}|{}|{}", key.locomotive, key.axle, key.side);
+}
+
+// Every wheel's runs with a clearance estimate, and its recorded maintenance, from the store.
+std::vector<WheelHistory> read_histories(host::Store& store) {
+  std::map<std::string, std::vector<host::MaintenanceMark>> maintenance;
+  for (const host::StoredMaintenance& stored : store.maintenance_events("")) {
+    const host::MaintenanceRecord& event = stored.event;
+    maintenance[key_text(event.wheel)].push_back(
+        {event.at, host::day_of_iso_time(event.at), event.odometer_km, event.kind});
+  }
+  std::vector<WheelHistory> histories;
+  for (const host::StoredWheel& stored : store.wheels()) {
+    const host::WheelKey& key = stored.wheel.wheel;
+    WheelHistory history;
+    history.wheel = {key.locomotive, key.axle, key.side, stored.wheel.channel};
+    for (const host::WearPoint& point : store.wear_history(key)) {
+      if (!point.clearance_mm) continue;  // a run without an estimate for this wheel
+      history.runs.push_back({point.run_id, point.started_at,
+                              host::day_of_iso_time(point.started_at), point.odometer_km,
+                              *point.clearance_mm});
+    }
+    history.maintenance = maintenance[key_text(key)];
+    if (!history.runs.empty()) histories.push_back(std::move(history));
+  }
+  return histories;
+}
+
+// --truth: the comparison printed and written beside the outputs; false when it fails.
+bool compare_with_truth(const WearOptions& options, const host::FleetWear& wear,
+                        std::ostream& out) {
+  const TruthCheck check = check_against_truth(wear, sim::read_fleet_truth(*options.truth));
+  const std::string text = truth_check_text(check);
+  out << "\nagainst the truth in " << options.truth->string() << ":\n" << text;
+  write_truth_check_json(options.out / "truth_check.json", check);
+  std::ofstream(options.out / "truth_check.md", std::ios::binary) << text;
+  return check.passed();
+}
+
+}  // namespace
+
+CLI::App* add_wear_command(CLI::App& app, WearOptions& options) {
+  CLI::App* cmd = app.add_subcommand(
+      "wear",
+      "Every wheel's flange wear from the runs in a store: rate per 1000 km, reprofilings, "
+      "sensor faults and when each wheel reaches the warning and critical limits");
+  cmd->add_option("--store", options.store, "the store: sqlite:PATH or postgresql://...")
+      ->required();
+  cmd->add_option("--out", options.out, "folder for wear.json, wear.csv and index.html")
+      ->required();
+  cmd->add_option("--truth", options.truth,
+                  "a fleet scenario's truth file (fleet_truth.json) to compare the estimate with")
+      ->check(CLI::ExistingFile);
+  host::ThresholdConfig& t = options.thresholds;
+  cmd->add_option("--warning-mm", t.warning_clearance_mm, "warning clearance (mm)")
+      ->default_val(t.warning_clearance_mm);
+  cmd->add_option("--critical-flange-mm", t.critical_flange_mm, "critical flange thickness (mm)")
+      ->default_val(t.critical_flange_mm);
+  cmd->add_option("--max-step-mm", t.max_step_mm,
+                  "h of eq. 3.38: a larger fall of the clearance between runs is a reprofiling")
+      ->default_val(t.max_step_mm);
+  return cmd;
+}
+
+int run_wear_command(const WearOptions& options, const std::vector<std::string>& command_line,
+                     std::ostream& out, std::ostream& err) {
+  try {
+    host::validate(options.thresholds);
+    const std::unique_ptr<host::Store> store = host::open_store(options.store);
+    const std::vector<WheelHistory> histories = read_histories(*store);
+    if (histories.empty()) {
+      err << "flange wear: " << store->name() << ": no run with a wheel's wear estimate\n";
+      return kExitFailure;
+    }
+    const host::FleetWear wear = host::estimate_fleet_wear(histories, options.thresholds);
+    std::filesystem::create_directories(options.out);
+    const std::string generated_by = runtime::generated_by(command_line);
+    host::write_wear_json(options.out / "wear.json", wear, generated_by);
+    host::write_wear_csv(options.out / "wear.csv", wear);
+    host::write_wear_report(options.out, wear, generated_by);
+    out << fmt::format("wear: {} wheels from {}, by days to the warning clearance ({} mm)\n",
+                       wear.wheels.size(), store->name(), wear.warning_clearance_mm);
+    out << host::fleet_wear_text(wear);
+    const bool truth_ok = !options.truth || compare_with_truth(options, wear, out);
+    out << "  wrote " << (options.out / "index.html").string() << ", wear.json and wear.csv\n";
+    return truth_ok ? kExitOk : kExitFailure;
+  } catch (const host::StoreUrlError& error) {
+    err << "flange wear: --store: " << error.what() << "\n";
+    return kExitBadArgument;
+  } catch (const host::InputError& error) {
+    err << "flange wear: " << error.what() << "\n";
+    return kExitBadArgument;
+  } catch (const sim::BadArgument& error) {
+    err << "flange wear: --truth: " << error.what() << "\n";
+    return kExitBadArgument;
+  } catch (const std::exception& error) {
+    err << "flange wear: " << error.what() << "\n";
+    return kExitFailure;
+  }
+}
+
+}  // namespace flange::cli

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: MIT
+#include "fleet_wear.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "reprofiling_search.h"
+
+namespace flange::host {
+namespace {
+
+// The runs both wheels of an axle have, in time order, with the two clearances side by side.
+struct AxleRuns {
+  std::vector<WearObservation> left, right;
+};
+
+AxleRuns align_runs(const WheelHistory& left, const WheelHistory& right) {
+  std::map<std::int64_t, const WearObservation*> right_by_run;
+  for (const WearObservation& run : right.runs) right_by_run[run.run_id] = &run;
+  AxleRuns axle;
+  for (const WearObservation& run : left.runs) {
+    const auto partner = right_by_run.find(run.run_id);
+    if (partner == right_by_run.end()) continue;
+    axle.left.push_back(run);
+    axle.right.push_back(*partner->second);
+  }
+  return axle;
+}
+
+std::vector<double> clearances(const std::vector<WearObservation>& runs) {
+  std::vector<double> values;
+  for (const WearObservation& run : runs) values.push_back(run.clearance_mm);
+  return values;
+}
+
+// The first run after each recorded reprofiling (none for a record before the first run).
+std::map<std::size_t, std::string> recorded_boundaries(const std::vector<WearObservation>& runs,
+                                                       const std::vector<MaintenanceMark>& marks) {
+  std::map<std::size_t, std::string> boundaries;
+  for (const MaintenanceMark& mark : marks) {
+    if (mark.kind != "reprofile") continue;
+    for (std::size_t k = 1; k < runs.size(); ++k) {
+      if (runs[k - 1].day <= mark.day && runs[k].day > mark.day) boundaries[k] = mark.at;
+    }
+  }
+  return boundaries;
+}
+
+// Segments and reprofiling events from what the data show and what the depot recorded.
+void segment_runs(WheelWear& wheel, const std::vector<std::size_t>& found,
+                  const std::map<std::size_t, std::string>& recorded) {
+  std::set<std::size_t> boundaries(found.begin(), found.end());
+  for (const auto& [k, at] : recorded) boundaries.insert(k);
+  for (const std::size_t k : boundaries) {
+    ReprofilingEvent event;
+    event.last_run_before = wheel.runs[k - 1].at;
+    event.first_run_after = wheel.runs[k].at;
+    event.odometer_km = wheel.runs[k].odometer_km;
+    event.found = std::find(found.begin(), found.end(), k) != found.end();
+    const auto record = recorded.find(k);
+    event.recorded = record != recorded.end();
+    if (event.recorded) event.recorded_at = record->second;
+    wheel.reprofilings.push_back(event);
+  }
+  wheel.segment.clear();
+  int segment = 0;
+  for (std::size_t k = 0; k < wheel.runs.size(); ++k) {
+    if (boundaries.count(k) != 0) ++segment;
+    wheel.segment.push_back(segment);
+  }
+}
+
+WearSeries series_of(const WheelWear& wheel, const std::vector<double>& y) {
+  WearSeries series;
+  for (const WearObservation& run : wheel.runs) {
+    series.km.push_back(run.odometer_km);
+    series.day.push_back(run.day);
+  }
+  series.y = y;
+  series.segment = wheel.segment;
+  return series;
+}
+
+// The wheel's line, rate interval and forecasts; "too few runs" when the line cannot be fitted.
+void fit_wheel(WheelWear& wheel, const FleetWear& fleet, std::optional<double> drift_onset) {
+  const std::vector<WearObservation>& runs = wheel.runs;
+  try {
+    wheel.fit = fit_wear_line(series_of(wheel, clearances(runs)), drift_onset);
+  } catch (const std::invalid_argument&) {
+    wheel.status = "too few runs";
+    return;
+  }
+  const WearLineFit& fit = *wheel.fit;
+  const double half_width = t95(fit.dof) * fit.rate_se;
+  wheel.rate_mm_per_1000km = fit.rate_mm_per_km * 1000.0;
+  wheel.rate_low = (fit.rate_mm_per_km - half_width) * 1000.0;
+  wheel.rate_high = (fit.rate_mm_per_km + half_width) * 1000.0;
+  wheel.clearance_now_mm = wear_line_at(fit, wheel.segment.back(), runs.back().odometer_km);
+  wheel.wear_now_mm = wheel.clearance_now_mm - fleet.thresholds.sensor_gap_mm;
+  const double elapsed_days = runs.back().day - runs.front().day;
+  wheel.km_per_day = elapsed_days > 0.0
+                         ? (runs.back().odometer_km - runs.front().odometer_km) / elapsed_days
+                         : 0.0;
+  ForecastInput input;
+  input.clearance_now_mm = wheel.clearance_now_mm;
+  input.rate_mm_per_km = fit.rate_mm_per_km;
+  input.rate_low_mm_per_km = wheel.rate_low / 1000.0;
+  input.rate_high_mm_per_km = wheel.rate_high / 1000.0;
+  input.km_per_day = wheel.km_per_day;
+  input.last_day = runs.back().day;
+  wheel.warning = forecast_limit(input, fleet.warning_clearance_mm);
+  wheel.critical = forecast_limit(input, fleet.critical_clearance_mm);
+}
+
+WheelWear wheel_with_runs(const WheelHistory& history, std::vector<WearObservation> runs) {
+  WheelWear wheel;
+  wheel.wheel = history.wheel;
+  wheel.runs = std::move(runs);
+  return wheel;
+}
+
+// Both wheels of an axle: shared segments, the drift check, then each wheel's own line.
+void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistory& right) {
+  AxleRuns axle = align_runs(left, right);
+  WheelWear l = wheel_with_runs(left, std::move(axle.left));
+  WheelWear r = wheel_with_runs(right, std::move(axle.right));
+  const std::vector<double> yl = clearances(l.runs), yr = clearances(r.runs);
+  const std::vector<std::size_t> found = find_reprofilings(yl, yr, fleet.thresholds.max_step_mm);
+  std::vector<MaintenanceMark> marks = left.maintenance;
+  marks.insert(marks.end(), right.maintenance.begin(), right.maintenance.end());
+  const auto recorded = recorded_boundaries(l.runs, marks);
+  segment_runs(l, found, recorded);
+  segment_runs(r, found, recorded);
+  std::vector<double> difference;
+  for (std::size_t k = 0; k < yl.size(); ++k) difference.push_back(yr[k] - yl[k]);
+  std::optional<DriftFinding> drift;
+  try {
+    drift = find_sensor_drift(series_of(l, difference), series_of(l, yl), series_of(r, yr));
+  } catch (const std::invalid_argument&) {
+    drift.reset();  // too few runs to tell a drift from wear
+  }
+  WheelWear& faulty = drift && drift->left ? l : r;
+  if (drift) {
+    faulty.sensor_fault = drift;
+    faulty.status = "sensor fault";
+  }
+  fit_wheel(l, fleet, l.sensor_fault ? std::optional(drift->onset_day) : std::nullopt);
+  fit_wheel(r, fleet, r.sensor_fault ? std::optional(drift->onset_day) : std::nullopt);
+  fleet.wheels.push_back(std::move(l));
+  fleet.wheels.push_back(std::move(r));
+}
+
+// A wheel without a partner: its own jumps back, no drift check (nothing to compare with).
+void estimate_lone_wheel(FleetWear& fleet, const WheelHistory& history) {
+  WheelWear wheel = wheel_with_runs(history, history.runs);
+  const std::vector<double> y = clearances(wheel.runs);
+  segment_runs(wheel, find_reprofilings(y, y, fleet.thresholds.max_step_mm),
+               recorded_boundaries(wheel.runs, history.maintenance));
+  fit_wheel(wheel, fleet, std::nullopt);
+  fleet.wheels.push_back(std::move(wheel));
+}
+
+}  // namespace
+
+double days_to_warning(const WheelWear& wheel) {
+  if (wheel.status == "too few runs") return std::numeric_limits<double>::infinity();
+  if (wheel.warning.reached) return 0.0;
+  return wheel.warning.days.value_or(std::numeric_limits<double>::infinity());
+}
+
+FleetWear estimate_fleet_wear(const std::vector<WheelHistory>& histories,
+                              const ThresholdConfig& thresholds) {
+  FleetWear fleet;
+  fleet.thresholds = thresholds;
+  fleet.warning_clearance_mm = thresholds.warning_clearance_mm;
+  fleet.critical_clearance_mm =
+      thresholds.flange_nominal_mm + thresholds.sensor_gap_mm - thresholds.critical_flange_mm;
+  std::map<std::pair<std::string, int>, std::pair<const WheelHistory*, const WheelHistory*>> axles;
+  for (const WheelHistory& history : histories) {
+    auto& pair = axles[{history.wheel.locomotive, history.wheel.axle}];
+    (history.wheel.side == "left" ? pair.first : pair.second) = &history;
+  }
+  for (const auto& [key, pair] : axles) {
+    if (pair.first != nullptr && pair.second != nullptr) {
+      estimate_axle(fleet, *pair.first, *pair.second);
+    } else {
+      estimate_lone_wheel(fleet, pair.first != nullptr ? *pair.first : *pair.second);
+    }
+  }
+  std::stable_sort(fleet.wheels.begin(), fleet.wheels.end(),
+                   [](const WheelWear& a, const WheelWear& b) {
+                     return days_to_warning(a) < days_to_warning(b);
+                   });
+  return fleet;
+}
+
+}  // namespace flange::host

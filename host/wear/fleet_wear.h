@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+// `flange wear`'s estimator: every wheel's history in, its wear rate, reprofilings, sensor fault
+// and forecast out. Per axle: the two wheels' runs side by side; reprofilings found where the
+// axle's clearance jumps back (reprofiling_search.h) or recorded by the depot start a new
+// segment; a drift of one sensor away from its partner (sensor_drift.h) is a sensor fault and is
+// fitted out of that wheel's series rather than read as wear; each wheel's line
+// (wear_line_fit.h) gives its rate per 1000 km with a 95 % interval and the forecast of when its
+// current flange reaches the warning and the critical clearance (limit_forecast.h).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "limit_forecast.h"
+#include "sensor_drift.h"
+#include "thresholds.h"
+#include "wear_line_fit.h"
+#include "wheel_history.h"
+
+namespace flange::host {
+
+struct ReprofilingEvent {
+  std::string last_run_before;  // the runs either side of it
+  std::string first_run_after;
+  double odometer_km = 0.0;  // at the first run after it
+  bool found = false;        // the clearance jumped back by more than h
+  bool recorded = false;     // the depot's maintenance record says so
+  std::string recorded_at;   // the record's time when recorded
+};
+
+struct WheelWear {
+  WheelId wheel;
+  std::vector<WearObservation> runs;
+  std::vector<int> segment;  // per run: which flange (0 before the first reprofiling, ...)
+  std::vector<ReprofilingEvent> reprofilings;
+  std::string status = "ok";  // "ok", "sensor fault" or "too few runs"
+  std::optional<WearLineFit> fit;
+  double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;  // 95 % interval
+  double clearance_now_mm = 0.0;  // the fitted line at the last run (drift fitted out)
+  double wear_now_mm = 0.0;       // clearance_now_mm - the sensor gap on a new flange
+  LimitForecast warning, critical;
+  std::optional<DriftFinding> sensor_fault;
+  double km_per_day = 0.0;  // the locomotive's, over this wheel's history
+};
+
+struct FleetWear {
+  ThresholdConfig thresholds;
+  double warning_clearance_mm = 0.0;
+  double critical_clearance_mm = 0.0;
+  std::vector<WheelWear> wheels;  // by days to the warning clearance, soonest first
+};
+
+FleetWear estimate_fleet_wear(const std::vector<WheelHistory>& histories,
+                              const ThresholdConfig& thresholds);
+
+// Days to the warning clearance for sorting: 0 when reached, +inf when unknown.
+double days_to_warning(const WheelWear& wheel);
+
+}  // namespace flange::host

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// The per-run static clearance of an axle: the lateral shift cancels in left + right, the
+// median of right - left is the centred wheelset's, the leftover temperature slope is removed.
+#include "axle_clearance.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace flange::host {
+namespace {
+
+// A run of n samples: the first `curve_share` of them in a curve (shift 2.5 mm towards the
+// left rail), the rest on tangent; the sensors read `slope` mm more per degC above 30 degC.
+std::pair<WheelSamples, WheelSamples> run(double left_mm, double right_mm, double curve_share,
+                                          double slope) {
+  WheelSamples left, right;
+  const int n = 1000;
+  for (int k = 0; k < n; ++k) {
+    const double shift = k < curve_share * n ? 2.5 : 0.0;
+    const double temp = 30.0 + 60.0 * std::sin(0.01 * k) * std::sin(0.01 * k);
+    const double leftover = slope * (temp - 30.0);
+    left.clearance_mm.push_back(left_mm - shift + leftover);
+    right.clearance_mm.push_back(right_mm + shift + leftover);
+    left.temp_c.push_back(temp);
+    right.temp_c.push_back(temp);
+  }
+  return {left, right};
+}
+
+TEST(AxleClearance, ShiftCancelsAndTemperatureLeftoverIsRemoved) {
+  const auto [left, right] = run(4.2, 3.1, 0.3, 0.004);
+  const std::optional<AxleClearance> axle = axle_clearance(left, right);
+  ASSERT_TRUE(axle.has_value());
+  EXPECT_NEAR(axle->left_mm, 4.2, 1e-9);
+  EXPECT_NEAR(axle->right_mm, 3.1, 1e-9);
+  EXPECT_NEAR(axle->temp_slope_mm_per_c, 0.008, 1e-9);  // the sum carries both sensors' slope
+  EXPECT_EQ(axle->samples, 1000u);
+}
+
+TEST(AxleClearance, TheMedianOnlyHoldsWhileTheCurveIsUnderHalfTheRun) {
+  const auto [left, right] = run(4.2, 3.1, 0.6, 0.0);
+  const std::optional<AxleClearance> axle = axle_clearance(left, right);
+  ASSERT_TRUE(axle.has_value());
+  EXPECT_NEAR(axle->left_mm + axle->right_mm, 7.3, 1e-9);  // the sum still holds
+  EXPECT_NEAR(axle->left_mm, 4.2 - 2.5, 1e-9);              // the difference is the curve's
+}
+
+TEST(AxleClearance, NonFiniteSamplesAreLeftOutAndTooFewGiveNothing) {
+  WheelSamples left{{NAN, 4.0}, {30.0, 30.0}};
+  WheelSamples right{{3.0, NAN}, {30.0, 30.0}};
+  EXPECT_FALSE(axle_clearance(left, right).has_value());
+  EXPECT_FALSE(lone_wheel_clearance({{NAN}, {30.0}}).has_value());
+  EXPECT_DOUBLE_EQ(*lone_wheel_clearance({{1.0, 5.0, 2.0}, {30.0, 30.0, 30.0}}), 2.0);
+}
+
+}  // namespace
+}  // namespace flange::host

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+// The fleet wear estimator on histories with known answers: rates per 1000 km with intervals
+// that hold them, a reprofiling found from the jump back, a sensor drifting away from its axle
+// partner flagged (and its drift fitted out of its rate), healthy sensors left alone, and the
+// forecast of the warning clearance.
+#include "fleet_wear.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace flange::host {
+namespace {
+
+struct Truth {
+  double rate_left = 0.08, rate_right = 0.04;  // mm per 1000 km
+  std::optional<int> reprofile_day;            // both wheels back to 2 mm that day
+  std::optional<int> drift_from_day;           // the right sensor drifts from then ...
+  double drift_mm_per_day = 0.01;              // ... at this rate
+};
+
+// One axle's 90 days: depot days every 6th, 150-750 km on the others, 0.005 mm of noise per run.
+std::vector<WheelHistory> axle_history(const Truth& truth, std::uint32_t seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> km_of_day(150.0, 750.0);
+  std::normal_distribution<double> noise(0.0, 0.005);
+  WheelHistory left{{"L01", 1, "left", 0}, {}, {}}, right{{"L01", 1, "right", 1}, {}, {}};
+  double odometer = 0.0, wear_left = 3.0, wear_right = 2.0;
+  for (int day = 0; day < 90; ++day) {
+    const double t = 20454.0 + day + 0.25;
+    if (truth.reprofile_day && day == *truth.reprofile_day) wear_left = wear_right = 0.0;
+    if (day % 6 == 5) continue;
+    const double drift = truth.drift_from_day && day > *truth.drift_from_day
+                             ? truth.drift_mm_per_day * (day - *truth.drift_from_day)
+                             : 0.0;
+    left.runs.push_back({day, "", t, odometer, 2.0 + wear_left + noise(random)});
+    right.runs.push_back({day, "", t, odometer, 2.0 + wear_right + drift + noise(random)});
+    const double km = km_of_day(random);
+    odometer += km;
+    wear_left += truth.rate_left * km / 1000.0;
+    wear_right += truth.rate_right * km / 1000.0;
+  }
+  return {left, right};
+}
+
+const WheelWear& side(const FleetWear& fleet, const std::string& name) {
+  return fleet.wheels[0].wheel.side == name ? fleet.wheels[0] : fleet.wheels[1];
+}
+
+TEST(FleetWear, RatesWithIntervalsThatHoldTheTruth) {
+  const FleetWear fleet = estimate_fleet_wear(axle_history({}, 1), {});
+  ASSERT_EQ(fleet.wheels.size(), 2u);
+  for (const auto& [name, rate] : {std::pair{"left", 0.08}, {"right", 0.04}}) {
+    const WheelWear& w = side(fleet, name);
+    EXPECT_EQ(w.status, "ok") << name;
+    EXPECT_NEAR(w.rate_mm_per_1000km, rate, 0.05 * rate) << name;
+    EXPECT_LT(w.rate_low, rate) << name;
+    EXPECT_GT(w.rate_high, rate) << name;
+    EXPECT_TRUE(w.reprofilings.empty()) << name;
+  }
+}
+
+TEST(FleetWear, AReprofilingIsFoundFromTheJumpBack) {
+  Truth truth;
+  truth.reprofile_day = 47;
+  const FleetWear fleet = estimate_fleet_wear(axle_history(truth, 2), {});
+  for (const WheelWear& w : fleet.wheels) {
+    ASSERT_EQ(w.reprofilings.size(), 1u);
+    EXPECT_TRUE(w.reprofilings[0].found);
+    EXPECT_FALSE(w.reprofilings[0].recorded);
+    EXPECT_EQ(w.segment.back(), 1);
+  }
+  EXPECT_NEAR(side(fleet, "left").rate_mm_per_1000km, 0.08, 0.004);
+}
+
+TEST(FleetWear, ADriftingSensorIsAFaultNotWear) {
+  Truth truth;
+  truth.drift_from_day = 20;
+  const FleetWear fleet = estimate_fleet_wear(axle_history(truth, 3), {});
+  const WheelWear& right = side(fleet, "right");
+  const WheelWear& left = side(fleet, "left");
+  ASSERT_TRUE(right.sensor_fault.has_value());
+  EXPECT_EQ(right.status, "sensor fault");
+  EXPECT_NEAR(right.sensor_fault->rate_mm_per_day, 0.01, 0.002);
+  EXPECT_NEAR(right.rate_mm_per_1000km, 0.04, 0.004);  // the drift fitted out
+  EXPECT_FALSE(left.sensor_fault.has_value());
+}
+
+TEST(FleetWear, TheWarningForecastFollowsTheRate) {
+  const FleetWear fleet = estimate_fleet_wear(axle_history({}, 4), {});
+  const WheelWear& w = side(fleet, "left");
+  ASSERT_TRUE(w.warning.km.has_value());
+  // 8 mm warning clearance: what is left of it at the fitted rate.
+  EXPECT_NEAR(*w.warning.km, (8.0 - w.clearance_now_mm) / (w.rate_mm_per_1000km / 1000.0), 1e-6);
+  EXPECT_LT(*w.warning.km_low, *w.warning.km);
+  EXPECT_GT(*w.warning.km_high, *w.warning.km);
+  EXPECT_FALSE(w.warning.date.empty());
+  EXPECT_EQ(fleet.wheels.front().wheel.side, "left");  // the sooner wheel first
+}
+
+}  // namespace
+}  // namespace flange::host
