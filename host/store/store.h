@@ -56,7 +56,7 @@ class Store {
 
   // ---- writes (each one transaction) ----
   virtual void upsert_locomotive(const LocomotiveRecord& locomotive) = 0;
-  // Creates the locomotive when it is new.
+  // Creates the locomotive when it is new; sets the channel of a wheel already stored.
   virtual void upsert_wheel(const WheelRecord& wheel) = 0;
   // Creates the wheel (channel from the wheel's axle and side) when it is new.
   virtual void upsert_sensor(const SensorRecord& sensor) = 0;
@@ -66,7 +66,8 @@ class Store {
                                       const std::vector<BenchRow>& bench_rows) = 0;
   virtual std::int64_t record_calibration(const CalibrationRecord& calibration) = 0;
   // The run with its wheels, alarm events and reduced trace; creates the locomotive and its
-  // wheels when they are new. Returns the run's id.
+  // wheels when they are new. Returns the run's id. (A wheel, locomotive or sensor that any
+  // write names is created when new; a wheel created so takes default_channel.)
   virtual std::int64_t record_run(const RunRecord& run) = 0;
   virtual std::int64_t record_maintenance(const MaintenanceRecord& event) = 0;
 

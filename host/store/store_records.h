@@ -23,6 +23,10 @@ struct WheelKey {
   bool operator==(const WheelKey&) const = default;
 };
 
+// The channel a wheel is on when nothing says otherwise: the two wheels of axle 1 on 0 (left)
+// and 1 (right), and so on to axle 6 on 10 and 11 (the loco scenario's order).
+int default_channel(const WheelKey& wheel);
+
 struct LocomotiveRecord {
   std::string name;         // unique
   std::string description;  // free text

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// The Store over a SOCI session: the same SQL on SQLite and PostgreSQL (both speak
+// INSERT ... ON CONFLICT and RETURNING); store_schema.cpp spells the few words they differ in.
+#pragma once
+
+#include <soci/soci.h>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <tuple>
+
+#include "store.h"
+#include "store_url.h"
+
+namespace flange::host {
+
+class SociStore final : public Store {
+ public:
+  // Connects and migrates to `schema_version` (tests make older stores with it).
+  SociStore(const StoreUrl& url, int schema_version);
+
+  const std::string& name() const override { return url_.shown; }
+  std::string backend() const override;
+  int schema_version() const override { return schema_version_; }
+
+  void upsert_locomotive(const LocomotiveRecord& locomotive) override;
+  void upsert_wheel(const WheelRecord& wheel) override;
+  void upsert_sensor(const SensorRecord& sensor) override;
+  std::int64_t record_session(const SessionRecord& session,
+                              const std::vector<BenchRow>& bench_rows) override;
+  std::int64_t record_calibration(const CalibrationRecord& calibration) override;
+  std::int64_t record_run(const RunRecord& run) override;
+  std::int64_t record_maintenance(const MaintenanceRecord& event) override;
+
+  std::vector<LocomotiveRecord> locomotives() override;
+  std::vector<StoredWheel> wheels() override;
+  std::vector<WearPoint> wear_history(const WheelKey& wheel) override;
+  std::vector<FleetRow> fleet_table() override;
+  std::vector<StoredMaintenance> maintenance_events(const std::string& locomotive) override;
+  std::vector<StoredAlarmEvent> alarm_events(const std::string& locomotive) override;
+  std::vector<std::pair<std::int64_t, SessionRecord>> sessions(SessionKind kind) override;
+  std::vector<BenchRow> bench_rows(std::int64_t session_id) override;
+  std::vector<std::pair<std::int64_t, CalibrationRecord>> calibrations() override;
+  std::vector<TracePoint> run_trace(std::int64_t run_id) override;
+  std::uint64_t run_count() override;
+
+ private:
+  using WheelIds = std::map<std::tuple<std::string, int, std::string>, long long>;
+
+  // Get-or-create inside the caller's transaction; new ids go to `created` (cached on commit).
+  long long locomotive_id(const std::string& name);
+  long long wheel_id(const WheelKey& wheel, int channel, WheelIds& created);
+  std::optional<long long> existing_wheel_id(const WheelKey& wheel);
+  std::optional<long long> sensor_id(const std::string& serial);
+  long long insert_run_row(const RunRecord& run);
+  void insert_wheel_runs(long long run_id, const RunRecord& run, WheelIds& created);
+  void insert_alarm_events(long long run_id, const RunRecord& run, WheelIds& created);
+  void insert_trace(long long run_id, const RunRecord& run, WheelIds& created);
+  std::optional<long long> event_wheel(const RunRecord& run, int axle, const std::string& side,
+                                       WheelIds& created);
+
+  StoreUrl url_;
+  soci::session sql_;
+  int schema_version_ = 0;
+  WheelIds wheel_ids_;  // committed wheels: ids never change once written
+};
+
+// One line: the store, what it was doing, the backend's message with its line breaks folded.
+[[noreturn]] void throw_store_error(const std::string& store, const char* action,
+                                    const std::string& what);
+
+// Runs `body`, turning a SOCI error into one StoreError line naming the store and the action.
+template <typename Body>
+auto store_guarded(const std::string& store, const char* action, Body&& body) {
+  try {
+    return body();
+  } catch (const soci::soci_error& error) {
+    throw_store_error(store, action, error.what());
+  }
+}
+
+}  // namespace flange::host
