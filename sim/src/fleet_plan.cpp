@@ -42,7 +42,7 @@ void check_settings(const FleetSettings& settings) {
 int day_of_year(int day) {
   using namespace std::chrono;
   const year_month_day date{sys_days{days{day}}};
-  return (sys_days{date} - sys_days{date.year() / January / 1}).count();
+  return static_cast<int>((sys_days{date} - sys_days{date.year() / January / 1}).count());
 }
 
 std::vector<double> seasonal_ambient(const FleetSettings& settings, const FleetDraws& draws) {

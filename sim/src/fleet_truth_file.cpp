@@ -40,7 +40,10 @@ int day_number(const std::string& date, const std::string& where) {
     throw BadArgument(where + ": '" + date + "' is not a date YYYY-MM-DD");
   }
   using namespace std::chrono;
-  return sys_days{year{y} / m / d}.time_since_epoch().count();
+  return static_cast<int>(
+      sys_days{year{y} / month{static_cast<unsigned>(m)} / day{static_cast<unsigned>(d)}}
+          .time_since_epoch()
+          .count());
 }
 
 }  // namespace
