@@ -283,6 +283,23 @@ void run_whole_locomotive(Demo& demo) {
   }
 }
 
+// 10. A small fleet over four weeks into an SQLite store, and every wheel's wear from it.
+void follow_a_fleet(Demo& demo) {
+  demo.out << "\n== 10. A depot's fleet: two locomotives over four weeks into an SQLite store, "
+              "then every wheel's wear, its rate and when it reaches the limits "
+              "(docs/fleet.md)\n";
+  const std::filesystem::path dir = demo.dir / "fleet";
+  std::filesystem::remove_all(dir);  // the fleet goes into a new store every time
+  std::filesystem::create_directories(dir);
+  const std::string store = "sqlite:" + (dir / "fleet.db").string();
+  if (demo.must(demo.step({"simulate", "--scenario", "fleet", "--locomotives", "2", "--days", "28",
+                           "--seed", "5", "--store", store}),
+                "simulating the fleet")) {
+    demo.must(demo.step({"wear", "--store", store, "--out", (dir / "wear").string()}),
+              "estimating the fleet's wear");
+  }
+}
+
 }  // namespace
 
 CLI::App* add_demo_command(CLI::App& app, DemoOptions& options) {
@@ -310,6 +327,7 @@ int run_demo_command(const DemoOptions& options, std::ostream& out, std::ostream
   diagnose_withheld_effect(demo);
   diagnose_hardware_gap(demo, measurement);
   run_whole_locomotive(demo);
+  follow_a_fleet(demo);
 
   if (demo.failures > 0) {
     err << "flange demo: " << demo.failures << " step(s) failed\n";
@@ -317,7 +335,7 @@ int run_demo_command(const DemoOptions& options, std::ostream& out, std::ostream
   }
   out << "\ndemo: everything is in " << demo.dir.string() << "/ (reports: bench_report/index.html, "
       << "loco_report/index.html, diagnosis/report.html, hw_diagnosis/hw_diagnosis.html, "
-      << "locomotive_run/index.html)\n";
+      << "locomotive_run/index.html, fleet/wear/index.html)\n";
   return kExitOk;
 }
 

@@ -50,15 +50,24 @@ std::optional<AxleClearance> axle_clearance(const WheelSamples& left, const Whee
     temps.push_back(t);
   }
   if (sums.size() < 2) return std::nullopt;
+  const double centre = median(differences);
+  std::vector<double> ref_sums, ref_differences, ref_temps;
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    if (std::abs(differences[i] - centre) > kCentredToleranceMm) continue;
+    ref_sums.push_back(sums[i]);
+    ref_differences.push_back(differences[i]);
+    ref_temps.push_back(temps[i]);
+  }
+  if (ref_sums.size() < 2) return std::nullopt;
   AxleClearance axle;
-  std::tie(axle.sum_mm, axle.temp_slope_mm_per_c) = line_at(temps, sums, reference_temp_c);
-  axle.difference_mm = median(differences);
+  std::tie(axle.sum_mm, axle.temp_slope_mm_per_c) = line_at(ref_temps, ref_sums, reference_temp_c);
+  axle.difference_mm = median(ref_differences);
   axle.left_mm = (axle.sum_mm - axle.difference_mm) / 2.0;
   axle.right_mm = (axle.sum_mm + axle.difference_mm) / 2.0;
   double temp_sum = 0.0;
-  for (const double t : temps) temp_sum += t;
-  axle.mean_temp_c = temp_sum / static_cast<double>(temps.size());
-  axle.samples = sums.size();
+  for (const double t : ref_temps) temp_sum += t;
+  axle.mean_temp_c = temp_sum / static_cast<double>(ref_temps.size());
+  axle.samples = ref_sums.size();
   return axle;
 }
 

@@ -4,12 +4,16 @@
 // temperature, from the filtered clearance the chain wrote for each wheel.
 //
 // Left and right together: the wheelset's lateral shift x closes one gap and opens the other by
-// as much (left = b_L - x, right = b_R + x), so their sum b_L + b_R is free of the shift at every
-// sample, whatever the track. The sum is fitted against the sensor temperature (least squares,
-// sum = s0 + k (T - T_ref)) and taken at T_ref: what the calibration's temperature compensation
-// left over (k) is removed. The difference right - left = b_R - b_L + 2x is the wheels' own
-// difference where the wheelset runs centred (x = 0): its median over the run, as the route is
-// mostly tangent (a curve only shifts x one way, and covers less than half of the run).
+// as much (left = b_L - x, right = b_R + x), so their difference right - left = b_R - b_L + 2x
+// shows where the wheelset runs, and their sum b_L + b_R is free of the shift. The route is
+// mostly tangent (a curve shifts x one way only and covers less than half of a run), so the
+// median of the difference is the centred wheelset's; the reference samples are those whose
+// difference lies within kCentredToleranceMm of it. That also leaves out the curve's samples
+// where a sensor sat on a rail of its range (a new flange's gap closes past the bottom of it).
+// Over the reference samples the sum is fitted against the sensor temperature (least squares,
+// sum = s0 + k (T - T_ref)) and taken at T_ref: what the calibration's temperature
+// compensation left over (k) is removed. b_L = (s0 - d0) / 2, b_R = (s0 + d0) / 2 with d0 the
+// reference samples' median difference.
 #pragma once
 
 #include <optional>
@@ -31,11 +35,15 @@ struct AxleClearance {
   double temp_slope_mm_per_c = 0.0;  // k: the sum's leftover temperature dependence
   double difference_mm = 0.0;        // median of right - left
   double mean_temp_c = 0.0;
-  std::size_t samples = 0;  // pairs used
+  std::size_t samples = 0;  // reference pairs used
 };
 
 // Reference temperature: the fleet's mean ambient (docs/fleet.md), inside the calibrated range.
 inline constexpr double kReferenceTempC = 30.0;
+// A pair is at the centred reference when its difference is within this of the median: the
+// wheelset within 0.05 mm of its tangent position, as the alarms' 0.1 mm hysteresis is the
+// smallest change of clearance that matters.
+inline constexpr double kCentredToleranceMm = 0.1;
 
 // Both wheels of one axle (the same number of samples, at least 2; NaN samples are left out).
 // Nothing when fewer than two finite pairs remain.

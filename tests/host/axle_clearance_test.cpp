@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace flange::host {
@@ -35,7 +36,16 @@ TEST(AxleClearance, ShiftCancelsAndTemperatureLeftoverIsRemoved) {
   EXPECT_NEAR(axle->left_mm, 4.2, 1e-9);
   EXPECT_NEAR(axle->right_mm, 3.1, 1e-9);
   EXPECT_NEAR(axle->temp_slope_mm_per_c, 0.008, 1e-9);  // the sum carries both sensors' slope
-  EXPECT_EQ(axle->samples, 1000u);
+  EXPECT_EQ(axle->samples, 700u);  // the tangent's samples only
+}
+
+TEST(AxleClearance, ASensorOnTheBottomRailInTheCurveDoesNotBiasIt) {
+  auto [left, right] = run(2.2, 3.1, 0.3, 0.0);
+  for (double& c : left.clearance_mm) c = std::max(c, 1.09);  // the range's bottom: 0 V
+  const std::optional<AxleClearance> axle = axle_clearance(left, right);
+  ASSERT_TRUE(axle.has_value());
+  EXPECT_NEAR(axle->left_mm, 2.2, 1e-9);
+  EXPECT_NEAR(axle->right_mm, 3.1, 1e-9);
 }
 
 TEST(AxleClearance, TheMedianOnlyHoldsWhileTheCurveIsUnderHalfTheRun) {
@@ -44,6 +54,7 @@ TEST(AxleClearance, TheMedianOnlyHoldsWhileTheCurveIsUnderHalfTheRun) {
   ASSERT_TRUE(axle.has_value());
   EXPECT_NEAR(axle->left_mm + axle->right_mm, 7.3, 1e-9);  // the sum still holds
   EXPECT_NEAR(axle->left_mm, 4.2 - 2.5, 1e-9);              // the difference is the curve's
+  EXPECT_EQ(axle->samples, 600u);
 }
 
 TEST(AxleClearance, NonFiniteSamplesAreLeftOutAndTooFewGiveNothing) {
