@@ -3,9 +3,12 @@
 
 #include <fmt/format.h>
 
+#include <fstream>
 #include <map>
 #include <ostream>
 
+#include "axle_clearance.h"
+#include "calibration.h"
 #include "cli.h"
 #include "fleet_truth_check.h"
 #include "fleet_truth_file.h"
@@ -49,6 +52,22 @@ std::vector<WheelHistory> read_histories(host::Store& store) {
     if (!history.runs.empty()) histories.push_back(std::move(history));
   }
   return histories;
+}
+
+// The slope of the sensors' readings (mm/V) from the store's latest calibration, written beside
+// the outputs as calibration.json; none when the store holds no calibration.
+host::SensitivityAt store_sensitivity(host::Store& store, const std::filesystem::path& out_dir,
+                                      std::ostream& out) {
+  const auto calibrations = store.calibrations();
+  if (calibrations.empty()) {
+    out << "  the store holds no calibration: sensor drift is fitted in mm, not through the "
+           "sensors' slope\n";
+    return {};
+  }
+  const std::filesystem::path path = out_dir / "calibration.json";
+  std::ofstream(path, std::ios::binary) << calibrations.back().second.model_json;
+  return host::calibration_sensitivity(host::load_calibration(path.string()),
+                                       host::kReferenceTempC);
 }
 
 // --truth: the comparison printed and written beside the outputs; false when it fails.
@@ -97,8 +116,9 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
       err << "flange wear: " << store->name() << ": no run with a wheel's wear estimate\n";
       return kExitFailure;
     }
-    const host::FleetWear wear = host::estimate_fleet_wear(histories, options.thresholds);
     std::filesystem::create_directories(options.out);
+    const host::FleetWear wear = host::estimate_fleet_wear(
+        histories, options.thresholds, store_sensitivity(*store, options.out, out));
     const std::string generated_by = runtime::generated_by(command_line);
     host::write_wear_json(options.out / "wear.json", wear, generated_by);
     host::write_wear_csv(options.out / "wear.csv", wear);

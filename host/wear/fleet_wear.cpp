@@ -73,11 +73,13 @@ void segment_runs(WheelWear& wheel, const std::vector<std::size_t>& found,
   }
 }
 
-WearSeries series_of(const WheelWear& wheel, const std::vector<double>& y) {
+WearSeries series_of(const WheelWear& wheel, const std::vector<double>& y,
+                     const SensitivityAt& sensitivity = {}) {
   WearSeries series;
   for (const WearObservation& run : wheel.runs) {
     series.km.push_back(run.odometer_km);
     series.day.push_back(run.day);
+    if (sensitivity) series.drift_scale.push_back(sensitivity(run.clearance_mm));
   }
   series.y = y;
   series.segment = wheel.segment;
@@ -85,10 +87,12 @@ WearSeries series_of(const WheelWear& wheel, const std::vector<double>& y) {
 }
 
 // The wheel's line, rate interval and forecasts; "too few runs" when the line cannot be fitted.
-void fit_wheel(WheelWear& wheel, const FleetWear& fleet, std::optional<double> drift_onset) {
+void fit_wheel(WheelWear& wheel, const FleetWear& fleet, std::optional<double> drift_onset,
+               const SensitivityAt& sensitivity) {
   const std::vector<WearObservation>& runs = wheel.runs;
   try {
-    wheel.fit = fit_wear_line(series_of(wheel, clearances(runs)), drift_onset);
+    wheel.fit = fit_wear_line(series_of(wheel, clearances(runs), sensitivity), drift_onset,
+                              kDriftDegree);
   } catch (const std::invalid_argument&) {
     wheel.status = "too few runs";
     return;
@@ -123,7 +127,8 @@ WheelWear wheel_with_runs(const WheelHistory& history, std::vector<WearObservati
 }
 
 // Both wheels of an axle: shared segments, the drift check, then each wheel's own line.
-void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistory& right) {
+void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistory& right,
+                   const SensitivityAt& sensitivity) {
   AxleRuns axle = align_runs(left, right);
   WheelWear l = wheel_with_runs(left, std::move(axle.left));
   WheelWear r = wheel_with_runs(right, std::move(axle.right));
@@ -138,7 +143,8 @@ void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistor
   for (std::size_t k = 0; k < yl.size(); ++k) difference.push_back(yr[k] - yl[k]);
   std::optional<DriftFinding> drift;
   try {
-    drift = find_sensor_drift(series_of(l, difference), series_of(l, yl), series_of(r, yr));
+    drift = find_sensor_drift(series_of(l, difference), series_of(l, yl, sensitivity),
+                              series_of(r, yr, sensitivity));
   } catch (const std::invalid_argument&) {
     drift.reset();  // too few runs to tell a drift from wear
   }
@@ -147,8 +153,10 @@ void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistor
     faulty.sensor_fault = drift;
     faulty.status = "sensor fault";
   }
-  fit_wheel(l, fleet, l.sensor_fault ? std::optional(drift->onset_day) : std::nullopt);
-  fit_wheel(r, fleet, r.sensor_fault ? std::optional(drift->onset_day) : std::nullopt);
+  fit_wheel(l, fleet, l.sensor_fault ? std::optional(drift->onset_day) : std::nullopt,
+            sensitivity);
+  fit_wheel(r, fleet, r.sensor_fault ? std::optional(drift->onset_day) : std::nullopt,
+            sensitivity);
   fleet.wheels.push_back(std::move(l));
   fleet.wheels.push_back(std::move(r));
 }
@@ -159,7 +167,7 @@ void estimate_lone_wheel(FleetWear& fleet, const WheelHistory& history) {
   const std::vector<double> y = clearances(wheel.runs);
   segment_runs(wheel, find_reprofilings(y, y, fleet.thresholds.max_step_mm),
                recorded_boundaries(wheel.runs, history.maintenance));
-  fit_wheel(wheel, fleet, std::nullopt);
+  fit_wheel(wheel, fleet, std::nullopt, {});
   fleet.wheels.push_back(std::move(wheel));
 }
 
@@ -172,7 +180,7 @@ double days_to_warning(const WheelWear& wheel) {
 }
 
 FleetWear estimate_fleet_wear(const std::vector<WheelHistory>& histories,
-                              const ThresholdConfig& thresholds) {
+                              const ThresholdConfig& thresholds, const SensitivityAt& sensitivity) {
   FleetWear fleet;
   fleet.thresholds = thresholds;
   fleet.warning_clearance_mm = thresholds.warning_clearance_mm;
@@ -185,7 +193,7 @@ FleetWear estimate_fleet_wear(const std::vector<WheelHistory>& histories,
   }
   for (const auto& [key, pair] : axles) {
     if (pair.first != nullptr && pair.second != nullptr) {
-      estimate_axle(fleet, *pair.first, *pair.second);
+      estimate_axle(fleet, *pair.first, *pair.second, sensitivity);
     } else {
       estimate_lone_wheel(fleet, pair.first != nullptr ? *pair.first : *pair.second);
     }

@@ -14,6 +14,7 @@
 
 #include "limit_forecast.h"
 #include "sensor_drift.h"
+#include "sensor_sensitivity.h"
 #include "thresholds.h"
 #include "wear_line_fit.h"
 #include "wheel_history.h"
@@ -51,8 +52,11 @@ struct FleetWear {
   std::vector<WheelWear> wheels;  // by days to the warning clearance, soonest first
 };
 
+// `sensitivity`: the sensors' slope (mm/V) by clearance, from the calibration they ran with;
+// without it a drift is fitted in mm (a constant slope).
 FleetWear estimate_fleet_wear(const std::vector<WheelHistory>& histories,
-                              const ThresholdConfig& thresholds);
+                              const ThresholdConfig& thresholds,
+                              const SensitivityAt& sensitivity = {});
 
 // Days to the warning clearance for sorting: 0 when reached, +inf when unknown.
 double days_to_warning(const WheelWear& wheel);

@@ -7,24 +7,42 @@
 namespace flange::host {
 namespace {
 
-// The onset whose drift fits the difference best (smallest residual), with its fit.
-std::optional<std::pair<double, WearLineFit>> best_onset(const WearSeries& difference) {
-  std::optional<std::pair<double, WearLineFit>> best;
+struct Candidate {
+  bool left = true;
+  double onset_day = 0.0;
+  WearLineFit fit;
+};
+
+// The side and onset whose drift fits the difference best (smallest residual). The drift of
+// either sensor enters the difference through that sensor's own slope.
+std::optional<Candidate> best_candidate(const WearSeries& difference, const WearSeries& left,
+                                        const WearSeries& right) {
+  std::optional<Candidate> best;
   const std::size_t n = difference.day.size();
-  for (std::size_t k = 0; k + kMinRunsAfterOnset < n; ++k) {
-    try {
-      WearLineFit fit = fit_wear_line(difference, difference.day[k]);
-      if (!best || fit.rss < best->second.rss) best.emplace(difference.day[k], std::move(fit));
-    } catch (const std::invalid_argument&) {
-      return best;  // too few points for the drift model
+  for (const bool is_left : {true, false}) {
+    WearSeries series = difference;
+    series.drift_scale = (is_left ? left : right).drift_scale;
+    for (std::size_t k = 0; k + kMinRunsAfterOnset < n; ++k) {
+      try {
+        WearLineFit fit = fit_wear_line(series, difference.day[k], kDriftDegree);
+        if (!best || fit.rss < best->fit.rss) best = Candidate{is_left, difference.day[k], fit};
+      } catch (const std::invalid_argument&) {
+        break;  // too few points for the drift model
+      }
     }
   }
   return best;
 }
 
-double drift_t(const WearSeries& series, double onset_day) {
-  const WearLineFit fit = fit_wear_line(series, onset_day);
-  return fit.drift_se > 0.0 ? *fit.drift_mm_per_day / fit.drift_se : 0.0;
+double last_scale(const WearSeries& series) {
+  return series.drift_scale.empty() ? 1.0 : series.drift_scale.back();
+}
+
+// The drift by the last run over its standard error, in a wheel's own series.
+double own_drift_t(const WearSeries& series, double onset_day) {
+  const DriftValue drift = drift_at(fit_wear_line(series, onset_day, kDriftDegree),
+                                    series.day.back(), last_scale(series));
+  return drift.se > 0.0 ? drift.mm / drift.se : 0.0;
 }
 
 }  // namespace
@@ -32,20 +50,24 @@ double drift_t(const WearSeries& series, double onset_day) {
 std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
                                               const WearSeries& left_series,
                                               const WearSeries& right_series) {
-  const auto best = best_onset(difference);
+  const std::optional<Candidate> best = best_candidate(difference, left_series, right_series);
   if (!best) return std::nullopt;
-  const auto& [onset, fit] = *best;
-  const double g = *fit.drift_mm_per_day;
-  const double t = fit.drift_se > 0.0 ? g / fit.drift_se : 0.0;
-  const double size = std::abs(g) * (difference.day.back() - onset);
-  if (std::abs(t) < kDriftTStatistic || size < kMinDriftMm) return std::nullopt;
+  const WearSeries& fitted_side = best->left ? left_series : right_series;
+  const DriftValue drift = drift_at(best->fit, difference.day.back(), last_scale(fitted_side));
+  const double t = drift.se > 0.0 ? drift.mm / drift.se : 0.0;
+  if (std::abs(t) < kDriftTStatistic || std::abs(drift.mm) < kMinDriftMm) return std::nullopt;
   DriftFinding finding;
-  finding.left = std::abs(drift_t(left_series, onset)) > std::abs(drift_t(right_series, onset));
-  finding.onset_day = onset;
+  // The faulty sensor: the one whose own series carries the drift more strongly (the other's
+  // own series has only what the two share).
+  finding.left = std::abs(own_drift_t(left_series, best->onset_day)) >
+                 std::abs(own_drift_t(right_series, best->onset_day));
+  const WearSeries& own = finding.left ? left_series : right_series;
+  finding.onset_day = best->onset_day;
   finding.difference_t = t;
-  finding.size_mm = size;
-  const WearLineFit own = fit_wear_line(finding.left ? left_series : right_series, onset);
-  finding.rate_mm_per_day = *own.drift_mm_per_day;
+  finding.size_mm = std::abs(drift.mm);
+  const DriftValue own_drift = drift_at(fit_wear_line(own, best->onset_day, kDriftDegree),
+                                        own.day.back(), last_scale(own));
+  finding.rate_mm_per_day = own_drift.mm / (own.day.back() - best->onset_day);
   return finding;
 }
 

@@ -9,11 +9,12 @@
 
 namespace flange::host {
 
-WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day) {
+WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day,
+                          int drift_degree) {
   const auto n = static_cast<Eigen::Index>(series.y.size());
   const int segments =
       series.segment.empty() ? 1 : *std::max_element(series.segment.begin(), series.segment.end()) + 1;
-  const Eigen::Index params = segments + 1 + (drift_onset_day ? 1 : 0);
+  const Eigen::Index params = segments + 1 + (drift_onset_day ? drift_degree : 0);
   if (n <= params) throw std::invalid_argument("fit_wear_line: too few points for the model");
   WearLineFit fit;
   fit.km0 = series.km.front();
@@ -23,7 +24,11 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
     const auto i = static_cast<std::size_t>(k);
     x(k, series.segment[i]) = 1.0;
     x(k, segments) = series.km[i] - fit.km0;
-    if (drift_onset_day) x(k, segments + 1) = std::max(0.0, series.day[i] - *drift_onset_day);
+    const double since_onset = drift_onset_day ? std::max(0.0, series.day[i] - *drift_onset_day) : 0.0;
+    const double scale = series.drift_scale.empty() ? 1.0 : series.drift_scale[i];
+    for (int power = 1; drift_onset_day && power <= drift_degree; ++power) {
+      x(k, segments + power) = scale * std::pow(since_onset, power);
+    }
     y(k) = series.y[i];
   }
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(x);
@@ -42,9 +47,9 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
   for (int s = 0; s < segments; ++s) fit.intercepts_mm.push_back(beta(s));
   fit.rate_mm_per_km = beta(segments);
   fit.rate_se = std::sqrt(cov(segments, segments));
-  if (drift_onset_day) {
-    fit.drift_mm_per_day = beta(segments + 1);
-    fit.drift_se = std::sqrt(cov(segments + 1, segments + 1));
+  fit.drift_onset_day = drift_onset_day;
+  for (int power = 1; drift_onset_day && power <= drift_degree; ++power) {
+    fit.drift_coefficients.push_back(beta(segments + power));
   }
   fit.covariance.assign(static_cast<std::size_t>(params), std::vector<double>());
   for (Eigen::Index r = 0; r < params; ++r) {
@@ -58,6 +63,26 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
 double wear_line_at(const WearLineFit& fit, int segment, double km) {
   return fit.intercepts_mm.at(static_cast<std::size_t>(segment)) +
          fit.rate_mm_per_km * (km - fit.km0);
+}
+
+DriftValue drift_at(const WearLineFit& fit, double day, double scale) {
+  if (!fit.drift_onset_day || day <= *fit.drift_onset_day) return {};
+  const double since = day - *fit.drift_onset_day;
+  const std::size_t first = fit.intercepts_mm.size() + 1;  // after the intercepts and the rate
+  std::vector<double> gradient;
+  DriftValue value;
+  for (std::size_t p = 0; p < fit.drift_coefficients.size(); ++p) {
+    gradient.push_back(scale * std::pow(since, static_cast<double>(p + 1)));
+    value.mm += fit.drift_coefficients[p] * gradient.back();
+  }
+  double variance = 0.0;
+  for (std::size_t a = 0; a < gradient.size(); ++a) {
+    for (std::size_t b = 0; b < gradient.size(); ++b) {
+      variance += gradient[a] * gradient[b] * fit.covariance[first + a][first + b];
+    }
+  }
+  value.se = std::sqrt(std::max(0.0, variance));
+  return value;
 }
 
 double t95(int dof) {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The wear model of one series, fitted by least squares (Eigen's column-pivoting QR):
-//   y_k = a_seg(k) + r (km_k - km_0) [+ g max(0, day_k - onset)]
+//   y_k = a_seg(k) + r (km_k - km_0) [+ m_k (g tau_k (+ g2 tau_k^2))],  tau_k = max(0, day_k - onset)
 // one intercept per segment (a reprofiling starts a new one: the flange is new again), one rate
 // per km for the whole series (the wheel wears at its own rate whatever its flange's age), and
-// optionally a drift per day from an onset: a sensor's offset creeping with time, not distance.
+// optionally a drift from an onset: a sensor's offset creeping with time, not distance, scaled
+// at each point by m_k (WearSeries::drift_scale).
 #pragma once
 
 #include <optional>
@@ -16,6 +17,9 @@ struct WearSeries {
   std::vector<double> day;  // days since 1970-01-01
   std::vector<double> y;    // the fitted quantity (mm)
   std::vector<int> segment;  // 0, 0, ..., 1, 1, ...: which flange each point saw
+  // Multiplies the drift terms point by point (a drift in volts read through the sensor's
+  // slope in mm/V at that point: sensor_sensitivity.h); empty: 1, a drift in mm.
+  std::vector<double> drift_scale;
 };
 
 struct WearLineFit {
@@ -23,8 +27,8 @@ struct WearLineFit {
   double km0 = 0.0;
   double rate_mm_per_km = 0.0;
   double rate_se = 0.0;  // its standard error
-  std::optional<double> drift_mm_per_day;  // g, with an onset
-  double drift_se = 0.0;
+  std::optional<double> drift_onset_day;
+  std::vector<double> drift_coefficients;  // g, g2: per day and per day^2 (in mm / m_k)
   double rss = 0.0;          // residual sum of squares
   int dof = 0;               // points minus parameters
   double residual_sd = 0.0;  // sqrt(rss / dof)
@@ -33,11 +37,20 @@ struct WearLineFit {
   std::vector<std::vector<double>> covariance;
 };
 
-// At least one more point than parameters. Throws std::invalid_argument otherwise.
-WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day);
+// drift_degree 1 or 2 (with an onset). At least one more point than parameters. Throws std::invalid_argument otherwise.
+WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day,
+                          int drift_degree = 1);
 
 // y of the fitted line (without the drift) at odometer km on segment seg.
 double wear_line_at(const WearLineFit& fit, int segment, double km);
+
+struct DriftValue {
+  double mm = 0.0;  // the fitted drift at a time
+  double se = 0.0;  // its standard error
+};
+
+// The fitted drift at `day` scaled by `scale` (0 before the onset, or without a drift).
+DriftValue drift_at(const WearLineFit& fit, double day, double scale = 1.0);
 
 // Half-width multiplier of a two-sided 95 % interval with `dof` degrees of freedom (Student t).
 double t95(int dof);
