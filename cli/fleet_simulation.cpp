@@ -15,6 +15,7 @@
 #include "bench_scenario.h"
 #include "calibration.h"
 #include "cli.h"
+#include "data_dir.h"
 #include "fleet_day.h"
 #include "fleet_plan.h"
 #include "fleet_truth_file.h"
@@ -23,7 +24,6 @@
 #include "locomotive_run.h"
 #include "locomotive_summary.h"
 #include "locomotive_wheels.h"
-#include "data_dir.h"
 #include "recording_csv.h"
 #include "sim_error.h"
 #include "simulation.h"
@@ -38,7 +38,7 @@ namespace {
 namespace fs = std::filesystem;
 using sim::BadArgument;
 
-constexpr std::uint64_t kBenchStream = 7;  // the depot's bench session: a stream of --seed
+constexpr std::uint64_t kBenchStream = 7;   // the depot's bench session: a stream of --seed
 constexpr double kServiceStartHours = 6.0;  // every day's recording starts at 06:00 UTC
 constexpr double kMaintenanceHours = 12.0;  // the depot's lathe works at noon on a depot day
 
@@ -56,17 +56,17 @@ struct Fleet {
 
 int required(const std::optional<int>& value, const char* name, int max) {
   if (!value) {
-    throw BadArgument(fmt::format("{} is required with --scenario fleet: a whole number 1 to {}",
-                                  name, max));
+    throw BadArgument(
+        fmt::format("{} is required with --scenario fleet: a whole number 1 to {}", name, max));
   }
   return *value;
 }
 
 void refuse_loco_options(const SimulateOptions& options) {
-  for (const auto& [given, name] :
-       {std::pair{options.wheels.has_value(), "--wheels"}, {options.fs_hz.has_value(), "--fs"},
-        {options.duration_s.has_value(), "--duration"},
-        {options.calibration.has_value(), "--calibration"}}) {
+  for (const auto& [given, name] : {std::pair{options.wheels.has_value(), "--wheels"},
+                                    {options.fs_hz.has_value(), "--fs"},
+                                    {options.duration_s.has_value(), "--duration"},
+                                    {options.calibration.has_value(), "--calibration"}}) {
     if (given) {
       throw BadArgument(fmt::format(
           "{}: the fleet scenario records every wheel at 6 Hz for 240 s with the thesis's "
@@ -139,9 +139,10 @@ void register_fleet(Fleet& fleet) {
   for (const sim::LocomotiveTruth& loco : fleet.truth.locomotives) {
     for (const host::LocomotiveRecord& record : stored) {
       if (record.name == loco.name) {
-        throw BadArgument(fmt::format("--store {}: already holds locomotive {}; simulate a fleet "
-                                      "into a new store",
-                                      fleet.store->name(), loco.name));
+        throw BadArgument(
+            fmt::format("--store {}: already holds locomotive {}; simulate a fleet "
+                        "into a new store",
+                        fleet.store->name(), loco.name));
       }
     }
   }
@@ -227,7 +228,8 @@ host::WheelRunResult wheel_result(const host::ChannelRun& channel, const host::W
   const host::WheelSamples samples = settled_samples(channel);
   double temp_sum = 0.0;
   for (const double t : samples.temp_c) temp_sum += t;
-  wheel.temp_c = samples.temp_c.empty() ? 0.0 : temp_sum / static_cast<double>(samples.temp_c.size());
+  wheel.temp_c =
+      samples.temp_c.empty() ? 0.0 : temp_sum / static_cast<double>(samples.temp_c.size());
   wheel.samples = summary.rows_read;
   wheel.flagged_samples = summary.rows_flagged;
   wheel.final_alarm = summary.final_alarm;
@@ -383,7 +385,8 @@ int run_fleet_simulation(const SimulateOptions& options,
     int runs = 0, reprofiled = 0;
     for (int day = 0; day < settings.days; ++day) {
       for (int l = 0; l < settings.locomotives; ++l) {
-        const double km = fleet.truth.locomotives[static_cast<std::size_t>(l)].day_km[static_cast<std::size_t>(day)];
+        const double km = fleet.truth.locomotives[static_cast<std::size_t>(l)]
+                              .day_km[static_cast<std::size_t>(day)];
         reprofiled += record_reprofilings(fleet, l, day, odometer_km[static_cast<std::size_t>(l)]);
         if (km > 0.0) {
           run_day(fleet, l, day, odometer_km[static_cast<std::size_t>(l)]);

@@ -29,9 +29,9 @@ struct WheelSamples {
 };
 
 struct AxleClearance {
-  double left_mm = 0.0;   // b_L at reference conditions
-  double right_mm = 0.0;  // b_R
-  double sum_mm = 0.0;    // s0: b_L + b_R at T_ref
+  double left_mm = 0.0;              // b_L at reference conditions
+  double right_mm = 0.0;             // b_R
+  double sum_mm = 0.0;               // s0: b_L + b_R at T_ref
   double temp_slope_mm_per_c = 0.0;  // k: the sum's leftover temperature dependence
   double difference_mm = 0.0;        // median of right - left
   double mean_temp_c = 0.0;

@@ -91,8 +91,8 @@ void fit_wheel(WheelWear& wheel, const FleetWear& fleet, std::optional<double> d
                const SensitivityAt& sensitivity) {
   const std::vector<WearObservation>& runs = wheel.runs;
   try {
-    wheel.fit = fit_wear_line(series_of(wheel, clearances(runs), sensitivity), drift_onset,
-                              kDriftDegree);
+    wheel.fit =
+        fit_wear_line(series_of(wheel, clearances(runs), sensitivity), drift_onset, kDriftDegree);
   } catch (const std::invalid_argument&) {
     wheel.status = "too few runs";
     return;
@@ -153,10 +153,8 @@ void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistor
     faulty.sensor_fault = drift;
     faulty.status = "sensor fault";
   }
-  fit_wheel(l, fleet, l.sensor_fault ? std::optional(drift->onset_day) : std::nullopt,
-            sensitivity);
-  fit_wheel(r, fleet, r.sensor_fault ? std::optional(drift->onset_day) : std::nullopt,
-            sensitivity);
+  fit_wheel(l, fleet, l.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
+  fit_wheel(r, fleet, r.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
   fleet.wheels.push_back(std::move(l));
   fleet.wheels.push_back(std::move(r));
 }

@@ -13,10 +13,10 @@ namespace flange::host {
 
 struct LimitForecast {
   double limit_clearance_mm = 0.0;
-  bool reached = false;            // the fitted clearance is at or past the limit already
-  std::optional<double> km;        // distance left; nothing when the rate is not positive
-  std::optional<double> km_low;    // at the upper rate
-  std::optional<double> km_high;   // at the lower rate; nothing when it is not positive
+  bool reached = false;           // the fitted clearance is at or past the limit already
+  std::optional<double> km;       // distance left; nothing when the rate is not positive
+  std::optional<double> km_low;   // at the upper rate
+  std::optional<double> km_high;  // at the lower rate; nothing when it is not positive
   std::optional<double> days, days_low, days_high;
   std::string date, date_low, date_high;  // YYYY-MM-DD; "" when unknown
 };
@@ -24,10 +24,10 @@ struct LimitForecast {
 struct ForecastInput {
   double clearance_now_mm = 0.0;  // the fitted line at the last run
   double rate_mm_per_km = 0.0;
-  double rate_low_mm_per_km = 0.0;   // 95 % interval
+  double rate_low_mm_per_km = 0.0;  // 95 % interval
   double rate_high_mm_per_km = 0.0;
-  double km_per_day = 0.0;           // > 0 for days and dates
-  double last_day = 0.0;             // days since 1970-01-01 of the last run
+  double km_per_day = 0.0;  // > 0 for days and dates
+  double last_day = 0.0;    // days since 1970-01-01 of the last run
 };
 
 LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_mm);

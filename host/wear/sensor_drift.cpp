@@ -65,8 +65,8 @@ std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
   finding.onset_day = best->onset_day;
   finding.difference_t = t;
   finding.size_mm = std::abs(drift.mm);
-  const DriftValue own_drift = drift_at(fit_wear_line(own, best->onset_day, kDriftDegree),
-                                        own.day.back(), last_scale(own));
+  const DriftValue own_drift =
+      drift_at(fit_wear_line(own, best->onset_day, kDriftDegree), own.day.back(), last_scale(own));
   finding.rate_mm_per_day = own_drift.mm / (own.day.back() - best->onset_day);
   return finding;
 }

@@ -23,9 +23,9 @@ namespace flange::host {
 
 // Terms of the drift in the time since the onset: linear and square (see above).
 inline constexpr int kDriftDegree = 2;
-// A drift is flagged when its value by the last run over its standard error reaches this. The onset search tries every run day, and a
-// fleet has hundreds of sensors: a bound far in the normal tail keeps false flags below one in
-// a fleet when the residuals are near normal.
+// A drift is flagged when its value by the last run over its standard error reaches this. The onset
+// search tries every run day, and a fleet has hundreds of sensors: a bound far in the normal tail
+// keeps false flags below one in a fleet when the residuals are near normal.
 inline constexpr double kDriftTStatistic = 6.0;
 // ... and when it has moved the difference by at least this much (mm) by the last run: the
 // smallest change that shifts an alarm decision (twice the alarms' default 0.1 mm hysteresis).
@@ -34,11 +34,11 @@ inline constexpr double kMinDriftMm = 0.2;
 inline constexpr std::size_t kMinRunsAfterOnset = 5;
 
 struct DriftFinding {
-  bool left = true;            // the faulty sensor's side
-  double onset_day = 0.0;      // days since 1970-01-01
+  bool left = true;              // the faulty sensor's side
+  double onset_day = 0.0;        // days since 1970-01-01
   double rate_mm_per_day = 0.0;  // in its own series: the drift by the last run / the days
-  double difference_t = 0.0;   // the difference's drift by the last run / its standard error
-  double size_mm = 0.0;        // |the difference's drift by the last run|
+  double difference_t = 0.0;     // the difference's drift by the last run / its standard error
+  double size_mm = 0.0;          // |the difference's drift by the last run|
 };
 
 // `difference`, `left_series` and `right_series` share km, day and segments (their y: right -

@@ -12,8 +12,9 @@ namespace flange::host {
 WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day,
                           int drift_degree) {
   const auto n = static_cast<Eigen::Index>(series.y.size());
-  const int segments =
-      series.segment.empty() ? 1 : *std::max_element(series.segment.begin(), series.segment.end()) + 1;
+  const int segments = series.segment.empty()
+                           ? 1
+                           : *std::max_element(series.segment.begin(), series.segment.end()) + 1;
   const Eigen::Index params = segments + 1 + (drift_onset_day ? drift_degree : 0);
   if (n <= params) throw std::invalid_argument("fit_wear_line: too few points for the model");
   WearLineFit fit;
@@ -24,7 +25,8 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
     const auto i = static_cast<std::size_t>(k);
     x(k, series.segment[i]) = 1.0;
     x(k, segments) = series.km[i] - fit.km0;
-    const double since_onset = drift_onset_day ? std::max(0.0, series.day[i] - *drift_onset_day) : 0.0;
+    const double since_onset =
+        drift_onset_day ? std::max(0.0, series.day[i] - *drift_onset_day) : 0.0;
     const double scale = series.drift_scale.empty() ? 1.0 : series.drift_scale[i];
     for (int power = 1; drift_onset_day && power <= drift_degree; ++power) {
       x(k, segments + power) = scale * std::pow(since_onset, power);
@@ -39,8 +41,8 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
   // (X^T X)^-1 from the same QR, never from the normal equations: P R^-1 R^-T P^T.
   const Eigen::MatrixXd r_upper =
       qr.matrixR().topLeftCorner(params, params).triangularView<Eigen::Upper>();
-  const Eigen::MatrixXd r_inverse = r_upper.triangularView<Eigen::Upper>().solve(
-      Eigen::MatrixXd::Identity(params, params));
+  const Eigen::MatrixXd r_inverse =
+      r_upper.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(params, params));
   const Eigen::MatrixXd xtx_inv =
       qr.colsPermutation() * (r_inverse * r_inverse.transpose()) * qr.colsPermutation().transpose();
   const Eigen::MatrixXd cov = xtx_inv * (fit.residual_sd * fit.residual_sd);

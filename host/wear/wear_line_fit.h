@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The wear model of one series, fitted by least squares (Eigen's column-pivoting QR):
-//   y_k = a_seg(k) + r (km_k - km_0) [+ m_k (g tau_k (+ g2 tau_k^2))],  tau_k = max(0, day_k - onset)
+//   y_k = a_seg(k) + r (km_k - km_0) [+ m_k (g tau_k (+ g2 tau_k^2))],  tau_k = max(0, day_k -
+//   onset)
 // one intercept per segment (a reprofiling starts a new one: the flange is new again), one rate
 // per km for the whole series (the wheel wears at its own rate whatever its flange's age), and
 // optionally a drift from an onset: a sensor's offset creeping with time, not distance, scaled
@@ -13,9 +14,9 @@
 namespace flange::host {
 
 struct WearSeries {
-  std::vector<double> km;   // odometer at each point
-  std::vector<double> day;  // days since 1970-01-01
-  std::vector<double> y;    // the fitted quantity (mm)
+  std::vector<double> km;    // odometer at each point
+  std::vector<double> day;   // days since 1970-01-01
+  std::vector<double> y;     // the fitted quantity (mm)
   std::vector<int> segment;  // 0, 0, ..., 1, 1, ...: which flange each point saw
   // Multiplies the drift terms point by point (a drift in volts read through the sensor's
   // slope in mm/V at that point: sensor_sensitivity.h); empty: 1, a drift in mm.
@@ -29,15 +30,16 @@ struct WearLineFit {
   double rate_se = 0.0;  // its standard error
   std::optional<double> drift_onset_day;
   std::vector<double> drift_coefficients;  // g, g2: per day and per day^2 (in mm / m_k)
-  double rss = 0.0;          // residual sum of squares
-  int dof = 0;               // points minus parameters
-  double residual_sd = 0.0;  // sqrt(rss / dof)
+  double rss = 0.0;                        // residual sum of squares
+  int dof = 0;                             // points minus parameters
+  double residual_sd = 0.0;                // sqrt(rss / dof)
   // (X^T X)^-1 scaled by the residual variance, in the parameter order
   // [intercepts..., rate, drift]: for the forecast's interval.
   std::vector<std::vector<double>> covariance;
 };
 
-// drift_degree 1 or 2 (with an onset). At least one more point than parameters. Throws std::invalid_argument otherwise.
+// drift_degree 1 or 2 (with an onset). At least one more point than parameters. Throws
+// std::invalid_argument otherwise.
 WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day,
                           int drift_degree = 1);
 

@@ -125,22 +125,23 @@ void write_wear_csv(const std::filesystem::path& path, const FleetWear& fleet) {
 }
 
 std::string fleet_wear_text(const FleetWear& fleet) {
-  std::string text = fmt::format(
-      "  {:<5} {:<12} {:>4} {:>3} {:>7}  {:<26} {:<12} {:<36} {}\n", "loco", "wheel", "runs",
-      "rep", "wear_mm", "rate mm/1000km [95 %]", "status", "warning date [95 %]",
-      "critical date");
+  std::string text = fmt::format("  {:<5} {:<12} {:>4} {:>3} {:>7}  {:<26} {:<12} {:<36} {}\n",
+                                 "loco", "wheel", "runs", "rep", "wear_mm", "rate mm/1000km [95 %]",
+                                 "status", "warning date [95 %]", "critical date");
   for (const WheelWear& w : fleet.wheels) {
     const std::string warning =
-        w.warning.reached ? "reached"
-                          : fmt::format("{} [{}, {}]", w.warning.date.empty() ? "-" : w.warning.date,
-                                        w.warning.date_low.empty() ? "-" : w.warning.date_low,
-                                        w.warning.date_high.empty() ? "-" : w.warning.date_high);
+        w.warning.reached
+            ? "reached"
+            : fmt::format("{} [{}, {}]", w.warning.date.empty() ? "-" : w.warning.date,
+                          w.warning.date_low.empty() ? "-" : w.warning.date_low,
+                          w.warning.date_high.empty() ? "-" : w.warning.date_high);
     text += fmt::format(
         "  {:<5} {:<12} {:>4} {:>3} {:>7.3f}  {:<26} {:<12} {:<36} {}\n", w.wheel.locomotive,
-        fmt::format("axle {} {}", w.wheel.axle, w.wheel.side), w.runs.size(),
-        w.reprofilings.size(), w.wear_now_mm,
+        fmt::format("axle {} {}", w.wheel.axle, w.wheel.side), w.runs.size(), w.reprofilings.size(),
+        w.wear_now_mm,
         fmt::format("{:.4f} [{:.4f}, {:.4f}]", w.rate_mm_per_1000km, w.rate_low, w.rate_high),
-        w.status, warning, w.critical.reached ? "reached" : (w.critical.date.empty() ? "-" : w.critical.date));
+        w.status, warning,
+        w.critical.reached ? "reached" : (w.critical.date.empty() ? "-" : w.critical.date));
   }
   return text;
 }

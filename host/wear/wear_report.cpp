@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -49,9 +49,9 @@ std::string panel_script(const WheelWear* w, const std::string& label, int index
   const std::string block = fmt::format("w{}", index);
   const bool fault = w->sensor_fault.has_value();
   std::string script = panel_data(*w, block, gap);
-  script += fmt::format("set title '{}: {:.3f} mm/1000 km{}' tc rgb '{}'\n", label,
-                        w->rate_mm_per_1000km, fault ? " (sensor fault)" : "",
-                        fault ? "#d62728" : "#000000");
+  script +=
+      fmt::format("set title '{}: {:.3f} mm/1000 km{}' tc rgb '{}'\n", label, w->rate_mm_per_1000km,
+                  fault ? " (sensor fault)" : "", fault ? "#d62728" : "#000000");
   script += fmt::format(
       "plot ${0} using 1:2 with points pt 7 ps 0.4 lc rgb '#1f77b4', ${0}_fit using 1:2 with "
       "lines lw 2 lc rgb '#000000', {1} with lines dt 2 lc rgb '#ff7f0e', {2} with lines dt 2 "
@@ -106,8 +106,8 @@ void write_table(std::ofstream& html, const FleetWear& fleet) {
         coeffs::html_escape(w.wheel.locomotive), w.wheel.axle, w.wheel.side, w.runs.size(),
         w.reprofilings.size(), w.wear_now_mm, w.rate_mm_per_1000km, w.rate_low, w.rate_high,
         w.status, std::isfinite(days) ? fmt::format("{:.0f}", days) : "-",
-        interval_text(w.warning.km, w.warning.km_low, w.warning.km_high, 0),
-        date_range(w.warning), date_range(w.critical));
+        interval_text(w.warning.km, w.warning.km_low, w.warning.km_high, 0), date_range(w.warning),
+        date_range(w.critical));
   }
   html << "</table>\n";
 }

@@ -34,8 +34,8 @@ struct MaintenanceMark {
 
 struct WheelHistory {
   WheelId wheel;
-  std::vector<WearObservation> runs;           // time order
-  std::vector<MaintenanceMark> maintenance;    // time order
+  std::vector<WearObservation> runs;         // time order
+  std::vector<MaintenanceMark> maintenance;  // time order
 };
 
 // Days since 1970-01-01 of an ISO 8601 UTC time "YYYY-MM-DD[Thh:mm[:ss[.f]]][Z]". Throws

@@ -43,11 +43,11 @@ TwinConfig fleet_day_twin(const TwinConfig& base, const FleetTruth& truth, int l
   TwinConfig config = base;
   const SensorDrift* drift = drift_of(truth, locomotive, channel);
   if (drift == nullptr || day < drift->start_day) return config;
-  config.effects.push_back(make_effect_settings(
-      "ageing_drift",
-      {{"rate_v_per_day", drift->rate_v_per_day},
-       {"start_age_days", static_cast<double>(day - drift->start_day)}},
-      "fleet drift"));
+  config.effects.push_back(
+      make_effect_settings("ageing_drift",
+                           {{"rate_v_per_day", drift->rate_v_per_day},
+                            {"start_age_days", static_cast<double>(day - drift->start_day)}},
+                           "fleet drift"));
   return config;
 }
 

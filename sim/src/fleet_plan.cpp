@@ -29,9 +29,10 @@ double uniform_in(GaussianSource& draws, double low, double high) {
 
 void check_settings(const FleetSettings& settings) {
   if (settings.locomotives < 1 || settings.locomotives > kMaxFleetLocomotives) {
-    throw BadArgument(fmt::format("--locomotives: {} is outside its valid range: a whole number 1 "
-                                  "to {}",
-                                  settings.locomotives, kMaxFleetLocomotives));
+    throw BadArgument(
+        fmt::format("--locomotives: {} is outside its valid range: a whole number 1 "
+                    "to {}",
+                    settings.locomotives, kMaxFleetLocomotives));
   }
   if (settings.days < 1 || settings.days > kMaxFleetDays) {
     throw BadArgument(fmt::format("--days: {} is outside its valid range: a whole number 1 to {}",

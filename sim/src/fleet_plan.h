@@ -32,28 +32,28 @@ struct FleetDraws {
   double max_day_km = 750.0;
   double left_rate_low = 0.05, left_rate_high = 0.10;     // mm per 1000 km, outer wheel
   double right_rate_low = 0.025, right_rate_high = 0.06;  // mm per 1000 km, inner wheel
-  double initial_wear_low_mm = 0.3;  // wear at day 0 (part-worn), uniform
+  double initial_wear_low_mm = 0.3;                       // wear at day 0 (part-worn), uniform
   double initial_wear_high_mm = 4.0;
   // The depot reprofiles an axle on a depot day when its more worn wheel has worn this much:
   // below the 6 mm of the warning alarm, as a depot plans.
   double depot_reprofile_wear_mm = 4.2;
   double drift_rate_low_v_per_day = 0.008;  // |ageing drift| of a drifting sensor, uniform
   double drift_rate_high_v_per_day = 0.02;
-  double ambient_mean_c = 30.0;  // seasonal ambient: mean + amplitude sin(2 pi (doy - 105)/365)
+  double ambient_mean_c = 30.0;      // seasonal ambient: mean + amplitude sin(2 pi (doy - 105)/365)
   double ambient_amplitude_c = 6.0;  // (hottest in July on the Ethio-Djibouti line)
 };
 
 struct WheelTruth {
-  int channel = 0;                    // 0 to 11 (docs/locomotive.md)
+  int channel = 0;  // 0 to 11 (docs/locomotive.md)
   double wear_rate_mm_per_1000km = 0.0;
-  double initial_wear_mm = 0.0;       // at the start of day 0
-  std::vector<int> reprofiled_days;   // days (from 0) on which the depot reprofiled it
+  double initial_wear_mm = 0.0;      // at the start of day 0
+  std::vector<int> reprofiled_days;  // days (from 0) on which the depot reprofiled it
 };
 
 struct LocomotiveTruth {
-  std::string name;                 // "L01", "L02", ...
-  std::vector<double> day_km;       // distance run each day; 0 on depot days
-  std::vector<WheelTruth> wheels;   // 12, in channel order
+  std::string name;                // "L01", "L02", ...
+  std::vector<double> day_km;      // distance run each day; 0 on depot days
+  std::vector<WheelTruth> wheels;  // 12, in channel order
   // Flange wear (mm) of every wheel at the start of each day's service: wear_mm[day][channel].
   std::vector<std::vector<double>> wear_mm;
 };

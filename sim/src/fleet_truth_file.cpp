@@ -65,18 +65,17 @@ void write_fleet_truth(const std::filesystem::path& path, const FleetTruth& trut
                       {"start", iso_date(start + drift.start_day)},
                       {"rate_v_per_day", drift.rate_v_per_day}});
   }
-  const ordered_json json = {
-      {"generated_by", generated_by},
-      {"seed", truth.settings.seed},
-      {"first_day", iso_date(start)},
-      {"days", truth.settings.days},
-      {"recording",
-       {{"fs_hz", recording.fs_hz},
-        {"duration_s", recording.duration_s},
-        {"route_tangent_out_m", recording.route_tangent_out_m},
-        {"new_flange_clearance_mm", recording.new_flange_clearance_mm}}},
-      {"locomotives", locomotives},
-      {"drifting_sensors", drifts}};
+  const ordered_json json = {{"generated_by", generated_by},
+                             {"seed", truth.settings.seed},
+                             {"first_day", iso_date(start)},
+                             {"days", truth.settings.days},
+                             {"recording",
+                              {{"fs_hz", recording.fs_hz},
+                               {"duration_s", recording.duration_s},
+                               {"route_tangent_out_m", recording.route_tangent_out_m},
+                               {"new_flange_clearance_mm", recording.new_flange_clearance_mm}}},
+                             {"locomotives", locomotives},
+                             {"drifting_sensors", drifts}};
   std::ofstream file(path, std::ios::binary);
   file << json.dump(1) << "\n";
   file.close();
@@ -117,7 +116,8 @@ FleetTruth read_fleet_truth(const std::filesystem::path& path) {
         if (truth.locomotives[k].name == name) drift.locomotive = static_cast<int>(k);
       }
       drift.channel = d.at("channel").get<int>();
-      drift.start_day = day_number(d.at("start").get<std::string>(), where) - truth.settings.start_day;
+      drift.start_day =
+          day_number(d.at("start").get<std::string>(), where) - truth.settings.start_day;
       drift.rate_v_per_day = d.at("rate_v_per_day").get<double>();
       truth.drifts.push_back(drift);
     }

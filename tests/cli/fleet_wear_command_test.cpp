@@ -29,17 +29,23 @@ std::string command_text(const std::vector<std::string>& args) {
 TEST(FleetWearCommand, ASmallFleetMatchesItsTruth) {
   const fs::path dir = fresh_test_dir("fleet_wear_small");
   const std::string store = "sqlite:" + (dir / "fleet.db").string();
-  const std::vector<std::string> simulate{"simulate", "--scenario", "fleet", "--locomotives", "2",
-                                          "--days", "45", "--seed", "11", "--store", store};
+  const std::vector<std::string> simulate{"simulate", "--scenario", "fleet", "--locomotives",
+                                          "2",        "--days",     "45",    "--seed",
+                                          "11",       "--store",    store};
   const FlangeOutcome simulated = run_flange_captured(simulate);
   ASSERT_EQ(simulated.status, 0) << command_text(simulate) << "\n" << simulated.err;
   ASSERT_TRUE(fs::exists(dir / "fleet_truth.json"));
-  const std::vector<std::string> wear{"wear",  "--store", store, "--out", (dir / "wear").string(),
-                                      "--truth", (dir / "fleet_truth.json").string()};
+  const std::vector<std::string> wear{"wear",
+                                      "--store",
+                                      store,
+                                      "--out",
+                                      (dir / "wear").string(),
+                                      "--truth",
+                                      (dir / "fleet_truth.json").string()};
   const FlangeOutcome estimated = run_flange_captured(wear);
   EXPECT_EQ(estimated.status, 0) << command_text(wear) << "\n" << estimated.out << estimated.err;
-  for (const char* name : {"wear.json", "wear.csv", "index.html", "wear_01.svg", "wear_02.svg",
-                           "truth_check.json"}) {
+  for (const char* name :
+       {"wear.json", "wear.csv", "index.html", "wear_01.svg", "wear_02.svg", "truth_check.json"}) {
     EXPECT_TRUE(fs::exists(dir / "wear" / name)) << name;
   }
   std::ifstream file(dir / "wear" / "truth_check.json");
@@ -72,8 +78,7 @@ TEST(FleetWearCommand, BadArgumentsNameTheOptionAndItsRange) {
       {{"simulate", "--scenario", "fleet", "--locomotives", "1", "--days", "3", "--store",
         "mysql://x"},
        "--store"},
-      {{"wear", "--store", store, "--out", (dir / "w").string(), "--warning-mm", "-3"},
-       "warning"}};
+      {{"wear", "--store", store, "--out", (dir / "w").string(), "--warning-mm", "-3"}, "warning"}};
   for (const auto& [args, message] : cases) {
     const FlangeOutcome outcome = run_flange_captured(args);
     EXPECT_EQ(outcome.status, 2) << command_text(args) << "\n" << outcome.err;

@@ -36,7 +36,7 @@ TEST(AxleClearance, ShiftCancelsAndTemperatureLeftoverIsRemoved) {
   EXPECT_NEAR(axle->left_mm, 4.2, 1e-9);
   EXPECT_NEAR(axle->right_mm, 3.1, 1e-9);
   EXPECT_NEAR(axle->temp_slope_mm_per_c, 0.008, 1e-9);  // the sum carries both sensors' slope
-  EXPECT_EQ(axle->samples, 700u);  // the tangent's samples only
+  EXPECT_EQ(axle->samples, 700u);                       // the tangent's samples only
 }
 
 TEST(AxleClearance, ASensorOnTheBottomRailInTheCurveDoesNotBiasIt) {
@@ -53,7 +53,7 @@ TEST(AxleClearance, TheMedianOnlyHoldsWhileTheCurveIsUnderHalfTheRun) {
   const std::optional<AxleClearance> axle = axle_clearance(left, right);
   ASSERT_TRUE(axle.has_value());
   EXPECT_NEAR(axle->left_mm + axle->right_mm, 7.3, 1e-9);  // the sum still holds
-  EXPECT_NEAR(axle->left_mm, 4.2 - 2.5, 1e-9);              // the difference is the curve's
+  EXPECT_NEAR(axle->left_mm, 4.2 - 2.5, 1e-9);             // the difference is the curve's
   EXPECT_EQ(axle->samples, 600u);
 }
 
