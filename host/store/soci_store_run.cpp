@@ -75,9 +75,8 @@ void SociStore::insert_wheel_runs(long long run_id, const RunRecord& run, WheelI
           " :wheel, :channel, :wear, :clearance, :temp, :samples, :flagged, :alarm, :before,"
           " :after)",
       use(run_ids), use(wheel_ids), use(channels), use(wear.values, wear.present),
-      use(clearance.values, clearance.present), use(temps), use(samples), use(flagged),
-      use(alarms), use(mae_before.values, mae_before.present),
-      use(mae_after.values, mae_after.present);
+      use(clearance.values, clearance.present), use(temps), use(samples), use(flagged), use(alarms),
+      use(mae_before.values, mae_before.present), use(mae_after.values, mae_after.present);
 }
 
 void SociStore::insert_alarm_events(long long run_id, const RunRecord& run, WheelIds& created) {
@@ -137,8 +136,8 @@ long long SociStore::insert_run_row(const RunRecord& run) {
           " rows_read, flagged_rows, bad_rows, final_alarm, summary_json) VALUES (:locomotive,"
           " :session, :at, :distance, :odometer, :coefficients, :coefficients_sha, :calibration,"
           " :engine, :fs, :rows, :flagged, :bad, :alarm, :summary) RETURNING id",
-      use(locomotive_value, has_locomotive), use(session_value, has_session),
-      use(run.started_at), use(run.distance_km), use(run.odometer_km), use(run.coefficient_set),
+      use(locomotive_value, has_locomotive), use(session_value, has_session), use(run.started_at),
+      use(run.distance_km), use(run.odometer_km), use(run.coefficient_set),
       use(run.coefficient_sha256), use(calibration_value, has_calibration), use(run.engine),
       use(run.sample_rate_hz), use(rows), use(flagged), use(bad), use(run.final_alarm),
       use(run.summary_json), into(id);

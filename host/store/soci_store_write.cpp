@@ -7,8 +7,8 @@ namespace flange::host {
 
 namespace {
 
-using soci::use;
 using soci::into;
+using soci::use;
 
 soci::indicator present(const std::optional<double>& value) {
   return value ? soci::i_ok : soci::i_null;
@@ -22,8 +22,7 @@ void into_cache(std::map<std::tuple<std::string, int, std::string>, long long>& 
 }  // namespace
 
 long long SociStore::locomotive_id(const std::string& name) {
-  sql_ << "INSERT INTO locomotives (name) VALUES (:name) ON CONFLICT (name) DO NOTHING",
-      use(name);
+  sql_ << "INSERT INTO locomotives (name) VALUES (:name) ON CONFLICT (name) DO NOTHING", use(name);
   long long id = 0;
   sql_ << "SELECT id FROM locomotives WHERE name = :name", use(name), into(id);
   return id;
@@ -98,7 +97,8 @@ void SociStore::upsert_sensor(const SensorRecord& sensor) {
     WheelIds created;
     if (sensor.fitted_to) {
       const long long sensor_row = *sensor_id(sensor.serial);
-      const long long wheel = wheel_id(*sensor.fitted_to, default_channel(*sensor.fitted_to), created);
+      const long long wheel =
+          wheel_id(*sensor.fitted_to, default_channel(*sensor.fitted_to), created);
       long long fitted_wheel = -1;
       soci::indicator found = soci::i_null;
       sql_ << "SELECT wheel_id FROM sensor_fitments WHERE sensor_id = :sensor"
