@@ -10,7 +10,7 @@ PACKAGES=(
   libeigen3-dev libgtest-dev libgmock-dev googletest libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libfast-float-dev
   gnuplot-nox
-  libsoci-dev libboost-dev libpq-dev libsqlite3-dev postgresql
+  libsoci-dev libboost-dev libpq-dev libsqlite3-dev libssl-dev postgresql
   clang libclang-rt-14-dev python3
 )
 

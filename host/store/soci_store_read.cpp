@@ -180,4 +180,19 @@ std::uint64_t SociStore::run_count() {
   });
 }
 
+std::uint64_t SociStore::size_bytes() {
+  return store_guarded(url_.shown, "measuring the store", [&] {
+    long long bytes = 0;
+    if (url_.backend == StoreBackend::kSqlite) {
+      long long pages = 0, page_size = 0;
+      sql_ << "PRAGMA page_count", into(pages);
+      sql_ << "PRAGMA page_size", into(page_size);
+      bytes = pages * page_size;
+    } else {
+      sql_ << "SELECT pg_database_size(current_database())", into(bytes);
+    }
+    return static_cast<std::uint64_t>(bytes);
+  });
+}
+
 }  // namespace flange::host

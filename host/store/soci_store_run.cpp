@@ -123,8 +123,10 @@ long long SociStore::insert_run_row(const RunRecord& run) {
   if (!run.locomotive.empty()) locomotive = locomotive_id(run.locomotive);
   long long locomotive_value = locomotive.value_or(0);
   soci::indicator has_locomotive = locomotive ? soci::i_ok : soci::i_null;
-  long long session_value = run.session_id.value_or(0);
-  soci::indicator has_session = run.session_id ? soci::i_ok : soci::i_null;
+  std::optional<long long> session = run.session_id;
+  if (!session && run.session) session = insert_session(*run.session, {});
+  long long session_value = session.value_or(0);
+  soci::indicator has_session = session ? soci::i_ok : soci::i_null;
   long long calibration_value = run.calibration_id.value_or(0);
   soci::indicator has_calibration = run.calibration_id ? soci::i_ok : soci::i_null;
   const auto rows = static_cast<long long>(run.rows);
@@ -144,18 +146,36 @@ long long SociStore::insert_run_row(const RunRecord& run) {
   return id;
 }
 
+long long SociStore::insert_run(const RunRecord& run, WheelIds& created) {
+  const long long id = insert_run_row(run);
+  insert_wheel_runs(id, run, created);
+  insert_alarm_events(id, run, created);
+  insert_trace(id, run, created);
+  return id;
+}
+
 std::int64_t SociStore::record_run(const RunRecord& run) {
   return store_guarded(url_.shown, "recording a run", [&]() -> std::int64_t {
     WriteTransaction transaction(sql_, url_.backend);
     WheelIds created;
-    const long long id = insert_run_row(run);
-    insert_wheel_runs(id, run, created);
-    insert_alarm_events(id, run, created);
-    insert_trace(id, run, created);
+    const long long id = insert_run(run, created);
     pause_for_test();
     transaction.commit();
     wheel_ids_.insert(created.begin(), created.end());
     return id;
+  });
+}
+
+std::vector<std::int64_t> SociStore::record_runs(const std::vector<RunRecord>& runs) {
+  return store_guarded(url_.shown, "recording runs", [&] {
+    std::vector<std::int64_t> ids;
+    WriteTransaction transaction(sql_, url_.backend);
+    WheelIds created;
+    for (const RunRecord& run : runs) ids.push_back(insert_run(run, created));
+    pause_for_test();
+    transaction.commit();
+    wheel_ids_.insert(created.begin(), created.end());
+    return ids;
   });
 }
 

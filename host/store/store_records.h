@@ -108,6 +108,9 @@ struct TracePoint {
 struct RunRecord {
   std::string locomotive;  // "" for a run not tied to a locomotive (no wheel rows then)
   std::optional<std::int64_t> session_id;
+  // Without session_id: the run's session, written in the run's transaction (or found, when
+  // the same session is stored already).
+  std::optional<SessionRecord> session;
   std::string started_at;       // UTC
   double distance_km = 0.0;     // this run's distance
   double odometer_km = 0.0;     // the locomotive's odometer at the end of the run

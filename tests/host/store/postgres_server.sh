@@ -6,7 +6,8 @@
 #   bash postgres_server.sh stop STATE_FILE    # pg_ctl stop, delete the folder and STATE_FILE
 #
 # The server listens on a Unix socket in a new folder under /tmp (no TCP port), trusts local
-# connections as role "flange" and runs without fsync (a test server: nothing to keep). Debian's
+# connections as role "flange" and runs without fsync (a test server: nothing to keep);
+# FLANGE_POSTGRES_DURABLE=1 keeps PostgreSQL's durable defaults (the benchmark). Debian's
 # binaries live in /usr/lib/postgresql/<version>/bin, off PATH. initdb refuses to run as root:
 # as root the folder belongs to the "postgres" user and the tools run as it (runuser).
 set -euo pipefail
@@ -34,8 +35,11 @@ case "$action" in
     if [ "$(id -u)" = 0 ]; then chown postgres "$folder"; fi
     as_owner "$bin/initdb" -D "$folder/data" -A trust -U flange --no-sync >"$folder/initdb.log" 2>&1 ||
       { cat "$folder/initdb.log" >&2; rm -rf "$folder"; exit 1; }
-    as_owner "$bin/pg_ctl" -D "$folder/data" -l "$folder/server.log" -w -t 60 \
-      -o "-k $folder -c listen_addresses='' -c fsync=off -c synchronous_commit=off -c full_page_writes=off" \
+    settings="-k $folder -c listen_addresses=''"
+    if [ "${FLANGE_POSTGRES_DURABLE:-0}" != 1 ]; then
+      settings+=" -c fsync=off -c synchronous_commit=off -c full_page_writes=off"
+    fi
+    as_owner "$bin/pg_ctl" -D "$folder/data" -l "$folder/server.log" -w -t 60 -o "$settings" \
       start >/dev/null ||
       { cat "$folder/server.log" >&2; rm -rf "$folder"; exit 1; }
     echo "$folder" >"$state"
