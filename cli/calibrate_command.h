@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `flange calibrate`: fit (and refit, as sessions are appended) the temperature-compensating
-// regression from a calibration database.
+// regression from a calibration database, a CSV file or the bench sessions of a store.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -16,6 +16,8 @@ namespace flange::cli {
 struct CalibrateOptions {
   std::string data;                   // the calibration database (recording format)
   std::optional<std::string> append;  // a new session to add to it first
+  std::optional<std::string> store;   // sqlite:PATH or postgresql://...: import, refit from it
+  std::string sensor;                 // the sensor the sessions calibrate (store only; "" none)
   std::string out;                    // model.json
   host::RegressionOptions regression;
 };

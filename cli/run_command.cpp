@@ -10,21 +10,37 @@
 #include "locomotive_run.h"
 #include "locomotive_summary.h"
 #include "run_report.h"
+#include "store.h"
 #include "version.h"
 
 namespace flange::cli {
 
 namespace {
 
-int run_recording(const host::RunOptions& options, std::ostream& out) {
+// The store is opened before the run: a store that cannot be reached stops it early.
+std::unique_ptr<host::Store> open_run_store(const RunStoreOptions& options) {
+  if (!options.url) return nullptr;
+  return host::open_store(*options.url);
+}
+
+void say_stored(const host::Store& store, std::int64_t run_id, std::ostream& out) {
+  out << "  stored as run " << run_id << " in " << store.name() << "\n";
+}
+
+int run_recording(const RunCommandOptions& command, std::ostream& out) {
+  const host::RunOptions& options = command.run;
+  const std::unique_ptr<host::Store> store = open_run_store(command.store);
   host::RunTrace trace;
   const host::RunSummary summary =
-      host::run_pipeline(options, options.report_dir ? &trace : nullptr);
+      host::run_pipeline(options, options.report_dir || store ? &trace : nullptr);
   out << run_summary_text(options, summary);
   if (options.out_csv) out << "  wrote " << *options.out_csv << "\n";
   if (options.report_dir) {
     write_run_report(*options.report_dir, options, summary, trace);
     out << "  report " << *options.report_dir << "/index.html\n";
+  }
+  if (store) {
+    say_stored(*store, store_recording_run(*store, command.store, options, summary, trace), out);
   }
   return summary.rtl_mismatches > 0 ? kExitFailure : kExitOk;
 }
@@ -36,9 +52,11 @@ int run_manifest(const RunCommandOptions& options, const std::vector<std::string
     throw host::InputError("--report: with --manifest the report goes into the --out folder");
   }
   const host::LocomotiveManifest manifest = host::load_locomotive_manifest(*options.manifest);
+  const std::unique_ptr<host::Store> store = open_run_store(options.store);
   std::optional<std::filesystem::path> out_dir;
   if (options.run.out_csv) out_dir = *options.run.out_csv;
-  const host::LocomotiveRun run = host::run_locomotive(manifest, options.run, out_dir);
+  const host::LocomotiveRun run =
+      host::run_locomotive(manifest, options.run, out_dir, store != nullptr);
   out << host::locomotive_table_text(run);
   if (out_dir) {
     host::write_locomotive_summary_json(*out_dir / "summary.json", run,
@@ -46,10 +64,34 @@ int run_manifest(const RunCommandOptions& options, const std::vector<std::string
     host::write_locomotive_report(*out_dir, run);
     out << "  wrote " << out_dir->string() << "/channel_XX.csv, summary.json and index.html\n";
   }
+  if (store) say_stored(*store, store_locomotive_run(*store, options.store, run), out);
   for (const host::ChannelRun& channel : run.channels) {
     if (channel.summary.rtl_mismatches > 0) return kExitFailure;
   }
   return kExitOk;
+}
+
+void add_run_store_options(CLI::App& cmd, RunStoreOptions& store, CLI::Option* manifest) {
+  CLI::Option* url = cmd.add_option(
+      "--store", store.url,
+      "sqlite:PATH or postgresql://...: keep the run there (its session, summary, wheels, "
+      "alarm events and a per-kilometre trace; docs/store.md)");
+  cmd.add_option("--locomotive", store.locomotive,
+                 "with --store and --manifest: the locomotive's name (default: the manifest's "
+                 "folder name)")
+      ->needs(url)
+      ->needs(manifest);
+  cmd.add_option("--started-at", store.started_at,
+                 "with --store: when the run started, UTC (YYYY-MM-DDThh:mm:ssZ; default now)")
+      ->needs(url);
+  cmd.add_option("--distance-km", store.distance_km,
+                 "with --store: the run's distance in km (0: not known, one trace bin)")
+      ->needs(url)
+      ->check(CLI::Range(0.0, 1e5));
+  cmd.add_option("--odometer-km", store.odometer_km,
+                 "with --store: the locomotive's odometer at the end of the run, km")
+      ->needs(url)
+      ->check(CLI::Range(0.0, 1e8));
 }
 
 }  // namespace
@@ -88,6 +130,7 @@ CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options) {
                   "for a recording over 1 MiB")
       ->check(CLI::Range(0, 2))
       ->default_val(0);
+  add_run_store_options(*cmd, options.store, manifest);
   host::ThresholdConfig& t = run.thresholds;
   cmd->add_option("--warning-mm", t.warning_clearance_mm, "warning clearance (mm)")
       ->default_val(t.warning_clearance_mm);
@@ -111,10 +154,16 @@ int run_run_command(const RunCommandOptions& options, const std::vector<std::str
     if (options.run.input.empty()) {
       throw host::InputError("--input REC.csv or --manifest locomotive.json is required");
     }
-    return run_recording(options.run, out);
+    return run_recording(options, out);
   } catch (const host::InputError& error) {
     err << "flange run: " << error.what() << "\n";
     return kExitBadArgument;
+  } catch (const host::StoreUrlError& error) {
+    err << "flange run: " << error.what() << "\n";
+    return kExitBadArgument;
+  } catch (const host::StoreError& error) {
+    err << "flange run: " << error.what() << "\n";
+    return kExitFailure;
   }
 }
 

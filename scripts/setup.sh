@@ -9,7 +9,8 @@ PACKAGES=(
   verilator libsystemc-dev yosys
   libeigen3-dev libgtest-dev libgmock-dev googletest libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libfast-float-dev
-  gnuplot-nox libboost-dev
+  gnuplot-nox
+  libsoci-dev libboost-dev libpq-dev libsqlite3-dev libssl-dev postgresql
   clang libclang-rt-14-dev python3
 )
 

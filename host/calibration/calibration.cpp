@@ -21,39 +21,62 @@ Calibration::Estimate Calibration::estimate(double voltage_v, double temp_c) con
   return e;
 }
 
+namespace {
+
+// The rows of a database as they are read: every run label, the referenced rows to fit.
+struct CalibrationInput {
+  Calibration calibration;
+  CalibrationData data;
+
+  void add(const RecordingRow& row) {
+    std::vector<std::string>& runs = calibration.runs;
+    if (std::find(runs.begin(), runs.end(), row.run) == runs.end()) runs.push_back(row.run);
+    if (!row.clearance_mm) {
+      ++calibration.rows_without_reference;
+      return;
+    }
+    data.voltage_v.push_back(row.voltage_v);
+    data.temp_c.push_back(row.temp_c);
+    data.clearance_mm.push_back(*row.clearance_mm);
+  }
+
+  Calibration fit(const std::string& source, const RegressionOptions& options) && {
+    if (data.clearance_mm.empty()) {
+      throw InputError(
+          fmt::format("{}: no row has a clearance_mm reference to calibrate against", source));
+    }
+    try {
+      calibration.fit = fit_regression(data, options);
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("{}: {}", source, error.what()));
+    }
+    const auto [v_lo, v_hi] = std::minmax_element(data.voltage_v.begin(), data.voltage_v.end());
+    const auto [t_lo, t_hi] = std::minmax_element(data.temp_c.begin(), data.temp_c.end());
+    const auto [d_lo, d_hi] =
+        std::minmax_element(data.clearance_mm.begin(), data.clearance_mm.end());
+    calibration.range = {*v_lo, *v_hi, *t_lo, *t_hi, *d_lo, *d_hi};
+    return std::move(calibration);
+  }
+};
+
+}  // namespace
+
 Calibration calibrate_database(const std::string& database_csv, const RegressionOptions& options) {
   RecordingReader reader(database_csv);
-  CalibrationData data;
-  Calibration calibration;
-  calibration.database = database_csv;
-  while (const std::optional<RecordingRow> row = reader.next()) {
-    if (std::find(calibration.runs.begin(), calibration.runs.end(), row->run) ==
-        calibration.runs.end()) {
-      calibration.runs.push_back(row->run);
-    }
-    if (!row->clearance_mm) {
-      ++calibration.rows_without_reference;
-      continue;
-    }
-    data.voltage_v.push_back(row->voltage_v);
-    data.temp_c.push_back(row->temp_c);
-    data.clearance_mm.push_back(*row->clearance_mm);
-  }
-  calibration.rows = reader.rows_read();
-  if (data.clearance_mm.empty()) {
-    throw InputError(
-        fmt::format("{}: no row has a clearance_mm reference to calibrate against", database_csv));
-  }
-  try {
-    calibration.fit = fit_regression(data, options);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}: {}", database_csv, error.what()));
-  }
-  const auto [v_lo, v_hi] = std::minmax_element(data.voltage_v.begin(), data.voltage_v.end());
-  const auto [t_lo, t_hi] = std::minmax_element(data.temp_c.begin(), data.temp_c.end());
-  const auto [d_lo, d_hi] = std::minmax_element(data.clearance_mm.begin(), data.clearance_mm.end());
-  calibration.range = {*v_lo, *v_hi, *t_lo, *t_hi, *d_lo, *d_hi};
-  return calibration;
+  CalibrationInput input;
+  input.calibration.database = database_csv;
+  while (const std::optional<RecordingRow> row = reader.next()) input.add(*row);
+  input.calibration.rows = reader.rows_read();
+  return std::move(input).fit(database_csv, options);
+}
+
+Calibration calibrate_rows(const std::string& source, const std::vector<RecordingRow>& rows,
+                           const RegressionOptions& options) {
+  CalibrationInput input;
+  input.calibration.database = source;
+  for (const RecordingRow& row : rows) input.add(row);
+  input.calibration.rows = rows.size();
+  return std::move(input).fit(source, options);
 }
 
 namespace {

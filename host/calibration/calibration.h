@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "recording_row.h"
 #include "regression.h"
 
 namespace flange::host {
@@ -35,6 +36,11 @@ struct Calibration {
 
 // Reads the database (strict: any bad row is an InputError) and fits it.
 Calibration calibrate_database(const std::string& database_csv, const RegressionOptions& options);
+
+// The same fit from rows already read (a store's bench sessions, in the order they were
+// recorded): `source` names them in messages and in the calibration's database field.
+Calibration calibrate_rows(const std::string& source, const std::vector<RecordingRow>& rows,
+                           const RegressionOptions& options);
 
 // Validates `new_csv` and appends its rows to `database_csv` (creating the run column if the
 // database has none; rows of a file without one are labelled with the file's stem). The

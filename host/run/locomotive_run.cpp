@@ -50,7 +50,8 @@ int core_channel_count(const std::string& coeffs) {
 }  // namespace
 
 LocomotiveRun run_locomotive(const LocomotiveManifest& manifest, const RunOptions& shared,
-                             const std::optional<std::filesystem::path>& out_dir) {
+                             const std::optional<std::filesystem::path>& out_dir,
+                             bool keep_trace) {
   LocomotiveRun run;
   run.manifest = manifest;
   run.out_dir = out_dir;
@@ -79,7 +80,8 @@ LocomotiveRun run_locomotive(const LocomotiveManifest& manifest, const RunOption
     channel_run.options.report_dir.reset();
     if (out_dir)
       channel_run.options.out_csv = (*out_dir / channel_file_name(channel.channel)).string();
-    channel_run.summary = run_pipeline(channel_run.options, out_dir ? &channel_run.trace : nullptr);
+    channel_run.summary =
+        run_pipeline(channel_run.options, out_dir || keep_trace ? &channel_run.trace : nullptr);
   }
   return run;
 }

@@ -17,7 +17,7 @@ struct ChannelRun {
   ManifestChannel channel;
   RunOptions options;  // what the channel ran with: the shared options, its input and output
   RunSummary summary;
-  RunTrace trace;  // filled only when the run writes into a folder (for the report)
+  RunTrace trace;  // filled when the run writes into a folder (for the report) or keeps traces
 };
 
 struct LocomotiveRun {
@@ -30,8 +30,10 @@ struct LocomotiveRun {
 // thresholds, lenient; its input, out_csv and report_dir are not used). With `out_dir`, each
 // channel's output CSV goes to out_dir/channel_XX.csv (the folder is created). Throws InputError
 // (exit status 2) for bad input, naming the channel's file, and when an output would overwrite a
-// channel's input; std::runtime_error when a file cannot be written.
+// channel's input; std::runtime_error when a file cannot be written. `keep_trace`: fill each
+// channel's trace without an `out_dir` too (a store keeps their reduction).
 LocomotiveRun run_locomotive(const LocomotiveManifest& manifest, const RunOptions& shared,
-                             const std::optional<std::filesystem::path>& out_dir);
+                             const std::optional<std::filesystem::path>& out_dir,
+                             bool keep_trace = false);
 
 }  // namespace flange::host

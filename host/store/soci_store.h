@@ -32,6 +32,7 @@ class SociStore final : public Store {
   std::int64_t record_calibration(const CalibrationRecord& calibration) override;
   std::int64_t record_run(const RunRecord& run) override;
   std::int64_t record_maintenance(const MaintenanceRecord& event) override;
+  std::vector<std::int64_t> record_runs(const std::vector<RunRecord>& runs) override;
 
   std::vector<LocomotiveRecord> locomotives() override;
   std::vector<StoredWheel> wheels() override;
@@ -44,6 +45,7 @@ class SociStore final : public Store {
   std::vector<std::pair<std::int64_t, CalibrationRecord>> calibrations() override;
   std::vector<TracePoint> run_trace(std::int64_t run_id) override;
   std::uint64_t run_count() override;
+  std::uint64_t size_bytes() override;
 
  private:
   using WheelIds = std::map<std::tuple<std::string, int, std::string>, long long>;
@@ -53,7 +55,10 @@ class SociStore final : public Store {
   long long wheel_id(const WheelKey& wheel, int channel, WheelIds& created);
   std::optional<long long> existing_wheel_id(const WheelKey& wheel);
   std::optional<long long> sensor_id(const std::string& serial);
+  void insert_bench_rows(long long session_id, const std::vector<BenchRow>& rows);
+  long long insert_session(const SessionRecord& session, const std::vector<BenchRow>& rows);
   long long insert_run_row(const RunRecord& run);
+  long long insert_run(const RunRecord& run, WheelIds& created);
   void insert_wheel_runs(long long run_id, const RunRecord& run, WheelIds& created);
   void insert_alarm_events(long long run_id, const RunRecord& run, WheelIds& created);
   void insert_trace(long long run_id, const RunRecord& run, WheelIds& created);

@@ -24,9 +24,8 @@ std::vector<std::pair<std::int64_t, SessionRecord>> SociStore::sessions(SessionK
                          " e.source_sha256, s.serial FROM sessions e"
                          " LEFT JOIN sensors s ON s.id = e.sensor_id WHERE e.kind = :kind"
                          " ORDER BY e.id",
-         use(kind_name), into(id), into(row.label), into(row.started_at),
-         into(row.sample_rate_hz), into(row.source_file), into(row.source_sha256),
-         into(row.sensor_serial, has_sensor));
+         use(kind_name), into(id), into(row.label), into(row.started_at), into(row.sample_rate_hz),
+         into(row.source_file), into(row.source_sha256), into(row.sensor_serial, has_sensor));
     query.execute();
     while (query.fetch()) {
       if (has_sensor != soci::i_ok) row.sensor_serial.clear();
@@ -72,8 +71,8 @@ std::vector<std::pair<std::int64_t, CalibrationRecord>> SociStore::calibrations(
         (sql_.prepare << "SELECT c.id, c.fitted_at, s.serial, c.model_json, c.fitted_rows,"
                          " c.rmse_mm FROM calibrations c LEFT JOIN sensors s ON s.id ="
                          " c.sensor_id ORDER BY c.id",
-         into(id), into(row.fitted_at), into(row.sensor_serial, has_sensor),
-         into(row.model_json), into(rows), into(row.rmse_mm));
+         into(id), into(row.fitted_at), into(row.sensor_serial, has_sensor), into(row.model_json),
+         into(rows), into(row.rmse_mm));
     query.execute();
     while (query.fetch()) {
       if (has_sensor != soci::i_ok) row.sensor_serial.clear();
@@ -83,10 +82,9 @@ std::vector<std::pair<std::int64_t, CalibrationRecord>> SociStore::calibrations(
     for (auto& [calibration_id, record] : found) {
       const long long calibration_value = calibration_id;
       long long session = 0;
-      soci::statement sessions =
-          (sql_.prepare << "SELECT session_id FROM calibration_sessions"
-                           " WHERE calibration_id = :id ORDER BY session_id",
-           use(calibration_value), into(session));
+      soci::statement sessions = (sql_.prepare << "SELECT session_id FROM calibration_sessions"
+                                                  " WHERE calibration_id = :id ORDER BY session_id",
+                                  use(calibration_value), into(session));
       sessions.execute();
       while (sessions.fetch()) record.session_ids.push_back(session);
     }

@@ -82,4 +82,12 @@ std::unique_ptr<Store> open_store(const std::string& url) {
   return std::make_unique<SociStore>(parse_store_url(url), kStoreSchemaVersion);
 }
 
+std::unique_ptr<Store> open_store_at_schema_version(const std::string& url, int version) {
+  if (version < 1 || version > kStoreSchemaVersion) {
+    throw std::out_of_range("schema version " + std::to_string(version) + " is outside 1 to " +
+                            std::to_string(kStoreSchemaVersion));
+  }
+  return std::make_unique<SociStore>(parse_store_url(url), version);
+}
+
 }  // namespace flange::host

@@ -25,8 +25,8 @@ std::vector<LocomotiveRecord> SociStore::locomotives() {
     std::vector<LocomotiveRecord> found;
     LocomotiveRecord row;
     soci::statement query =
-        (sql_.prepare << "SELECT name, description FROM locomotives ORDER BY name",
-         into(row.name), into(row.description));
+        (sql_.prepare << "SELECT name, description FROM locomotives ORDER BY name", into(row.name),
+         into(row.description));
     query.execute();
     while (query.fetch()) found.push_back(row);
     return found;
@@ -47,8 +47,8 @@ std::vector<StoredWheel> SociStore::wheels() {
                          " f2.id DESC LIMIT 1) ORDER BY f.fitted_at DESC, f.id DESC LIMIT 1)"
                          " FROM wheels w JOIN locomotives l ON l.id = w.locomotive_id"
                          " ORDER BY l.name, w.axle, w.side",
-         into(row.wheel.wheel.locomotive), into(row.wheel.wheel.axle),
-         into(row.wheel.wheel.side), into(row.wheel.channel), into(row.sensor_serial, has_sensor));
+         into(row.wheel.wheel.locomotive), into(row.wheel.wheel.axle), into(row.wheel.wheel.side),
+         into(row.wheel.channel), into(row.sensor_serial, has_sensor));
     query.execute();
     while (query.fetch()) {
       if (has_sensor != soci::i_ok) row.sensor_serial.clear();
@@ -104,10 +104,9 @@ std::vector<StoredMaintenance> SociStore::maintenance_events(const std::string& 
                          " m.note FROM maintenance_events m JOIN wheels w ON w.id = m.wheel_id"
                          " JOIN locomotives l ON l.id = w.locomotive_id"
                          " WHERE :all = 1 OR l.name = :name ORDER BY m.at, m.id",
-         use(all, "all"), use(locomotive, "name"), into(id),
-         into(row.event.wheel.locomotive), into(row.event.wheel.axle),
-         into(row.event.wheel.side), into(row.event.at), into(row.event.odometer_km),
-         into(row.event.kind), into(row.event.note));
+         use(all, "all"), use(locomotive, "name"), into(id), into(row.event.wheel.locomotive),
+         into(row.event.wheel.axle), into(row.event.wheel.side), into(row.event.at),
+         into(row.event.odometer_km), into(row.event.kind), into(row.event.note));
     query.execute();
     while (query.fetch()) {
       row.id = id;
@@ -125,8 +124,7 @@ std::vector<StoredAlarmEvent> SociStore::alarm_events(const std::string& locomot
     int axle = 0;
     const int all = locomotive.empty() ? 1 : 0;
     std::string name, side;
-    soci::indicator has_wheel = soci::i_null, has_side = soci::i_null,
-                    has_name = soci::i_null;
+    soci::indicator has_wheel = soci::i_null, has_side = soci::i_null, has_name = soci::i_null;
     soci::statement query =
         (sql_.prepare << "SELECT e.run_id, r.started_at, l.name, w.axle, w.side, e.t_s, e.what"
                          " FROM alarm_events e JOIN runs r ON r.id = e.run_id"
@@ -134,9 +132,9 @@ std::vector<StoredAlarmEvent> SociStore::alarm_events(const std::string& locomot
                          " LEFT JOIN locomotives l ON l.id = r.locomotive_id"
                          " WHERE :all = 1 OR l.name = :name ORDER BY r.started_at, e.run_id,"
                          " e.t_s, e.id",
-         use(all, "all"), use(locomotive, "name"), into(run_id),
-         into(row.run_started_at), into(name, has_name), into(axle, has_wheel),
-         into(side, has_side), into(row.t_s), into(row.what));
+         use(all, "all"), use(locomotive, "name"), into(run_id), into(row.run_started_at),
+         into(name, has_name), into(axle, has_wheel), into(side, has_side), into(row.t_s),
+         into(row.what));
     query.execute();
     while (query.fetch()) {
       row.run_id = run_id;
@@ -179,6 +177,21 @@ std::uint64_t SociStore::run_count() {
     long long count = 0;
     sql_ << "SELECT COUNT(*) FROM runs", into(count);
     return static_cast<std::uint64_t>(count);
+  });
+}
+
+std::uint64_t SociStore::size_bytes() {
+  return store_guarded(url_.shown, "measuring the store", [&] {
+    long long bytes = 0;
+    if (url_.backend == StoreBackend::kSqlite) {
+      long long pages = 0, page_size = 0;
+      sql_ << "PRAGMA page_count", into(pages);
+      sql_ << "PRAGMA page_size", into(page_size);
+      bytes = pages * page_size;
+    } else {
+      sql_ << "SELECT pg_database_size(current_database())", into(bytes);
+    }
+    return static_cast<std::uint64_t>(bytes);
   });
 }
 

@@ -75,9 +75,8 @@ void SociStore::insert_wheel_runs(long long run_id, const RunRecord& run, WheelI
           " :wheel, :channel, :wear, :clearance, :temp, :samples, :flagged, :alarm, :before,"
           " :after)",
       use(run_ids), use(wheel_ids), use(channels), use(wear.values, wear.present),
-      use(clearance.values, clearance.present), use(temps), use(samples), use(flagged),
-      use(alarms), use(mae_before.values, mae_before.present),
-      use(mae_after.values, mae_after.present);
+      use(clearance.values, clearance.present), use(temps), use(samples), use(flagged), use(alarms),
+      use(mae_before.values, mae_before.present), use(mae_after.values, mae_after.present);
 }
 
 void SociStore::insert_alarm_events(long long run_id, const RunRecord& run, WheelIds& created) {
@@ -124,8 +123,10 @@ long long SociStore::insert_run_row(const RunRecord& run) {
   if (!run.locomotive.empty()) locomotive = locomotive_id(run.locomotive);
   long long locomotive_value = locomotive.value_or(0);
   soci::indicator has_locomotive = locomotive ? soci::i_ok : soci::i_null;
-  long long session_value = run.session_id.value_or(0);
-  soci::indicator has_session = run.session_id ? soci::i_ok : soci::i_null;
+  std::optional<long long> session = run.session_id;
+  if (!session && run.session) session = insert_session(*run.session, {});
+  long long session_value = session.value_or(0);
+  soci::indicator has_session = session ? soci::i_ok : soci::i_null;
   long long calibration_value = run.calibration_id.value_or(0);
   soci::indicator has_calibration = run.calibration_id ? soci::i_ok : soci::i_null;
   const auto rows = static_cast<long long>(run.rows);
@@ -137,11 +138,19 @@ long long SociStore::insert_run_row(const RunRecord& run) {
           " rows_read, flagged_rows, bad_rows, final_alarm, summary_json) VALUES (:locomotive,"
           " :session, :at, :distance, :odometer, :coefficients, :coefficients_sha, :calibration,"
           " :engine, :fs, :rows, :flagged, :bad, :alarm, :summary) RETURNING id",
-      use(locomotive_value, has_locomotive), use(session_value, has_session),
-      use(run.started_at), use(run.distance_km), use(run.odometer_km), use(run.coefficient_set),
+      use(locomotive_value, has_locomotive), use(session_value, has_session), use(run.started_at),
+      use(run.distance_km), use(run.odometer_km), use(run.coefficient_set),
       use(run.coefficient_sha256), use(calibration_value, has_calibration), use(run.engine),
       use(run.sample_rate_hz), use(rows), use(flagged), use(bad), use(run.final_alarm),
       use(run.summary_json), into(id);
+  return id;
+}
+
+long long SociStore::insert_run(const RunRecord& run, WheelIds& created) {
+  const long long id = insert_run_row(run);
+  insert_wheel_runs(id, run, created);
+  insert_alarm_events(id, run, created);
+  insert_trace(id, run, created);
   return id;
 }
 
@@ -149,14 +158,24 @@ std::int64_t SociStore::record_run(const RunRecord& run) {
   return store_guarded(url_.shown, "recording a run", [&]() -> std::int64_t {
     WriteTransaction transaction(sql_, url_.backend);
     WheelIds created;
-    const long long id = insert_run_row(run);
-    insert_wheel_runs(id, run, created);
-    insert_alarm_events(id, run, created);
-    insert_trace(id, run, created);
+    const long long id = insert_run(run, created);
     pause_for_test();
     transaction.commit();
     wheel_ids_.insert(created.begin(), created.end());
     return id;
+  });
+}
+
+std::vector<std::int64_t> SociStore::record_runs(const std::vector<RunRecord>& runs) {
+  return store_guarded(url_.shown, "recording runs", [&] {
+    std::vector<std::int64_t> ids;
+    WriteTransaction transaction(sql_, url_.backend);
+    WheelIds created;
+    for (const RunRecord& run : runs) ids.push_back(insert_run(run, created));
+    pause_for_test();
+    transaction.commit();
+    wheel_ids_.insert(created.begin(), created.end());
+    return ids;
   });
 }
 

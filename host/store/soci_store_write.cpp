@@ -7,8 +7,8 @@ namespace flange::host {
 
 namespace {
 
-using soci::use;
 using soci::into;
+using soci::use;
 
 soci::indicator present(const std::optional<double>& value) {
   return value ? soci::i_ok : soci::i_null;
@@ -22,8 +22,7 @@ void into_cache(std::map<std::tuple<std::string, int, std::string>, long long>& 
 }  // namespace
 
 long long SociStore::locomotive_id(const std::string& name) {
-  sql_ << "INSERT INTO locomotives (name) VALUES (:name) ON CONFLICT (name) DO NOTHING",
-      use(name);
+  sql_ << "INSERT INTO locomotives (name) VALUES (:name) ON CONFLICT (name) DO NOTHING", use(name);
   long long id = 0;
   sql_ << "SELECT id FROM locomotives WHERE name = :name", use(name), into(id);
   return id;
@@ -98,7 +97,8 @@ void SociStore::upsert_sensor(const SensorRecord& sensor) {
     WheelIds created;
     if (sensor.fitted_to) {
       const long long sensor_row = *sensor_id(sensor.serial);
-      const long long wheel = wheel_id(*sensor.fitted_to, default_channel(*sensor.fitted_to), created);
+      const long long wheel =
+          wheel_id(*sensor.fitted_to, default_channel(*sensor.fitted_to), created);
       long long fitted_wheel = -1;
       soci::indicator found = soci::i_null;
       sql_ << "SELECT wheel_id FROM sensor_fitments WHERE sensor_id = :sensor"
@@ -115,52 +115,60 @@ void SociStore::upsert_sensor(const SensorRecord& sensor) {
   });
 }
 
+long long SociStore::insert_session(const SessionRecord& session,
+                                    const std::vector<BenchRow>& bench_rows) {
+  const std::string kind = session_kind_name(session.kind);
+  long long id = 0;
+  soci::indicator found = soci::i_null;
+  sql_ << "SELECT id FROM sessions WHERE kind = :kind AND label = :label"
+          " AND source_sha256 = :sha",
+      use(kind), use(session.label), use(session.source_sha256), into(id, found);
+  if (sql_.got_data() && found == soci::i_ok) return id;  // stored already
+  std::optional<long long> sensor;
+  if (!session.sensor_serial.empty()) {
+    sql_ << "INSERT INTO sensors (serial) VALUES (:serial) ON CONFLICT (serial) DO NOTHING",
+        use(session.sensor_serial);
+    sensor = sensor_id(session.sensor_serial);
+  }
+  long long sensor_value = sensor.value_or(0);
+  soci::indicator sensor_indicator = sensor ? soci::i_ok : soci::i_null;
+  sql_ << "INSERT INTO sessions (kind, label, started_at, sample_rate_hz, source_file,"
+          " source_sha256, sensor_id) VALUES (:kind, :label, :at, :fs, :file, :sha, :sensor)"
+          " RETURNING id",
+      use(kind), use(session.label), use(session.started_at), use(session.sample_rate_hz),
+      use(session.source_file), use(session.source_sha256), use(sensor_value, sensor_indicator),
+      into(id);
+  if (!bench_rows.empty()) insert_bench_rows(id, bench_rows);
+  return id;
+}
+
 std::int64_t SociStore::record_session(const SessionRecord& session,
                                        const std::vector<BenchRow>& bench_rows) {
   return store_guarded(url_.shown, "recording a session", [&]() -> std::int64_t {
     WriteTransaction transaction(sql_, url_.backend);
-    const std::string kind = session_kind_name(session.kind);
-    long long id = 0;
-    soci::indicator found = soci::i_null;
-    sql_ << "SELECT id FROM sessions WHERE kind = :kind AND label = :label"
-            " AND source_sha256 = :sha",
-        use(kind), use(session.label), use(session.source_sha256), into(id, found);
-    if (sql_.got_data() && found == soci::i_ok) return id;  // already stored: rolled back
-    std::optional<long long> sensor;
-    if (!session.sensor_serial.empty()) {
-      sql_ << "INSERT INTO sensors (serial) VALUES (:serial) ON CONFLICT (serial) DO NOTHING",
-          use(session.sensor_serial);
-      sensor = sensor_id(session.sensor_serial);
-    }
-    long long sensor_value = sensor.value_or(0);
-    soci::indicator sensor_indicator = sensor ? soci::i_ok : soci::i_null;
-    sql_ << "INSERT INTO sessions (kind, label, started_at, sample_rate_hz, source_file,"
-            " source_sha256, sensor_id) VALUES (:kind, :label, :at, :fs, :file, :sha, :sensor)"
-            " RETURNING id",
-        use(kind), use(session.label), use(session.started_at), use(session.sample_rate_hz),
-        use(session.source_file), use(session.source_sha256), use(sensor_value, sensor_indicator),
-        into(id);
-    if (!bench_rows.empty()) {
-      std::vector<long long> session_ids(bench_rows.size(), id), seq(bench_rows.size());
-      std::vector<double> t(bench_rows.size()), clearance(bench_rows.size()),
-          temp(bench_rows.size()), voltage(bench_rows.size());
-      std::vector<soci::indicator> has_clearance(bench_rows.size());
-      for (std::size_t i = 0; i < bench_rows.size(); ++i) {
-        seq[i] = static_cast<long long>(i);
-        t[i] = bench_rows[i].t_s;
-        clearance[i] = bench_rows[i].clearance_mm.value_or(0.0);
-        has_clearance[i] = present(bench_rows[i].clearance_mm);
-        temp[i] = bench_rows[i].temp_c;
-        voltage[i] = bench_rows[i].voltage_v;
-      }
-      sql_ << "INSERT INTO bench_rows (session_id, seq, t_s, clearance_mm, temp_c, voltage_v)"
-              " VALUES (:session, :seq, :t, :clearance, :temp, :voltage)",
-          use(session_ids), use(seq), use(t), use(clearance, has_clearance), use(temp),
-          use(voltage);
-    }
+    const long long id = insert_session(session, bench_rows);
     transaction.commit();
     return id;
   });
+}
+
+void SociStore::insert_bench_rows(long long id, const std::vector<BenchRow>& bench_rows) {
+  std::vector<long long> session_ids(bench_rows.size(), id), seq(bench_rows.size());
+  std::vector<double> t(bench_rows.size()), clearance(bench_rows.size()),
+      temp(bench_rows.size()), voltage(bench_rows.size());
+  std::vector<soci::indicator> has_clearance(bench_rows.size());
+  for (std::size_t i = 0; i < bench_rows.size(); ++i) {
+    seq[i] = static_cast<long long>(i);
+    t[i] = bench_rows[i].t_s;
+    clearance[i] = bench_rows[i].clearance_mm.value_or(0.0);
+    has_clearance[i] = present(bench_rows[i].clearance_mm);
+    temp[i] = bench_rows[i].temp_c;
+    voltage[i] = bench_rows[i].voltage_v;
+  }
+  sql_ << "INSERT INTO bench_rows (session_id, seq, t_s, clearance_mm, temp_c, voltage_v)"
+          " VALUES (:session, :seq, :t, :clearance, :temp, :voltage)",
+      use(session_ids), use(seq), use(t), use(clearance, has_clearance), use(temp),
+      use(voltage);
 }
 
 std::int64_t SociStore::record_calibration(const CalibrationRecord& calibration) {

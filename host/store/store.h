@@ -70,6 +70,9 @@ class Store {
   // write names is created when new; a wheel created so takes default_channel.)
   virtual std::int64_t record_run(const RunRecord& run) = 0;
   virtual std::int64_t record_maintenance(const MaintenanceRecord& event) = 0;
+  // Many runs in ONE transaction (a day's fleet, an import): all written or none. Their ids in
+  // order. Faster than one record_run each where every commit waits for the disk.
+  virtual std::vector<std::int64_t> record_runs(const std::vector<RunRecord>& runs) = 0;
 
   // ---- reads ----
   virtual std::vector<LocomotiveRecord> locomotives() = 0;
@@ -91,6 +94,8 @@ class Store {
   // The reduced trace of one run.
   virtual std::vector<TracePoint> run_trace(std::int64_t run_id) = 0;
   virtual std::uint64_t run_count() = 0;
+  // The store's size on disk in bytes (SQLite: the file's pages; PostgreSQL: the database).
+  virtual std::uint64_t size_bytes() = 0;
 };
 
 // Opens (creating or migrating) the store at `url`: "sqlite:PATH" or "postgresql://...".

@@ -18,7 +18,7 @@ const char* session_kind_name(SessionKind kind);
 
 struct WheelKey {
   std::string locomotive;
-  int axle = 1;              // 1 to 6
+  int axle = 1;               // 1 to 6
   std::string side = "left";  // "left" or "right"
   bool operator==(const WheelKey&) const = default;
 };
@@ -48,8 +48,8 @@ struct SensorRecord {
 // One bench or service session: a recording as it came in.
 struct SessionRecord {
   SessionKind kind = SessionKind::kService;
-  std::string label;        // the run label (bench) or the recording's name (service)
-  std::string started_at;   // UTC
+  std::string label;       // the run label (bench) or the recording's name (service)
+  std::string started_at;  // UTC
   double sample_rate_hz = 0.0;
   std::string source_file;  // as given
   std::string source_sha256;
@@ -79,7 +79,7 @@ struct WheelRunResult {
   int axle = 1;
   std::string side = "left";
   int channel = 0;
-  std::optional<double> wear_mm;      // estimated flange wear
+  std::optional<double> wear_mm;       // estimated flange wear
   std::optional<double> clearance_mm;  // mean filtered clearance (at reference conditions)
   double temp_c = 0.0;                 // mean temperature
   std::uint64_t samples = 0;
@@ -89,10 +89,10 @@ struct WheelRunResult {
 };
 
 struct AlarmEventRecord {
-  int axle = 0;           // 0 with side "" for a run not tied to a wheel
+  int axle = 0;  // 0 with side "" for a run not tied to a wheel
   std::string side;
-  double t_s = 0.0;       // time in the recording
-  std::string what;       // "warning", "critical", "none" (cleared), "wear_step 0.73 mm"
+  double t_s = 0.0;  // time in the recording
+  std::string what;  // "warning", "critical", "none" (cleared), "wear_step 0.73 mm"
 };
 
 // The reduced trace of a service run: per wheel, per kilometre of the run, the means.
@@ -108,10 +108,13 @@ struct TracePoint {
 struct RunRecord {
   std::string locomotive;  // "" for a run not tied to a locomotive (no wheel rows then)
   std::optional<std::int64_t> session_id;
-  std::string started_at;  // UTC
-  double distance_km = 0.0;  // this run's distance
-  double odometer_km = 0.0;  // the locomotive's odometer at the end of the run
-  std::string coefficient_set;   // the filter.json as given
+  // Without session_id: the run's session, written in the run's transaction (or found, when
+  // the same session is stored already).
+  std::optional<SessionRecord> session;
+  std::string started_at;       // UTC
+  double distance_km = 0.0;     // this run's distance
+  double odometer_km = 0.0;     // the locomotive's odometer at the end of the run
+  std::string coefficient_set;  // the filter.json as given
   std::string coefficient_sha256;
   std::optional<std::int64_t> calibration_id;
   std::string engine;  // "model", "rtl", "float", "board"
@@ -170,13 +173,13 @@ struct StoredMaintenance {
 // latest maintenance event (all runs when there is none), in mm per 1000 km.
 struct FleetRow {
   WheelKey wheel;
-  std::uint64_t runs = 0;        // all runs
+  std::uint64_t runs = 0;  // all runs
   std::uint64_t runs_since_maintenance = 0;
   std::string last_run_at;
   double last_odometer_km = 0.0;
   std::optional<double> last_wear_mm;
   std::optional<double> wear_rate_mm_per_1000km;  // needs two runs at distinct odometers
-  std::string last_maintenance_at;  // "" when none
+  std::string last_maintenance_at;                // "" when none
   std::uint64_t alarm_events = 0;
 };
 

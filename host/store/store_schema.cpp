@@ -13,82 +13,89 @@ namespace flange::host {
 namespace {
 
 // Written once for both backends; {id} and {real} are the two words they spell differently.
-const std::vector<std::vector<std::string>>& migrations() {
-  static const std::vector<std::vector<std::string>> steps = {
-      // 1: the fleet, its sensors, sessions, calibrations, runs and what they found.
-      {
-          "CREATE TABLE schema_version (version INTEGER NOT NULL)",
-          "INSERT INTO schema_version (version) VALUES (0)",
-          "CREATE TABLE locomotives (id {id}, name TEXT NOT NULL UNIQUE,"
-          " description TEXT NOT NULL DEFAULT '')",
-          "CREATE TABLE wheels (id {id},"
-          " locomotive_id BIGINT NOT NULL REFERENCES locomotives (id),"
-          " axle INTEGER NOT NULL CHECK (axle BETWEEN 1 AND 6),"
-          " side TEXT NOT NULL CHECK (side IN ('left', 'right')),"
-          " channel INTEGER NOT NULL CHECK (channel BETWEEN 0 AND 11),"
-          " UNIQUE (locomotive_id, axle, side))",
-          "CREATE TABLE sensors (id {id}, serial TEXT NOT NULL UNIQUE,"
-          " model TEXT NOT NULL DEFAULT '')",
-          "CREATE TABLE sensor_fitments (id {id},"
-          " sensor_id BIGINT NOT NULL REFERENCES sensors (id),"
-          " wheel_id BIGINT NOT NULL REFERENCES wheels (id), fitted_at TEXT NOT NULL)",
-          "CREATE TABLE sessions (id {id},"
-          " kind TEXT NOT NULL CHECK (kind IN ('bench', 'service')), label TEXT NOT NULL,"
-          " started_at TEXT NOT NULL, sample_rate_hz {real} NOT NULL,"
-          " source_file TEXT NOT NULL, source_sha256 TEXT NOT NULL,"
-          " sensor_id BIGINT REFERENCES sensors (id),"
-          " UNIQUE (kind, label, source_sha256))",
-          "CREATE TABLE bench_rows (session_id BIGINT NOT NULL REFERENCES sessions (id),"
-          " seq INTEGER NOT NULL, t_s {real} NOT NULL, clearance_mm {real},"
-          " temp_c {real} NOT NULL, voltage_v {real} NOT NULL, PRIMARY KEY (session_id, seq))",
-          "CREATE TABLE calibrations (id {id}, fitted_at TEXT NOT NULL,"
-          " sensor_id BIGINT REFERENCES sensors (id), model_json TEXT NOT NULL,"
-          " fitted_rows BIGINT NOT NULL, rmse_mm {real} NOT NULL)",
-          "CREATE TABLE calibration_sessions ("
-          " calibration_id BIGINT NOT NULL REFERENCES calibrations (id),"
-          " session_id BIGINT NOT NULL REFERENCES sessions (id),"
-          " PRIMARY KEY (calibration_id, session_id))",
-          "CREATE TABLE runs (id {id}, locomotive_id BIGINT REFERENCES locomotives (id),"
-          " session_id BIGINT REFERENCES sessions (id), started_at TEXT NOT NULL,"
-          " distance_km {real} NOT NULL, odometer_km {real} NOT NULL,"
-          " coefficient_set TEXT NOT NULL, coefficient_sha256 TEXT NOT NULL,"
-          " calibration_id BIGINT REFERENCES calibrations (id), engine TEXT NOT NULL,"
-          " sample_rate_hz {real} NOT NULL, rows_read BIGINT NOT NULL,"
-          " flagged_rows BIGINT NOT NULL, bad_rows BIGINT NOT NULL,"
-          " final_alarm TEXT NOT NULL, summary_json TEXT NOT NULL)",
-          "CREATE TABLE wheel_runs (run_id BIGINT NOT NULL REFERENCES runs (id),"
-          " wheel_id BIGINT NOT NULL REFERENCES wheels (id), channel INTEGER NOT NULL,"
-          " wear_mm {real}, clearance_mm {real}, temp_c {real} NOT NULL,"
-          " samples BIGINT NOT NULL, flagged_samples BIGINT NOT NULL,"
-          " final_alarm TEXT NOT NULL, mae_before_mm {real}, mae_after_mm {real},"
-          " PRIMARY KEY (run_id, wheel_id))",
-          "CREATE TABLE alarm_events (id {id}, run_id BIGINT NOT NULL REFERENCES runs (id),"
-          " wheel_id BIGINT REFERENCES wheels (id), t_s {real} NOT NULL, what TEXT NOT NULL)",
-          "CREATE TABLE maintenance_events (id {id},"
-          " wheel_id BIGINT NOT NULL REFERENCES wheels (id), at TEXT NOT NULL,"
-          " odometer_km {real} NOT NULL, kind TEXT NOT NULL, note TEXT NOT NULL)",
-      },
-      // 2: the reduced trace of service runs, and the indexes the wear queries use.
-      {
-          "CREATE TABLE run_trace (run_id BIGINT NOT NULL REFERENCES runs (id),"
-          " wheel_id BIGINT REFERENCES wheels (id), km {real} NOT NULL,"
-          " clearance_mm {real} NOT NULL, temp_c {real} NOT NULL, samples BIGINT NOT NULL)",
-          "CREATE INDEX run_trace_by_run ON run_trace (run_id)",
-          "CREATE INDEX wheel_runs_by_wheel ON wheel_runs (wheel_id)",
-          "CREATE INDEX runs_by_locomotive ON runs (locomotive_id, started_at)",
-          "CREATE INDEX alarm_events_by_run ON alarm_events (run_id)",
-          "CREATE INDEX alarm_events_by_wheel ON alarm_events (wheel_id)",
-          "CREATE INDEX maintenance_by_wheel ON maintenance_events (wheel_id, at)",
-          "CREATE INDEX fitments_by_wheel ON sensor_fitments (wheel_id, fitted_at)",
-      },
+// 1: the fleet, its sensors, sessions, calibrations, runs and what they found.
+std::vector<std::string> migration_1() {
+  return {
+      "CREATE TABLE schema_version (version INTEGER NOT NULL)",
+      "INSERT INTO schema_version (version) VALUES (0)",
+      "CREATE TABLE locomotives (id {id}, name TEXT NOT NULL UNIQUE,"
+      " description TEXT NOT NULL DEFAULT '')",
+      "CREATE TABLE wheels (id {id},"
+      " locomotive_id BIGINT NOT NULL REFERENCES locomotives (id),"
+      " axle INTEGER NOT NULL CHECK (axle BETWEEN 1 AND 6),"
+      " side TEXT NOT NULL CHECK (side IN ('left', 'right')),"
+      " channel INTEGER NOT NULL CHECK (channel BETWEEN 0 AND 11),"
+      " UNIQUE (locomotive_id, axle, side))",
+      "CREATE TABLE sensors (id {id}, serial TEXT NOT NULL UNIQUE,"
+      " model TEXT NOT NULL DEFAULT '')",
+      "CREATE TABLE sensor_fitments (id {id},"
+      " sensor_id BIGINT NOT NULL REFERENCES sensors (id),"
+      " wheel_id BIGINT NOT NULL REFERENCES wheels (id), fitted_at TEXT NOT NULL)",
+      "CREATE TABLE sessions (id {id},"
+      " kind TEXT NOT NULL CHECK (kind IN ('bench', 'service')), label TEXT NOT NULL,"
+      " started_at TEXT NOT NULL, sample_rate_hz {real} NOT NULL,"
+      " source_file TEXT NOT NULL, source_sha256 TEXT NOT NULL,"
+      " sensor_id BIGINT REFERENCES sensors (id),"
+      " UNIQUE (kind, label, source_sha256))",
+      "CREATE TABLE bench_rows (session_id BIGINT NOT NULL REFERENCES sessions (id),"
+      " seq INTEGER NOT NULL, t_s {real} NOT NULL, clearance_mm {real},"
+      " temp_c {real} NOT NULL, voltage_v {real} NOT NULL, PRIMARY KEY (session_id, seq))",
+      "CREATE TABLE calibrations (id {id}, fitted_at TEXT NOT NULL,"
+      " sensor_id BIGINT REFERENCES sensors (id), model_json TEXT NOT NULL,"
+      " fitted_rows BIGINT NOT NULL, rmse_mm {real} NOT NULL)",
+      "CREATE TABLE calibration_sessions ("
+      " calibration_id BIGINT NOT NULL REFERENCES calibrations (id),"
+      " session_id BIGINT NOT NULL REFERENCES sessions (id),"
+      " PRIMARY KEY (calibration_id, session_id))",
+      "CREATE TABLE runs (id {id}, locomotive_id BIGINT REFERENCES locomotives (id),"
+      " session_id BIGINT REFERENCES sessions (id), started_at TEXT NOT NULL,"
+      " distance_km {real} NOT NULL, odometer_km {real} NOT NULL,"
+      " coefficient_set TEXT NOT NULL, coefficient_sha256 TEXT NOT NULL,"
+      " calibration_id BIGINT REFERENCES calibrations (id), engine TEXT NOT NULL,"
+      " sample_rate_hz {real} NOT NULL, rows_read BIGINT NOT NULL,"
+      " flagged_rows BIGINT NOT NULL, bad_rows BIGINT NOT NULL,"
+      " final_alarm TEXT NOT NULL, summary_json TEXT NOT NULL)",
+      "CREATE TABLE wheel_runs (run_id BIGINT NOT NULL REFERENCES runs (id),"
+      " wheel_id BIGINT NOT NULL REFERENCES wheels (id), channel INTEGER NOT NULL,"
+      " wear_mm {real}, clearance_mm {real}, temp_c {real} NOT NULL,"
+      " samples BIGINT NOT NULL, flagged_samples BIGINT NOT NULL,"
+      " final_alarm TEXT NOT NULL, mae_before_mm {real}, mae_after_mm {real},"
+      " PRIMARY KEY (run_id, wheel_id))",
+      "CREATE TABLE alarm_events (id {id}, run_id BIGINT NOT NULL REFERENCES runs (id),"
+      " wheel_id BIGINT REFERENCES wheels (id), t_s {real} NOT NULL, what TEXT NOT NULL)",
+      "CREATE TABLE maintenance_events (id {id},"
+      " wheel_id BIGINT NOT NULL REFERENCES wheels (id), at TEXT NOT NULL,"
+      " odometer_km {real} NOT NULL, kind TEXT NOT NULL, note TEXT NOT NULL)",
   };
+}
+
+// 2: the reduced trace of service runs, and the indexes the wear queries use.
+std::vector<std::string> migration_2() {
+  return {
+      "CREATE TABLE run_trace (run_id BIGINT NOT NULL REFERENCES runs (id),"
+      " wheel_id BIGINT REFERENCES wheels (id), km {real} NOT NULL,"
+      " clearance_mm {real} NOT NULL, temp_c {real} NOT NULL, samples BIGINT NOT NULL)",
+      "CREATE INDEX run_trace_by_run ON run_trace (run_id)",
+      "CREATE INDEX wheel_runs_by_wheel ON wheel_runs (wheel_id)",
+      "CREATE INDEX runs_by_locomotive ON runs (locomotive_id, started_at)",
+      "CREATE INDEX alarm_events_by_run ON alarm_events (run_id)",
+      "CREATE INDEX alarm_events_by_wheel ON alarm_events (wheel_id)",
+      "CREATE INDEX maintenance_by_wheel ON maintenance_events (wheel_id, at)",
+      "CREATE INDEX fitments_by_wheel ON sensor_fitments (wheel_id, fitted_at)",
+  };
+}
+
+// Migration N is migrations()[N - 1]; kStoreSchemaVersion is their count.
+const std::vector<std::vector<std::string>>& migrations() {
+  static const std::vector<std::vector<std::string>> steps = {migration_1(), migration_2()};
   return steps;
 }
 
 std::string in_dialect(std::string statement, StoreBackend backend) {
   const bool sqlite = backend == StoreBackend::kSqlite;
   const std::pair<std::string, std::string> words[] = {
-      {"{id}", sqlite ? "INTEGER PRIMARY KEY" : "BIGINT GENERATED BY DEFAULT AS IDENTITY PRIMARY KEY"},
+      {"{id}",
+       sqlite ? "INTEGER PRIMARY KEY" : "BIGINT GENERATED BY DEFAULT AS IDENTITY PRIMARY KEY"},
       {"{real}", sqlite ? "REAL" : "DOUBLE PRECISION"}};
   for (const auto& [word, spelling] : words) {
     for (auto at = statement.find(word); at != std::string::npos; at = statement.find(word)) {
@@ -108,10 +115,9 @@ int count_of(soci::session& sql, const std::string& query) {
 
 int stored_schema_version(soci::session& sql, const StoreUrl& url) {
   const bool sqlite = url.backend == StoreBackend::kSqlite;
-  const std::string tables =
-      sqlite ? "SELECT COUNT(*) FROM sqlite_master WHERE type = 'table'"
-             : "SELECT COUNT(*) FROM information_schema.tables"
-               " WHERE table_schema = current_schema()";
+  const std::string tables = sqlite ? "SELECT COUNT(*) FROM sqlite_master WHERE type = 'table'"
+                                    : "SELECT COUNT(*) FROM information_schema.tables"
+                                      " WHERE table_schema = current_schema()";
   if (count_of(sql, tables) == 0) return 0;
   const int has_version =
       count_of(sql, tables + " AND " + (sqlite ? "name" : "table_name") + " = 'schema_version'");
@@ -130,8 +136,8 @@ void migrate_store(soci::session& sql, const StoreUrl& url, int target) {
   const int version = stored_schema_version(sql, url);
   if (version > target) {
     throw StoreError(fmt::format(
-        "store {}: schema version {} is newer than this flange's {}; use a newer flange",
-        url.shown, version, target));
+        "store {}: schema version {} is newer than this flange's {}; use a newer flange", url.shown,
+        version, target));
   }
   if (version == target) return;  // rolled back: nothing was written
   const auto& steps = migrations();

@@ -7,11 +7,10 @@
 
 #include <string>
 
+#include "store_migration.h"
 #include "store_url.h"
 
 namespace flange::host {
-
-inline constexpr int kStoreSchemaVersion = 2;
 
 // The schema version of the store behind `sql`: 0 when it holds no tables at all. Throws
 // StoreError when it holds tables but is not a flange store.

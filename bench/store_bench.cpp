@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: MIT
+// The measurement store at a fleet's scale (docs/benchmarks.md, "Store"): a year of a depot's
+// run summaries and alarm events ingested, then one wheel's wear history and the fleet table.
+//
+//   store_bench --store URL [--locomotives 100] [--days 365] [--runs-per-transaction 100]
+//
+// A run is one locomotive's service day: its summary and 12 wheel rows (wear, clearance,
+// temperature), and now and then an alarm event. 100 locomotives x 365 days = 36,500 runs of
+// 438,000 wheel rows. The numbers are made up here (wear linear in distance plus noise, a
+// reprofiling when a wheel reaches 4 mm): the store's work does not depend on them. Prints one
+// line of figures; the URL must name an empty store.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "store.h"
+
+namespace {
+
+using flange::host::RunRecord;
+using flange::host::Store;
+using Clock = std::chrono::steady_clock;
+
+struct Settings {
+  std::string url;
+  int locomotives = 100;
+  int days = 365;
+  int runs_per_transaction = 100;
+};
+
+struct Counts {
+  std::uint64_t runs = 0, wheel_rows = 0, alarm_rows = 0, maintenance = 0;
+};
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string day_time(int day, int locomotive) {
+  const int month_days[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  int month = 0;
+  while (day >= month_days[month]) day -= month_days[month++];
+  return fmt::format("2025-{:02d}-{:02d}T{:02d}:{:02d}:00Z", month + 1, day + 1,
+                     5 + locomotive % 12, locomotive % 60);
+}
+
+// One locomotive's day; `wear` (12 wheels) and `odometer` advance.
+RunRecord service_day(int locomotive, int day, std::vector<double>& wear, double& odometer,
+                      std::mt19937_64& random, Store& store, Counts& counts) {
+  std::normal_distribution<double> noise(0.0, 0.02);
+  std::uniform_real_distribution<double> distance(250.0, 450.0);
+  RunRecord run;
+  run.locomotive = fmt::format("loco-{:03d}", locomotive);
+  run.started_at = day_time(day, locomotive);
+  run.distance_km = distance(random);
+  odometer += run.distance_km;
+  run.odometer_km = odometer;
+  run.coefficient_set = "coeffs/measurement_sos/filter.json";
+  run.coefficient_sha256 = std::string(64, 'c');
+  run.engine = "model";
+  run.sample_rate_hz = 100.0;
+  run.rows = 12 * 30000;
+  run.summary_json = R"({"bench": true})";
+  for (int channel = 0; channel < 12; ++channel) {
+    double& w = wear[static_cast<std::size_t>(channel)];
+    w += run.distance_km * (0.15 + 0.01 * channel) / 1000.0;
+    const int axle = channel / 2 + 1;
+    const std::string side = channel % 2 ? "right" : "left";
+    if (w > 4.0) {  // the depot reprofiles it
+      store.record_maintenance({{run.locomotive, axle, side}, run.started_at, odometer,
+                                "reprofile", "store_bench"});
+      ++counts.maintenance;
+      w = 0.0;
+    }
+    flange::host::WheelRunResult wheel;
+    wheel.axle = axle;
+    wheel.side = side;
+    wheel.channel = channel;
+    wheel.wear_mm = w + noise(random);
+    wheel.clearance_mm = 3.0 + *wheel.wear_mm;
+    wheel.temp_c = 15.0 + 10.0 * noise(random);
+    wheel.samples = 30000;
+    run.wheels.push_back(wheel);
+    if (w > 3.0 && random() % 8 == 0) run.alarms.push_back({axle, side, 120.0, "warning"});
+  }
+  counts.wheel_rows += run.wheels.size();
+  counts.alarm_rows += run.alarms.size();
+  ++counts.runs;
+  return run;
+}
+
+double ingest(Store& store, const Settings& settings, Counts& counts) {
+  std::mt19937_64 random(20251);
+  std::vector<std::vector<double>> wear(static_cast<std::size_t>(settings.locomotives),
+                                        std::vector<double>(12, 0.0));
+  for (auto& wheels : wear) {
+    for (double& w : wheels) w = std::uniform_real_distribution<double>(0.0, 3.5)(random);
+  }
+  std::vector<double> odometer(static_cast<std::size_t>(settings.locomotives), 100000.0);
+  std::vector<RunRecord> batch;
+  const auto start = Clock::now();
+  for (int day = 0; day < settings.days; ++day) {
+    for (int loco = 0; loco < settings.locomotives; ++loco) {
+      const auto l = static_cast<std::size_t>(loco);
+      batch.push_back(service_day(loco, day, wear[l], odometer[l], random, store, counts));
+      if (static_cast<int>(batch.size()) == settings.runs_per_transaction) {
+        store.record_runs(batch);
+        batch.clear();
+      }
+    }
+  }
+  if (!batch.empty()) store.record_runs(batch);
+  return seconds_since(start);
+}
+
+// Median and largest time (ms) of one wheel's history, over wheels spread across the fleet.
+std::pair<double, double> history_ms(Store& store, const Settings& settings, std::size_t& rows) {
+  std::vector<double> times;
+  for (int i = 0; i < 24; ++i) {
+    const flange::host::WheelKey wheel{fmt::format("loco-{:03d}", (i * 37) % settings.locomotives),
+                                       i % 6 + 1, i % 2 ? "right" : "left"};
+    const auto start = Clock::now();
+    rows = store.wear_history(wheel).size();
+    times.push_back(1000.0 * seconds_since(start));
+  }
+  std::sort(times.begin(), times.end());
+  return {times[times.size() / 2], times.back()};
+}
+
+Settings parse(int argc, char** argv) {
+  Settings settings;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string key = argv[i];
+    const std::string value = argv[i + 1];
+    if (key == "--store") settings.url = value;
+    else if (key == "--locomotives") settings.locomotives = std::stoi(value);
+    else if (key == "--days") settings.days = std::stoi(value);
+    else if (key == "--runs-per-transaction") settings.runs_per_transaction = std::stoi(value);
+    else throw std::invalid_argument("unknown option " + key);
+  }
+  if (settings.url.empty() || settings.locomotives < 1 || settings.days < 1 ||
+      settings.days > 365 || settings.runs_per_transaction < 1) {
+    throw std::invalid_argument(
+        "usage: store_bench --store URL [--locomotives N] [--days 1..365] "
+        "[--runs-per-transaction N]");
+  }
+  return settings;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const Settings settings = parse(argc, argv);
+    const auto store = flange::host::open_store(settings.url);
+    if (store->run_count() != 0) throw std::invalid_argument(settings.url + " is not empty");
+    Counts counts;
+    const double ingest_s = ingest(*store, settings, counts);
+    std::size_t history_rows = 0;
+    const auto [history_median, history_max] = history_ms(*store, settings, history_rows);
+    std::vector<double> fleet_times;
+    std::size_t fleet_rows = 0;
+    for (int i = 0; i < 3; ++i) {
+      const auto start = Clock::now();
+      fleet_rows = store->fleet_table().size();
+      fleet_times.push_back(seconds_since(start));
+    }
+    std::sort(fleet_times.begin(), fleet_times.end());
+    const std::uint64_t rows = counts.runs + counts.wheel_rows + counts.alarm_rows;
+    fmt::print("| {} | {} x {} d | {} | {} | {} | {:.1f} | {:.0f} | {:.1f} ({:.1f}) | {} | "
+               "{:.0f} ({}) | {:.0f} |\n",
+               store->backend(), settings.locomotives, settings.days, counts.runs,
+               counts.wheel_rows, counts.alarm_rows, ingest_s, static_cast<double>(rows) / ingest_s,
+               history_median, history_max, history_rows, 1000.0 * fleet_times[1], fleet_rows,
+               static_cast<double>(store->size_bytes()) / 1e6);
+    return 0;
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "store_bench: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "store_bench: " << error.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: MIT
+// The schema version this flange writes, and a store opened at an older one (for tests of the
+// migration: open_store then brings it up to date).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "store.h"
+
+namespace flange::host {
+
+inline constexpr int kStoreSchemaVersion = 2;
+
+// Like open_store, but creates or migrates the schema only up to `version` (1 to
+// kStoreSchemaVersion). A store already past `version` is refused as newer.
+std::unique_ptr<Store> open_store_at_schema_version(const std::string& url, int version);
+
+}  // namespace flange::host

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+// The store under trouble, on both backends: writers at once, a writer killed in the middle of
+// a run, a write that fails half-way, a newer and an older schema.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "store_migration.h"
+#include "store_test_fixture.h"
+#include "store_test_records.h"
+
+namespace flange::testing {
+namespace {
+
+class StoreUnderTroubleTest : public StoreTest {};
+
+// Runs `body` in a child process; returns its pid. The child exits 0 when body returns, 1 when
+// it throws (the parent checks the status).
+template <typename Body>
+pid_t in_child(Body&& body) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    int status = 0;
+    try {
+      body();
+    } catch (...) {
+      status = 1;
+    }
+    ::_exit(status);
+  }
+  return pid;
+}
+
+int exit_status_of(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+TEST_P(StoreUnderTroubleTest, TwoProcessesWritingRunsAtOnceLoseNothing) {
+  open();  // the schema exists before the writers start
+  constexpr int kRuns = 25;
+  std::vector<pid_t> writers;
+  for (const char* locomotive : {"A", "B"}) {
+    writers.push_back(in_child([&] {
+      auto store = open();
+      for (int day = 0; day < kRuns; ++day) {
+        store->record_run(test_run(locomotive, test_time(day % 28, day / 28), 100.0 * day, 0.01));
+      }
+    }));
+  }
+  for (const pid_t writer : writers) EXPECT_EQ(exit_status_of(writer), 0);
+  auto store = open();
+  EXPECT_EQ(store->run_count(), 2u * kRuns);
+  EXPECT_EQ(store->wear_history({"A", 6, "right"}).size(), static_cast<std::size_t>(kRuns));
+  EXPECT_EQ(store->wear_history({"B", 1, "left"}).size(), static_cast<std::size_t>(kRuns));
+  EXPECT_EQ(store->alarm_events("").size(), 4u * kRuns);
+}
+
+TEST_P(StoreUnderTroubleTest, AWriterKilledInTheMiddleOfARunLeavesTheStoreAsItWas) {
+  open()->record_run(test_run("K", test_time(0), 100.0, 0.1));
+  const auto marker =
+      std::filesystem::temp_directory_path() / ("flange_store_pause_" + std::to_string(::getpid()));
+  std::filesystem::remove(marker);
+  const pid_t writer = in_child([&] {
+    ::setenv("FLANGE_STORE_PAUSE_BEFORE_COMMIT", marker.c_str(), 1);
+    open()->record_run(test_run("K", test_time(1), 200.0, 0.2));
+  });
+  for (int waited = 0; waited < 300 && !std::filesystem::exists(marker); ++waited) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_TRUE(std::filesystem::exists(marker)) << "the writer never reached its pause";
+  ::kill(writer, SIGKILL);
+  EXPECT_EQ(exit_status_of(writer), 128 + SIGKILL);
+  std::filesystem::remove(marker);
+
+  auto store = open();
+  EXPECT_EQ(store->run_count(), 1u);
+  EXPECT_EQ(store->wear_history({"K", 1, "left"}).size(), 1u);
+  EXPECT_EQ(store->alarm_events("K").size(), 2u);
+  // The killed writer's locks are gone: the next run is written at once.
+  store->record_run(test_run("K", test_time(2), 300.0, 0.3));
+  EXPECT_EQ(store->run_count(), 2u);
+}
+
+TEST_P(StoreUnderTroubleTest, ARunThatFailsHalfWayWritesNothing) {
+  auto store = open();
+  auto run = test_run("F", test_time(0), 100.0, 0.1);
+  run.wheels[7].side = "middle";  // refused by the schema after seven wheels are written
+  EXPECT_THROW(store->record_run(run), host::StoreError);
+  EXPECT_EQ(store->run_count(), 0u);
+  EXPECT_TRUE(store->wheels().empty());
+  EXPECT_TRUE(store->locomotives().empty());
+  EXPECT_TRUE(store->alarm_events("").empty());
+}
+
+TEST_P(StoreUnderTroubleTest, AStoreOfANewerSchemaIsRefusedUnchanged) {
+  open()->record_run(test_run("N", test_time(0), 100.0, 0.1));
+  execute_sql(url(), "UPDATE schema_version SET version = 99");
+  try {
+    open();
+    FAIL() << "a newer store was opened";
+  } catch (const host::StoreError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("schema version 99 is newer than this flange's"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+  execute_sql(url(), "UPDATE schema_version SET version = 2");
+  EXPECT_EQ(open()->run_count(), 1u);
+}
+
+TEST_P(StoreUnderTroubleTest, AnOlderStoreIsMigratedKeepingItsRows) {
+  EXPECT_EQ(host::open_store_at_schema_version(url(), 1)->schema_version(), 1);
+  execute_sql(url(), "INSERT INTO locomotives (name, description) VALUES ('old', 'from v1')");
+  auto store = open();
+  EXPECT_EQ(store->schema_version(), host::kStoreSchemaVersion);
+  EXPECT_EQ(store->locomotives().at(0).description, "from v1");
+  const auto run = store->record_run(test_run("old", test_time(0), 1.0, 0.1));  // needs v2
+  EXPECT_EQ(store->run_trace(run).size(), 36u);
+}
+
+TEST_P(StoreUnderTroubleTest, ATableThatIsNotAFlangeStoreIsRefused) {
+  execute_sql(url(), "CREATE TABLE somebody_elses (x INTEGER)");
+  EXPECT_THROW(open(), host::StoreError);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, StoreUnderTroubleTest,
+                         ::testing::Values(StoreBackendUnderTest::kSqlite,
+                                           StoreBackendUnderTest::kPostgresql),
+                         backend_param_name);
+
+}  // namespace
+}  // namespace flange::testing
