@@ -14,6 +14,7 @@
 #include "axle_clearance.h"
 #include "bench_scenario.h"
 #include "calibration.h"
+#include "content_sha256.h"
 #include "cli.h"
 #include "data_dir.h"
 #include "fleet_day.h"
@@ -123,6 +124,7 @@ void calibrate_depot(Fleet& fleet, std::uint64_t seed) {
   session.started_at = utc_at(fleet.truth.settings.start_day, 0.0);
   session.sample_rate_hz = fleet.recording.fs_hz;
   session.source_file = bench_csv.string();
+  session.source_sha256 = host::file_sha256(bench_csv.string());
   host::CalibrationRecord record;
   record.fitted_at = session.started_at;
   std::ifstream model_in(model);
@@ -274,7 +276,7 @@ void run_day(Fleet& fleet, int locomotive, int day, double odometer_km) {
   sim::simulate_fleet_day(fleet.truth, locomotive, day, fleet.recording, fleet.twin,
                           fleet.days_dir);
   const host::LocomotiveRun run =
-      host::run_locomotive(day_manifest(fleet), fleet.chain, fleet.days_dir / "out");
+      host::run_locomotive(day_manifest(fleet), fleet.chain, std::nullopt, true);
   const std::string started_at = utc_at(fleet.truth.settings.start_day + day, kServiceStartHours);
   host::write_locomotive_summary_json(fleet.days_dir / "summary.json", run,
                                       "flange simulate --scenario fleet");
@@ -298,12 +300,20 @@ void run_day(Fleet& fleet, int locomotive, int day, double odometer_km) {
   }
   record.summary_json = read_text(fleet.days_dir / "summary.json");
   add_wheels(record, run, loco.name, fleet.chain.thresholds.sensor_gap_mm, speed_mps);
+  // The day's session: its twelve recordings, named by the manifest and hashed together (the
+  // files are deleted once stored), written in the run's own transaction.
   host::SessionRecord session;
   session.label = fmt::format("{} {}", loco.name, started_at);
   session.started_at = started_at;
   session.sample_rate_hz = fleet.recording.fs_hz;
   session.source_file = (fleet.days_dir / "locomotive.json").string();
-  record.session_id = fleet.store->record_session(session, {});
+  std::string hashes;
+  for (const host::ChannelRun& channel : run.channels) {
+    hashes += host::file_sha256(channel.channel.path.string());
+  }
+  session.source_sha256 = host::text_sha256(hashes);
+  record.session = session;
+  record.coefficient_sha256 = host::file_sha256(fleet.chain.coeffs);
   fleet.store->record_run(record);
 }
 
