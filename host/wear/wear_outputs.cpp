@@ -139,7 +139,9 @@ std::string fleet_wear_text(const FleetWear& fleet) {
         "  {:<5} {:<12} {:>4} {:>3} {:>7.3f}  {:<26} {:<12} {:<36} {}\n", w.wheel.locomotive,
         fmt::format("axle {} {}", w.wheel.axle, w.wheel.side), w.runs.size(), w.reprofilings.size(),
         w.wear_now_mm,
-        fmt::format("{:.4f} [{:.4f}, {:.4f}]", w.rate_mm_per_1000km, w.rate_low, w.rate_high),
+        w.fit
+            ? fmt::format("{:.4f} [{:.4f}, {:.4f}]", w.rate_mm_per_1000km, w.rate_low, w.rate_high)
+            : std::string("-"),
         w.status, warning,
         w.critical.reached ? "reached" : (w.critical.date.empty() ? "-" : w.critical.date));
   }

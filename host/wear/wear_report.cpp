@@ -52,11 +52,13 @@ std::string panel_script(const WheelWear* w, const std::string& label, int index
   script +=
       fmt::format("set title '{}: {:.3f} mm/1000 km{}' tc rgb '{}'\n", label, w->rate_mm_per_1000km,
                   fault ? " (sensor fault)" : "", fault ? "#d62728" : "#000000");
+  // A wheel with too few runs for a line has no fitted block to draw.
+  const std::string line =
+      w->fit ? fmt::format(", ${}_fit using 1:2 with lines lw 2 lc rgb '#000000'", block) : "";
   script += fmt::format(
-      "plot ${0} using 1:2 with points pt 7 ps 0.4 lc rgb '#1f77b4', ${0}_fit using 1:2 with "
-      "lines lw 2 lc rgb '#000000', {1} with lines dt 2 lc rgb '#ff7f0e', {2} with lines dt 2 "
-      "lc rgb '#d62728'\n",
-      block, fleet.warning_clearance_mm - gap, fleet.critical_clearance_mm - gap);
+      "plot ${} using 1:2 with points pt 7 ps 0.4 lc rgb '#1f77b4'{}, {} with lines dt 2 lc rgb "
+      "'#ff7f0e', {} with lines dt 2 lc rgb '#d62728'\n",
+      block, line, fleet.warning_clearance_mm - gap, fleet.critical_clearance_mm - gap);
   return script;
 }
 
@@ -101,10 +103,13 @@ void write_table(std::ofstream& html, const FleetWear& fleet) {
     const double days = days_to_warning(w);
     html << (w.sensor_fault ? "<tr class='fault'>" : "<tr>");
     html << fmt::format(
-        "<td>{}</td><td>axle {} {}</td><td>{}</td><td>{}</td><td>{:.3f}</td><td>{:.4f} [{:.4f}, "
-        "{:.4f}]</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+        "<td>{}</td><td>axle {} {}</td><td>{}</td><td>{}</td><td>{:.3f}</td><td>{}</td><td>{}</td>"
+        "<td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
         coeffs::html_escape(w.wheel.locomotive), w.wheel.axle, w.wheel.side, w.runs.size(),
-        w.reprofilings.size(), w.wear_now_mm, w.rate_mm_per_1000km, w.rate_low, w.rate_high,
+        w.reprofilings.size(), w.wear_now_mm,
+        w.fit
+            ? fmt::format("{:.4f} [{:.4f}, {:.4f}]", w.rate_mm_per_1000km, w.rate_low, w.rate_high)
+            : std::string("-"),
         w.status, std::isfinite(days) ? fmt::format("{:.0f}", days) : "-",
         interval_text(w.warning.km, w.warning.km_low, w.warning.km_high, 0), date_range(w.warning),
         date_range(w.critical));
