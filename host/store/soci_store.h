@@ -57,11 +57,14 @@ class SociStore final : public Store {
   std::optional<long long> sensor_id(const std::string& serial);
   void insert_bench_rows(long long session_id, const std::vector<BenchRow>& rows);
   long long insert_session(const SessionRecord& session, const std::vector<BenchRow>& rows);
+  struct RunBatches;
   long long insert_run_row(const RunRecord& run);
-  long long insert_run(const RunRecord& run, WheelIds& created);
-  void insert_wheel_runs(long long run_id, const RunRecord& run, WheelIds& created);
-  void insert_alarm_events(long long run_id, const RunRecord& run, WheelIds& created);
-  void insert_trace(long long run_id, const RunRecord& run, WheelIds& created);
+  long long insert_run(const RunRecord& run, WheelIds& created, RunBatches& batches);
+  void add_wheel_runs(long long run_id, const RunRecord& run, WheelIds& created,
+                      RunBatches& batches);
+  void add_alarm_events(long long run_id, const RunRecord& run, WheelIds& created,
+                        RunBatches& batches);
+  void add_trace(long long run_id, const RunRecord& run, WheelIds& created, RunBatches& batches);
   std::optional<long long> event_wheel(const RunRecord& run, int axle, const std::string& side,
                                        WheelIds& created);
 

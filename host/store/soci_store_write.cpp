@@ -154,8 +154,8 @@ std::int64_t SociStore::record_session(const SessionRecord& session,
 
 void SociStore::insert_bench_rows(long long id, const std::vector<BenchRow>& bench_rows) {
   std::vector<long long> session_ids(bench_rows.size(), id), seq(bench_rows.size());
-  std::vector<double> t(bench_rows.size()), clearance(bench_rows.size()),
-      temp(bench_rows.size()), voltage(bench_rows.size());
+  std::vector<double> t(bench_rows.size()), clearance(bench_rows.size()), temp(bench_rows.size()),
+      voltage(bench_rows.size());
   std::vector<soci::indicator> has_clearance(bench_rows.size());
   for (std::size_t i = 0; i < bench_rows.size(); ++i) {
     seq[i] = static_cast<long long>(i);
@@ -167,8 +167,7 @@ void SociStore::insert_bench_rows(long long id, const std::vector<BenchRow>& ben
   }
   sql_ << "INSERT INTO bench_rows (session_id, seq, t_s, clearance_mm, temp_c, voltage_v)"
           " VALUES (:session, :seq, :t, :clearance, :temp, :voltage)",
-      use(session_ids), use(seq), use(t), use(clearance, has_clearance), use(temp),
-      use(voltage);
+      use(session_ids), use(seq), use(t), use(clearance, has_clearance), use(temp), use(voltage);
 }
 
 std::int64_t SociStore::record_calibration(const CalibrationRecord& calibration) {
