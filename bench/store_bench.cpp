@@ -7,7 +7,8 @@
 // A run is one locomotive's service day: its summary and 12 wheel rows (wear, clearance,
 // temperature), and now and then an alarm event. 100 locomotives x 365 days = 36,500 runs of
 // 438,000 wheel rows. The numbers are made up here (wear linear in distance plus noise, a
-// reprofiling when a wheel reaches 4 mm): the store's work does not depend on them. Prints one
+// reprofiling, a maintenance event of its own transaction, when a wheel reaches 4 mm: about once
+// a year per wheel): the store's work does not depend on them. Prints one
 // line of figures; the URL must name an empty store.
 #include <fmt/format.h>
 
@@ -69,7 +70,7 @@ RunRecord service_day(int locomotive, int day, std::vector<double>& wear, double
   run.summary_json = R"({"bench": true})";
   for (int channel = 0; channel < 12; ++channel) {
     double& w = wear[static_cast<std::size_t>(channel)];
-    w += run.distance_km * (0.15 + 0.01 * channel) / 1000.0;
+    w += run.distance_km * (0.02 + 0.002 * channel) / 1000.0;
     const int axle = channel / 2 + 1;
     const std::string side = channel % 2 ? "right" : "left";
     if (w > 4.0) {  // the depot reprofiles it

@@ -114,9 +114,9 @@ void SociStore::add_trace(long long run_id, const RunRecord& run, WheelIds& crea
   }
 }
 
-long long SociStore::insert_run_row(const RunRecord& run) {
+long long SociStore::insert_run_row(const RunRecord& run, WheelIds& created) {
   std::optional<long long> locomotive;
-  if (!run.locomotive.empty()) locomotive = locomotive_id(run.locomotive);
+  if (!run.locomotive.empty()) locomotive = locomotive_id(run.locomotive, created);
   long long locomotive_value = locomotive.value_or(0);
   soci::indicator has_locomotive = locomotive ? soci::i_ok : soci::i_null;
   std::optional<long long> session = run.session_id;
@@ -143,7 +143,7 @@ long long SociStore::insert_run_row(const RunRecord& run) {
 }
 
 long long SociStore::insert_run(const RunRecord& run, WheelIds& created, RunBatches& batches) {
-  const long long id = insert_run_row(run);
+  const long long id = insert_run_row(run, created);
   add_wheel_runs(id, run, created, batches);
   add_alarm_events(id, run, created, batches);
   add_trace(id, run, created, batches);

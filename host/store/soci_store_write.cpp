@@ -21,10 +21,14 @@ void into_cache(std::map<std::tuple<std::string, int, std::string>, long long>& 
 
 }  // namespace
 
-long long SociStore::locomotive_id(const std::string& name) {
+long long SociStore::locomotive_id(const std::string& name, WheelIds& created) {
+  const auto key = std::make_tuple(name, 0, std::string());
+  if (const auto cached = wheel_ids_.find(key); cached != wheel_ids_.end()) return cached->second;
+  if (const auto known = created.find(key); known != created.end()) return known->second;
   sql_ << "INSERT INTO locomotives (name) VALUES (:name) ON CONFLICT (name) DO NOTHING", use(name);
   long long id = 0;
   sql_ << "SELECT id FROM locomotives WHERE name = :name", use(name), into(id);
+  created[key] = id;  // cached once committed
   return id;
 }
 
@@ -45,7 +49,7 @@ long long SociStore::wheel_id(const WheelKey& wheel, int channel, WheelIds& crea
   const auto key = std::make_tuple(wheel.locomotive, wheel.axle, wheel.side);
   if (const auto known = created.find(key); known != created.end()) return known->second;
   if (const auto existing = existing_wheel_id(wheel)) return *existing;
-  const long long locomotive = locomotive_id(wheel.locomotive);
+  const long long locomotive = locomotive_id(wheel.locomotive, created);
   sql_ << "INSERT INTO wheels (locomotive_id, axle, side, channel)"
           " VALUES (:locomotive, :axle, :side, :channel)"
           " ON CONFLICT (locomotive_id, axle, side) DO NOTHING",
