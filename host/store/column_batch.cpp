@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace flange::host {
@@ -62,6 +63,11 @@ void ColumnBatch::add(const std::string& value) { add_text(value); }
 
 std::size_t ColumnBatch::rows() const { return values_.empty() ? 0 : values_.back().size(); }
 
+void ColumnBatch::clear() {
+  for (auto& column : values_) column.clear();
+  for (auto& column : present_) column.clear();
+}
+
 void ColumnBatch::flush(soci::session& sql, StoreBackend backend) {
   if (rows() == 0) return;
   if (backend == StoreBackend::kPostgresql) {
@@ -69,16 +75,15 @@ void ColumnBatch::flush(soci::session& sql, StoreBackend backend) {
   } else {
     flush_sqlite(sql);
   }
-  for (auto& column : values_) column.clear();
-  for (auto& column : present_) column.clear();
+  clear();
 }
 
-void ColumnBatch::flush_postgresql(soci::session& sql) {
-  std::vector<std::string> literals(columns_.size());
+std::string ColumnBatch::postgresql_insert(std::vector<std::string>& literals) const {
+  literals.assign(columns_.size(), std::string());
   std::string names, arrays;
   for (std::size_t c = 0; c < columns_.size(); ++c) {
     std::string& literal = literals[c];
-    literal.push_back('{');  // empty: a new string
+    literal.push_back('{');
     for (std::size_t r = 0; r < values_[c].size(); ++r) {
       append_element(literal, values_[c][r], present_[c][r]);
     }
@@ -87,13 +92,41 @@ void ColumnBatch::flush_postgresql(soci::session& sql) {
     names += columns_[c].first;
     arrays += fmt::format("{}CAST(:c{} AS {}[])", c ? ", " : "", c, columns_[c].second);
   }
+  // WITH ORDINALITY ... ORDER BY: the rows go in (and take their ids) in the order added.
+  return fmt::format(
+      "INSERT INTO {0} ({1}) SELECT {1} FROM unnest({2}) WITH ORDINALITY AS u ({1}, ordinal)"
+      " ORDER BY ordinal",
+      table_, names, arrays);
+}
+
+void ColumnBatch::flush_postgresql(soci::session& sql) {
+  std::vector<std::string> literals;
+  const std::string text = postgresql_insert(literals);
   soci::statement insert(sql);
   for (std::string& literal : literals) insert.exchange(soci::use(literal));
   insert.alloc();
-  insert.prepare(
-      fmt::format("INSERT INTO {} ({}) SELECT * FROM unnest({})", table_, names, arrays));
+  insert.prepare(text);
   insert.define_and_bind();
   insert.execute(true);
+}
+
+std::vector<long long> ColumnBatch::flush_returning_ids(soci::session& sql) {
+  std::vector<long long> ids(rows());
+  if (ids.empty()) return ids;
+  std::vector<std::string> literals;
+  const std::string text = postgresql_insert(literals) + " RETURNING id";
+  soci::statement insert(sql);
+  for (std::string& literal : literals) insert.exchange(soci::use(literal));
+  insert.exchange(soci::into(ids));
+  insert.alloc();
+  insert.prepare(text);
+  insert.define_and_bind();
+  insert.execute(true);
+  // Identity values are drawn row by row in insertion order, so ascending ids are the rows in
+  // the order added, whatever order RETURNING lists them in.
+  std::sort(ids.begin(), ids.end());
+  clear();
+  return ids;
 }
 
 void ColumnBatch::flush_sqlite(soci::session& sql) {

@@ -30,10 +30,16 @@ class ColumnBatch {
   std::size_t rows() const;
   // Writes the rows gathered and empties the batch.
   void flush(soci::session& sql, StoreBackend backend);
+  // PostgreSQL only: the same for a table with an identity column `id`, returning the new ids
+  // in the order the rows were added.
+  std::vector<long long> flush_returning_ids(soci::session& sql);
 
  private:
   void add_text(std::optional<std::string> value);
   void flush_postgresql(soci::session& sql);
+  // The INSERT ... SELECT FROM unnest() text; its parameters bound to `literals`.
+  std::string postgresql_insert(std::vector<std::string>& literals) const;
+  void clear();
   void flush_sqlite(soci::session& sql);
 
   std::string table_;

@@ -61,6 +61,8 @@ class SociStore final : public Store {
   struct RunBatches;
   long long insert_run_row(const RunRecord& run, WheelIds& created);
   long long insert_run(const RunRecord& run, WheelIds& created, RunBatches& batches);
+  // The runs' own rows, their ids in order: one statement on PostgreSQL, one per run on SQLite.
+  std::vector<long long> insert_run_rows(const std::vector<RunRecord>& runs, WheelIds& created);
   void add_wheel_runs(long long run_id, const RunRecord& run, WheelIds& created,
                       RunBatches& batches);
   void add_alarm_events(long long run_id, const RunRecord& run, WheelIds& created,

@@ -42,6 +42,8 @@ struct SociStore::RunBatches {
                          {{"run_id", "BIGINT"},
                           {"wheel_id", "BIGINT"},
                           {"channel", "INTEGER"},
+                          {"started_at", "TEXT"},
+                          {"odometer_km", "DOUBLE PRECISION"},
                           {"wear_mm", "DOUBLE PRECISION"},
                           {"clearance_mm", "DOUBLE PRECISION"},
                           {"temp_c", "DOUBLE PRECISION"},
@@ -81,6 +83,8 @@ void SociStore::add_wheel_runs(long long run_id, const RunRecord& run, WheelIds&
     rows.add(run_id);
     rows.add(wheel_id({run.locomotive, wheel.axle, wheel.side}, wheel.channel, created));
     rows.add(static_cast<long long>(wheel.channel));
+    rows.add(run.started_at);
+    rows.add(run.odometer_km);
     rows.add(wheel.wear_mm);
     rows.add(wheel.clearance_mm);
     rows.add(wheel.temp_c);
@@ -150,6 +154,51 @@ long long SociStore::insert_run(const RunRecord& run, WheelIds& created, RunBatc
   return id;
 }
 
+std::vector<long long> SociStore::insert_run_rows(const std::vector<RunRecord>& runs,
+                                                  WheelIds& created) {
+  std::vector<long long> ids;
+  if (url_.backend == StoreBackend::kSqlite) {
+    for (const RunRecord& run : runs) ids.push_back(insert_run_row(run, created));
+    return ids;
+  }
+  ColumnBatch rows("runs", {{"locomotive_id", "BIGINT"},
+                            {"session_id", "BIGINT"},
+                            {"started_at", "TEXT"},
+                            {"distance_km", "DOUBLE PRECISION"},
+                            {"odometer_km", "DOUBLE PRECISION"},
+                            {"coefficient_set", "TEXT"},
+                            {"coefficient_sha256", "TEXT"},
+                            {"calibration_id", "BIGINT"},
+                            {"engine", "TEXT"},
+                            {"sample_rate_hz", "DOUBLE PRECISION"},
+                            {"rows_read", "BIGINT"},
+                            {"flagged_rows", "BIGINT"},
+                            {"bad_rows", "BIGINT"},
+                            {"final_alarm", "TEXT"},
+                            {"summary_json", "TEXT"}});
+  for (const RunRecord& run : runs) {
+    std::optional<long long> locomotive, session = run.session_id;
+    if (!run.locomotive.empty()) locomotive = locomotive_id(run.locomotive, created);
+    if (!session && run.session) session = insert_session(*run.session, {});
+    rows.add(locomotive);
+    rows.add(session);
+    rows.add(run.started_at);
+    rows.add(run.distance_km);
+    rows.add(run.odometer_km);
+    rows.add(run.coefficient_set);
+    rows.add(run.coefficient_sha256);
+    rows.add(run.calibration_id ? std::optional<long long>(*run.calibration_id) : std::nullopt);
+    rows.add(run.engine);
+    rows.add(run.sample_rate_hz);
+    rows.add(static_cast<long long>(run.rows));
+    rows.add(static_cast<long long>(run.flagged_rows));
+    rows.add(static_cast<long long>(run.bad_rows));
+    rows.add(run.final_alarm);
+    rows.add(run.summary_json);
+  }
+  return rows.flush_returning_ids(sql_);
+}
+
 std::int64_t SociStore::record_run(const RunRecord& run) {
   return store_guarded(url_.shown, "recording a run", [&]() -> std::int64_t {
     WriteTransaction transaction(sql_, url_.backend);
@@ -170,7 +219,13 @@ std::vector<std::int64_t> SociStore::record_runs(const std::vector<RunRecord>& r
     WriteTransaction transaction(sql_, url_.backend);
     WheelIds created;
     RunBatches batches;
-    for (const RunRecord& run : runs) ids.push_back(insert_run(run, created, batches));
+    const std::vector<long long> run_ids = insert_run_rows(runs, created);
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      add_wheel_runs(run_ids[i], runs[i], created, batches);
+      add_alarm_events(run_ids[i], runs[i], created, batches);
+      add_trace(run_ids[i], runs[i], created, batches);
+      ids.push_back(run_ids[i]);
+    }
     batches.flush(sql_, url_.backend);
     pause_for_test();
     transaction.commit();
