@@ -50,6 +50,7 @@ case "$action" in
       { cat "$folder/server.log" >&2; rm -rf "$folder"; exit 1; }
     psql -q -h "$folder" -U flange -d postgres \
       -c "CREATE ROLE password_check LOGIN SUPERUSER PASSWORD 'right'" >/dev/null
+    mkdir -p "$(dirname "$state")"
     echo "$folder" >"$state"
     ;;
   stop)
