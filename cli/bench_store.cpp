@@ -47,8 +47,8 @@ double sample_rate_hz(const std::vector<host::BenchRow>& rows) {
 
 }  // namespace
 
-BenchImport import_bench_csv(host::Store& store, const std::string& csv,
-                             const std::string& sensor, const std::string& imported_at) {
+BenchImport import_bench_csv(host::Store& store, const std::string& csv, const std::string& sensor,
+                             const std::string& imported_at) {
   BenchImport import;
   const std::size_t before = store.sessions(host::SessionKind::kBench).size();
   for (const auto& [label, session] : read_sessions(csv)) {

@@ -24,8 +24,8 @@ struct BenchImport {
 // A session is known by its label and the SHA-256 of its rows (canonical text, so a session
 // that comes again inside a grown database is not stored twice). `sensor` may be "".
 // Throws InputError for a bad row (nothing imported then).
-BenchImport import_bench_csv(host::Store& store, const std::string& csv,
-                             const std::string& sensor, const std::string& imported_at);
+BenchImport import_bench_csv(host::Store& store, const std::string& csv, const std::string& sensor,
+                             const std::string& imported_at);
 
 // Every bench session's rows, session by session in the order they were stored, each row
 // labelled with its session's label; the sessions' ids in `session_ids`.

@@ -27,8 +27,7 @@ using host::OrderCandidate;
 namespace {
 
 double now_utc_s() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
 void print_calibration(const Calibration& calibration, std::ostream& out) {
@@ -58,9 +57,9 @@ Calibration calibrate_from_store(const CalibrateOptions& options,
                                  std::vector<std::int64_t>& session_ids, std::ostream& out) {
   store = host::open_store(*options.store);
   const std::string now = format_utc_time(now_utc_s());
-  for (const std::string* csv : {options.data.empty() ? nullptr : &options.data,
-                                 options.data.empty() && options.append ? &*options.append
-                                                                        : nullptr}) {
+  for (const std::string* csv :
+       {options.data.empty() ? nullptr : &options.data,
+        options.data.empty() && options.append ? &*options.append : nullptr}) {
     if (csv == nullptr) continue;
     const BenchImport import = import_bench_csv(*store, *csv, options.sensor, now);
     out << fmt::format("imported {} bench session{} ({} new, {} rows) from {} into {}\n",
@@ -127,9 +126,9 @@ int run_calibrate_command(const CalibrateOptions& options,
     }
     std::unique_ptr<host::Store> store;
     std::vector<std::int64_t> session_ids;
-    const Calibration calibration =
-        options.store ? calibrate_from_store(options, store, session_ids, out)
-                      : calibrate_database(options.data, options.regression);
+    const Calibration calibration = options.store
+                                        ? calibrate_from_store(options, store, session_ids, out)
+                                        : calibrate_database(options.data, options.regression);
     print_calibration(calibration, out);
     const auto json = calibration_json(calibration, runtime::generated_by(command_line));
     std::ofstream file(options.out, std::ios::binary);
@@ -141,10 +140,10 @@ int run_calibrate_command(const CalibrateOptions& options,
     }
     out << "  wrote " << options.out << "\n";
     if (store) {
-      const std::int64_t id = store->record_calibration(
-          {format_utc_time(now_utc_s()), options.sensor, json.dump(1),
-           calibration.rows - calibration.rows_without_reference, calibration.fit.stats.rmse_mm,
-           session_ids});
+      const std::int64_t id =
+          store->record_calibration({format_utc_time(now_utc_s()), options.sensor, json.dump(1),
+                                     calibration.rows - calibration.rows_without_reference,
+                                     calibration.fit.stats.rmse_mm, session_ids});
       out << fmt::format("  kept in {} as calibration {}\n", store->name(), id);
     }
     return kExitOk;

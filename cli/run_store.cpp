@@ -20,7 +20,8 @@ namespace flange::cli {
 namespace {
 
 std::string started_at(const RunStoreOptions& options) {
-  if (options.started_at) return format_utc_time(parse_utc_time(*options.started_at, "--started-at"));
+  if (options.started_at)
+    return format_utc_time(parse_utc_time(*options.started_at, "--started-at"));
   const auto now = std::chrono::system_clock::now().time_since_epoch();
   return format_utc_time(std::chrono::duration<double>(now).count());
 }
@@ -52,9 +53,12 @@ void add_reduced_trace(host::RunRecord& record, const host::RunSummary& summary,
   std::map<long, host::TracePoint> bins;
   for (std::size_t k = 0; k < trace.t_s.size(); ++k) {
     if (trace.t_s[k] < settle_s || !std::isfinite(trace.filt_mm[k])) continue;
-    const double fraction = duration_s > 0.0 ? (trace.t_s[k] - trace.t_s.front()) / duration_s : 0.0;
-    const long km = static_cast<long>(std::floor(fraction * record.distance_km));
-    host::TracePoint& point = bins[std::min(km, static_cast<long>(record.distance_km))];
+    const double fraction =
+        duration_s > 0.0 ? (trace.t_s[k] - trace.t_s.front()) / duration_s : 0.0;
+    // The run's last instant closes its last kilometre rather than opening one of its own.
+    const long last_km = std::max(0L, static_cast<long>(std::ceil(record.distance_km)) - 1);
+    const long km = std::min(last_km, static_cast<long>(std::floor(fraction * record.distance_km)));
+    host::TracePoint& point = bins[km];
     point.axle = axle;
     point.side = side;
     point.km = static_cast<double>(km);
@@ -145,9 +149,8 @@ host::WheelRunResult wheel_result(const host::ChannelRun& channel,
 std::int64_t store_recording_run(host::Store& store, const RunStoreOptions& options,
                                  const host::RunOptions& run, const host::RunSummary& summary,
                                  const host::RunTrace& trace) {
-  host::RunRecord record =
-      run_record(store, options, run, run.input, host::file_sha256(run.input),
-                 std::filesystem::path(run.input).stem().string());
+  host::RunRecord record = run_record(store, options, run, run.input, host::file_sha256(run.input),
+                                      std::filesystem::path(run.input).stem().string());
   add_counts(record, summary);
   record.final_alarm = summary.final_alarm;
   for (const host::AlarmEvent& event : summary.alarm_events) {
@@ -170,8 +173,8 @@ std::int64_t store_locomotive_run(host::Store& store, const RunStoreOptions& opt
   for (const host::ChannelRun& channel : run.channels) {
     hashes += host::file_sha256(channel.options.input) + "\n";
   }
-  host::RunRecord record = run_record(store, options, run.channels.at(0).options,
-                                      run.manifest.path, host::text_sha256(hashes), locomotive);
+  host::RunRecord record = run_record(store, options, run.channels.at(0).options, run.manifest.path,
+                                      host::text_sha256(hashes), locomotive);
   record.locomotive = locomotive;
   nlohmann::ordered_json channels = nlohmann::ordered_json::array();
   for (const host::ChannelRun& channel : run.channels) {

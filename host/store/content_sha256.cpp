@@ -19,9 +19,7 @@ class Sha256 {
       throw std::runtime_error("SHA-256: OpenSSL could not start a digest");
     }
   }
-  void add(const char* bytes, std::size_t count) {
-    EVP_DigestUpdate(context_.get(), bytes, count);
-  }
+  void add(const char* bytes, std::size_t count) { EVP_DigestUpdate(context_.get(), bytes, count); }
   std::string hex() {
     std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
     unsigned int length = 0;

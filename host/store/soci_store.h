@@ -48,27 +48,33 @@ class SociStore final : public Store {
   std::uint64_t size_bytes() override;
 
  private:
+  // Ids by (locomotive, axle, side); axle 0 with side "" is the locomotive's own id.
   using WheelIds = std::map<std::tuple<std::string, int, std::string>, long long>;
 
   // Get-or-create inside the caller's transaction; new ids go to `created` (cached on commit).
-  long long locomotive_id(const std::string& name);
+  long long locomotive_id(const std::string& name, WheelIds& created);
   long long wheel_id(const WheelKey& wheel, int channel, WheelIds& created);
   std::optional<long long> existing_wheel_id(const WheelKey& wheel);
   std::optional<long long> sensor_id(const std::string& serial);
   void insert_bench_rows(long long session_id, const std::vector<BenchRow>& rows);
   long long insert_session(const SessionRecord& session, const std::vector<BenchRow>& rows);
-  long long insert_run_row(const RunRecord& run);
-  long long insert_run(const RunRecord& run, WheelIds& created);
-  void insert_wheel_runs(long long run_id, const RunRecord& run, WheelIds& created);
-  void insert_alarm_events(long long run_id, const RunRecord& run, WheelIds& created);
-  void insert_trace(long long run_id, const RunRecord& run, WheelIds& created);
+  struct RunBatches;
+  long long insert_run_row(const RunRecord& run, WheelIds& created);
+  long long insert_run(const RunRecord& run, WheelIds& created, RunBatches& batches);
+  // The runs' own rows, their ids in order: one statement on PostgreSQL, one per run on SQLite.
+  std::vector<long long> insert_run_rows(const std::vector<RunRecord>& runs, WheelIds& created);
+  void add_wheel_runs(long long run_id, const RunRecord& run, WheelIds& created,
+                      RunBatches& batches);
+  void add_alarm_events(long long run_id, const RunRecord& run, WheelIds& created,
+                        RunBatches& batches);
+  void add_trace(long long run_id, const RunRecord& run, WheelIds& created, RunBatches& batches);
   std::optional<long long> event_wheel(const RunRecord& run, int axle, const std::string& side,
                                        WheelIds& created);
 
   StoreUrl url_;
   soci::session sql_;
   int schema_version_ = 0;
-  WheelIds wheel_ids_;  // committed wheels: ids never change once written
+  WheelIds wheel_ids_;  // committed wheels and locomotives: ids never change once written
 };
 
 // One line: the store, what it was doing, the backend's message with its line breaks folded.

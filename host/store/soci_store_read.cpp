@@ -70,13 +70,13 @@ std::vector<WearPoint> SociStore::wear_history(const WheelKey& wheel) {
     soci::indicator has_wear = soci::i_null, has_clearance = soci::i_null,
                     has_sensor = soci::i_null;
     soci::statement query =
-        (sql_.prepare << "SELECT r.id, r.started_at, r.odometer_km, w.wear_mm, w.clearance_mm,"
+        (sql_.prepare << "SELECT w.run_id, w.started_at, w.odometer_km, w.wear_mm, w.clearance_mm,"
                          " w.temp_c, w.samples, w.final_alarm, (SELECT s.serial FROM"
                          " sensor_fitments f JOIN sensors s ON s.id = f.sensor_id"
-                         " WHERE f.wheel_id = w.wheel_id AND f.fitted_at <= r.started_at"
+                         " WHERE f.wheel_id = w.wheel_id AND f.fitted_at <= w.started_at"
                          " ORDER BY f.fitted_at DESC, f.id DESC LIMIT 1)"
-                         " FROM wheel_runs w JOIN runs r ON r.id = w.run_id"
-                         " WHERE w.wheel_id = :wheel ORDER BY r.started_at, r.id",
+                         " FROM wheel_runs w WHERE w.wheel_id = :wheel"
+                         " ORDER BY w.started_at, w.run_id",
          use(wheel_value), into(run_id), into(point.started_at), into(point.odometer_km),
          into(wear, has_wear), into(clearance, has_clearance), into(point.temp_c), into(samples),
          into(point.final_alarm), into(point.sensor_serial, has_sensor));

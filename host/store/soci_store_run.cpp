@@ -5,6 +5,7 @@
 #include <fstream>
 #include <thread>
 
+#include "column_batch.h"
 #include "soci_store.h"
 #include "store_transaction.h"
 
@@ -25,19 +26,6 @@ void pause_for_test() {
   std::this_thread::sleep_for(std::chrono::seconds(60));
 }
 
-soci::indicator present(const std::optional<double>& value) {
-  return value ? soci::i_ok : soci::i_null;
-}
-
-struct OptionalColumn {
-  std::vector<double> values;
-  std::vector<soci::indicator> present;
-  void add(const std::optional<double>& value) {
-    values.push_back(value.value_or(0.0));
-    present.push_back(flange::host::present(value));
-  }
-};
-
 }  // namespace
 
 std::optional<long long> SociStore::event_wheel(const RunRecord& run, int axle,
@@ -47,80 +35,92 @@ std::optional<long long> SociStore::event_wheel(const RunRecord& run, int axle,
   return wheel_id(key, default_channel(key), created);
 }
 
-void SociStore::insert_wheel_runs(long long run_id, const RunRecord& run, WheelIds& created) {
+// The rows of a batch of runs below their run rows, written after the runs with one
+// statement per table (column_batch.h).
+struct SociStore::RunBatches {
+  ColumnBatch wheel_runs{"wheel_runs",
+                         {{"run_id", "BIGINT"},
+                          {"wheel_id", "BIGINT"},
+                          {"channel", "INTEGER"},
+                          {"started_at", "TEXT"},
+                          {"odometer_km", "DOUBLE PRECISION"},
+                          {"wear_mm", "DOUBLE PRECISION"},
+                          {"clearance_mm", "DOUBLE PRECISION"},
+                          {"temp_c", "DOUBLE PRECISION"},
+                          {"samples", "BIGINT"},
+                          {"flagged_samples", "BIGINT"},
+                          {"final_alarm", "TEXT"},
+                          {"mae_before_mm", "DOUBLE PRECISION"},
+                          {"mae_after_mm", "DOUBLE PRECISION"}}};
+  ColumnBatch alarm_events{"alarm_events",
+                           {{"run_id", "BIGINT"},
+                            {"wheel_id", "BIGINT"},
+                            {"t_s", "DOUBLE PRECISION"},
+                            {"what", "TEXT"}}};
+  ColumnBatch run_trace{"run_trace",
+                        {{"run_id", "BIGINT"},
+                         {"wheel_id", "BIGINT"},
+                         {"km", "DOUBLE PRECISION"},
+                         {"clearance_mm", "DOUBLE PRECISION"},
+                         {"temp_c", "DOUBLE PRECISION"},
+                         {"samples", "BIGINT"}}};
+
+  void flush(soci::session& sql, StoreBackend backend) {
+    wheel_runs.flush(sql, backend);
+    alarm_events.flush(sql, backend);
+    run_trace.flush(sql, backend);
+  }
+};
+
+void SociStore::add_wheel_runs(long long run_id, const RunRecord& run, WheelIds& created,
+                               RunBatches& batches) {
   if (run.wheels.empty()) return;
   if (run.locomotive.empty()) {
     throw StoreError("store " + url_.shown + ": a run with wheel results names no locomotive");
   }
-  std::vector<long long> run_ids, wheel_ids, samples, flagged;
-  std::vector<int> channels;
-  std::vector<double> temps;
-  std::vector<std::string> alarms;
-  OptionalColumn wear, clearance, mae_before, mae_after;
+  ColumnBatch& rows = batches.wheel_runs;
   for (const WheelRunResult& wheel : run.wheels) {
-    run_ids.push_back(run_id);
-    wheel_ids.push_back(wheel_id({run.locomotive, wheel.axle, wheel.side}, wheel.channel, created));
-    channels.push_back(wheel.channel);
-    wear.add(wheel.wear_mm);
-    clearance.add(wheel.clearance_mm);
-    temps.push_back(wheel.temp_c);
-    samples.push_back(static_cast<long long>(wheel.samples));
-    flagged.push_back(static_cast<long long>(wheel.flagged_samples));
-    alarms.push_back(wheel.final_alarm);
-    mae_before.add(wheel.mae_before_mm);
-    mae_after.add(wheel.mae_after_mm);
+    rows.add(run_id);
+    rows.add(wheel_id({run.locomotive, wheel.axle, wheel.side}, wheel.channel, created));
+    rows.add(static_cast<long long>(wheel.channel));
+    rows.add(run.started_at);
+    rows.add(run.odometer_km);
+    rows.add(wheel.wear_mm);
+    rows.add(wheel.clearance_mm);
+    rows.add(wheel.temp_c);
+    rows.add(static_cast<long long>(wheel.samples));
+    rows.add(static_cast<long long>(wheel.flagged_samples));
+    rows.add(wheel.final_alarm);
+    rows.add(wheel.mae_before_mm);
+    rows.add(wheel.mae_after_mm);
   }
-  sql_ << "INSERT INTO wheel_runs (run_id, wheel_id, channel, wear_mm, clearance_mm, temp_c,"
-          " samples, flagged_samples, final_alarm, mae_before_mm, mae_after_mm) VALUES (:run,"
-          " :wheel, :channel, :wear, :clearance, :temp, :samples, :flagged, :alarm, :before,"
-          " :after)",
-      use(run_ids), use(wheel_ids), use(channels), use(wear.values, wear.present),
-      use(clearance.values, clearance.present), use(temps), use(samples), use(flagged), use(alarms),
-      use(mae_before.values, mae_before.present), use(mae_after.values, mae_after.present);
 }
 
-void SociStore::insert_alarm_events(long long run_id, const RunRecord& run, WheelIds& created) {
-  if (run.alarms.empty()) return;
-  std::vector<long long> run_ids, wheel_ids;
-  std::vector<soci::indicator> has_wheel;
-  std::vector<double> times;
-  std::vector<std::string> what;
+void SociStore::add_alarm_events(long long run_id, const RunRecord& run, WheelIds& created,
+                                 RunBatches& batches) {
   for (const AlarmEventRecord& event : run.alarms) {
-    const auto wheel = event_wheel(run, event.axle, event.side, created);
-    run_ids.push_back(run_id);
-    wheel_ids.push_back(wheel.value_or(0));
-    has_wheel.push_back(wheel ? soci::i_ok : soci::i_null);
-    times.push_back(event.t_s);
-    what.push_back(event.what);
+    batches.alarm_events.add(run_id);
+    batches.alarm_events.add(event_wheel(run, event.axle, event.side, created));
+    batches.alarm_events.add(event.t_s);
+    batches.alarm_events.add(event.what);
   }
-  sql_ << "INSERT INTO alarm_events (run_id, wheel_id, t_s, what)"
-          " VALUES (:run, :wheel, :t, :what)",
-      use(run_ids), use(wheel_ids, has_wheel), use(times), use(what);
 }
 
-void SociStore::insert_trace(long long run_id, const RunRecord& run, WheelIds& created) {
-  if (run.trace.empty()) return;
-  std::vector<long long> run_ids, wheel_ids, samples;
-  std::vector<soci::indicator> has_wheel;
-  std::vector<double> km, clearance, temp;
+void SociStore::add_trace(long long run_id, const RunRecord& run, WheelIds& created,
+                          RunBatches& batches) {
   for (const TracePoint& point : run.trace) {
-    const auto wheel = event_wheel(run, point.axle, point.side, created);
-    run_ids.push_back(run_id);
-    wheel_ids.push_back(wheel.value_or(0));
-    has_wheel.push_back(wheel ? soci::i_ok : soci::i_null);
-    km.push_back(point.km);
-    clearance.push_back(point.clearance_mm);
-    temp.push_back(point.temp_c);
-    samples.push_back(static_cast<long long>(point.samples));
+    batches.run_trace.add(run_id);
+    batches.run_trace.add(event_wheel(run, point.axle, point.side, created));
+    batches.run_trace.add(point.km);
+    batches.run_trace.add(point.clearance_mm);
+    batches.run_trace.add(point.temp_c);
+    batches.run_trace.add(static_cast<long long>(point.samples));
   }
-  sql_ << "INSERT INTO run_trace (run_id, wheel_id, km, clearance_mm, temp_c, samples)"
-          " VALUES (:run, :wheel, :km, :clearance, :temp, :samples)",
-      use(run_ids), use(wheel_ids, has_wheel), use(km), use(clearance), use(temp), use(samples);
 }
 
-long long SociStore::insert_run_row(const RunRecord& run) {
+long long SociStore::insert_run_row(const RunRecord& run, WheelIds& created) {
   std::optional<long long> locomotive;
-  if (!run.locomotive.empty()) locomotive = locomotive_id(run.locomotive);
+  if (!run.locomotive.empty()) locomotive = locomotive_id(run.locomotive, created);
   long long locomotive_value = locomotive.value_or(0);
   soci::indicator has_locomotive = locomotive ? soci::i_ok : soci::i_null;
   std::optional<long long> session = run.session_id;
@@ -146,19 +146,66 @@ long long SociStore::insert_run_row(const RunRecord& run) {
   return id;
 }
 
-long long SociStore::insert_run(const RunRecord& run, WheelIds& created) {
-  const long long id = insert_run_row(run);
-  insert_wheel_runs(id, run, created);
-  insert_alarm_events(id, run, created);
-  insert_trace(id, run, created);
+long long SociStore::insert_run(const RunRecord& run, WheelIds& created, RunBatches& batches) {
+  const long long id = insert_run_row(run, created);
+  add_wheel_runs(id, run, created, batches);
+  add_alarm_events(id, run, created, batches);
+  add_trace(id, run, created, batches);
   return id;
+}
+
+std::vector<long long> SociStore::insert_run_rows(const std::vector<RunRecord>& runs,
+                                                  WheelIds& created) {
+  std::vector<long long> ids;
+  if (url_.backend == StoreBackend::kSqlite) {
+    for (const RunRecord& run : runs) ids.push_back(insert_run_row(run, created));
+    return ids;
+  }
+  ColumnBatch rows("runs", {{"locomotive_id", "BIGINT"},
+                            {"session_id", "BIGINT"},
+                            {"started_at", "TEXT"},
+                            {"distance_km", "DOUBLE PRECISION"},
+                            {"odometer_km", "DOUBLE PRECISION"},
+                            {"coefficient_set", "TEXT"},
+                            {"coefficient_sha256", "TEXT"},
+                            {"calibration_id", "BIGINT"},
+                            {"engine", "TEXT"},
+                            {"sample_rate_hz", "DOUBLE PRECISION"},
+                            {"rows_read", "BIGINT"},
+                            {"flagged_rows", "BIGINT"},
+                            {"bad_rows", "BIGINT"},
+                            {"final_alarm", "TEXT"},
+                            {"summary_json", "TEXT"}});
+  for (const RunRecord& run : runs) {
+    std::optional<long long> locomotive, session = run.session_id;
+    if (!run.locomotive.empty()) locomotive = locomotive_id(run.locomotive, created);
+    if (!session && run.session) session = insert_session(*run.session, {});
+    rows.add(locomotive);
+    rows.add(session);
+    rows.add(run.started_at);
+    rows.add(run.distance_km);
+    rows.add(run.odometer_km);
+    rows.add(run.coefficient_set);
+    rows.add(run.coefficient_sha256);
+    rows.add(run.calibration_id ? std::optional<long long>(*run.calibration_id) : std::nullopt);
+    rows.add(run.engine);
+    rows.add(run.sample_rate_hz);
+    rows.add(static_cast<long long>(run.rows));
+    rows.add(static_cast<long long>(run.flagged_rows));
+    rows.add(static_cast<long long>(run.bad_rows));
+    rows.add(run.final_alarm);
+    rows.add(run.summary_json);
+  }
+  return rows.flush_returning_ids(sql_);
 }
 
 std::int64_t SociStore::record_run(const RunRecord& run) {
   return store_guarded(url_.shown, "recording a run", [&]() -> std::int64_t {
     WriteTransaction transaction(sql_, url_.backend);
     WheelIds created;
-    const long long id = insert_run(run, created);
+    RunBatches batches;
+    const long long id = insert_run(run, created, batches);
+    batches.flush(sql_, url_.backend);
     pause_for_test();
     transaction.commit();
     wheel_ids_.insert(created.begin(), created.end());
@@ -171,7 +218,15 @@ std::vector<std::int64_t> SociStore::record_runs(const std::vector<RunRecord>& r
     std::vector<std::int64_t> ids;
     WriteTransaction transaction(sql_, url_.backend);
     WheelIds created;
-    for (const RunRecord& run : runs) ids.push_back(insert_run(run, created));
+    RunBatches batches;
+    const std::vector<long long> run_ids = insert_run_rows(runs, created);
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      add_wheel_runs(run_ids[i], runs[i], created, batches);
+      add_alarm_events(run_ids[i], runs[i], created, batches);
+      add_trace(run_ids[i], runs[i], created, batches);
+      ids.push_back(run_ids[i]);
+    }
+    batches.flush(sql_, url_.backend);
     pause_for_test();
     transaction.commit();
     wheel_ids_.insert(created.begin(), created.end());

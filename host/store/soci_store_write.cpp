@@ -21,10 +21,14 @@ void into_cache(std::map<std::tuple<std::string, int, std::string>, long long>& 
 
 }  // namespace
 
-long long SociStore::locomotive_id(const std::string& name) {
+long long SociStore::locomotive_id(const std::string& name, WheelIds& created) {
+  const auto key = std::make_tuple(name, 0, std::string());
+  if (const auto cached = wheel_ids_.find(key); cached != wheel_ids_.end()) return cached->second;
+  if (const auto known = created.find(key); known != created.end()) return known->second;
   sql_ << "INSERT INTO locomotives (name) VALUES (:name) ON CONFLICT (name) DO NOTHING", use(name);
   long long id = 0;
   sql_ << "SELECT id FROM locomotives WHERE name = :name", use(name), into(id);
+  created[key] = id;  // cached once committed
   return id;
 }
 
@@ -45,7 +49,7 @@ long long SociStore::wheel_id(const WheelKey& wheel, int channel, WheelIds& crea
   const auto key = std::make_tuple(wheel.locomotive, wheel.axle, wheel.side);
   if (const auto known = created.find(key); known != created.end()) return known->second;
   if (const auto existing = existing_wheel_id(wheel)) return *existing;
-  const long long locomotive = locomotive_id(wheel.locomotive);
+  const long long locomotive = locomotive_id(wheel.locomotive, created);
   sql_ << "INSERT INTO wheels (locomotive_id, axle, side, channel)"
           " VALUES (:locomotive, :axle, :side, :channel)"
           " ON CONFLICT (locomotive_id, axle, side) DO NOTHING",
@@ -154,8 +158,8 @@ std::int64_t SociStore::record_session(const SessionRecord& session,
 
 void SociStore::insert_bench_rows(long long id, const std::vector<BenchRow>& bench_rows) {
   std::vector<long long> session_ids(bench_rows.size(), id), seq(bench_rows.size());
-  std::vector<double> t(bench_rows.size()), clearance(bench_rows.size()),
-      temp(bench_rows.size()), voltage(bench_rows.size());
+  std::vector<double> t(bench_rows.size()), clearance(bench_rows.size()), temp(bench_rows.size()),
+      voltage(bench_rows.size());
   std::vector<soci::indicator> has_clearance(bench_rows.size());
   for (std::size_t i = 0; i < bench_rows.size(); ++i) {
     seq[i] = static_cast<long long>(i);
@@ -167,8 +171,7 @@ void SociStore::insert_bench_rows(long long id, const std::vector<BenchRow>& ben
   }
   sql_ << "INSERT INTO bench_rows (session_id, seq, t_s, clearance_mm, temp_c, voltage_v)"
           " VALUES (:session, :seq, :t, :clearance, :temp, :voltage)",
-      use(session_ids), use(seq), use(t), use(clearance, has_clearance), use(temp),
-      use(voltage);
+      use(session_ids), use(seq), use(t), use(clearance, has_clearance), use(temp), use(voltage);
 }
 
 std::int64_t SociStore::record_calibration(const CalibrationRecord& calibration) {

@@ -55,8 +55,11 @@ std::vector<std::string> migration_1() {
       " sample_rate_hz {real} NOT NULL, rows_read BIGINT NOT NULL,"
       " flagged_rows BIGINT NOT NULL, bad_rows BIGINT NOT NULL,"
       " final_alarm TEXT NOT NULL, summary_json TEXT NOT NULL)",
+      // The run's time and odometer are repeated here: a wheel's history and the fleet table
+      // read this one table (by wheel and time) without joining the runs.
       "CREATE TABLE wheel_runs (run_id BIGINT NOT NULL REFERENCES runs (id),"
       " wheel_id BIGINT NOT NULL REFERENCES wheels (id), channel INTEGER NOT NULL,"
+      " started_at TEXT NOT NULL, odometer_km {real} NOT NULL,"
       " wear_mm {real}, clearance_mm {real}, temp_c {real} NOT NULL,"
       " samples BIGINT NOT NULL, flagged_samples BIGINT NOT NULL,"
       " final_alarm TEXT NOT NULL, mae_before_mm {real}, mae_after_mm {real},"
@@ -76,7 +79,7 @@ std::vector<std::string> migration_2() {
       " wheel_id BIGINT REFERENCES wheels (id), km {real} NOT NULL,"
       " clearance_mm {real} NOT NULL, temp_c {real} NOT NULL, samples BIGINT NOT NULL)",
       "CREATE INDEX run_trace_by_run ON run_trace (run_id)",
-      "CREATE INDEX wheel_runs_by_wheel ON wheel_runs (wheel_id)",
+      "CREATE INDEX wheel_runs_by_wheel ON wheel_runs (wheel_id, started_at)",
       "CREATE INDEX runs_by_locomotive ON runs (locomotive_id, started_at)",
       "CREATE INDEX alarm_events_by_run ON alarm_events (run_id)",
       "CREATE INDEX alarm_events_by_wheel ON alarm_events (wheel_id)",

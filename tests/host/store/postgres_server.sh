@@ -6,7 +6,8 @@
 #   bash postgres_server.sh stop STATE_FILE    # pg_ctl stop, delete the folder and STATE_FILE
 #
 # The server listens on a Unix socket in a new folder under /tmp (no TCP port), trusts local
-# connections as role "flange" and runs without fsync (a test server: nothing to keep);
+# connections as role "flange" (and role "password_check" only with the password "right", for the
+# wrong-password test) and runs without fsync (a test server: nothing to keep);
 # FLANGE_POSTGRES_DURABLE=1 keeps PostgreSQL's durable defaults (the benchmark). Debian's
 # binaries live in /usr/lib/postgresql/<version>/bin, off PATH. initdb refuses to run as root:
 # as root the folder belongs to the "postgres" user and the tools run as it (runuser).
@@ -35,6 +36,11 @@ case "$action" in
     if [ "$(id -u)" = 0 ]; then chown postgres "$folder"; fi
     as_owner "$bin/initdb" -D "$folder/data" -A trust -U flange --no-sync >"$folder/initdb.log" 2>&1 ||
       { cat "$folder/initdb.log" >&2; rm -rf "$folder"; exit 1; }
+    # First match wins: the password role's line goes before initdb's "trust" lines.
+    hba="$folder/data/pg_hba.conf"
+    { echo "local all password_check scram-sha-256"; cat "$hba"; } >"$hba.new"
+    mv "$hba.new" "$hba"
+    if [ "$(id -u)" = 0 ]; then chown postgres "$hba"; fi
     settings="-k $folder -c listen_addresses=''"
     if [ "${FLANGE_POSTGRES_DURABLE:-0}" != 1 ]; then
       settings+=" -c fsync=off -c synchronous_commit=off -c full_page_writes=off"
@@ -42,6 +48,9 @@ case "$action" in
     as_owner "$bin/pg_ctl" -D "$folder/data" -l "$folder/server.log" -w -t 60 -o "$settings" \
       start >/dev/null ||
       { cat "$folder/server.log" >&2; rm -rf "$folder"; exit 1; }
+    psql -q -h "$folder" -U flange -d postgres \
+      -c "CREATE ROLE password_check LOGIN SUPERUSER PASSWORD 'right'" >/dev/null
+    mkdir -p "$(dirname "$state")"
     echo "$folder" >"$state"
     ;;
   stop)

@@ -97,6 +97,11 @@ TEST_P(StoreUnderTroubleTest, ARunThatFailsHalfWayWritesNothing) {
   EXPECT_TRUE(store->wheels().empty());
   EXPECT_TRUE(store->locomotives().empty());
   EXPECT_TRUE(store->alarm_events("").empty());
+  // A batch whose last run is refused: none of it is written.
+  std::vector<host::RunRecord> batch = {test_run("G", test_time(1), 1.0, 0.1), run};
+  EXPECT_THROW(store->record_runs(batch), host::StoreError);
+  EXPECT_EQ(store->run_count(), 0u);
+  EXPECT_TRUE(store->locomotives().empty());
 }
 
 TEST_P(StoreUnderTroubleTest, AStoreOfANewerSchemaIsRefusedUnchanged) {

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "store_migration.h"
 #include "store_test_fixture.h"
 #include "store_test_records.h"
@@ -140,6 +142,32 @@ TEST_P(StoreTest, ASensorMovedToAnotherWheelKeepsItsHistory) {
   const auto before = store->wear_history({"L", 1, "left"});
   EXPECT_EQ(before[0].sensor_serial, "S-1");
   EXPECT_EQ(store->wear_history({"L", 3, "right"})[1].sensor_serial, "S-1");
+}
+
+TEST_P(StoreTest, RecordsABatchOfRunsInOneCallInTheirOrder) {
+  auto store = open();
+  std::vector<host::RunRecord> runs;
+  for (int k = 0; k < 5; ++k) {
+    runs.push_back(test_run(k % 2 ? "odd" : "even", test_time(k), 100.0 * (k + 1), 0.1 * k));
+    runs.back().session = host::SessionRecord{host::SessionKind::kService,
+                                              "day " + std::to_string(k),
+                                              test_time(k),
+                                              100.0,
+                                              "loco.json",
+                                              "h" + std::to_string(k),
+                                              ""};
+  }
+  const auto ids = store->record_runs(runs);
+  ASSERT_EQ(ids.size(), 5u);
+  EXPECT_TRUE(std::is_sorted(ids.begin(), ids.end()));
+  EXPECT_EQ(store->run_count(), 5u);
+  const auto odd = store->wear_history({"odd", 1, "right"});
+  ASSERT_EQ(odd.size(), 2u);
+  EXPECT_EQ(odd[1].run_id, ids[3]);
+  EXPECT_DOUBLE_EQ(odd[1].odometer_km, 400.0);
+  EXPECT_DOUBLE_EQ(odd[1].wear_mm.value(), 0.3 + 0.01);
+  EXPECT_EQ(store->run_trace(ids[4]).size(), 36u);
+  EXPECT_EQ(store->sessions(host::SessionKind::kService).size(), 5u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, StoreTest,

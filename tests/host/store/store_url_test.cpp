@@ -78,6 +78,18 @@ TEST(StoreUrl, AnUnknownRoleOrDatabaseOnARealServerIsRefused) {
   }
 }
 
+TEST(StoreUrl, AWrongPasswordIsRefusedWithoutShowingIt) {
+  const std::string host = "?host=" + postgres_socket_folder();
+  const std::string message = open_error("postgresql://password_check:wrong@/postgres" + host);
+  EXPECT_NE(message.find("store postgresql://password_check:***@/postgres"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("password authentication failed"), std::string::npos) << message;
+  EXPECT_EQ(message.find("wrong"), std::string::npos) << message;
+  std::string right = fresh_store_url(StoreBackendUnderTest::kPostgresql, "password_check");
+  right.replace(right.find("flange@"), 7, "password_check:right@");
+  EXPECT_EQ(open_error(right), "");
+}
+
 TEST(StoreUrl, SqliteFilesThatCannotBeStoresAreRefused) {
   const auto dir = fresh_test_dir("store_url/sqlite");
   EXPECT_NE(open_error("sqlite:" + (dir / "missing/fleet.db").string()).find("does not exist"),
