@@ -85,6 +85,13 @@ inline constexpr double kConverterPlacementGain = kScoreResolution;
 // half of its search range: the value reported would then be the search's choice, not the data's.
 // Test: Identifiability.ATemperatureLawIsUndeterminedAtRoomTemperature.
 inline constexpr double kUndeterminedShareOfSearch = 0.5;
+// Confidence: the base rate at which a class the method names is in the data, measured blind on
+// the twin's own self-test (seeds 23 and 24, 100 cases, never on the alternative reality that
+// checks it): 88 of 89 claims right, the lower end of whose 95 % Wilson interval is 0.939,
+// rounded down.
+// Test: the reliability table of docs/diagnose.md ("Confidence"), on fresh alternative seeds
+// (bench/confidence_reliability.sh); Identifiability.ConfidenceIsTheBaseRateSharedAmongAlikeClasses.
+inline constexpr double kNamedClassAccuracy = 0.93;
 // The most bias-type picks: three effects at once is as many as a bench pair's two sessions can
 // separate; more would fit the noise of one session.
 // Test: SelectionRules.AtMostThreePicks.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "backward.h"
+#include "confidence.h"
 #include "criteria.h"
 #include "degenerate_data.h"
 #include "diagnosis_detail.h"
@@ -119,6 +120,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   measure_how_far(heldout, selection, result);
   add_coverage_reason(result);
   result.diagnosis.next_measurement = next_measurements(parts, selection);
+  set_confidences(result.diagnosis);
   return result;
 }
 

@@ -42,12 +42,15 @@ struct EffectFinding {
   // parameters the data cannot determine (held in `params` only so that the effect can be
   // replayed: any value the data allow would do), and those whose value lies at the edge of the
   // search, reported as a bound ("<= -39.5").
-  std::map<std::string, double> resolution;
-  std::vector<std::string> undetermined;
-  std::map<std::string, std::string> bounds;
+  std::map<std::string, double> resolution{};
+  std::vector<std::string> undetermined{};
+  std::map<std::string, std::string> bounds{};
   // The classes whose candidates left the held-out gap within the tie criterion of this one's in
   // the round that picked it: the data cannot tell them from it.
-  std::vector<std::string> indistinguishable_from;
+  std::vector<std::string> indistinguishable_from{};
+  // How far to trust that its class is in the data, 0..1 (identify/confidence.h): claims made
+  // with confidence >= p were right at least a fraction p of the time on blind pairs.
+  double confidence = 0.0;
 };
 
 struct Diagnosis {

@@ -12,6 +12,8 @@
 #include <random>
 
 #include "compensated_sensitivity.h"
+#include "confidence.h"
+#include "criteria.h"
 #include "diagnosis.h"
 #include "diagnosis_detail.h"
 #include "effect_classes.h"
@@ -150,6 +152,15 @@ TEST(Identifiability, AConstantRecordingNamesEveryClassThatShiftsItsOnePoint) {
   EXPECT_FALSE(r.detail.band_hz.has_value());
   EXPECT_TRUE(r.detail.segments.empty());
   EXPECT_FALSE(d.next_measurement.empty());
+}
+
+TEST(Identifiability, ConfidenceIsTheBaseRateSharedAmongAlikeClasses) {
+  EffectFinding f;
+  f.inclusion = 1.0;
+  EXPECT_DOUBLE_EQ(confidence_of(f), criteria::kNamedClassAccuracy);
+  f.inclusion = 0.5;
+  f.indistinguishable_from = {"ageing_drift"};
+  EXPECT_DOUBLE_EQ(confidence_of(f), criteria::kNamedClassAccuracy * 0.5 / 2.0);
 }
 
 TEST(CompensatedSensitivity, ACopyOfAnotherColumnHasNone) {

@@ -21,6 +21,7 @@ nlohmann::ordered_json finding_json(const EffectFinding& f) {
           {"undetermined", f.undetermined},
           {"resolution", resolution_json(f)},
           {"indistinguishable_from", f.indistinguishable_from},
+          {"confidence", f.confidence},
           {"heldout_rms_before", f.heldout_rms_before},
           {"heldout_rms_after", f.heldout_rms_after},
           {"shrink_pct", f.shrink_pct},
@@ -312,9 +313,11 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
   for (const EffectFinding& f : g.effects.empty() ? d.partial : g.effects) {
     const std::string params = params_text(f);
     text << fmt::format(
-        "  {} {}: {} held-out RMS {:.4f} -> {:.4f} V ({:.1f} %), inclusion {:.2f}{}\n",
+        "  {} {}: {} held-out RMS {:.4f} -> {:.4f} V ({:.1f} %), inclusion {:.2f}{}{}\n",
         g.effects.empty() ? "partial" : "effect", f.name, params, f.heldout_rms_before,
-        f.heldout_rms_after, f.shrink_pct, f.inclusion, f.noise_type ? " (noise-type)" : "");
+        f.heldout_rms_after, f.shrink_pct, f.inclusion,
+        g.effects.empty() ? "" : fmt::format(", confidence {:.2f}", f.confidence),
+        f.noise_type ? " (noise-type)" : "");
   }
   if (g.nearest) {
     text << fmt::format("  nearest: {} ({})\n", g.nearest->name, g.nearest->evidence);
