@@ -157,10 +157,11 @@ TEST(Identifiability, AConstantRecordingNamesEveryClassThatShiftsItsOnePoint) {
 TEST(Identifiability, ConfidenceIsTheBaseRateSharedAmongAlikeClasses) {
   EffectFinding f;
   f.inclusion = 1.0;
-  EXPECT_DOUBLE_EQ(confidence_of(f), criteria::kNamedClassAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, true), criteria::kFirstClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, false), criteria::kLaterClaimAccuracy);
   f.inclusion = 0.5;
   f.indistinguishable_from = {"ageing_drift"};
-  EXPECT_DOUBLE_EQ(confidence_of(f), criteria::kNamedClassAccuracy * 0.5 / 2.0);
+  EXPECT_DOUBLE_EQ(confidence_of(f, true), criteria::kFirstClaimAccuracy * 0.5 / 2.0);
 }
 
 TEST(CompensatedSensitivity, ACopyOfAnotherColumnHasNone) {

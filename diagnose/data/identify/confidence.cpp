@@ -7,13 +7,16 @@
 
 namespace flange::diagnose {
 
-double confidence_of(const EffectFinding& finding) {
+double confidence_of(const EffectFinding& finding, bool first) {
+  const double base = first ? criteria::kFirstClaimAccuracy : criteria::kLaterClaimAccuracy;
   const double alike = 1.0 + static_cast<double>(finding.indistinguishable_from.size());
-  return criteria::kNamedClassAccuracy * std::clamp(finding.inclusion, 0.0, 1.0) / alike;
+  return base * std::clamp(finding.inclusion, 0.0, 1.0) / alike;
 }
 
 void set_confidences(Diagnosis& diagnosis) {
-  for (EffectFinding& f : diagnosis.effects) f.confidence = confidence_of(f);
+  for (std::size_t k = 0; k < diagnosis.effects.size(); ++k) {
+    diagnosis.effects[k].confidence = confidence_of(diagnosis.effects[k], k == 0);
+  }
 }
 
 }  // namespace flange::diagnose
