@@ -9,6 +9,7 @@
 #include "cli.h"
 #include "diagnose_report.h"
 #include "input_error.h"
+#include "separate_sessions.h"
 #include "sim_error.h"
 #include "twin_file.h"
 #include "utc_time.h"
@@ -74,6 +75,7 @@ int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& ou
         split.heldout.start_utc_s = parse_utc_time(*options.holdout_start, "--holdout-start");
       }
       split.heldout_name = *options.holdout;
+      diagnose::check_separate_sessions(split.calibration, split.heldout);
     } else {
       split = diagnose::split_holdout(real, *options.holdout_fraction);
     }

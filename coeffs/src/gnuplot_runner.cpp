@@ -9,7 +9,7 @@
 namespace flange::coeffs {
 
 void run_gnuplot(const std::string& script, const std::string& what) {
-  FILE* gnuplot = popen("gnuplot 2>&1", "w");
+  FILE* gnuplot = popen("gnuplot 1>&2", "w");
   if (gnuplot == nullptr) {
     throw std::runtime_error("cannot start gnuplot; install it (bash scripts/setup.sh)");
   }

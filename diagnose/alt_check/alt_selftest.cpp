@@ -84,7 +84,10 @@ AltScore score_alt_pair(const AltPairSpec& spec, const Diagnosis& diagnosis,
       score.nearest_shrink_pct = nearest->shrink_pct;
     }
   }
-  for (const std::string& c : score.claimed) score.spurious += holds_class(spec, c) ? 0 : 1;
+  for (const std::string& c : score.claimed) {
+    score.claim_right.push_back(holds_class(spec, c));
+    score.spurious += holds_class(spec, c) ? 0 : 1;
+  }
   if (in_library(spec)) {
     score_in_library(spec, diagnosis, score);
   } else {

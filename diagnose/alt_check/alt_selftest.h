@@ -18,6 +18,7 @@ namespace flange::diagnose {
 struct AltScore {
   std::vector<std::string> claimed;  // the classes an "explained" or "partly explained" verdict
                                      // names, in its order
+  std::vector<bool> claim_right;     // for each claim, whether the pair holds its class
   std::string nearest;               // "unexplained": the class it came nearest to ("" if none)
   double nearest_shrink_pct = 0.0;   // how far that class alone shrank the held-out gap
   bool verdict_correct = false;      // in-library: explained; null: none; outside: unexplained

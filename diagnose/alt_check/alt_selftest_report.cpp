@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "alt_truth.h"
+#include "claims_json.h"
 #include "version.h"
 
 namespace flange::diagnose {
@@ -78,6 +79,7 @@ nlohmann::json pair_json(const AltPairResult& r) {
   j["shrink_pct"] = r.score.shrink_pct;
   j["excess_shrink_pct"] = r.score.excess_shrink_pct;
   j["fitted"] = findings_json(r.diagnosis.effects);
+  j["claims"] = claims_json(r.diagnosis.effects, r.score.claimed, r.score.claim_right);
   j["partial"] = findings_json(r.partial);
   j["seconds"] = r.seconds;
   return j;

@@ -6,13 +6,17 @@
 #include <cmath>
 
 #include "backward.h"
+#include "confidence.h"
 #include "criteria.h"
+#include "degenerate_data.h"
 #include "diagnosis_detail.h"
 #include "effect_classes.h"
 #include "final_fit.h"
 #include "how_far.h"
 #include "inclusion.h"
 #include "locate.h"
+#include "next_measurement.h"
+#include "parameter_resolution.h"
 #include "alarm_timing.h"
 #include "parts.h"
 #include "protocol.h"
@@ -37,6 +41,7 @@ void add_context_reasons(const Parts& parts, DiagnosisResult& result) {
   const Diagnosis& diagnosis = result.diagnosis;
   std::vector<std::string>& reasons = result.detail.reasons;
   if (auto why = reasons::clock(diagnosis, result.detail.partial)) reasons.push_back(*why);
+  reasons.insert(reasons.end(), diagnosis.degenerate.begin(), diagnosis.degenerate.end());
   const bool static_in_clearance =
       std::any_of(diagnosis.effects.begin(), diagnosis.effects.end(), [](const auto& f) {
         return effect_class(f.name).function_of_clearance_alone;
@@ -57,6 +62,13 @@ void add_coverage_reason(DiagnosisResult& result) {
   }
   result.detail.reasons.push_back(
       reasons::coverage(detail.how_far.region_samples, detail.regions[*detail.where_region]));
+}
+
+// A gap without noise, or of a constant voltage, has no band or change points to find: the PSD of
+// a constant leaks from its 0 Hz bin and binary segmentation splits rounding.
+void forget_structure(DiagnosisDetail& detail) {
+  detail.band_hz.reset();
+  detail.segments.clear();
 }
 
 }  // namespace
@@ -83,7 +95,10 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   estimate_noise(calibration, cal_base, options, result.detail);
   const double noise_v = std::max(result.detail.noise_std_v, 1e-9);
   result.diagnosis.noise_std_v = noise_v;
+  const DegenerateData degenerate = degenerate_data(calibration, result.detail.noise_std_v);
+  result.diagnosis.degenerate = degenerate.sentences;
   locate(calibration, cal_base, fs_hz, options, result.detail);
+  if (degenerate.nothing_to_locate()) forget_structure(result.detail);
   const std::vector<double> ho_base = parts.ho_replay.voltage(options.twin.effects);
   confirm_alarm_timing_on_heldout(heldout, ho_base, options, result.detail);
   result.diagnosis.stage = first_significant_stage(result.detail.stages);
@@ -94,6 +109,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   measure_inclusion(parts, selection);
   drop_unneeded_picks(parts, selection);
   measure_picks_in_final_fit(parts, selection);
+  resolve_parameters(parts, selection);
   // Signatures: the noise-type classes.
   recognise_quantisation(parts, result.detail.white_noise, selection);
   const VerdictNoise verdict_noise = with_converter_grid(selection, result.detail.white_noise,
@@ -103,6 +119,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   add_context_reasons(parts, result);
   measure_how_far(heldout, selection, result);
   add_coverage_reason(result);
+  result.diagnosis.next_measurement = next_measurements(parts, selection);
+  set_confidences(result.diagnosis);
   return result;
 }
 

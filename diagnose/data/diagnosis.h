@@ -36,6 +36,21 @@ struct EffectFinding {
   // A bias-type pick: the held-out gap RMS with every selected effect but this one, V (what the
   // final model needs it for; 0 for noise types).
   double heldout_rms_without = 0.0;
+  // What the data tell of its parameters (identify/parameter_resolution.h): each fitted
+  // parameter's resolution (the change the data can tell from the fitted value, with the other
+  // fitted parameters compensating; infinite when nothing in the data moves with it), the
+  // parameters the data cannot determine (held in `params` only so that the effect can be
+  // replayed: any value the data allow would do), and those whose value lies at the edge of the
+  // search, reported as a bound ("<= -39.5").
+  std::map<std::string, double> resolution{};
+  std::vector<std::string> undetermined{};
+  std::map<std::string, std::string> bounds{};
+  // The classes whose candidates left the held-out gap within the tie criterion of this one's in
+  // the round that picked it: the data cannot tell them from it.
+  std::vector<std::string> indistinguishable_from{};
+  // How far to trust that its class is in the data, 0..1 (identify/confidence.h): claims made
+  // with confidence >= p were right at least a fraction p of the time on blind pairs.
+  double confidence = 0.0;
 };
 
 struct Diagnosis {
@@ -59,6 +74,12 @@ struct Diagnosis {
   // at the same age). heldout_starts_after_s: the held-out t_s = 0 less the calibration's.
   std::string clock = "unknown";
   std::optional<double> heldout_starts_after_s;
+  // What the data hold constant or too coarse to fit a law of it (input/degenerate_data.h), one
+  // sentence each: a verdict on such data says only what one operating point can tell.
+  std::vector<std::string> degenerate;
+  // What recording would separate the classes the data cannot tell apart or determine the
+  // parameters they leave open (reasons/next_measurement.h), one sentence each.
+  std::vector<std::string> next_measurement;
 };
 
 // The part of a gap's RMS above white noise of RMS `noise`: sqrt(rms^2 - noise^2), 0 below it.

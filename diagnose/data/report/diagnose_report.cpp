@@ -3,10 +3,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
+#include "finding_text.h"
 #include "gnuplot_runner.h"
 #include "report_format.h"
 
@@ -14,10 +16,12 @@ namespace flange::diagnose {
 namespace {
 
 nlohmann::ordered_json finding_json(const EffectFinding& f) {
-  nlohmann::ordered_json params = nlohmann::ordered_json::object();
-  for (const auto& [key, value] : f.params) params[key] = value;
   return {{"name", f.name},
-          {"params", params},
+          {"params", params_json(f)},
+          {"undetermined", f.undetermined},
+          {"resolution", resolution_json(f)},
+          {"indistinguishable_from", f.indistinguishable_from},
+          {"confidence", f.confidence},
           {"heldout_rms_before", f.heldout_rms_before},
           {"heldout_rms_after", f.heldout_rms_after},
           {"shrink_pct", f.shrink_pct},
@@ -67,6 +71,20 @@ std::vector<std::vector<double>> decimated(const std::vector<std::vector<double>
   return out;
 }
 
+// An explicit range for an axis whose values are all one (a constant clearance, temperature or
+// gap), which gnuplot would otherwise widen with a warning: 1 % of the value, at least 1e-3.
+std::string range_if_flat(const char* axis, const std::vector<double>& values) {
+  std::vector<double> finite;
+  for (double v : values) {
+    if (std::isfinite(v)) finite.push_back(v);
+  }
+  if (finite.empty()) return "";
+  const auto [lo, hi] = std::minmax_element(finite.begin(), finite.end());
+  if (*hi - *lo > 1e-6 * std::max(1.0, std::abs(*hi))) return "";
+  const double pad = std::max(0.01 * std::abs(*lo), 1e-3);
+  return fmt::format("set {}range [{:.9g}:{:.9g}]\n", axis, *lo - pad, *hi + pad);
+}
+
 void plot_region(const std::filesystem::path& dir, const DiagnosisDetail& d) {
   std::string script = coeffs::gnuplot_svg_terminal(dir / "region.svg", 1000, 450);
   for (int which = 0; which < 2; ++which) {
@@ -82,15 +100,24 @@ void plot_region(const std::filesystem::path& dir, const DiagnosisDetail& d) {
     }
     script += "EOD\n";
   }
+  std::vector<double> clearance, temp, bias, rms;
+  for (const RegionCell& c : d.regions) {
+    clearance.push_back(0.5 * (c.clearance_lo + c.clearance_hi));
+    temp.push_back(0.5 * (c.temp_lo + c.temp_hi));
+    if (c.n == 0) continue;
+    bias.push_back(c.bias_v);
+    rms.push_back(c.rms_v);
+  }
   script +=
       "set multiplot layout 1,2 title 'voltage gap (real - sim) by operating region, V'\n"
       "set xlabel 'reference clearance (mm)'\nset ylabel 'temperature (C)'\n";
-  script +=
-      "set title 'bias'\nset palette defined (-1 '#2c7bb6', 0 '#ffffff', 1 '#d7191c')\n"
-      "plot $bias using 1:2:3 with image notitle\n";
-  script +=
-      "set title 'RMS'\nset palette defined (0 '#ffffff', 1 '#fdae61', 2 '#d7191c')\n"
-      "plot $rms using 1:2:3 with image notitle\nunset multiplot\n";
+  script += range_if_flat("x", clearance) + range_if_flat("y", temp);
+  script += "set title 'bias'\nset palette defined (-1 '#2c7bb6', 0 '#ffffff', 1 '#d7191c')\n" +
+            range_if_flat("cb", bias) + "plot $bias using 1:2:3 with image notitle\n";
+  script += std::string(
+                "set title 'RMS'\nset palette defined (0 '#ffffff', 1 '#fdae61', 2 '#d7191c')\n") +
+            "set autoscale cb\n" + range_if_flat("cb", rms) +
+            "plot $rms using 1:2:3 with image notitle\nunset multiplot\n";
   coeffs::run_gnuplot(script, (dir / "region.svg").string());
 }
 
@@ -103,6 +130,9 @@ void plot_spectrum(const std::filesystem::path& dir, const DiagnosisDetail& d) {
     noise_db.push_back(10.0 * std::log10(std::max(d.noise_psd, 1e-30)));
   }
   script += coeffs::gnuplot_data_block("psd", {f, db, noise_db});
+  std::vector<double> levels = db;
+  levels.insert(levels.end(), noise_db.begin(), noise_db.end());
+  script += range_if_flat("y", levels);
   if (d.band_hz) {
     script += fmt::format(
         "set object 1 rect from {},graph 0 to {},graph 1 fc rgb '#fde0dd' fs solid 0.6 behind\n",
@@ -124,6 +154,15 @@ void plot_time(const std::filesystem::path& dir, const DiagnosisDetail& d) {
     sm.insert(sm.end(), {s.mean_v, s.mean_v});
   }
   script += coeffs::gnuplot_data_block("segments", {st, sm});
+  script += range_if_flat("y", d.gap_v);
+  if (d.segments.empty()) {
+    script +=
+        "set xlabel 'time (s)'\nset ylabel 'voltage gap (V)'\nset key outside bottom center "
+        "horizontal\nplot $gap using 1:2 with lines lc rgb '#aaaaaa' title 'real - sim (no "
+        "change points: nothing to locate)'\n";
+    coeffs::run_gnuplot(script, (dir / "time.svg").string());
+    return;
+  }
   script +=
       "set xlabel 'time (s)'\nset ylabel 'voltage gap (V)'\nset key outside bottom center "
       "horizontal\nplot $gap using 1:2 with lines lc rgb '#aaaaaa' title 'real - sim', "
@@ -136,6 +175,9 @@ void plot_heldout(const std::filesystem::path& dir, const DiagnosisDetail& d) {
   std::string script = coeffs::gnuplot_svg_terminal(dir / "heldout.svg", 1000, 450);
   script += coeffs::gnuplot_data_block(
       "ho", decimated({d.heldout_t_s, d.heldout_gap_before_v, d.heldout_gap_after_v}));
+  std::vector<double> both = d.heldout_gap_before_v;
+  both.insert(both.end(), d.heldout_gap_after_v.begin(), d.heldout_gap_after_v.end());
+  script += range_if_flat("y", both);
   script +=
       "set xlabel 'time (s)'\nset ylabel 'voltage gap on held-out data (V)'\nset key outside "
       "bottom center horizontal\nplot $ho using 1:2 with lines lc rgb '#bbbbbb' title 'before "
@@ -228,6 +270,8 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   j["real"] = real;
   j["heldout"] = heldout;
   j["verdict"] = {{"status", g.status}, {"effects", names}, {"reasons", d.reasons}};
+  j["degenerate"] = g.degenerate;
+  j["next_measurement"] = g.next_measurement;
   j["where"] = where_json(g, d);
   j["stages"] = stages_json(d.stages);
   j["effects"] = findings_json(g.effects);
@@ -254,9 +298,9 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
   const Diagnosis& g = result.diagnosis;
   const DiagnosisDetail& d = result.detail;
   std::ostringstream text;
-  std::string names;
-  for (const EffectFinding& f : g.effects) names += (names.empty() ? "" : ", ") + f.name;
+  const std::string names = verdict_names(g.effects);
   text << "verdict: " << g.status << (names.empty() ? "" : " by " + names) << "\n";
+  for (const std::string& what : g.degenerate) text << "  data: " << what << "\n";
   text << fmt::format("  where: stage {}", g.stage);
   if (d.where_region) {
     const RegionCell& c = d.regions[*d.where_region];
@@ -267,13 +311,13 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
     text << fmt::format("; band {:.3f}-{:.3f} Hz", d.band_hz->first, d.band_hz->second);
   text << fmt::format("; {} time segment(s)\n", d.segments.size());
   for (const EffectFinding& f : g.effects.empty() ? d.partial : g.effects) {
-    std::string params;
-    for (const auto& [key, value] : f.params)
-      params += fmt::format("{}{}={:.4g}", params.empty() ? "" : ",", key, value);
+    const std::string params = params_text(f);
     text << fmt::format(
-        "  {} {}: {} held-out RMS {:.4f} -> {:.4f} V ({:.1f} %), inclusion {:.2f}{}\n",
+        "  {} {}: {} held-out RMS {:.4f} -> {:.4f} V ({:.1f} %), inclusion {:.2f}{}{}\n",
         g.effects.empty() ? "partial" : "effect", f.name, params, f.heldout_rms_before,
-        f.heldout_rms_after, f.shrink_pct, f.inclusion, f.noise_type ? " (noise-type)" : "");
+        f.heldout_rms_after, f.shrink_pct, f.inclusion,
+        g.effects.empty() ? "" : fmt::format(", confidence {:.2f}", f.confidence),
+        f.noise_type ? " (noise-type)" : "");
   }
   if (g.nearest) {
     text << fmt::format("  nearest: {} ({})\n", g.nearest->name, g.nearest->evidence);
@@ -284,6 +328,7 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
       d.how_far.rms_before, d.how_far.rms_after, d.how_far.max_before, d.how_far.max_after,
       d.noise_std_v, d.how_far.worst_window.from_s, d.how_far.worst_window.to_s,
       d.how_far.worst_window.rms_v);
+  for (const std::string& next : g.next_measurement) text << "  next: " << next << "\n";
   if (d.adc_grid) {
     text << fmt::format(
         "  converter grid: LSB {:.4g} mV, codes {:.6g} to {:.6g} V ({} used); analog noise {:.4f} "

@@ -25,8 +25,8 @@ void compare_with_library(const std::vector<Candidate>& candidates, const Choice
   if (!chosen.free_shape) return;
   for (const Candidate& c : candidates) {
     if (c.free_shape || c.fit.settings.name != chosen.fit.settings.name) continue;
-    finding.evidence += evidence::library_formula_beside(c.fit.settings.params, gain_of(c, round),
-                                                         choice.gain);
+    finding.evidence +=
+        evidence::library_formula_beside(c.fit.settings.params, gain_of(c, round), choice.gain);
   }
 }
 
@@ -34,12 +34,11 @@ void compare_with_library(const std::vector<Candidate>& candidates, const Choice
 // choice's, the two are confounded on this protocol: the pick stands, and a sentence says so and
 // which data would separate them.
 void note_confounding(const std::vector<Candidate>& candidates, const Choice& choice,
-                      Selection& selection) {
+                      const std::vector<std::string>& alike, Selection& selection) {
   const Candidate& chosen = candidates[choice.best];
-  for (const std::string& other : confounded_classes(candidates, choice, round_score(selection))) {
-    selection.confounded.push_back(evidence::confounded(effect_class(chosen.fit.settings.name),
-                                                        effect_class(other),
-                                                        criteria::kConfoundingMargin));
+  for (const std::string& other : alike) {
+    selection.confounded.push_back(evidence::confounded(
+        effect_class(chosen.fit.settings.name), effect_class(other), criteria::kConfoundingMargin));
   }
 }
 
@@ -81,6 +80,11 @@ RoundScore round_score(const Selection& selection) {
   return {selection.current_error, selection.resamples, selection.noise_v};
 }
 
+RoundScore tie_score(const Selection& selection) {
+  const double floor = criteria::kTieFloorShareOfGap * rms_of(selection.current_error);
+  return {selection.current_error, selection.resamples, std::max(selection.noise_v, floor)};
+}
+
 double least_gain_of_next_pick(const Selection& selection) {
   return selection.picks.empty() && !selection.noise_type_before_picks
              ? selection.first_pick_least_gain
@@ -105,8 +109,8 @@ std::vector<Candidate> round_candidates(const Parts& parts, const Selection& sel
     families.push_back(family);
   }
   const CoilParts coil(parts, modelled);
-  const FreeShapeRound round{coil.calibration(), coil.heldout(),        cal_gap,
-                             selection.current_error, modelled, parts.heldout_age_unknown};
+  const FreeShapeRound round{coil.calibration(),      coil.heldout(), cal_gap,
+                             selection.current_error, modelled,       parts.heldout_age_unknown};
   for (Candidate& c : free_shape_candidates(families, round)) candidates.push_back(std::move(c));
   return candidates;
 }
@@ -173,8 +177,10 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
       }
       break;
     }
-    note_confounding(candidates, choice, selection);
+    std::vector<std::string> alike = confounded_classes(candidates, choice, tie_score(selection));
+    note_confounding(candidates, choice, alike, selection);
     take_pick(std::move(candidates), choice, selection);
+    selection.picks.back().finding.indistinguishable_from = std::move(alike);
     if (options.estimate_noise) reestimate_noise(parts, selection, result);
   }
 }

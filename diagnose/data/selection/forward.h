@@ -28,6 +28,10 @@ std::vector<std::string> confounded_classes(const std::vector<Candidate>& candid
 // What a round is scored against.
 RoundScore round_score(const Selection& selection);
 
+// What ties are judged against: the round's score with its noise at least
+// criteria::kTieFloorShareOfGap of the held-out gap's RMS the round starts from.
+RoundScore tie_score(const Selection& selection);
+
 // The least gain the next pick must make: first_pick_least_gain for a first pick where no
 // noise-type class shows before any pick, else criteria::kLeastGainOfAPick of sigma^2.
 double least_gain_of_next_pick(const Selection& selection);

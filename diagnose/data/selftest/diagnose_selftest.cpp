@@ -170,7 +170,10 @@ SelftestScore score_selftest_case(const SelftestCaseSpec& spec, const Diagnosis&
     return std::any_of(spec.truth.begin(), spec.truth.end(),
                        [&](const sim::EffectSettings& e) { return e.name == name; });
   };
-  for (const std::string& name : score.claimed) score.spurious += is_true(name) ? 0 : 1;
+  for (const std::string& name : score.claimed) {
+    score.claim_right.push_back(is_true(name));
+    score.spurious += is_true(name) ? 0 : 1;
+  }
   switch (spec.kind) {
     case SelftestKind::kSingle:
     case SelftestKind::kPair: {

@@ -50,6 +50,7 @@ SelftestRecordings make_selftest_recordings(const SelftestCaseSpec& spec, double
 
 struct SelftestScore {
   std::vector<std::string> claimed;  // effects the verdict names (explained, fully or partly)
+  std::vector<bool> claim_right;     // for each claim, whether its effect is in the truth
   bool verdict_correct = false;      // in-library: explained; null: none; outside: unexplained
   bool top_correct = false;          // in-library: the first named effect is a true one
   bool all_found = false;            // in-library: every true effect is named

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "bench_scenario.h"
+#include "claims_json.h"
 #include "recording_writer.h"
 #include "version.h"
 
@@ -82,6 +83,7 @@ nlohmann::json case_json(const SelftestCaseResult& r) {
     fitted.push_back({{"name", f.name}, {"params", f.params}, {"inclusion", f.inclusion}});
   }
   j["fitted"] = fitted;
+  j["claims"] = claims_json(r.diagnosis.effects, r.score.claimed, r.score.claim_right);
   nlohmann::json partial = nlohmann::json::array();
   for (const EffectFinding& f : r.partial) {
     partial.push_back(

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "family.h"
 
+#include "compensated_sensitivity.h"
 #include "heldout_age.h"
 #include "ridge_solve.h"
 
@@ -15,11 +16,14 @@ FreeShapeFit LinearFamily::fit(const FreeShapeInputs& in) {
   const Eigen::MatrixXd cal = columns(in.calibration);
   const Eigen::Map<const Eigen::VectorXd> gap(in.cal_gap_v.data(),
                                               static_cast<Eigen::Index>(in.cal_gap_v.size()));
-  const Eigen::VectorXd beta = ridge_solve(cal, gap);
+  const Eigen::MatrixXd gram = cal.transpose() * cal;
+  const Eigen::VectorXd beta = ridge_solve_normal(gram, cal.transpose() * gap);
   FreeShapeFit fit;
   const std::vector<std::string> value_names = names();
+  const Eigen::VectorXd sensitivity = compensated_sensitivity(gram, cal.rows());
   for (std::size_t j = 0; j < value_names.size(); ++j) {
     fit.params[value_names[j]] = beta(static_cast<Eigen::Index>(j));
+    fit.value_sensitivity_v[value_names[j]] = sensitivity(static_cast<Eigen::Index>(j));
   }
   summarise(beta, in.calibration, fit.params);
   fit.free_values = static_cast<int>(value_names.size()) + searched_values();

@@ -77,6 +77,11 @@ struct FreeShapeFit {
   // How many values the calibration fit chose (the curve's, plus a searched law's): what the
   // selection weighs when two candidates gain alike.
   int free_values = 0;
+  // For each free value of a linear family: how far the calibration part's fitted voltage moves
+  // per unit of it once the family's other values compensate, V RMS (identify/
+  // compensated_sensitivity.h); 0 for a value nothing in the data moves with (a knot at a
+  // temperature never visited). Empty for the mains' lines.
+  std::map<std::string, double> value_sensitivity_v;
 };
 
 // What a family is fitted to: the two parts, the gap the modelled effects leave on each, and

@@ -6,12 +6,15 @@
 namespace flange::diagnose::free_shapes {
 
 Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& y) {
-  Eigen::MatrixXd normal = a.transpose() * a;
+  return ridge_solve_normal(a.transpose() * a, a.transpose() * y);
+}
+
+Eigen::VectorXd ridge_solve_normal(Eigen::MatrixXd normal, const Eigen::VectorXd& aty) {
   const double largest = normal.diagonal().maxCoeff();
   for (Eigen::Index j = 0; j < normal.rows(); ++j) {
     normal(j, j) += kRidge * normal(j, j) + 1e-12 * std::max(largest, 1e-300);
   }
-  return normal.ldlt().solve(a.transpose() * y);
+  return normal.ldlt().solve(aty);
 }
 
 Eigen::MatrixXd matrix(std::size_t rows, std::size_t cols) {

@@ -18,6 +18,8 @@ inline constexpr double kRidge = 1e-3;
 // Least squares of `y` on the columns of `a` with the relative ridge; a column with no weight at
 // all (a hat over a temperature never visited) gets 0.
 Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& y);
+// The same from the normal equations: a'a and a'y.
+Eigen::VectorXd ridge_solve_normal(Eigen::MatrixXd normal, const Eigen::VectorXd& aty);
 
 // A rows x cols matrix of zeros.
 Eigen::MatrixXd matrix(std::size_t rows, std::size_t cols);

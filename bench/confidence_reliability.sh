@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The reliability of the diagnosis's confidence (docs/diagnose.md, "Confidence"): runs the blind
+# self-test on each seed and tables every claim by its confidence, in bins of 0.1, with the share
+# right in each bin and among all claims at or above the bin's low end.
+#   bash bench/confidence_reliability.sh alt|twin SEED... [-- FLANGE]   (FLANGE: build/flange)
+# alt: 40 pairs per seed of the alternative reality; twin: 50 cases per seed of the twin's own.
+# Leaves each seed's selftest.json in build/confidence_reliability/<reality><seed>/.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+reality="${1:?alt or twin}"
+shift
+seeds=()
+flange="$here/../build/flange"
+while [ $# -gt 0 ]; do
+  if [ "$1" = "--" ]; then flange="$2"; break; fi
+  seeds+=("$1")
+  shift
+done
+[ "${#seeds[@]}" -gt 0 ] || { echo "confidence_reliability: give at least one seed" >&2; exit 2; }
+out="$here/../build/confidence_reliability"
+mkdir -p "$out"
+files=()
+for seed in "${seeds[@]}"; do
+  dir="$out/$reality$seed"
+  if [ "$reality" = alt ]; then
+    "$flange" diagnose --selftest --reality alt --pairs 40 --seed "$seed" --jobs 2 --out "$dir" \
+      > "$dir.txt" || true
+  else
+    "$flange" diagnose --selftest --cases 50 --seed "$seed" --jobs 2 --out "$dir" > "$dir.txt" || true
+  fi
+  files+=("$dir/selftest.json")
+done
+python3 - "${files[@]}" <<'PY'
+import json, sys
+claims = []
+for path in sys.argv[1:]:
+    data = json.load(open(path))
+    for item in data.get("pairs", data.get("cases", [])):
+        claims += [(c["confidence"], c["right"]) for c in item.get("claims", [])]
+print(f"{len(claims)} claims from {len(sys.argv) - 1} seed(s)")
+print("| confidence | claims | right | share right | claims at or above | right among them |")
+print("|---|---|---|---|---|---|")
+ok = True
+for b in range(10):
+    lo, hi = b / 10, (b + 1) / 10
+    inside = [r for c, r in claims if lo <= c < hi or (b == 9 and c == 1.0)]
+    above = [r for c, r in claims if c >= lo]
+    share = f"{sum(inside) / len(inside):.3f}" if inside else "-"
+    among = f"{sum(above) / len(above):.3f}" if above else "-"
+    print(f"| {lo:.1f}-{hi:.1f} | {len(inside)} | {sum(inside)} | {share} | {len(above)} | {among} |")
+    # Claims made with confidence >= p must be right at least a fraction p of the time: checked
+    # at every claim's own confidence.
+for c, _ in claims:
+    above = [r for d, r in claims if d >= c]
+    if sum(above) / len(above) < c:
+        ok = False
+print("reliability: claims with confidence >= p are right at least p of the time:",
+      "holds" if ok else "does not hold")
+PY

@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// How far the data follow one value of a fit when the fit's other values may compensate: the
+// local, linear form of a profile over that value.
+#pragma once
+
+#include <Eigen/Dense>
+
+namespace flange::diagnose {
+
+// For each column k of `columns` (one row per sample: how the fitted voltage moves per unit of
+// value k), the RMS over the rows of what is left of the column once the other columns are
+// fitted to it by least squares: a change dv of value k moves the fitted voltage by
+// dv times this, beyond anything the other values can take back. 0 for a column the others
+// reproduce (or that is 0 everywhere).
+// Computed from the columns' Gram matrix `gram` (columns' * columns) and the number of rows.
+Eigen::VectorXd compensated_sensitivity(const Eigen::MatrixXd& gram, Eigen::Index rows);
+
+}  // namespace flange::diagnose

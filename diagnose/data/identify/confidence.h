@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+// How far to trust a named class (docs/diagnose.md, "Confidence"): the share of blind claims the
+// method gets right in its place in the verdict, the pick's bootstrap inclusion, and the classes
+// the data cannot tell from it.
+#pragma once
+
+#include "diagnosis.h"
+
+namespace flange::diagnose {
+
+// The base rate (criteria::kFirstClaimAccuracy for the verdict's first class, else
+// criteria::kLaterClaimAccuracy) x inclusion / (1 + the classes the data cannot tell from it):
+// how often a class named there is present, lowered where resamples of the held-out data do not
+// confirm the pick, and shared among the classes the data cannot tell apart (each as likely).
+double confidence_of(const EffectFinding& finding, bool first);
+
+// Every named effect's confidence.
+void set_confidences(Diagnosis& diagnosis);
+
+}  // namespace flange::diagnose

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+#include "hypothetical_session.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace flange::diagnose {
+namespace {
+
+constexpr std::size_t kMostRows = 8192;
+constexpr double kLowestClearanceMm = 1.5, kHighestClearanceMm = 10.0;
+
+double mean_of(const std::vector<double>& v) {
+  return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+// 0 at the session's start and end, 1 in its middle.
+double triangle(double t, double t0, double t1) {
+  const double u = t1 > t0 ? (t - t0) / (t1 - t0) : 0.0;
+  return u < 0.5 ? 2.0 * u : 2.0 - 2.0 * u;
+}
+
+}  // namespace
+
+const std::vector<Sweep>& sweeps() {
+  static const std::vector<Sweep> all = {
+      {"temperature", "degC", {1, 2, 5, 10, 20, 40, 80}},
+      {"clearance", "mm", {0.5, 1, 2, 4, 8}},
+  };
+  return all;
+}
+
+RecordingSeries hypothetical_session(const RecordingSeries& calibration,
+                                     const std::string& variable, double span) {
+  RecordingSeries out;
+  out.path = "a session sweeping the " + variable;
+  const std::size_t n = calibration.size();
+  const std::size_t stride = std::max<std::size_t>(1, (n + kMostRows - 1) / kMostRows);
+  const double t0 = calibration.t_s.front(), t1 = calibration.t_s.back();
+  const double temp_mean = mean_of(calibration.temp_c);
+  const double clearance_centre =
+      std::clamp(mean_of(calibration.clearance_mm), kLowestClearanceMm + 0.5 * span,
+                 std::max(kLowestClearanceMm + 0.5 * span, kHighestClearanceMm - 0.5 * span));
+  for (std::size_t i = 0; i < n; i += stride) {
+    const double t = calibration.t_s[i];
+    const double swing = span * (triangle(t, t0, t1) - 0.5);
+    out.t_s.push_back(t);
+    const bool temperature = variable == "temperature";
+    out.temp_c.push_back(temperature ? temp_mean + swing : calibration.temp_c[i]);
+    out.clearance_mm.push_back(temperature ? calibration.clearance_mm[i]
+                                           : clearance_centre + swing);
+    out.voltage_v.push_back(0.0);
+  }
+  out.start_utc_s = calibration.start_utc_s;
+  return out;
+}
+
+}  // namespace flange::diagnose

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// Sessions that were not recorded: the calibration part's times and one input as recorded, the
+// other swept over a chosen span, so that the fits the data leave open can be replayed where they
+// would differ (reasons/next_measurement.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "recording_series.h"
+
+namespace flange::diagnose {
+
+// What a session sweeps.
+struct Sweep {
+  std::string variable;       // "temperature" or "clearance"
+  std::string unit;           // "degC" or "mm"
+  std::vector<double> spans;  // the spans tried, smallest first
+};
+
+// The temperature swept over 1 to 80 degC, the clearance over 0.5 to 8 mm (within the bench's
+// 1.5-10 mm).
+const std::vector<Sweep>& sweeps();
+
+// `calibration`'s times (at most 8192 of them, evenly spread, so that the sweep's replays stay
+// quick) with the swept variable moving once up and back down over `span` about its recorded
+// mean (a clearance kept within 1.5-10 mm), the other as recorded, and voltage 0 (a replay needs
+// none).
+RecordingSeries hypothetical_session(const RecordingSeries& calibration,
+                                     const std::string& variable, double span);
+
+}  // namespace flange::diagnose

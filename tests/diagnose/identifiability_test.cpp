@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: MIT
+// What the data can tell: a temperature law is undetermined on a session at room temperature,
+// a recording of one operating point names every class that shifts it and says it is degenerate,
+// no parameter is reported at the edge of its search, the held-out data must be another session,
+// and nothing but the results reaches standard output.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "compensated_sensitivity.h"
+#include "confidence.h"
+#include "criteria.h"
+#include "diagnosis.h"
+#include "diagnosis_detail.h"
+#include "effect_classes.h"
+#include "flange_in_process.h"
+#include "polynomial_sensor_model.h"
+#include "test_files.h"
+
+namespace flange::diagnose {
+namespace {
+
+using testing::FlangeOutcome;
+using testing::fresh_test_dir;
+using testing::run_flange_captured;
+
+constexpr double kFsHz = 6.0;
+
+// The micrometer over 1.5-10 mm in 0.5 mm steps, up and down: 20 s at each position, 4 s moves.
+double staircase_mm(double t) {
+  constexpr double kMove = 4.0, kDwell = 20.0;
+  std::vector<double> seq;
+  for (int k = 0; k < 18; ++k) seq.push_back(1.5 + 0.5 * k);
+  for (int k = 16; k > 0; --k) seq.push_back(1.5 + 0.5 * k);
+  const double step = kMove + kDwell;
+  const double u = std::fmod(t, step * static_cast<double>(seq.size()));
+  const auto k = static_cast<std::size_t>(u / step);
+  const double r = u - static_cast<double>(k) * step;
+  const double a = seq[k], b = seq[(k + 1) % seq.size()];
+  return r < kDwell ? a : a + (b - a) * (r - kDwell) / kMove;
+}
+
+double rounded(double v, double quantum) { return std::round(v / quantum) * quantum; }
+
+// A bench session at room temperature: the recorded temperature reads 21.9 or 22.0 degC all
+// through, the sensor reads `gain` times the nominal voltage, with 2 mV of noise, recorded to
+// 0.1 mV.
+RecordingSeries room_temperature_session(double gain, std::uint64_t seed, double duration_s) {
+  const sim::PolynomialSensorModel model = sim::PolynomialSensorModel::thesis_eq_3_14();
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  std::bernoulli_distribution warmer(0.5);
+  RecordingSeries s;
+  for (int i = 0; i < static_cast<int>(duration_s * kFsHz); ++i) {
+    const double t = i / kFsHz;
+    s.t_s.push_back(t);
+    s.clearance_mm.push_back(staircase_mm(t));
+    s.temp_c.push_back(warmer(rng) ? 22.0 : 21.9);
+    const double v = model.voltage_for(s.clearance_mm.back(), s.temp_c.back()).volts;
+    s.voltage_v.push_back(rounded(gain * v + noise(rng), 1e-4));
+  }
+  return s;
+}
+
+// The micrometer never moved, the temperature held: 5 mm, 22 degC, the voltage `offset_v` off the
+// nominal and exactly repeated.
+RecordingSeries one_operating_point(double offset_v, double duration_s) {
+  const sim::PolynomialSensorModel model = sim::PolynomialSensorModel::thesis_eq_3_14();
+  const double v = rounded(model.voltage_for(5.0, 22.0).volts + offset_v, 1e-4);
+  RecordingSeries s;
+  for (int i = 0; i < static_cast<int>(duration_s * kFsHz); ++i) {
+    s.t_s.push_back(i / kFsHz);
+    s.clearance_mm.push_back(5.0);
+    s.temp_c.push_back(22.0);
+    s.voltage_v.push_back(v);
+  }
+  return s;
+}
+
+DiagnosisResult diagnose_pair(const RecordingSeries& cal, const RecordingSeries& ho) {
+  DiagnoseOptions options;
+  options.bootstrap_rounds = 20;
+  return diagnose_in_detail(cal, ho, options);
+}
+
+bool has(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// No parameter of a library class is reported at an edge of its search.
+void expect_no_value_at_a_search_edge(const EffectFinding& f) {
+  const EffectClass& c = effect_class(f.name);
+  for (const SearchRange& range : c.search) {
+    const auto at = f.params.find(range.key);
+    if (at == f.params.end() || has(f.undetermined, range.key) || f.bounds.count(range.key)) {
+      continue;
+    }
+    const double edge = 1e-3 * (range.hi - range.lo);
+    EXPECT_GT(at->second, range.lo + edge) << f.name << " " << range.key;
+    EXPECT_LT(at->second, range.hi - edge) << f.name << " " << range.key;
+  }
+}
+
+TEST(Identifiability, ATemperatureLawIsUndeterminedAtRoomTemperature) {
+  const DiagnosisResult r = diagnose_pair(room_temperature_session(1.02, 1, 1800.0),
+                                          room_temperature_session(1.02, 2, 1800.0));
+  const Diagnosis& d = r.diagnosis;
+  ASSERT_EQ(d.status, "explained");
+  ASSERT_FALSE(d.effects.empty());
+  EXPECT_TRUE(std::any_of(d.degenerate.begin(), d.degenerate.end(), [](const std::string& s) {
+    return s.find("temperature takes only 2 distinct values") != std::string::npos;
+  }));
+  for (const EffectFinding& f : d.effects) {
+    expect_no_value_at_a_search_edge(f);
+    // Whatever class carries the gain, a law of the temperature is not claimed.
+    for (const char* law : {"gain_per_c", "reference_c", "offset_v_per_c"}) {
+      if (f.params.count(law)) {
+        EXPECT_TRUE(has(f.undetermined, law)) << f.name << " " << law;
+      }
+    }
+  }
+  EXPECT_FALSE(d.next_measurement.empty());
+}
+
+TEST(Identifiability, AConstantRecordingNamesEveryClassThatShiftsItsOnePoint) {
+  // 0.3 V below the twin: within reach of every class that shifts a voltage (1.56 V is beyond
+  // the temperature offset's search at 22 degC, and the data then rule it out).
+  const RecordingSeries whole = one_operating_point(-0.3, 1200.0);
+  const HoldoutSplit split = split_holdout(whole, 0.3);
+  const DiagnosisResult r = diagnose_pair(split.calibration, split.heldout);
+  const Diagnosis& d = r.diagnosis;
+  ASSERT_FALSE(d.effects.empty()) << d.status;
+  const EffectFinding& named = d.effects.front();
+  std::vector<std::string> alike = named.indistinguishable_from;
+  alike.push_back(named.name);
+  for (const char* shifts : {"temp_offset_drift", "ageing_drift", "range_compression"}) {
+    EXPECT_TRUE(has(alike, shifts)) << shifts;
+  }
+  for (const auto& [key, value] : named.params) {
+    EXPECT_TRUE(has(named.undetermined, key) || named.bounds.count(key)) << key << "=" << value;
+  }
+  for (const char* what : {"clearance is constant", "temperature is constant",
+                           "voltage is constant", "noise estimate is zero"}) {
+    EXPECT_TRUE(std::any_of(d.degenerate.begin(), d.degenerate.end(), [&](const std::string& s) {
+      return s.find(what) != std::string::npos;
+    })) << what;
+  }
+  EXPECT_FALSE(r.detail.band_hz.has_value());
+  EXPECT_TRUE(r.detail.segments.empty());
+  EXPECT_FALSE(d.next_measurement.empty());
+}
+
+TEST(Identifiability, ConfidenceIsTheBaseRateSharedAmongAlikeClasses) {
+  EffectFinding f;
+  f.inclusion = 1.0;
+  EXPECT_DOUBLE_EQ(confidence_of(f, true), criteria::kFirstClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, false), criteria::kLaterClaimAccuracy);
+  f.inclusion = 0.5;
+  f.indistinguishable_from = {"ageing_drift"};
+  EXPECT_DOUBLE_EQ(confidence_of(f, true), criteria::kFirstClaimAccuracy * 0.5 / 2.0);
+}
+
+TEST(CompensatedSensitivity, ACopyOfAnotherColumnHasNone) {
+  Eigen::MatrixXd columns(100, 3);
+  for (int i = 0; i < 100; ++i) {
+    columns(i, 0) = std::sin(0.1 * i);
+    columns(i, 1) = 2.0 * columns(i, 0);
+    columns(i, 2) = (i % 2 == 0) ? 1.0 : -1.0;
+  }
+  const Eigen::VectorXd s = compensated_sensitivity(columns.transpose() * columns, 100);
+  EXPECT_NEAR(s(0), 0.0, 1e-6);
+  EXPECT_NEAR(s(1), 0.0, 1e-6);
+  EXPECT_GT(s(2), 0.9);  // nearly orthogonal to the sine: about its own RMS, 1
+}
+
+TEST(CompensatedSensitivity, AnOrthogonalColumnKeepsItsOwnRms) {
+  Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(4, 2);
+  columns << 1, 1, 1, -1, -1, 1, -1, -1;
+  const Eigen::VectorXd s = compensated_sensitivity(columns.transpose() * columns, 4);
+  EXPECT_NEAR(s(0), 1.0, 1e-12);
+  EXPECT_NEAR(s(1), 1.0, 1e-12);
+}
+
+void write_csv(const std::filesystem::path& path, const RecordingSeries& s) {
+  std::ofstream csv(path, std::ios::binary);
+  csv << "t_s,clearance_mm,temp_c,voltage_v\n";
+  char line[160];
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    std::snprintf(line, sizeof line, "%.4f,%.4f,%.1f,%.4f\n", s.t_s[i], s.clearance_mm[i],
+                  s.temp_c[i], s.voltage_v[i]);
+    csv << line;
+  }
+}
+
+TEST(DiagnoseCommand, HeldOutDataMustBeAnotherSession) {
+  const auto dir = fresh_test_dir("diagnose_same_session");
+  const RecordingSeries a = room_temperature_session(1.0, 3, 600.0);
+  write_csv(dir / "a.csv", a);
+  write_csv(dir / "copy.csv", a);
+  write_csv(dir / "middle.csv", slice_recording_series(a, 1000, 2500, "middle"));
+  write_csv(dir / "b.csv", room_temperature_session(1.0, 4, 600.0));
+  const std::string out = (dir / "out").string();
+  const auto run = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"diagnose", "--real", (dir / "a.csv").string(), "--out",
+                                     out, "--bootstrap", "20"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_flange_captured(args);
+  };
+  struct Bad {
+    std::vector<std::string> args;
+    std::string expected;
+  };
+  const std::vector<Bad> cases = {
+      {{"--holdout", (dir / "a.csv").string()}, "is the same recording as --real"},
+      {{"--holdout", (dir / "copy.csv").string()}, "is the same recording as --real"},
+      {{"--holdout", (dir / "middle.csv").string()}, "repeat rows of"},
+      {{"--holdout", (dir / "b.csv").string(), "--real-start", "2026-11-21T09:30:00Z",
+        "--holdout-start", "2026-11-21T09:35:00Z"},
+       "must not overlap the calibration session in time"},
+  };
+  for (const Bad& bad : cases) {
+    const FlangeOutcome o = run(bad.args);
+    EXPECT_EQ(o.status, 2) << bad.expected << ": " << o.err;
+    EXPECT_NE(o.err.find(bad.expected), std::string::npos) << o.err;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
+  }
+  const FlangeOutcome later = run({"--holdout", (dir / "b.csv").string(), "--real-start",
+                                   "2026-11-21T09:30:00Z", "--holdout-start",
+                                   "2026-11-21T09:45:00Z"});
+  EXPECT_EQ(later.status, 0) << later.err;
+}
+
+TEST(DiagnoseCommand, OneOperatingPointPrintsOnlyTheResults) {
+  const auto dir = fresh_test_dir("diagnose_one_point");
+  write_csv(dir / "still.csv", one_operating_point(-1.56, 600.0));
+  ::testing::internal::CaptureStdout();
+  const FlangeOutcome o = run_flange_captured({"diagnose", "--real", (dir / "still.csv").string(),
+                                               "--holdout-fraction", "0.3", "--out",
+                                               (dir / "out").string(), "--bootstrap", "20"});
+  const std::string process_stdout = ::testing::internal::GetCapturedStdout();
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(process_stdout.find("Warning"), std::string::npos) << process_stdout;
+  EXPECT_NE(o.out.find("these data cannot tell them apart"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("  data: the clearance is constant"), std::string::npos) << o.out;
+  EXPECT_EQ(o.out.find(" band "), std::string::npos) << o.out;
+  std::ifstream in(dir / "out" / "diagnosis.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_FALSE(j["degenerate"].empty());
+  EXPECT_FALSE(j["next_measurement"].empty());
+  EXPECT_FALSE(j["effects"][0]["indistinguishable_from"].empty());
+  EXPECT_FALSE(j["effects"][0]["undetermined"].empty());
+}
+
+}  // namespace
+}  // namespace flange::diagnose
