@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -20,6 +22,7 @@
 #include "effect_classes.h"
 #include "parallel_cases.h"
 #include "sensor_twin.h"
+#include "sim_error.h"
 #include "table_fit.h"
 #include "test_files.h"
 #include "twin_file.h"
@@ -101,7 +104,9 @@ std::vector<SelftestCaseSpec> one_case_per_class() {
 }
 
 struct Rediagnosis {
+  int index = 0;
   std::string truth, first, second;
+  std::vector<std::string> held_as;  // how the improved twin holds each finding
 };
 
 Rediagnosis rediagnose(const SelftestCaseSpec& spec) {
@@ -109,8 +114,9 @@ Rediagnosis rediagnose(const SelftestCaseSpec& spec) {
   DiagnoseOptions options;
   options.bootstrap_rounds = 20;
   const DiagnosisResult first = diagnose_in_detail(rec.calibration, rec.heldout, options);
-  Rediagnosis out{spec.truth.front().name, first.diagnosis.status, ""};
+  Rediagnosis out{spec.index, spec.truth.front().name, first.diagnosis.status, "", {}};
   if (first.diagnosis.status != "explained") return out;
+  for (const HeldFinding& f : first.improved_twin.findings) out.held_as.push_back(f.held_as);
   // Through the twin file, as `flange diagnose --twin twin.json` reads it.
   options.twin = sim::twin_from_json(sim::twin_to_json(first.improved_twin.twin), "twin.json");
   out.second = diagnose_in_detail(rec.calibration, rec.heldout, options).diagnosis.status;
@@ -125,23 +131,64 @@ TEST(ImprovedTwin, RediagnosingAnExplainedPairOfEveryClassAgainstItLeavesNone) {
                   [&](int i) { results[static_cast<std::size_t>(i)] = rediagnose(cases[i]); });
   int explained = 0;
   for (const Rediagnosis& r : results) {
+    std::cout << "case " << r.index << ", " << r.truth << ": " << r.first
+              << (r.second.empty() ? "" : " -> " + r.second);
+    for (const std::string& held : r.held_as) std::cout << " [" << held << "]";
+    std::cout << "\n";
     if (r.first != "explained") continue;
     ++explained;
-    EXPECT_EQ(r.second, "none") << r.truth << " (reproduce: case of seed " << kSeed << ")";
+    // Mount motion the twin holds is not a finding again, but the stages' floors are drawn from
+    // white noise alone, so the motion still stands above them: the verdict says "unexplained",
+    // never a claim (docs/diagnose.md, "The improved twin").
+    if (effect_class(r.truth).is_mount_motion) {
+      EXPECT_EQ(r.second, "unexplained") << r.truth;
+      continue;
+    }
+    EXPECT_EQ(r.second, "none") << r.truth << " (reproduce: bash scripts/rediagnose_pairs.sh "
+                                << "--reality twin --seed " << kSeed << " --from " << r.index
+                                << " --to " << r.index << " --duration " << kDurationS << ")";
   }
   // The test says nothing unless most classes are explained on these short sessions.
   EXPECT_GE(explained, 7) << "explained pairs: " << explained;
 }
 
+// A recording whose gap is a bump in temperature that no library formula has: the free curve of
+// temperature takes it, and the improved twin holds it as a table.
+SelftestCaseSpec temperature_bump_case() {
+  auto table = std::make_shared<sim::EffectTable>();
+  table->clearance_mm = {0.0, 12.0};
+  for (double t = 10.0; t <= 110.0; t += 2.0) table->temperature_c.push_back(t);
+  for (int i = 0; i < 2; ++i) {
+    std::vector<double> row;
+    for (const double t : table->temperature_c)
+      row.push_back(0.25 * std::exp(-std::pow((t - 60.0) / 12.0, 2)));
+    table->added_v.push_back(row);
+  }
+  SelftestCaseSpec spec;
+  spec.index = 1;
+  spec.noise_seed = 5;
+  sim::EffectSettings bump = sim::make_effect_settings(sim::tabulated_effect_name(), {}, "test");
+  bump.table = table;
+  spec.truth = {bump};
+  return spec;
+}
+
+TEST(ImprovedTwin, AFreeShapeIsHeldAsATableAndRediagnosisLeavesNone) {
+  const Rediagnosis r = rediagnose(temperature_bump_case());
+  ASSERT_EQ(r.first, "explained");
+  EXPECT_NE(std::find(r.held_as.begin(), r.held_as.end(), "table"), r.held_as.end());
+  EXPECT_EQ(r.second, "none");
+}
+
 TEST(ImprovedTwinCommand, DiagnoseWritesTwinJsonThatSimulateAndDiagnoseTake) {
   const auto dir = testing::fresh_test_dir("improved_twin_command");
   std::ostringstream out, err;
-  ASSERT_EQ(cli::run_flange({"diagnose", "--selftest", "--case", "1", "--seed", "1", "--duration",
-                             "600", "--bootstrap", "20", "--out", dir.string()},
-                            out, err),
-            0)
-      << err.str();
+  // One self-test case writes its two sessions (its status says only whether the aims were met).
+  cli::run_flange({"diagnose", "--selftest", "--case", "1", "--seed", "1", "--duration", "600",
+                   "--bootstrap", "20", "--out", dir.string()},
+                  out, err);
   const std::string real = (dir / "case_1_calibration.csv").string();
+  ASSERT_TRUE(std::filesystem::exists(real)) << err.str();
   const std::string heldout = (dir / "case_1_heldout.csv").string();
   const auto first = dir / "first";
   ASSERT_EQ(cli::run_flange({"diagnose", "--real", real, "--holdout", heldout, "--bootstrap", "20",

@@ -5,11 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "criteria.h"
 #include "diagnosis_detail.h"
 #include "effect_classes.h"
 #include "parts.h"
 #include "selection.h"
+#include "sim_error.h"
 #include "table_fit.h"
 
 namespace flange::diagnose {
@@ -48,6 +51,11 @@ std::vector<double> added_on(const TwinReplay& replay, const std::vector<double>
   return added;
 }
 
+bool class_held(const std::vector<sim::EffectSettings>& effects, const std::string& name) {
+  return std::any_of(effects.begin(), effects.end(),
+                     [&](const sim::EffectSettings& e) { return e.name == name; });
+}
+
 bool any_nonzero(const std::vector<double>& x) {
   return std::any_of(x.begin(), x.end(), [](double v) { return v != 0.0; });
 }
@@ -59,14 +67,66 @@ bool shapes_follow_age(const Selection& selection) {
   });
 }
 
+// A free shape whose summary gives every parameter of its class's library effect (a lag's mean
+// delay, a skew's mean): that library member, or nothing when the summary leaves its valid range.
+std::optional<sim::EffectSettings> library_member(const Pick& pick) {
+  const FreeShapeFit& shape = *pick.chosen().free_shape;
+  const sim::EffectSpec& spec =
+      sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(pick.finding.name))];
+  sim::ParamValues values;
+  for (const sim::ParamSpec& param : spec.params) {
+    const auto value = shape.params.find(param.key);
+    if (value == shape.params.end()) return std::nullopt;
+    values[param.key] = value->second;
+  }
+  try {
+    return sim::make_effect_settings(spec.name, values, "improved twin");
+  } catch (const sim::BadArgument&) {
+    return std::nullopt;
+  }
+}
+
+// The replayed effects: all but mount motion, which the diagnosis does not replay.
+std::vector<sim::EffectSettings> replayed(const std::vector<sim::EffectSettings>& effects) {
+  std::vector<sim::EffectSettings> out;
+  for (const sim::EffectSettings& e : effects) {
+    if (!effect_class(e.name).is_mount_motion) out.push_back(e);
+  }
+  return out;
+}
+
+// Free shapes that have a library member (library_member) are held as that member, and the table
+// takes what the member leaves of the shape: a shape of the time's course (a lag, a skew) has no
+// table over clearance and temperature, its mean member has a formula.
+void add_library_members(const Parts& parts, const Selection& selection, ImprovedTwin& out,
+                         std::vector<double>& cal_left, std::vector<double>& ho_left) {
+  for (const Pick& pick : selection.picks) {
+    if (pick.modelled_index >= 0 || !pick.chosen().free_shape) continue;
+    if (class_held(out.twin.effects, pick.finding.name)) continue;
+    const std::optional<sim::EffectSettings> member = library_member(pick);
+    if (!member) continue;
+    const std::vector<sim::EffectSettings> before = replayed(out.twin.effects);
+    std::vector<sim::EffectSettings> after = before;
+    after.push_back(*member);
+    for (const auto& [replay, left] :
+         {std::pair{&parts.cal_replay, &cal_left}, std::pair{&parts.ho_replay, &ho_left}}) {
+      const std::vector<double> with = replay->voltage(after), without = replay->voltage(before);
+      for (std::size_t i = 0; i < left->size(); ++i) (*left)[i] -= with[i] - without[i];
+    }
+    out.twin.effects.push_back(*member);
+    out.members.push_back(pick.finding.name);
+  }
+}
+
 // The free shapes as one table, replacing any the given twin held.
 void add_table(const Parts& parts, const Selection& selection, ImprovedTwin& out) {
+  std::vector<double> cal_free = selection.cal_free_v, ho_free = selection.ho_free_v;
+  add_library_members(parts, selection, out, cal_free, ho_free);
   std::vector<sim::EffectSettings>& effects = out.twin.effects;
   const auto given = std::find_if(effects.begin(), effects.end(), is_table);
   const sim::EffectSettings* given_table = given == effects.end() ? nullptr : &*given;
-  const std::vector<double> cal_added =
-      added_on(parts.cal_replay, selection.cal_free_v, given_table);
-  const std::vector<double> ho_added = added_on(parts.ho_replay, selection.ho_free_v, given_table);
+  const std::vector<double> cal_added = added_on(parts.cal_replay, cal_free, given_table);
+  const std::vector<double> ho_added = added_on(parts.ho_replay, ho_free, given_table);
   if (!any_nonzero(cal_added) && !any_nonzero(ho_added)) return;
   const bool with_age = shapes_follow_age(selection) ||
                         (given_table != nullptr && !given_table->table->age_days.empty());
@@ -84,8 +144,8 @@ void add_table(const Parts& parts, const Selection& selection, ImprovedTwin& out
   out.table_misfit_rms_v = fit.misfit_rms_v;
 }
 
-HeldFinding held(const EffectFinding& finding, const Selection& selection,
-                 const ImprovedTwin& out) {
+HeldFinding held(const EffectFinding& finding, const Selection& selection, const ImprovedTwin& out,
+                 double noise_v) {
   const EffectClass& of = effect_class(finding.name);
   if (of.is_converter) {
     if (selection.quantisation_as_noise) {
@@ -107,11 +167,30 @@ HeldFinding held(const EffectFinding& finding, const Selection& selection,
   }
   const auto pick = std::find_if(selection.picks.begin(), selection.picks.end(),
                                  [&](const Pick& p) { return p.finding.name == finding.name; });
+  const bool member =
+      std::find(out.members.begin(), out.members.end(), finding.name) != out.members.end();
   if (pick != selection.picks.end() && pick->modelled_index < 0) {
     const double misfit =
         out.table_misfit_rms_v.empty()
             ? 0.0
             : *std::max_element(out.table_misfit_rms_v.begin(), out.table_misfit_rms_v.end());
+    // A misfit that alone would take what is left past the explained allowance is not held.
+    const double allowed =
+        std::sqrt(criteria::kExplainedRatio * criteria::kExplainedRatio - 1.0) * noise_v;
+    if (misfit > allowed) {
+      return {finding.name, "not held",
+              fmt::format("its free shape follows more than clearance, temperature and age: the "
+                          "table reproduces it only to {:.2g} V RMS, above the {:.2g} V the "
+                          "noise allows; the twin holds that approximation",
+                          misfit, allowed)};
+    }
+    if (member) {
+      return {finding.name, "library effect and table",
+              fmt::format("its free shape's mean as the library effect, and what that leaves of "
+                          "the shape, with the other free shapes, in the tabulated effect "
+                          "(reproduced to {:.2g} V RMS on the worse part)",
+                          misfit)};
+    }
     return {finding.name, "table",
             fmt::format("its free shape, with the other free shapes, as the tabulated effect "
                         "(reproduced to {:.2g} V RMS on the worse part)",
@@ -149,7 +228,7 @@ ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
           motion_class(), {{"rms_mm", selection.vibration->params.at("rms_mm")}}, "improved twin"));
     }
     for (const EffectFinding& finding : diagnosis.effects) {
-      out.findings.push_back(held(finding, selection, out));
+      out.findings.push_back(held(finding, selection, out, result.diagnosis.noise_std_v));
     }
   }
   const bool converter_held =

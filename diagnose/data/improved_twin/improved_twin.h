@@ -20,9 +20,11 @@ struct DiagnosisResult;
 
 // How the improved twin holds one finding.
 struct HeldFinding {
-  std::string name;     // the finding's class
-  std::string held_as;  // "library effect", "table", "converter", "mount motion", "not held"
-  std::string note;     // one sentence: what the twin holds of it, or why it cannot
+  std::string name;  // the finding's class
+  // "library effect", "library effect and table", "table", "converter", "mount motion" or
+  // "not held".
+  std::string held_as;
+  std::string note;  // one sentence: what the twin holds of it, or why it cannot
 };
 
 struct ImprovedTwin {
@@ -31,6 +33,9 @@ struct ImprovedTwin {
   // The table's misfit to what the free shapes add, RMS over each part (calibration, held-out),
   // V; empty without a table.
   std::vector<double> table_misfit_rms_v;
+  // The classes whose free shape is held as its library member (a lag's mean delay, a skew's
+  // mean) with the table taking what the member leaves.
+  std::vector<std::string> members;
   std::string summary;  // one sentence: what was added to the twin, or why nothing was
 };
 
