@@ -201,8 +201,8 @@ TEST(ImprovedTwinCommand, DiagnoseWritesTwinJsonThatSimulateAndDiagnoseTake) {
   const nlohmann::json diagnosis = nlohmann::json::parse(diagnosis_file);
   EXPECT_EQ(diagnosis["improved_twin"]["file"], "twin.json");
   const std::string twin = (first / "twin.json").string();
-  EXPECT_EQ(cli::run_flange({"simulate", "--scenario", "bench", "--duration", "60", "--twin", twin,
-                             "--out", (dir / "sim.csv").string()},
+  EXPECT_EQ(cli::run_flange({"simulate", "--scenario", "bench", "--seed", "3", "--duration", "60",
+                             "--twin", twin, "--out", (dir / "sim.csv").string()},
                             out, err),
             0)
       << err.str();
