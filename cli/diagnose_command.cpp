@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "diagnose_report.h"
+#include "improved_twin_report.h"
 #include "input_error.h"
 #include "separate_sessions.h"
 #include "sim_error.h"
@@ -38,7 +39,7 @@ CLI::App* add_diagnose_command(CLI::App& app, DiagnoseCommandOptions& options) {
       ->needs(real_start);
   real_start->needs(holdout);
   cmd->add_option("--twin", options.twin, "twin file (JSON); default: thesis eq. 3.14");
-  cmd->add_option("--out", options.out, "folder for diagnosis.json and report.html");
+  cmd->add_option("--out", options.out, "folder for diagnosis.json, report.html and twin.json");
   cmd->add_option("--seed", options.seed, "seed of the bootstrap resampling")->default_val(1);
   cmd->add_option("--bootstrap", options.bootstrap_rounds, "bootstrap rounds, 20 to 2000")
       ->default_val(100)
@@ -91,10 +92,19 @@ int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& ou
       err << "flange diagnose: " << json_path.string() << ": cannot write\n";
       return kExitFailure;
     }
+    const std::filesystem::path twin_path =
+        std::filesystem::path(options.out) / diagnose::kImprovedTwinFile;
+    try {
+      sim::save_twin(result.improved_twin.twin, twin_path);
+    } catch (const std::runtime_error& error) {
+      err << "flange diagnose: " << error.what() << "\n";
+      return kExitFailure;
+    }
     diagnose::write_diagnosis_report(options.out, result, options.real);
     out << diagnose::diagnosis_summary(result);
-    out << "  wrote " << json_path.string() << " and "
-        << (std::filesystem::path(options.out) / "report.html").string() << "\n";
+    out << "  wrote " << json_path.string() << ", "
+        << (std::filesystem::path(options.out) / "report.html").string() << " and "
+        << twin_path.string() << "\n";
     return kExitOk;
   } catch (const host::InputError& error) {
     err << "flange diagnose: " << error.what() << "\n";

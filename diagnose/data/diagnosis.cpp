@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "alarm_timing.h"
 #include "backward.h"
 #include "confidence.h"
 #include "criteria.h"
@@ -13,11 +14,11 @@
 #include "effect_classes.h"
 #include "final_fit.h"
 #include "how_far.h"
+#include "improved_twin.h"
 #include "inclusion.h"
 #include "locate.h"
 #include "next_measurement.h"
 #include "parameter_resolution.h"
-#include "alarm_timing.h"
 #include "parts.h"
 #include "protocol.h"
 #include "quantisation.h"
@@ -43,9 +44,8 @@ void add_context_reasons(const Parts& parts, DiagnosisResult& result) {
   if (auto why = reasons::clock(diagnosis, result.detail.partial)) reasons.push_back(*why);
   reasons.insert(reasons.end(), diagnosis.degenerate.begin(), diagnosis.degenerate.end());
   const bool static_in_clearance =
-      std::any_of(diagnosis.effects.begin(), diagnosis.effects.end(), [](const auto& f) {
-        return effect_class(f.name).function_of_clearance_alone;
-      });
+      std::any_of(diagnosis.effects.begin(), diagnosis.effects.end(),
+                  [](const auto& f) { return effect_class(f.name).function_of_clearance_alone; });
   if (static_in_clearance && last_move_set_by_clearance(parts.calibration) &&
       last_move_set_by_clearance(parts.heldout)) {
     reasons.push_back(reasons::one_sided_protocol());
@@ -71,6 +71,16 @@ void forget_structure(DiagnosisDetail& detail) {
   detail.segments.clear();
 }
 
+// Mount motion is each session's own random motion: a twin that holds it is replayed without it
+// (a replayed realisation would add to the gap, not take from it); its signature is recognised as
+// always, goes into the noise the verdict compares with, and is not a finding again.
+DiagnoseOptions without_mount_motion(const DiagnoseOptions& given) {
+  DiagnoseOptions replayed = given;
+  std::erase_if(replayed.twin.effects,
+                [](const sim::EffectSettings& e) { return effect_class(e.name).is_mount_motion; });
+  return replayed;
+}
+
 }  // namespace
 
 double rms_above_noise(double rms, double noise) {
@@ -78,7 +88,9 @@ double rms_above_noise(double rms, double noise) {
 }
 
 DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
-                                   const RecordingSeries& heldout, const DiagnoseOptions& options) {
+                                   const RecordingSeries& heldout, const DiagnoseOptions& given) {
+  const DiagnoseOptions options = without_mount_motion(given);
+  const bool twin_holds_motion = options.twin.effects.size() < given.twin.effects.size();
   // Input: the parts' shared rate and how their clocks relate.
   const double fs_hz = shared_sample_rate_hz(calibration, heldout);
   sim::check_twin_config(options.twin);
@@ -88,8 +100,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   result.diagnosis.clock = clock.kind;
   if (!clock.heldout_age_unknown()) result.diagnosis.heldout_starts_after_s = clock.age_offset_s;
   // Replay: the twin as given on both parts, and the converter grid they share.
-  const Parts parts = replay_parts(calibration, heldout, options, clock.age_offset_s,
-                                   clock.heldout_age_unknown());
+  const Parts parts =
+      replay_parts(calibration, heldout, options, clock.age_offset_s, clock.heldout_age_unknown());
   const std::vector<double> cal_base = parts.cal_replay.voltage(options.twin.effects);
   // Noise and locate: the white noise, and where the gap lies on the calibration part.
   estimate_noise(calibration, cal_base, options, result.detail);
@@ -114,6 +126,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   recognise_quantisation(parts, result.detail.white_noise, selection);
   const VerdictNoise verdict_noise = with_converter_grid(selection, result.detail.white_noise,
                                                          recognise_vibration(parts, selection));
+  if (twin_holds_motion) selection.vibration.reset();
   // Verdict and reasons.
   verdict(parts, selection, verdict_noise, result);
   add_context_reasons(parts, result);
@@ -121,6 +134,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   add_coverage_reason(result);
   result.diagnosis.next_measurement = next_measurements(parts, selection);
   set_confidences(result.diagnosis);
+  // The improved twin: the one given, with what the diagnosis found.
+  result.improved_twin = improved_twin(parts, selection, result, given.twin);
   return result;
 }
 

@@ -10,6 +10,7 @@
 
 #include "adc_grid.h"
 #include "diagnosis.h"
+#include "improved_twin.h"
 #include "residual_tests.h"
 #include "sample_rate.h"
 #include "white_noise.h"
@@ -92,6 +93,7 @@ struct DiagnosisDetail {
 struct DiagnosisResult {
   Diagnosis diagnosis;
   DiagnosisDetail detail;
+  ImprovedTwin improved_twin;  // the twin with the findings added (twin.json)
 };
 
 // diagnose() with the detail kept.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "chain_sample.h"
+#include "effect_table.h"
 
 namespace flange::sim {
 
@@ -43,7 +44,8 @@ using ParamValues = std::map<std::string, double>;
 struct EffectContext {
   double v_min_v = 0.0;  // the sensor's output range (the nominal model's)
   double v_max_v = 10.0;
-  std::uint64_t seed = 0;  // this effect's own random stream
+  std::uint64_t seed = 0;                    // this effect's own random stream
+  std::shared_ptr<const EffectTable> table;  // the tabulated effect's table (null for the others)
 };
 
 class Effect {

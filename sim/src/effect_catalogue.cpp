@@ -16,7 +16,7 @@ const std::vector<EffectSpec>& effect_catalogue() {
       vibration_effect(),         thermal_lag_effect(),       nonlinearity_effect(),
       temp_gain_drift_effect(),   temp_offset_drift_effect(), ageing_drift_effect(),
       range_compression_effect(), mains_pickup_effect(),      channel_skew_effect(),
-      adc_quantization_effect(),
+      tabulated_effect(),         adc_quantization_effect(),
   };
   return catalogue;
 }
@@ -90,7 +90,8 @@ std::unique_ptr<Effect> make_effect(const EffectSettings& settings, double v_min
   if (index < 0) throw BadArgument(fmt::format("unknown effect '{}'", settings.name));
   // Stream 0 is the twin's white noise; effect i draws from stream i + 1.
   const EffectContext context{v_min_v, v_max_v,
-                              derive_seed(twin_seed, static_cast<std::uint64_t>(index) + 1)};
+                              derive_seed(twin_seed, static_cast<std::uint64_t>(index) + 1),
+                              settings.table};
   return effect_catalogue()[static_cast<std::size_t>(index)].make(settings.params, context);
 }
 

@@ -20,6 +20,9 @@ int catalogue_index(const std::string& name);
 // Where in the twin's chain the catalogue's effect `name` acts (name must be in the catalogue).
 ChainStage chain_stage_of(const std::string& name);
 
+// The effect that replays a table (effects/tabulated.cpp): the one whose settings carry one.
+inline const char* tabulated_effect_name() { return "tabulated"; }
+
 // "vibration, thermal_lag, ...": for error messages and help.
 std::string effect_names();
 
@@ -27,7 +30,12 @@ std::string effect_names();
 struct EffectSettings {
   std::string name;
   ParamValues params;
-  bool operator==(const EffectSettings&) const = default;
+  // The tabulated effect's table (twin file only); null for every other effect.
+  std::shared_ptr<const EffectTable> table{};
+  bool operator==(const EffectSettings& other) const {
+    return name == other.name && params == other.params &&
+           (table == other.table || (table && other.table && *table == *other.table));
+  }
 };
 
 // Settings for effect `name`: its defaults, replaced by `values`. Throws BadArgument with one

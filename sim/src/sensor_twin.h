@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "chain_sample.h"
@@ -30,6 +31,8 @@ struct TwinConfig {
   PolynomialSensorModel nominal = PolynomialSensorModel::thesis_eq_3_14();
   NoiseSettings noise;
   std::vector<EffectSettings> effects;  // at most one per name; run in chain order
+  // What made the twin and what it could not hold (the twin file's "notes"); the twin ignores them.
+  std::vector<std::string> notes;
 };
 
 // Throws BadArgument when noise levels are out of range or an effect appears twice.

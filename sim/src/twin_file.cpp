@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <tuple>
@@ -80,6 +81,54 @@ PolynomialSensorModel nominal_from_json(const json& nominal, const std::string& 
   }
 }
 
+std::vector<double> numbers_of(const json& value, const std::string& where) {
+  if (!value.is_array()) throw BadArgument(fmt::format("{}: expected an array of numbers", where));
+  std::vector<double> out;
+  for (std::size_t k = 0; k < value.size(); ++k) {
+    out.push_back(require_number(value[k], fmt::format("{}[{}]", where, k)));
+  }
+  return out;
+}
+
+// The tabulated effect's table (effect_table.h): its fields as the struct names them.
+std::shared_ptr<const EffectTable> table_from_json(const json& value, const std::string& where) {
+  require_object(value, where);
+  reject_unknown_fields(
+      value, {"clearance_mm", "temperature_c", "added_v", "age_days", "age_added_v"}, where);
+  for (const char* field : {"clearance_mm", "temperature_c", "added_v"}) {
+    if (!value.contains(field)) throw BadArgument(fmt::format("{}.{}: missing", where, field));
+  }
+  auto table = std::make_shared<EffectTable>();
+  table->clearance_mm = numbers_of(value["clearance_mm"], where + ".clearance_mm");
+  table->temperature_c = numbers_of(value["temperature_c"], where + ".temperature_c");
+  const json& rows = value["added_v"];
+  if (!rows.is_array())
+    throw BadArgument(fmt::format("{}.added_v: expected rows of numbers", where));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    table->added_v.push_back(numbers_of(rows[i], fmt::format("{}.added_v[{}]", where, i)));
+  }
+  if (value.contains("age_days"))
+    table->age_days = numbers_of(value["age_days"], where + ".age_days");
+  if (value.contains("age_added_v")) {
+    table->age_added_v = numbers_of(value["age_added_v"], where + ".age_added_v");
+  }
+  if (const std::string problem = table_problem(*table); !problem.empty()) {
+    throw BadArgument(fmt::format("{}.{}", where, problem));
+  }
+  return table;
+}
+
+nlohmann::ordered_json table_to_json(const EffectTable& table) {
+  nlohmann::ordered_json out = {{"clearance_mm", table.clearance_mm},
+                                {"temperature_c", table.temperature_c},
+                                {"added_v", table.added_v}};
+  if (!table.age_days.empty()) {
+    out["age_days"] = table.age_days;
+    out["age_added_v"] = table.age_added_v;
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::ordered_json twin_to_json(const TwinConfig& config) {
@@ -102,9 +151,11 @@ nlohmann::ordered_json twin_to_json(const TwinConfig& config) {
     OrderedJson params = OrderedJson::object();
     const EffectSpec& spec = effect_catalogue()[catalogue_index(effect->name)];
     for (const ParamSpec& param : spec.params) params[param.key] = effect->params.at(param.key);
-    effects.push_back({{"name", effect->name}, {"params", params}});
+    OrderedJson entry = {{"name", effect->name}, {"params", params}};
+    if (effect->table) entry["table"] = table_to_json(*effect->table);
+    effects.push_back(entry);
   }
-  return {
+  OrderedJson root = {
       {"format", kTwinFormat},
       {"nominal",
        {{"model", "d_mm = sum over i, j of a[i][j] * V^i * T^j (V in volts, T in degC)"},
@@ -115,11 +166,13 @@ nlohmann::ordered_json twin_to_json(const TwinConfig& config) {
         {"temperature_std_c", config.noise.temperature_std_c}}},
       {"effects", effects},
   };
+  if (!config.notes.empty()) root["notes"] = config.notes;
+  return root;
 }
 
 TwinConfig twin_from_json(const json& root, const std::string& where) {
   require_object(root, where);
-  reject_unknown_fields(root, {"format", "nominal", "noise", "effects"}, where);
+  reject_unknown_fields(root, {"format", "nominal", "noise", "effects", "notes"}, where);
   if (root.contains("format") && root["format"] != kTwinFormat) {
     throw BadArgument(fmt::format("{}: format: expected \"{}\"", where, kTwinFormat));
   }
@@ -146,7 +199,7 @@ TwinConfig twin_from_json(const json& root, const std::string& where) {
     for (std::size_t k = 0; k < effects.size(); ++k) {
       const std::string effect_where = fmt::format("{}: effects[{}]", where, k);
       const json& effect = require_object(effects[k], effect_where);
-      reject_unknown_fields(effect, {"name", "params"}, effect_where);
+      reject_unknown_fields(effect, {"name", "params", "table"}, effect_where);
       if (!effect.contains("name") || !effect["name"].is_string()) {
         throw BadArgument(fmt::format("{}.name: expected the effect's name", effect_where));
       }
@@ -158,8 +211,27 @@ TwinConfig twin_from_json(const json& root, const std::string& where) {
               require_number(item.value(), fmt::format("{}.params.{}", effect_where, item.key()));
         }
       }
-      config.effects.push_back(
-          make_effect_settings(effect["name"].get<std::string>(), values, effect_where));
+      EffectSettings settings =
+          make_effect_settings(effect["name"].get<std::string>(), values, effect_where);
+      const bool needs_table = settings.name == tabulated_effect_name();
+      if (effect.contains("table") != needs_table) {
+        throw BadArgument(effect_where + (needs_table
+                                              ? ".table: the tabulated effect needs its table"
+                                              : ".table: only the tabulated effect has one"));
+      }
+      if (needs_table) settings.table = table_from_json(effect["table"], effect_where + ".table");
+      config.effects.push_back(std::move(settings));
+    }
+  }
+  if (root.contains("notes")) {
+    const json& notes = root["notes"];
+    if (!notes.is_array())
+      throw BadArgument(fmt::format("{}: notes: expected an array of strings", where));
+    for (std::size_t k = 0; k < notes.size(); ++k) {
+      if (!notes[k].is_string()) {
+        throw BadArgument(fmt::format("{}: notes[{}]: expected a string", where, k));
+      }
+      config.notes.push_back(notes[k].get<std::string>());
     }
   }
   try {
@@ -292,7 +364,13 @@ TwinConfig twin_with_effects(const std::optional<std::filesystem::path>& twin_fi
       // On top of a twin file: the given keys retune the effect, the others keep their values.
       ParamValues values = existing->params;
       for (const auto& [key, value] : argument.values) values[key] = value;
+      std::shared_ptr<const EffectTable> table = existing->table;
       *existing = make_effect_settings(argument.name, values, where);
+      existing->table = std::move(table);
+    } else if (argument.name == tabulated_effect_name()) {
+      throw BadArgument(where +
+                        ": the tabulated effect needs its table, which only a twin file "
+                        "gives (--twin)");
     } else {
       config.effects.push_back(make_effect_settings(argument.name, argument.values, where));
     }

@@ -24,10 +24,11 @@ std::string error_of(const std::function<void()>& action) {
   return "";
 }
 
-TEST(EffectCatalogue, HoldsTheTenEffectsInChainOrderWithSaneDefaults) {
+TEST(EffectCatalogue, HoldsTheElevenEffectsInChainOrderWithSaneDefaults) {
   const std::vector<std::string> expected = {
-      "vibration",    "thermal_lag",       "nonlinearity", "temp_gain_drift", "temp_offset_drift",
-      "ageing_drift", "range_compression", "mains_pickup", "channel_skew",    "adc_quantization"};
+      "vibration",         "thermal_lag",  "nonlinearity",      "temp_gain_drift",
+      "temp_offset_drift", "ageing_drift", "range_compression", "mains_pickup",
+      "channel_skew",      "tabulated",    "adc_quantization"};
   ASSERT_EQ(effect_catalogue().size(), expected.size());
   ChainStage previous = ChainStage::kMount;
   for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -42,7 +43,12 @@ TEST(EffectCatalogue, HoldsTheTenEffectsInChainOrderWithSaneDefaults) {
       EXPECT_LE(param.default_value, param.max) << spec.name << "." << param.key;
       EXPECT_FALSE(param.meaning.empty()) << spec.name << "." << param.key;
     }
-    // Every effect builds from its defaults alone.
+    // Every effect builds from its defaults alone, but the tabulated one, which needs its table.
+    if (spec.name == tabulated_effect_name()) {
+      EXPECT_THROW(make_effect(make_effect_settings(spec.name, {}, "test"), 0.0, 10.0, 1),
+                   BadArgument);
+      continue;
+    }
     EXPECT_NE(make_effect(make_effect_settings(spec.name, {}, "test"), 0.0, 10.0, 1), nullptr);
   }
 }

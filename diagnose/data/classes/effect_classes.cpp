@@ -88,10 +88,11 @@ EffectClass thermal_lag() {
       .search = {{"tau_s", -1800, 1800}},
       .fit = fit_by_search,
       .follows = "the temperature's rate of change",
-      .channel_delay = [](const sim::EffectSettings& e) {
-        const double tau_s = e.params.at("tau_s");
-        return ChannelDelay{.temperature_lag_tau_s = tau_s < 0.0 ? -tau_s : 0.0};
-      },
+      .channel_delay =
+          [](const sim::EffectSettings& e) {
+            const double tau_s = e.params.at("tau_s");
+            return ChannelDelay{.temperature_lag_tau_s = tau_s < 0.0 ? -tau_s : 0.0};
+          },
       .families = {{"thermal_lag", "lagged T", fs::make_lag}},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"tau_s", d.signed_magnitude(60, 900)}};
@@ -106,11 +107,12 @@ EffectClass channel_skew() {
       .search = {{"skew_s", -10, 10}},
       .fit = fit_by_search,
       .follows = "the clearance's moves",
-      .channel_delay = [](const sim::EffectSettings& e) {
-        const double skew_s = e.params.at("skew_s");
-        return ChannelDelay{.temperature_shift_s = skew_s > 0.0 ? skew_s : 0.0,
-                            .voltage_shift_s = skew_s < 0.0 ? skew_s : 0.0};
-      },
+      .channel_delay =
+          [](const sim::EffectSettings& e) {
+            const double skew_s = e.params.at("skew_s");
+            return ChannelDelay{.temperature_shift_s = skew_s > 0.0 ? skew_s : 0.0,
+                                .voltage_shift_s = skew_s < 0.0 ? skew_s : 0.0};
+          },
       .families = {{"channel_skew", "t", fs::make_skew}},
       // A late temperature channel moves the bench voltage by less than the noise (the blower
       // changes the temperature by 0.13 degC/s at most); a late voltage channel shows on every
@@ -182,13 +184,25 @@ EffectClass adc_quantization() {
   };
 }
 
+// Not a class the diagnosis looks for: the table an improved twin replays its free shapes with
+// (improved_twin/). Recognised by no signature and fitted by nothing, it only stands in the table
+// so that a twin holding it can be replayed, its table placed at the sensor's age.
+EffectClass tabulated() {
+  return {
+      .name = sim::tabulated_effect_name(),
+      .identification = Identification::kBySignature,
+      .follows = "the table",
+      .age_param = "start_age_days",
+  };
+}
+
 }  // namespace
 
 const std::vector<EffectClass>& effect_classes() {
   static const std::vector<EffectClass> classes = {
       temp_gain_drift(), temp_offset_drift(), nonlinearity(), range_compression(),
       thermal_lag(),     channel_skew(),      ageing_drift(), mains_pickup(),
-      vibration(),       adc_quantization()};
+      vibration(),       adc_quantization(),  tabulated()};
   return classes;
 }
 

@@ -10,6 +10,7 @@
 
 #include "finding_text.h"
 #include "gnuplot_runner.h"
+#include "improved_twin_report.h"
 #include "report_format.h"
 
 namespace flange::diagnose {
@@ -291,6 +292,7 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
                    {"heldout_starts_after_s",
                     g.heldout_starts_after_s ? nlohmann::ordered_json(*g.heldout_starts_after_s)
                                              : nlohmann::ordered_json()}};
+  j["improved_twin"] = improved_twin_json(result.improved_twin);
   return j;
 }
 
@@ -382,6 +384,7 @@ void write_diagnosis_report(const std::filesystem::path& dir, const DiagnosisRes
   html << "<h2>Over time</h2><p>The voltage gap and the means of the segments found by binary "
           "segmentation.</p><img src='time.svg'>\n";
   html << "<h2>Before and after, held-out data</h2><img src='heldout.svg'>\n";
+  html << improved_twin_html(result.improved_twin);
   html << "</body></html>\n";
 }
 

@@ -34,6 +34,16 @@ sim::ParamValues draw_params(const std::string& name, Draw& draw) {
   return effect_class(name).selftest_draw(draw);
 }
 
+// The catalogue's effects the self-test draws (those the class table gives a draw), in chain
+// order; the tabulated effect, which replays a table, is not among them.
+std::vector<std::string> drawable_effects() {
+  std::vector<std::string> names;
+  for (const sim::EffectSpec& spec : sim::effect_catalogue()) {
+    if (effect_class(spec.name).selftest_draw != nullptr) names.push_back(spec.name);
+  }
+  return names;
+}
+
 // Noise-type effects add variance, not a bias the twin could subtract.
 bool removable(const std::string& name) {
   return effect_class(name).identification == Identification::kByBias;
@@ -117,7 +127,7 @@ SelftestCaseSpec draw_selftest_case(int index, std::uint64_t seed) {
   spec.kind = kind_of(index);
   Draw draw(seed * 1000003u + static_cast<std::uint64_t>(index));
   spec.noise_seed = draw.seed();
-  const auto& catalogue = sim::effect_catalogue();
+  const std::vector<std::string> catalogue = drawable_effects();
   const int n = static_cast<int>(catalogue.size());
   std::vector<int> chosen;
   if (spec.kind == SelftestKind::kSingle || spec.kind == SelftestKind::kPair) {
@@ -129,7 +139,7 @@ SelftestCaseSpec draw_selftest_case(int index, std::uint64_t seed) {
     }
     std::sort(chosen.begin(), chosen.end());  // the twin runs effects in chain order
     for (int c : chosen) {
-      const std::string& name = catalogue[static_cast<std::size_t>(c)].name;
+      const std::string& name = catalogue[static_cast<std::size_t>(c)];
       spec.truth.push_back(
           sim::make_effect_settings(name, draw_params(name, draw), "selftest case"));
     }

@@ -33,8 +33,9 @@ void add_placement(const Selection& selection, sim::EffectSettings& converter,
   converter.params["threshold_lsb"] = placed.threshold_lsb;
   finding.params["threshold_lsb"] = placed.threshold_lsb;
   finding.heldout_rms_before = rms_of(selection.raw_ho_gap);
-  finding.evidence += evidence::converter_boundaries(
-      placed.threshold_lsb, placed.offset_v, rms_of(selection.raw_ho_gap), rms_of(selection.ho_gap));
+  finding.evidence +=
+      evidence::converter_boundaries(placed.threshold_lsb, placed.offset_v,
+                                     rms_of(selection.raw_ho_gap), rms_of(selection.ho_gap));
   if (placed.gain) {
     finding.params["calibration_gain"] = *placed.gain;
     finding.params["calibration_offset_v"] = placed.gain_offset_v;
@@ -47,6 +48,13 @@ void add_placement(const Selection& selection, sim::EffectSettings& converter,
 void recognise_quantisation(const Parts& parts, const WhiteNoise& white, Selection& selection) {
   if (!parts.grid) return;
   const AdcGrid& grid = *parts.grid;
+  // A twin that holds a converter replays its codes already: the grid sets the noise the verdict
+  // compares with, and is not a finding again.
+  if (std::any_of(selection.modelled.begin(), selection.modelled.end(),
+                  [](const sim::EffectSettings& e) { return effect_class(e.name).is_converter; })) {
+    selection.quantised_on = grid;
+    return;
+  }
   EffectFinding finding = grid_finding(grid);
   sim::EffectSettings converter = grid.as_effect();
   finding.heldout_rms_before = rms_of(selection.current_error);

@@ -89,8 +89,11 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
   });
   VerdictFigures f;
   f.any_findings = !findings.empty();
-  f.gap_exists = diagnosis.heldout_rms_before > criteria::kGapRatio * sigma ||
-                 !diagnosis.stage.empty() || has_noise_type || !findings.empty();
+  // Against the larger of sigma and the verdict's noise: with a converter or mount motion the twin
+  // holds (and so no finding of theirs), what the noise leaves is the verdict's noise.
+  f.gap_exists =
+      diagnosis.heldout_rms_before > criteria::kGapRatio * std::max(sigma, verdict_noise) ||
+      !diagnosis.stage.empty() || has_noise_type || !findings.empty();
   f.noise_v = verdict_noise;
   f.rms_before = diagnosis.heldout_rms_before;
   f.rms_after = diagnosis.heldout_rms_after;
@@ -119,8 +122,7 @@ Decision decide(const VerdictFigures& f) {
       !overall && locally && f.share_within >= criteria::kLeastShareWithinReach &&
       f.within_before_v > criteria::kGapRatio * f.noise_v &&
       f.within_after_v <= criteria::kExplainedRatio * f.noise_v &&
-      f.beyond_share_taken >=
-          std::max(criteria::kLeastShareTakenBeyondReach, 1.0 - f.share_within);
+      f.beyond_share_taken >= std::max(criteria::kLeastShareTakenBeyondReach, 1.0 - f.share_within);
   if (f.any_findings && overall && locally) return Decision::kExplained;
   if (f.any_findings && within_reach) return Decision::kExplainedWithinReach;
   if (f.any_findings && partly_share(f) >= criteria::kPartlyExplainedShare) {

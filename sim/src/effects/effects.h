@@ -16,6 +16,7 @@ EffectSpec ageing_drift_effect();       // kSensor
 EffectSpec range_compression_effect();  // kSensor
 EffectSpec mains_pickup_effect();       // kWiring
 EffectSpec channel_skew_effect();       // kAcquisition
+EffectSpec tabulated_effect();          // kAcquisition, before the converter
 EffectSpec adc_quantization_effect();   // kAcquisition
 
 }  // namespace flange::sim

@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: MIT
+#include "improved_twin.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "criteria.h"
+#include "diagnosis_detail.h"
+#include "effect_classes.h"
+#include "parts.h"
+#include "selection.h"
+#include "sim_error.h"
+#include "table_fit.h"
+
+namespace flange::diagnose {
+namespace {
+
+constexpr double kSecondsPerDay = 86400.0;
+
+bool is_converter(const sim::EffectSettings& effect) {
+  return effect_class(effect.name).is_converter;
+}
+bool is_table(const sim::EffectSettings& effect) {
+  return effect.name == sim::tabulated_effect_name();
+}
+
+// The sensor's age on the table's axis at every sample of a part: the replay's, which places the
+// held-out part by the sessions' clocks.
+std::vector<double> ages_of(const TwinReplay& replay, double start_age_days) {
+  std::vector<double> age(replay.size());
+  for (std::size_t i = 0; i < age.size(); ++i) {
+    age[i] = start_age_days + (replay.times()[i] + replay.age_offset_s()) / kSecondsPerDay;
+  }
+  return age;
+}
+
+// What the free shapes (and a DAQ gain the converter's placement made) add on a part, with what
+// a table the given twin holds already adds there: the new table stands for both.
+std::vector<double> added_on(const TwinReplay& replay, const std::vector<double>& free_v,
+                             const sim::EffectSettings* given_table) {
+  std::vector<double> added = free_v;
+  if (given_table == nullptr) return added;
+  const std::vector<double> age = ages_of(replay, given_table->params.at("start_age_days"));
+  for (std::size_t i = 0; i < added.size(); ++i) {
+    added[i] += given_table->table->added_voltage(replay.series().clearance_mm[i],
+                                                  replay.series().temp_c[i], age[i]);
+  }
+  return added;
+}
+
+bool class_held(const std::vector<sim::EffectSettings>& effects, const std::string& name) {
+  return std::any_of(effects.begin(), effects.end(),
+                     [&](const sim::EffectSettings& e) { return e.name == name; });
+}
+
+bool any_nonzero(const std::vector<double>& x) {
+  return std::any_of(x.begin(), x.end(), [](double v) { return v != 0.0; });
+}
+
+// A free-shape pick of a class that follows the sensor's age gives the table its age curve.
+bool shapes_follow_age(const Selection& selection) {
+  return std::any_of(selection.picks.begin(), selection.picks.end(), [](const Pick& pick) {
+    return pick.modelled_index < 0 && !effect_class(pick.finding.name).age_param.empty();
+  });
+}
+
+// A free shape whose summary gives every parameter of its class's library effect (a lag's mean
+// delay, a skew's mean): that library member, or nothing when the summary leaves its valid range.
+std::optional<sim::EffectSettings> library_member(const Pick& pick) {
+  const FreeShapeFit& shape = *pick.chosen().free_shape;
+  const sim::EffectSpec& spec =
+      sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(pick.finding.name))];
+  sim::ParamValues values;
+  for (const sim::ParamSpec& param : spec.params) {
+    const auto value = shape.params.find(param.key);
+    if (value == shape.params.end()) return std::nullopt;
+    values[param.key] = value->second;
+  }
+  try {
+    return sim::make_effect_settings(spec.name, values, "improved twin");
+  } catch (const sim::BadArgument&) {
+    return std::nullopt;
+  }
+}
+
+// The replayed effects: all but mount motion, which the diagnosis does not replay.
+std::vector<sim::EffectSettings> replayed(const std::vector<sim::EffectSettings>& effects) {
+  std::vector<sim::EffectSettings> out;
+  for (const sim::EffectSettings& e : effects) {
+    if (!effect_class(e.name).is_mount_motion) out.push_back(e);
+  }
+  return out;
+}
+
+// Free shapes that have a library member (library_member) are held as that member, and the table
+// takes what the member leaves of the shape: a shape of the time's course (a lag, a skew) has no
+// table over clearance and temperature, its mean member has a formula.
+void add_library_members(const Parts& parts, const Selection& selection, ImprovedTwin& out,
+                         std::vector<double>& cal_left, std::vector<double>& ho_left) {
+  for (const Pick& pick : selection.picks) {
+    if (pick.modelled_index >= 0 || !pick.chosen().free_shape) continue;
+    if (class_held(out.twin.effects, pick.finding.name)) continue;
+    const std::optional<sim::EffectSettings> member = library_member(pick);
+    if (!member) continue;
+    const std::vector<sim::EffectSettings> before = replayed(out.twin.effects);
+    std::vector<sim::EffectSettings> after = before;
+    after.push_back(*member);
+    for (const auto& [replay, left] :
+         {std::pair{&parts.cal_replay, &cal_left}, std::pair{&parts.ho_replay, &ho_left}}) {
+      const std::vector<double> with = replay->voltage(after), without = replay->voltage(before);
+      for (std::size_t i = 0; i < left->size(); ++i) (*left)[i] -= with[i] - without[i];
+    }
+    out.twin.effects.push_back(*member);
+    out.members.push_back(pick.finding.name);
+  }
+}
+
+// The free shapes as one table, replacing any the given twin held.
+void add_table(const Parts& parts, const Selection& selection, ImprovedTwin& out) {
+  std::vector<double> cal_free = selection.cal_free_v, ho_free = selection.ho_free_v;
+  add_library_members(parts, selection, out, cal_free, ho_free);
+  std::vector<sim::EffectSettings>& effects = out.twin.effects;
+  const auto given = std::find_if(effects.begin(), effects.end(), is_table);
+  const sim::EffectSettings* given_table = given == effects.end() ? nullptr : &*given;
+  const std::vector<double> cal_added = added_on(parts.cal_replay, cal_free, given_table);
+  const std::vector<double> ho_added = added_on(parts.ho_replay, ho_free, given_table);
+  if (!any_nonzero(cal_added) && !any_nonzero(ho_added)) return;
+  const bool with_age = shapes_follow_age(selection) ||
+                        (given_table != nullptr && !given_table->table->age_days.empty());
+  std::vector<TabulatedPart> tabulated = {
+      {parts.calibration.clearance_mm, parts.calibration.temp_c,
+       with_age ? ages_of(parts.cal_replay, 0.0) : std::vector<double>{}, cal_added},
+      {parts.heldout.clearance_mm, parts.heldout.temp_c,
+       with_age ? ages_of(parts.ho_replay, 0.0) : std::vector<double>{}, ho_added}};
+  TableFit fit = fit_effect_table(tabulated, with_age);
+  sim::EffectSettings table =
+      sim::make_effect_settings(sim::tabulated_effect_name(), {}, "improved twin");
+  table.table = std::make_shared<const sim::EffectTable>(std::move(fit.table));
+  if (given_table != nullptr) effects.erase(given);
+  effects.push_back(std::move(table));
+  out.table_misfit_rms_v = fit.misfit_rms_v;
+}
+
+HeldFinding held(const EffectFinding& finding, const Selection& selection, const ImprovedTwin& out,
+                 double noise_v) {
+  const EffectClass& of = effect_class(finding.name);
+  if (of.is_converter) {
+    if (selection.quantisation_as_noise) {
+      return {finding.name, "not held",
+              "its codes are not reproduced by the converter on this grid, so the twin holds its "
+              "rounding in the white noise level, not as a converter"};
+    }
+    std::string note = "the converter on the recorded grid, with its code boundaries";
+    if (finding.params.count("calibration_gain") != 0) {
+      note += "; the DAQ gain calibration it showed is in the table (the twin has no gain effect)";
+    }
+    return {finding.name, "converter", note};
+  }
+  if (of.is_mount_motion) {
+    return {finding.name, "mount motion",
+            fmt::format("vibration at the recognised {:.3g} mm RMS over the effect's default band "
+                        "(the signature gives its size, not its band or phases)",
+                        finding.params.at("rms_mm"))};
+  }
+  const auto pick = std::find_if(selection.picks.begin(), selection.picks.end(),
+                                 [&](const Pick& p) { return p.finding.name == finding.name; });
+  const bool member =
+      std::find(out.members.begin(), out.members.end(), finding.name) != out.members.end();
+  if (pick != selection.picks.end() && pick->modelled_index < 0) {
+    const double misfit =
+        out.table_misfit_rms_v.empty()
+            ? 0.0
+            : *std::max_element(out.table_misfit_rms_v.begin(), out.table_misfit_rms_v.end());
+    // A misfit that alone would take what is left past the explained allowance is not held.
+    const double allowed =
+        std::sqrt(criteria::kExplainedRatio * criteria::kExplainedRatio - 1.0) * noise_v;
+    if (misfit > allowed) {
+      return {finding.name, "not held",
+              fmt::format("its free shape follows more than clearance, temperature and age: the "
+                          "table reproduces it only to {:.2g} V RMS, above the {:.2g} V the "
+                          "noise allows; the twin holds that approximation",
+                          misfit, allowed)};
+    }
+    if (member) {
+      return {finding.name, "library effect and table",
+              fmt::format("its free shape's mean as the library effect, and what that leaves of "
+                          "the shape, with the other free shapes, in the tabulated effect "
+                          "(reproduced to {:.2g} V RMS on the worse part)",
+                          misfit)};
+    }
+    return {finding.name, "table",
+            fmt::format("its free shape, with the other free shapes, as the tabulated effect "
+                        "(reproduced to {:.2g} V RMS on the worse part)",
+                        misfit)};
+  }
+  if (of.reported_as_noise) {
+    return {finding.name, "library effect",
+            "the library effect with its fitted parameters, its phase the calibration session's "
+            "(each session has its own)"};
+  }
+  return {finding.name, "library effect", "the library effect with its fitted parameters"};
+}
+
+}  // namespace
+
+ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
+                           const DiagnosisResult& result, const sim::TwinConfig& given) {
+  ImprovedTwin out;
+  out.twin = given;
+  const Diagnosis& diagnosis = result.diagnosis;
+  const bool selected = !diagnosis.effects.empty();
+  if (selected) {
+    // The selection's effects, and those of the twin given that the diagnosis does not replay
+    // (mount motion).
+    out.twin.effects = selection.modelled;
+    for (const sim::EffectSettings& effect : given.effects) {
+      if (std::none_of(out.twin.effects.begin(), out.twin.effects.end(),
+                       [&](const sim::EffectSettings& e) { return e.name == effect.name; })) {
+        out.twin.effects.push_back(effect);
+      }
+    }
+    add_table(parts, selection, out);
+    if (selection.vibration) {
+      out.twin.effects.push_back(sim::make_effect_settings(
+          motion_class(), {{"rms_mm", selection.vibration->params.at("rms_mm")}}, "improved twin"));
+    }
+    for (const EffectFinding& finding : diagnosis.effects) {
+      out.findings.push_back(held(finding, selection, out, result.diagnosis.noise_std_v));
+    }
+  }
+  const bool converter_held =
+      std::any_of(out.twin.effects.begin(), out.twin.effects.end(), is_converter);
+  const WhiteNoise& white = result.detail.white_noise;
+  out.twin.noise.voltage_std_v = converter_held ? white.analog_std_v : white.effective_std_v;
+  out.summary = selected
+                    ? fmt::format(
+                          "the twin given, with the {} findings of the \"{}\" verdict and the "
+                          "white noise at {:.4g} V",
+                          diagnosis.effects.size(), diagnosis.status, out.twin.noise.voltage_std_v)
+                    : fmt::format(
+                          "the twin given, with the white noise at {:.4g} V; the \"{}\" "
+                          "verdict selects no effect to add",
+                          out.twin.noise.voltage_std_v, diagnosis.status);
+  out.twin.notes = {"made by flange diagnose: " + out.summary};
+  for (const HeldFinding& f : out.findings) {
+    if (f.held_as == "not held") out.twin.notes.push_back(f.name + " not held: " + f.note);
+  }
+  return out;
+}
+
+}  // namespace flange::diagnose
