@@ -31,6 +31,9 @@ class SerialPort {
   std::size_t read_some(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout);
   // Drops bytes received but not read (stale replies of an earlier session).
   void discard_input();
+  // Asks for the port's low-latency mode or a 1 ms FTDI latency timer (low_latency.h); one line
+  // saying which it set. The port works either way.
+  std::string request_low_latency();
   const std::string& device() const { return device_; }
 
  private:

@@ -21,6 +21,7 @@
 
 #include "board_bench.h"
 #include "board_frame.h"
+#include "display_text.h"
 #include "filter_json.h"
 #include "iir_core.h"
 #include "link_budget.h"
@@ -275,14 +276,15 @@ int Basys3TopChannels::send_damaged(Fault fault, const std::vector<std::uint8_t>
 
 TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
   // Back-to-back requests on random channels: a reply (7 bytes) is longer than a request (6), so
-  // about every other frame arrives while the board is busy and is dropped. A reply's OVERRUN says
-  // that a frame of its own channel was dropped since that channel's previous reply.
+  // the queue of accepted frames (32) fills and then about every seventh frame is dropped. A
+  // reply's OVERRUN says that a frame of its own channel was dropped since that channel's previous
+  // reply. SEQ wraps: a reply's SEQ is its frame's index modulo 256.
   std::mt19937 rng(31);
   std::uniform_int_distribution<int> any_channel(0, kChannels - 1);
   std::vector<std::pair<int, std::int16_t>> sent;  // channel, sample; the index is the SEQ
   std::vector<std::uint8_t> burst;
   std::vector<int> n(kChannels, 0);
-  for (int k = 0; k < 96; ++k) {
+  for (int k = 0; k < 320; ++k) {
     const int c = any_channel(rng);
     sent.emplace_back(c, wheel_word(c, n[c]++, rng));
     const std::vector<std::uint8_t> f =
@@ -303,7 +305,7 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
   std::size_t next = 0;  // index into got
   for (std::size_t k = 0; k < sent.size(); ++k) {
     const auto [c, word] = sent[k];
-    if (next < got.size() && static_cast<std::size_t>(got[next].seq) == k) {
+    if (next < got.size() && got[next].seq == static_cast<std::uint8_t>(k)) {
       const model::StepResult want = model_->step(word, c);
       const auto status =
           static_cast<std::uint8_t>((want.saturated ? frame::kStatusSaturation : 0) |
@@ -364,6 +366,39 @@ TEST_F(Basys3TopChannels, ChannelsTheCoreLacksAreAnsweredAndNeverFiltered) {
   }
   EXPECT_TRUE(bench_->leds() & kLedChannelError);
   EXPECT_FALSE(bench_->leds() & (kLedOverrun | kLedLinkError));
+}
+
+TEST_F(Basys3TopChannels, DisplayShowsTheChannelTheSwitchesChoose) {
+  // sw[15:12] choose the channel on the display: each channel's latest output, whatever channel
+  // replied last; channels 12 to 15, which the core lacks, show dashes; a session reset puts every
+  // channel back to " 6.00".
+  std::mt19937 rng(15);
+  std::uint8_t seq = 0;
+  std::vector<std::int16_t> latest(kChannels, 0);
+  for (int n = 0; n < 70; ++n) {
+    for (int c = 0; c < kChannels; ++c) {
+      latest[c] = expect_filtered(seq++, c, wheel_word(c, n, rng)).sample;
+    }
+  }
+  // Bypass on channel 7: its input becomes its shown value; the others keep theirs.
+  bench_->set_switches(0x1);
+  bench_->run(4);
+  const auto bypassed = static_cast<std::int16_t>(12345);
+  ASSERT_EQ(exchange(request(seq++, 7, bypassed)).size(), 1u);
+  latest[7] = bypassed;
+  for (int c = 0; c < 16; ++c) {
+    bench_->set_switches(static_cast<std::uint16_t>(c << 12));
+    bench_->run(4u + (4u << kSimRefreshBits) + 40u);  // synchroniser, conversion, a full refresh
+    const std::string want = c < kChannels ? expected_display(latest[c]) : "----";
+    EXPECT_EQ(bench_->display(), want) << "sw[15:12] = " << c;
+  }
+  const auto reset = frame::encode_command(seq, frame::kCommandReset);
+  ASSERT_EQ(exchange({reset.begin(), reset.end()}).size(), 1u);
+  for (int c : {0, 7, 11}) {
+    bench_->set_switches(static_cast<std::uint16_t>(c << 12));
+    bench_->run(4u + (4u << kSimRefreshBits) + 40u);
+    EXPECT_EQ(bench_->display(), " 6.00") << "channel " << c << " after the session reset";
+  }
 }
 
 TEST_F(Basys3TopChannels, SessionResetReportsTwelveChannelsAndRestartsEveryOne) {
