@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -325,24 +326,48 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
 }
 
 TEST_F(Basys3TopChannels, DroppedCommandMarksNoChannel) {
-  // A session reset that arrives while the board answers a sample is dropped like any frame: no
-  // reply, no reset (channel 0's filter goes on), led[1]; its CHANNEL byte (0) is only an echo,
-  // so channel 0's next reply has no OVERRUN.
+  // A burst that overflows the frame queue: samples of channel 1, and from the 200th frame on
+  // every other frame an unknown command with CHANNEL 0 (ignored when accepted). The commands
+  // that find the queue full are dropped like any frame (led[1]), but their CHANNEL byte is only
+  // an echo: channel 0's next reply has no OVERRUN, channel 1's has it.
   std::mt19937 rng(6);
   std::uint8_t seq = 0;
   for (int n = 0; n < 60; ++n) expect_filtered(seq++, 0, wheel_word(0, n, rng));
-  const std::int16_t word = wheel_word(0, 60, rng);
-  const model::StepResult want = model_->step(word, 0);
-  std::vector<std::uint8_t> two = request(seq, 0, word);
-  const auto cmd = frame::encode_command(static_cast<std::uint8_t>(seq + 1), frame::kCommandReset);
-  const std::vector<std::uint8_t> command(cmd.begin(), cmd.end());
-  two.insert(two.end(), command.begin(), command.end());
-  const std::vector<frame::Reply> got = exchange(two);
-  ASSERT_EQ(got.size(), 1u) << "the command arrives during the reply: dropped";
-  EXPECT_EQ(got[0], (frame::Reply{seq, 0, static_cast<std::int16_t>(want.sample), 0}));
+  std::vector<std::uint8_t> burst;
+  std::vector<std::int16_t> words;  // channel 1's samples by frame index (0: a command)
+  const int first = seq;
+  for (int k = 0; k < 320; ++k) {
+    std::array<std::uint8_t, frame::kRequestBytes> f{};
+    if (k >= 200 && k % 2 == 1) {
+      f = frame::encode_command(static_cast<std::uint8_t>(first + k), 0x0077, 0);
+      words.push_back(0);
+    } else {
+      words.push_back(wheel_word(1, k, rng));
+      f = frame::encode_request({static_cast<std::uint8_t>(first + k), 1, words.back()});
+    }
+    burst.insert(burst.end(), f.begin(), f.end());
+  }
+  const std::vector<frame::Reply> got = exchange(burst);
+  std::size_t samples = 0;
+  for (int k = 0; k < 320; ++k) samples += words[static_cast<std::size_t>(k)] != 0 ? 1 : 0;
+  ASSERT_LT(got.size(), samples) << "the burst was meant to overflow the queue";
+  int expected = first;
+  for (const frame::Reply& r : got) {
+    const int index = expected + ((r.seq - expected) & 0xFF);
+    ASSERT_EQ(r.channel, 1);
+    EXPECT_EQ(r.sample, model_->step(words[static_cast<std::size_t>(index - first)], 1).sample);
+    expected = index + 1;
+  }
   EXPECT_TRUE(bench_->leds() & kLedOverrun);
-  seq = static_cast<std::uint8_t>(seq + 2);
-  for (int n = 61; n < 80; ++n) expect_filtered(seq++, 0, wheel_word(0, n, rng));
+  seq = static_cast<std::uint8_t>(first + 320);
+  expect_filtered(seq++, 0, wheel_word(0, 60, rng));  // STATUS 0: no OVERRUN on channel 0
+  const std::int16_t word = wheel_word(1, 400, rng);
+  const std::vector<frame::Reply> one = exchange(request(seq, 1, word));
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].sample, model_->step(word, 1).sample);
+  bool tail_dropped = false;  // a sample of channel 1 dropped after its last answered one
+  for (int k = expected - first; k < 320; ++k) tail_dropped |= words[static_cast<std::size_t>(k)] != 0;
+  EXPECT_EQ((one[0].status & frame::kStatusOverrun) != 0, tail_dropped);
 }
 
 TEST_F(Basys3TopChannels, ChannelsTheCoreLacksAreAnsweredAndNeverFiltered) {
