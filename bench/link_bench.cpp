@@ -58,11 +58,16 @@ Args parse(int argc, char** argv) {
     }
     if (i + 1 >= argc) usage("missing value after " + arg);
     const std::string value = argv[++i];
-    if (arg == "--window") a.window = std::stoi(value);
-    else if (arg == "--baud") a.baud = std::stoi(value);
-    else if (arg == "--latency-ms") a.latency_ms = std::stoi(value);
-    else if (arg == "--seconds") a.seconds = std::stod(value);
-    else usage("unknown argument " + arg);
+    if (arg == "--window")
+      a.window = std::stoi(value);
+    else if (arg == "--baud")
+      a.baud = std::stoi(value);
+    else if (arg == "--latency-ms")
+      a.latency_ms = std::stoi(value);
+    else if (arg == "--seconds")
+      a.seconds = std::stod(value);
+    else
+      usage("unknown argument " + arg);
   }
   if (a.window < 1 || a.window > flange::host::kMaxWindow) usage("--window outside 1..32");
   if (a.latency_ms < 1 || a.latency_ms > 255) usage("--latency-ms outside 1..255");
@@ -104,14 +109,13 @@ int main(int argc, char** argv) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const flange::host::StreamCounts counts = session.counts();
-  std::printf("%s, window %d, baud %d, latency timer %d ms%s: %llu samples in %.3f s, %.0f "
-              "samples/s, %llu resent, %llu mismatches\n",
-              args.rtl ? "Verilated top" : "protocol model", args.window, args.baud,
-              args.latency_ms, args.ftdi ? "" : " (no FTDI)",
-              static_cast<unsigned long long>(counts.samples), seconds,
-              static_cast<double>(counts.samples) / seconds,
-              static_cast<unsigned long long>(counts.resent),
-              static_cast<unsigned long long>(counts.mismatches));
+  std::printf(
+      "%s, window %d, baud %d, latency timer %d ms%s: %llu samples in %.3f s, %.0f "
+      "samples/s, %llu resent, %llu mismatches\n",
+      args.rtl ? "Verilated top" : "protocol model", args.window, args.baud, args.latency_ms,
+      args.ftdi ? "" : " (no FTDI)", static_cast<unsigned long long>(counts.samples), seconds,
+      static_cast<double>(counts.samples) / seconds, static_cast<unsigned long long>(counts.resent),
+      static_cast<unsigned long long>(counts.mismatches));
   if (board.assertion_failed() || counts.mismatches > 0) return 1;
   return 0;
 }

@@ -366,7 +366,8 @@ TEST_F(Basys3TopChannels, DroppedCommandMarksNoChannel) {
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(one[0].sample, model_->step(word, 1).sample);
   bool tail_dropped = false;  // a sample of channel 1 dropped after its last answered one
-  for (int k = expected - first; k < 320; ++k) tail_dropped |= words[static_cast<std::size_t>(k)] != 0;
+  for (int k = expected - first; k < 320; ++k)
+    tail_dropped |= words[static_cast<std::size_t>(k)] != 0;
   EXPECT_EQ((one[0].status & frame::kStatusOverrun) != 0, tail_dropped);
 }
 

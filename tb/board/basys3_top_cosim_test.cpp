@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "board_bench.h"
-#include "display_text.h"
 #include "board_frame.h"
+#include "display_text.h"
 #include "filter_json.h"
 #include "iir_core.h"
 

@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -32,9 +32,10 @@ namespace {
 constexpr int kBaud = 921600;
 constexpr int kWheels = 12;
 constexpr double kWheelRateHz = 100.0;
-// The margin over 12 wheels at 100 Hz the link must carry (the benchmark's aim, bench/link_bench.sh),
-// shown with the protocol model as the board. The Verilated top is slower than a real 921600-baud
-// wire (about 3 000 replies/s on the shared 2-core machine), so with it the test asks for half.
+// The margin over 12 wheels at 100 Hz the link must carry (the benchmark's aim,
+// bench/link_bench.sh), shown with the protocol model as the board. The Verilated top is slower
+// than a real 921600-baud wire (about 3 000 replies/s on the shared 2-core machine), so with it the
+// test asks for half.
 constexpr double kLinkMargin = 4.0;
 constexpr double kRtlMargin = 2.0;
 
@@ -99,7 +100,8 @@ PtyBoardOptions ftdi(int latency_timer_ms, bool protocol_model = false) {
 }
 
 void expect_twelve_wheels_fit(int latency_timer_ms, bool protocol_model, double margin) {
-  const std::vector<host::ChannelWords> in = wheel_words(protocol_model ? 300 : 100, 40 + latency_timer_ms);
+  const std::vector<host::ChannelWords> in =
+      wheel_words(protocol_model ? 300 : 100, 40 + latency_timer_ms);
   const Session s = stream(ftdi(latency_timer_ms, protocol_model), in, host::kMaxWindow);
   EXPECT_EQ(s.counts.samples, 12u * in[0].words.size());
   EXPECT_EQ(s.counts.mismatches, 0u) << s.counts.first_mismatch;
@@ -107,12 +109,12 @@ void expect_twelve_wheels_fit(int latency_timer_ms, bool protocol_model, double 
   expect_exactly_the_model(in, s.out);
   const double per_second = static_cast<double>(s.counts.samples) / s.counts.seconds;
   const double wheels_at_100hz = per_second / (kWheels * kWheelRateHz);
-  std::printf("[ftdi] %s, latency timer %d ms, window %d, %d baud: %llu samples in %.3f s, %.0f "
-              "samples/s, %.2f x 12 wheels at 100 Hz\n",
-              protocol_model ? "protocol model" : "Verilated top", latency_timer_ms,
-              host::kMaxWindow, kBaud,
-              static_cast<unsigned long long>(s.counts.samples), s.counts.seconds, per_second,
-              wheels_at_100hz);
+  std::printf(
+      "[ftdi] %s, latency timer %d ms, window %d, %d baud: %llu samples in %.3f s, %.0f "
+      "samples/s, %.2f x 12 wheels at 100 Hz\n",
+      protocol_model ? "protocol model" : "Verilated top", latency_timer_ms, host::kMaxWindow,
+      kBaud, static_cast<unsigned long long>(s.counts.samples), s.counts.seconds, per_second,
+      wheels_at_100hz);
   EXPECT_GE(wheels_at_100hz, margin) << per_second << " samples/s";
 }
 
@@ -151,7 +153,7 @@ TEST(BoardFtdiStream, LossCorruptionAndLostRepliesGiveEveryOutputOnce) {
   constexpr std::uint64_t kFrame = host::board::kRequestBytes;
   options.mangle = [](std::uint64_t index, std::uint8_t& byte) {
     if (index % (kFrame * 37) == kFrame * 11 + 3) byte ^= 0x10;  // a flipped bit
-    return index % (kFrame * 53) != kFrame * 29 + 1;               // a lost byte
+    return index % (kFrame * 53) != kFrame * 29 + 1;             // a lost byte
   };
   options.mangle_reply = [](std::uint64_t index, std::uint8_t& byte) {
     if (index % (host::board::kReplyBytes * 41) == 5) byte ^= 0x01;  // a damaged STATUS
@@ -219,8 +221,8 @@ TEST(Basys3TopModel, AnswersEveryStreamAsTheRtl) {
     const int p = percent(rng);
     std::vector<std::uint8_t> bytes;
     if (p < 3) {
-      const auto cmd = frame::encode_command(seq, p == 0 ? frame::kCommandReset
-                                                         : frame::kCommandResetWindowed);
+      const auto cmd =
+          frame::encode_command(seq, p == 0 ? frame::kCommandReset : frame::kCommandResetWindowed);
       bytes.assign(cmd.begin(), cmd.end());
       ++seq;
     } else if (p < 15 && !sent.empty()) {  // a repeat of one of the last 40 frames
@@ -237,7 +239,8 @@ TEST(Basys3TopModel, AnswersEveryStreamAsTheRtl) {
       const auto f = frame::encode_request(r);
       bytes.assign(f.begin(), f.end());
       if (p < 27) bytes[static_cast<std::size_t>(byte_value(rng)) % bytes.size()] ^= 0x08;
-      if (p >= 27 && p < 30) bytes.insert(bytes.begin(), static_cast<std::uint8_t>(byte_value(rng)));
+      if (p >= 27 && p < 30)
+        bytes.insert(bytes.begin(), static_cast<std::uint8_t>(byte_value(rng)));
     }
     std::vector<std::uint8_t> want;
     for (std::uint8_t b : bytes) {

@@ -21,9 +21,9 @@
 namespace flange::tb::board {
 
 struct FtdiSettings {
-  int baud = 921600;                                  // the wire's bit rate
-  std::chrono::milliseconds latency_timer{16};        // 1..255 ms; Linux's default is 16
-  std::chrono::microseconds turnaround{250};          // host write -> chip
+  int baud = 921600;                            // the wire's bit rate
+  std::chrono::milliseconds latency_timer{16};  // 1..255 ms; Linux's default is 16
+  std::chrono::microseconds turnaround{250};    // host write -> chip
 };
 
 inline constexpr std::size_t kFtdiPacketBytes = 62;  // data bytes of a 64-byte bulk IN packet
@@ -108,7 +108,7 @@ class FtdiLink {
   Time last_packet_;                    // the latency timer restarts here
   Time rx_wire_free_, tx_wire_free_;    // when each wire's last byte ends
   Timed to_board_, on_wire_;
-  std::deque<std::uint8_t> buffer_;     // in the chip, waiting for a packet
+  std::deque<std::uint8_t> buffer_;  // in the chip, waiting for a packet
 };
 
 }  // namespace flange::tb::board

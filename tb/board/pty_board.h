@@ -13,10 +13,10 @@
 
 #include <atomic>
 #include <chrono>
-#include <optional>
 #include <cstdint>
 #include <cstdlib>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -119,7 +119,8 @@ class PtyBoard {
         feed(bench, to_board);
         quiet_cycles = 0;
       }
-      const bool active = bench.sending() || quiet_cycles < std::uint64_t{kQuietBits} * kSimClksPerBit;
+      const bool active =
+          bench.sending() || quiet_cycles < std::uint64_t{kQuietBits} * kSimClksPerBit;
       if (active) {
         constexpr std::uint64_t kChunk = std::uint64_t{32} * kSimClksPerBit;
         bench.run(kChunk);
@@ -132,7 +133,8 @@ class PtyBoard {
         sent = ftdi->to_host(Clock::now());
       }
       to_host(sent);
-      if (!active) wait(ftdi ? ftdi->next_event(Clock::now() + kIdlePoll) : Clock::now() + kIdlePoll);
+      if (!active)
+        wait(ftdi ? ftdi->next_event(Clock::now() + kIdlePoll) : Clock::now() + kIdlePoll);
     }
     assertion_failed_ = bench.assertion_failed();
   }
