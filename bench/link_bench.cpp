@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // link_bench (docs/board.md, "Windowed session"; bench/link_bench.sh runs it): samples per second
 // of 12 interleaved channels through the windowed host library (host/board_link), a simulated FTDI
-// USB-serial chip (tb/board/ftdi_link.h) and the Verilated 12-channel board top behind a
-// pseudo-terminal, for one window, baud rate and latency timer. Every reply is checked against
-// the model; the line it prints ends with the mismatches (0 expected).
+// USB-serial chip (tb/board/ftdi_link.h) and the board (its protocol model, or the Verilated
+// 12-channel top) over a socket pair (tb/board/socket_stream.h), for one window, baud rate and
+// latency timer. Every reply is checked against the model; the line it prints ends with the
+// mismatches (0 expected).
 //
 //   link_bench --window W --baud B --latency-ms L [--seconds S] [--rtl] [--no-ftdi]
 //
@@ -22,14 +23,14 @@
 #include "channel_stream.h"
 #include "filter_json.h"
 #include "pty_board.h"
-#include "serial_port.h"
+#include "socket_stream.h"
 
 namespace {
 
 using flange::tb::board::FtdiSettings;
-using flange::tb::board::Pty;
 using flange::tb::board::PtyBoard;
 using flange::tb::board::PtyBoardOptions;
+using flange::tb::board::SocketStream;
 
 struct Args {
   int window = 1;
@@ -85,10 +86,10 @@ int main(int argc, char** argv) {
     options.ftdi = FtdiSettings{args.baud, std::chrono::milliseconds(args.latency_ms),
                                 std::chrono::microseconds(250)};
   }
-  Pty pty;
-  PtyBoard board(pty, std::move(options));
-  // The pty takes any termios rate; the FTDI model paces the wire at args.baud.
-  flange::host::SerialPort port(pty.slave_name(), 921600);
+  // A socket pair rather than a pty: a pty's hand-over waits for the kernel's work queue, which
+  // on the shared machine would be measured instead of the link (socket_stream.h).
+  SocketStream port;
+  PtyBoard board(port.board_end(), std::move(options));
   flange::host::BoardLink link(port, {args.baud, 1000, 3, args.window});
   const auto config = flange::model::load_core_config(flange::tb::board::kBoardFilterJson);
   flange::host::ReplyChecker checker(config);

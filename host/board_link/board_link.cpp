@@ -11,7 +11,7 @@
 
 namespace flange::host {
 
-BoardLink::BoardLink(SerialPort& port, const LinkSettings& settings)
+BoardLink::BoardLink(ByteStream& port, const LinkSettings& settings)
     : port_(port), settings_(settings) {
   if (settings_.window < 1 || settings_.window > kMaxWindow) {
     throw std::invalid_argument(

@@ -17,7 +17,7 @@
 #include <utility>
 
 #include "board_frame.h"
-#include "serial_port.h"
+#include "byte_stream.h"
 
 namespace flange::host {
 
@@ -43,7 +43,7 @@ class BoardLink {
   using OnReply = std::function<void(const board::Reply&)>;
 
   // `port` must outlive the link. Throws std::invalid_argument for a window outside 1..32.
-  BoardLink(SerialPort& port, const LinkSettings& settings);
+  BoardLink(ByteStream& port, const LinkSettings& settings);
 
   // Waits for the requests in flight, then restarts the session with SEQ 0 as a windowed one: the
   // board resets every channel's filter and forgets its stored replies. Returns the number of
@@ -87,7 +87,7 @@ class BoardLink {
   void resend_unanswered();
   void send(InFlight& request);
 
-  SerialPort& port_;
+  ByteStream& port_;
   LinkSettings settings_;
   board::ReplyScanner scanner_;
   LinkCounts counts_;

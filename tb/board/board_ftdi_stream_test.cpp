@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The windowed link (host/board_link/board_link.h) through a simulated FTDI USB-serial chip
 // (ftdi_link.h: 62-byte packets, 1 ms USB frames, the latency timer, the host's turnaround) to the
-// Verilated 12-channel board top behind a pseudo-terminal. Every reply is checked against
-// model::IirSampleBank by the library and against model::IirCore here; every sample must have
-// exactly one output. Throughput is wall-clock time of the whole session (the simulated board
-// runs faster than the wire it is given; docs/board.md, "Windowed session").
+// Verilated 12-channel board top (or its protocol model) behind a pseudo-terminal or a socket pair.
+// Every reply is checked against model::IirSampleBank by the library and against model::IirCore
+// here; every sample must have exactly one output. Throughput is the wall-clock time of the whole
+// session (docs/board.md, "Through a simulated FTDI chip").
 // Reproduce: build/tb/board_ftdi_stream_test --gtest_filter='BoardFtdiStream.<Name>'
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@
 #include "iir_core.h"
 #include "pty_board.h"
 #include "serial_port.h"
+#include "socket_stream.h"
 
 namespace flange::tb::board {
 namespace {
@@ -75,11 +77,19 @@ struct Session {
   std::vector<host::ChannelReplies> out;
 };
 
+// Through a pty (the serial code path of a real board) or, for the tests that time the link, a
+// socket pair (socket_stream.h: a pty's hand-over waits for the kernel's work queue, tens of
+// milliseconds on the loaded shared machine, which would be timed instead of the link).
+enum class Wire { kPty, kSocket };
+
 Session stream(PtyBoardOptions options, const std::vector<host::ChannelWords>& in, int window,
-               int timeout_ms = 500) {
+               int timeout_ms = 500, Wire wire = Wire::kPty) {
   Pty pty;
-  PtyBoard board(pty, std::move(options));
-  host::SerialPort port(pty.slave_name(), kBaud);
+  SocketStream socket;
+  std::optional<host::SerialPort> serial;
+  if (wire == Wire::kPty) serial.emplace(pty.slave_name(), kBaud);
+  host::ByteStream& port = serial ? static_cast<host::ByteStream&>(*serial) : socket;
+  PtyBoard board(wire == Wire::kPty ? pty.master() : socket.board_end(), std::move(options));
   host::BoardLink link(port, {kBaud, timeout_ms, 8, window});
   host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
   Session s;
@@ -102,7 +112,8 @@ PtyBoardOptions ftdi(int latency_timer_ms, bool protocol_model = false) {
 void expect_twelve_wheels_fit(int latency_timer_ms, bool protocol_model, double margin) {
   const std::vector<host::ChannelWords> in =
       wheel_words(protocol_model ? 300 : 100, 40 + latency_timer_ms);
-  const Session s = stream(ftdi(latency_timer_ms, protocol_model), in, host::kMaxWindow);
+  const Session s =
+      stream(ftdi(latency_timer_ms, protocol_model), in, host::kMaxWindow, 500, Wire::kSocket);
   EXPECT_EQ(s.counts.samples, 12u * in[0].words.size());
   EXPECT_EQ(s.counts.mismatches, 0u) << s.counts.first_mismatch;
   EXPECT_EQ(s.counts.resent, 0u);
@@ -138,7 +149,7 @@ TEST(BoardFtdiStream, StopAndWaitIsHeldByTheLatencyTimer) {
   // One request at a time: each reply (7 bytes) waits in the chip for the 16 ms timer, so a
   // session cannot carry 12 wheels at 100 Hz at any baud rate.
   const std::vector<host::ChannelWords> in = wheel_words(3, 5);
-  const Session s = stream(ftdi(16), in, 1);
+  const Session s = stream(ftdi(16), in, 1, 500, Wire::kSocket);
   EXPECT_EQ(s.counts.mismatches, 0u) << s.counts.first_mismatch;
   expect_exactly_the_model(in, s.out);
   const double per_second = static_cast<double>(s.counts.samples) / s.counts.seconds;

@@ -83,9 +83,12 @@ class PtyBoard {
   using Mangle = PtyBoardOptions::Mangle;
   using Clock = FtdiLink::Clock;
   explicit PtyBoard(const Pty& pty, Mangle mangle = {})
-      : PtyBoard(pty, PtyBoardOptions{std::move(mangle), {}, {}, {}, false}) {}
-  PtyBoard(const Pty& pty, PtyBoardOptions options)
-      : pty_(pty), options_(std::move(options)), thread_([this] { loop(); }) {}
+      : PtyBoard(pty.master(), PtyBoardOptions{std::move(mangle), {}, {}, {}, false}) {}
+  PtyBoard(const Pty& pty, PtyBoardOptions options) : PtyBoard(pty.master(), std::move(options)) {}
+  // `fd`: the board's end of the connection, non-blocking (a pty's master, a socket pair's end:
+  // socket_stream.h).
+  PtyBoard(int fd, PtyBoardOptions options)
+      : fd_(fd), options_(std::move(options)), thread_([this] { loop(); }) {}
   ~PtyBoard() {
     stop_ = true;
     thread_.join();
@@ -169,7 +172,7 @@ class PtyBoard {
   // The host's bytes (through the noisy cable).
   std::vector<std::uint8_t> from_host() {
     std::uint8_t buffer[256];
-    const ssize_t n = ::read(pty_.master(), buffer, sizeof buffer);
+    const ssize_t n = ::read(fd_, buffer, sizeof buffer);
     std::vector<std::uint8_t> bytes;
     for (ssize_t i = 0; i < n; ++i) {
       std::uint8_t byte = buffer[i];
@@ -211,7 +214,7 @@ class PtyBoard {
   void to_host(const std::vector<std::uint8_t>& bytes) {
     std::size_t done = 0;
     while (done < bytes.size() && !stop_) {
-      const ssize_t w = ::write(pty_.master(), bytes.data() + done, bytes.size() - done);
+      const ssize_t w = ::write(fd_, bytes.data() + done, bytes.size() - done);
       if (w > 0) done += static_cast<std::size_t>(w);
     }
   }
@@ -221,11 +224,11 @@ class PtyBoard {
     if (left.count() <= 0) return;
     const timespec ts{static_cast<time_t>(left.count() / 1'000'000'000),
                       static_cast<long>(left.count() % 1'000'000'000)};
-    pollfd pfd{pty_.master(), POLLIN, 0};
+    pollfd pfd{fd_, POLLIN, 0};
     ::ppoll(&pfd, 1, &ts, nullptr);
   }
 
-  const Pty& pty_;
+  int fd_;
   PtyBoardOptions options_;
   std::uint64_t host_index_ = 0, fed_index_ = 0, board_index_ = 0;
   std::atomic<bool> stop_{false};
