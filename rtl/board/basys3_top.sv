@@ -177,7 +177,9 @@ module basys3_top #(
     logic [15:0] sample;
   } frame_t;
 
-  frame_t                 queue_mem [QueueDepth];
+  // Plain words: Yosys 0.23 does not take an unpacked array of a struct type as a memory.
+  localparam int FrameBits = 2 + 8 + 8 + 16;  // frame_t's width
+  logic [FrameBits-1:0]   queue_mem [QueueDepth];
   logic [QueueAddrBits:0] q_wr_q, q_wr_d, q_rd_q, q_rd_d;  // one extra bit tells full from empty
   logic                   q_empty, q_full, q_push, q_pop;
   frame_t                 head;
@@ -206,7 +208,8 @@ module basys3_top #(
     logic [7:0]  status;
   } stored_t;
 
-  stored_t                store_mem [QueueDepth];
+  localparam int StoredBits = 8 + 16 + 8;  // stored_t's width
+  logic [StoredBits-1:0]  store_mem [QueueDepth];
   logic [QueueDepth-1:0]  stored_q, stored_d;  // the entry holds a reply of this session
   logic                   store_we;
   stored_t                stored;              // the entry of the head frame's SEQ
