@@ -11,6 +11,7 @@
 #include "input_error.h"
 #include "locomotive_manifest.h"
 #include "locomotive_run.h"
+#include "board_link.h"
 #include "serial_port.h"
 
 namespace flange::cli {
@@ -49,6 +50,11 @@ CLI::App* add_stream_command(CLI::App& app, StreamOptions& all) {
   cmd->add_option("--retries", options.retries, "send a request again this often (0-100)")
       ->default_val(options.retries)
       ->check(CLI::Range(0, 100));
+  cmd->add_option("--window", options.window,
+                  "requests in flight (1-32; 1: stop-and-wait; docs/board.md, \"Windowed "
+                  "session\")")
+      ->default_val(options.window)
+      ->check(CLI::Range(1, host::kMaxWindow));
   return cmd;
 }
 
@@ -62,13 +68,15 @@ host::ChannelStreamSettings manifest_settings(const StreamOptions& options) {
   settings.calibration = options.single.calibration;
   settings.coeffs = options.coeffs;
   settings.source = options.manifest;
-  settings.link = {options.single.baud, options.single.timeout_ms, options.single.retries};
+  settings.link = {options.single.baud, options.single.timeout_ms, options.single.retries,
+                   options.single.window};
+  settings.on_port_setup = options.single.on_port_setup;
   const std::filesystem::path out_dir = options.single.out;
   std::filesystem::create_directories(out_dir);
   for (const host::ManifestChannel& channel : manifest.channels) {
     settings.channels.push_back({channel.channel, channel.path.string(),
                                  (out_dir / host::channel_file_name(channel.channel)).string(),
-                                 ""});
+                                 channel.calibration_path.string()});
   }
   return settings;
 }
@@ -80,9 +88,13 @@ int run_stream_command(const StreamOptions& options, std::ostream& out, std::ost
     if (options.manifest.empty() && options.single.input.empty()) {
       throw host::InputError("give --input (one recording) or --manifest (a locomotive)");
     }
+    StreamOptions said = options;
+    said.single.on_port_setup = [&err](const std::string& line) {
+      err << "flange stream: " << line << "\n";
+    };
     const host::StreamCounts counts =
-        options.manifest.empty() ? host::stream_recording(options.single)
-                                 : host::stream_channel_recordings(manifest_settings(options));
+        said.manifest.empty() ? host::stream_recording(said.single)
+                              : host::stream_channel_recordings(manifest_settings(said));
     out << host::stream_summary_line(counts) << "\n";
     if (counts.checked && counts.mismatches > 0) return kExitFailure;
     return kExitOk;

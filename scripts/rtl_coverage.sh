@@ -39,7 +39,8 @@ if [[ ${#cosim[@]} -eq 0 ]]; then
   echo "rtl_coverage: no iir_core_cosim_*_test target in $build (a Ninja build is needed)" >&2
   exit 1
 fi
-targets=("${cosim[@]}" basys3_top_cosim_test board_stream_test basys3_top_channels_test)
+targets=("${cosim[@]}" basys3_top_cosim_test board_stream_test basys3_top_channels_test
+         board_channels_stream_test board_ftdi_stream_test)
 echo "rtl_coverage: building ${#targets[@]} test binaries in $build (-j$jobs)"
 build_log=$build/rtl_coverage_build.log
 cmake --build "$build" --parallel "$jobs" --target "${targets[@]}" >"$build_log" ||

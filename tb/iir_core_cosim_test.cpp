@@ -361,8 +361,11 @@ TEST_F(IirCoreCosim, FlagClear) {
   const CosimReport report = run(s);
   EXPECT_GT(report.accepted, 0u);
   EXPECT_GT(report.dropped, 0u);
-  // A Butterworth low-pass of order 2 or more overshoots a full-scale square: it must clip.
-  EXPECT_TRUE(report.saturation_seen || config_.filter_order < 2) << reproduce();
+  // A Butterworth low-pass of order 2 or more overshoots a full-scale square: it must clip. First-
+  // order sections (df1_order1, the test-only cascade df1_order1x2) have real poles only: their
+  // step response never overshoots.
+  EXPECT_TRUE(report.saturation_seen || config_.filter_order < 2 || config_.section_order < 2)
+      << reproduce();
 }
 
 TEST_F(IirCoreCosim, ResetMidComputation) {

@@ -15,6 +15,7 @@ namespace flange::host::board {
 inline constexpr std::uint8_t kSync = 0xA5;
 inline constexpr std::uint8_t kCommandSync = 0x5A;      // a command frame instead of a sample
 inline constexpr std::uint16_t kCommandReset = 0x0001;  // restart the session: reset the filter
+inline constexpr std::uint16_t kCommandResetWindowed = 0x0002;  // the same, SEQs in order
 inline constexpr std::size_t kRequestBytes = 6;
 inline constexpr std::size_t kReplyBytes = 7;
 
@@ -27,6 +28,7 @@ inline constexpr std::uint8_t kStatusBypass = 1u << 3;      // OUT is the unfilt
 inline constexpr std::uint8_t kStatusRetransmit = 1u << 4;  // a repeat of the last reply
 inline constexpr std::uint8_t kStatusSessionReset = 1u << 5;  // answers a reset command
 inline constexpr std::uint8_t kStatusChannelError = 1u << 6;  // no such channel: not filtered
+inline constexpr std::uint8_t kStatusWindowed = 1u << 7;      // a windowed session's reply
 
 inline std::uint8_t crc8(std::span<const std::uint8_t> bytes) {
   std::uint8_t crc = 0;

@@ -1,61 +1,97 @@
 // SPDX-License-Identifier: MIT
-// One request and its reply at a time over the Basys-3 link (docs/board.md): SEQ numbering, a
-// resend (same SEQ, same CHANNEL) when the reply does not come within the timeout, the session
-// reset that starts every session and reports how many channels the board's core serves.
+// A window of requests in flight over the Basys-3 link (docs/board.md, "Windowed session"): SEQ
+// numbering, the windowed session reset that starts every session and reports how many channels
+// the board's core serves, up to `window` requests sent before their replies come, replies handed
+// back in the order the requests were made, and go-back-N on a timeout: every request still
+// unanswered is sent again (same SEQ, same CHANNEL). The board takes new frames only in SEQ order
+// and answers a repeated one from its reply store, so every sample is filtered exactly once and
+// in order, whatever is lost or damaged on the way.
 #pragma once
 
 #include <array>
 #include <chrono>
 #include <cstdint>
-#include <optional>
+#include <deque>
+#include <functional>
 #include <string>
+#include <utility>
 
 #include "board_frame.h"
-#include "serial_port.h"
+#include "byte_stream.h"
 
 namespace flange::host {
 
+// The board's frame queue and reply store: the largest window (rtl/board/basys3_top.sv).
+inline constexpr int kMaxWindow = 32;
+
 struct LinkSettings {
   int baud = 115200;     // the bitstream's: 100 MHz / ClksPerBit (docs/board.md, "Link budget")
-  int timeout_ms = 500;  // per attempt, 1..60000
+  int timeout_ms = 500;  // for the oldest request in flight, 1..60000
   int retries = 3;       // further attempts per request before giving up, 0..100
+  int window = 16;       // requests in flight, 1..kMaxWindow (1: stop-and-wait)
 };
 
 struct LinkCounts {
   std::uint64_t exchanges = 0;        // sample requests answered
   std::uint64_t resent = 0;           // requests sent again after a timeout
-  std::uint64_t stray_replies = 0;    // intact replies with another SEQ or CHANNEL (late or stale)
+  std::uint64_t stray_replies = 0;    // intact replies to no request in flight (late or repeated)
   std::uint64_t discarded_bytes = 0;  // received bytes that were part of no intact reply
 };
 
 class BoardLink {
  public:
-  // `port` must outlive the link.
-  BoardLink(SerialPort& port, const LinkSettings& settings);
+  using OnReply = std::function<void(const board::Reply&)>;
 
-  // Restarts the session with SEQ 0: the board resets every channel's filter and forgets the
-  // last SEQ. Returns the number of channels of the board's core (1..255). Throws
-  // std::runtime_error when the board does not answer or does not confirm the reset.
+  // `port` must outlive the link. Throws std::invalid_argument for a window outside 1..32.
+  BoardLink(ByteStream& port, const LinkSettings& settings);
+
+  // Waits for the requests in flight, then restarts the session with SEQ 0 as a windowed one: the
+  // board resets every channel's filter and forgets its stored replies. Returns the number of
+  // channels of the board's core (1..255). Throws std::runtime_error when the board does not
+  // answer or does not confirm a windowed reset.
   int reset_session();
 
-  // The reply to `word` on `channel` (0..255), with the next SEQ; resent on a timeout. Throws
-  // std::runtime_error naming the port after retries + 1 silent attempts; `what` names the
-  // request in that message (e.g. "sample 17" or "sample 17 of channel 3").
+  // Sends `word` on `channel` (0..255) with the next SEQ, after waiting while `window` requests
+  // are in flight; `on_reply` gets its reply, and replies are handed on in the order of post().
+  // Throws std::runtime_error naming the port when the oldest request stays unanswered after
+  // retries + 1 attempts (`what` names it, e.g. "sample 17 of channel 3") or when the replies
+  // show the board was reset during the session.
+  void post(std::uint8_t channel, std::int16_t word, std::string what, OnReply on_reply);
+  // Waits until every request in flight is answered (throws as post()).
+  void flush();
+  // One request and its reply (post, then flush).
   board::Reply exchange(std::uint8_t channel, std::int16_t word, const std::string& what);
 
   const LinkCounts& counts() const { return counts_; }
   const std::string& device() const { return port_.device(); }
+  int window() const { return settings_.window; }
 
  private:
-  board::Reply exchange_frame(const std::array<std::uint8_t, board::kRequestBytes>& request,
-                              const board::Request& expected, const std::string& what);
-  std::optional<board::Reply> await_reply(const board::Request& expected,
-                                          std::chrono::milliseconds timeout);
+  struct InFlight {
+    InFlight(const board::Request& r, const std::array<std::uint8_t, board::kRequestBytes>& f,
+             std::string w, OnReply done)
+        : request(r), frame(f), what(std::move(w)), on_reply(std::move(done)) {}
+    board::Request request;
+    std::array<std::uint8_t, board::kRequestBytes> frame;  // as sent: a sample or a command
+    std::string what;
+    OnReply on_reply;
+    bool answered = false;
+    board::Reply reply;
+    int attempts = 1;  // sends while it was the oldest request in flight
+    std::chrono::steady_clock::time_point sent;
+  };
 
-  SerialPort& port_;
+  // Reads replies until the oldest request in flight is answered or times out (then resends).
+  void pump();
+  void take(const board::Reply& reply);
+  void resend_unanswered();
+  void send(InFlight& request);
+
+  ByteStream& port_;
   LinkSettings settings_;
   board::ReplyScanner scanner_;
   LinkCounts counts_;
+  std::deque<InFlight> in_flight_;
   std::uint8_t next_seq_ = 1;
 };
 

@@ -68,32 +68,38 @@ ChannelSession::ChannelSession(BoardLink& link, std::span<const int> channels,
         link_.device(), board_channels_, checker_->channels()));
   }
   sent_.assign(static_cast<std::size_t>(highest) + 1, 0);
+  answered_.assign(sent_.size(), 0);
   counts_.channels = channels.size();
   counts_.checked = checker_ != nullptr;
 }
 
-board::Reply ChannelSession::send(int channel, std::int16_t word) {
+void ChannelSession::send(int channel, std::int16_t word, BoardLink::OnReply on_reply) {
   const auto index = static_cast<std::size_t>(channel);
-  const std::string what = several_
-                               ? fmt::format("sample {} of channel {}", sent_.at(index), channel)
-                               : fmt::format("sample {}", sent_.at(index));
-  const board::Reply reply = link_.exchange(static_cast<std::uint8_t>(channel), word, what);
+  std::string what = several_ ? fmt::format("sample {} of channel {}", sent_.at(index), channel)
+                              : fmt::format("sample {}", sent_.at(index));
   ++sent_[index];
+  link_.post(static_cast<std::uint8_t>(channel), word, std::move(what),
+             [this, channel, word, on_reply = std::move(on_reply)](const board::Reply& reply) {
+               take(channel, word, reply);
+               on_reply(reply);
+             });
+}
+
+void ChannelSession::take(int channel, std::int16_t word, const board::Reply& reply) {
+  const auto index = static_cast<std::size_t>(channel);
+  ++answered_[index];
   ++counts_.samples;
   counts_.link_errors += (reply.status & board::kStatusLinkError) ? 1 : 0;
   counts_.overruns += (reply.status & board::kStatusOverrun) ? 1 : 0;
   counts_.saturated += (reply.status & board::kStatusSaturation) ? 1 : 0;
   counts_.bypassed += (reply.status & board::kStatusBypass) ? 1 : 0;
-  if (checker_) {
-    const std::string mismatch = checker_->check(channel, word, reply);
-    if (!mismatch.empty()) {
-      if (counts_.mismatches == 0) {
-        counts_.first_mismatch = fmt::format("sample {} of {}", sent_[index] - 1, mismatch);
-      }
-      ++counts_.mismatches;
-    }
+  if (!checker_) return;
+  const std::string mismatch = checker_->check(channel, word, reply);
+  if (mismatch.empty()) return;
+  if (counts_.mismatches == 0) {
+    counts_.first_mismatch = fmt::format("sample {} of {}", answered_[index] - 1, mismatch);
   }
-  return reply;
+  ++counts_.mismatches;
 }
 
 StreamCounts ChannelSession::counts() const {
@@ -129,11 +135,14 @@ std::vector<ChannelReplies> stream_channels(BoardLink& link, std::span<const Cha
     out.back().replies.reserve(c.words.size());
   }
   ChannelSession session(link, numbers, checker, source);
+  std::vector<std::size_t> sent(channels.size(), 0);
   for (std::size_t position : round_robin_order(lengths)) {
     const ChannelWords& c = channels[position];
     std::vector<board::Reply>& replies = out[position].replies;
-    replies.push_back(session.send(c.channel, c.words[replies.size()]));
+    session.send(c.channel, c.words[sent[position]++],
+                 [&replies](const board::Reply& reply) { replies.push_back(reply); });
   }
+  session.finish();
   counts = session.counts();
   return out;
 }

@@ -66,8 +66,11 @@ class ChannelSession {
   ChannelSession(BoardLink& link, std::span<const int> channels, ReplyChecker* checker,
                  const std::string& source);
 
-  // The board's reply to `word` on `channel`, counted and, with a checker, checked.
-  board::Reply send(int channel, std::int16_t word);
+  // Sends `word` on `channel` (up to the link's window in flight); `on_reply` gets its reply,
+  // counted and, with a checker, checked, in the order of send().
+  void send(int channel, std::int16_t word, BoardLink::OnReply on_reply);
+  // Waits for every reply still in flight.
+  void finish() { link_.flush(); }
   int board_channels() const { return board_channels_; }
   // The counts so far (the link's resends, strays and discarded bytes included).
   StreamCounts counts() const;
@@ -77,7 +80,10 @@ class ChannelSession {
   ReplyChecker* checker_;
   int board_channels_ = 0;
   bool several_ = false;             // name the channel in error messages
-  std::vector<std::uint64_t> sent_;  // samples sent per channel
+  void take(int channel, std::int16_t word, const board::Reply& reply);
+
+  std::vector<std::uint64_t> sent_;      // samples sent per channel
+  std::vector<std::uint64_t> answered_;  // replies taken per channel
   StreamCounts counts_;
 };
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "serial_port.h"
 
+#include "low_latency.h"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <termios.h>
@@ -102,5 +104,7 @@ std::size_t SerialPort::read_some(std::span<std::uint8_t> buffer,
 }
 
 void SerialPort::discard_input() { ::tcflush(fd_, TCIFLUSH); }
+
+std::string SerialPort::request_low_latency() { return host::request_low_latency(fd_, device_); }
 
 }  // namespace flange::host

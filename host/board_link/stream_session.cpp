@@ -123,6 +123,8 @@ StreamCounts stream_channel_recordings(const ChannelStreamSettings& settings) {
   const std::vector<int> numbers = channel_numbers(settings);
 
   SerialPort port(settings.port, settings.link.baud);
+  const std::string latency = port.request_low_latency();
+  if (settings.on_port_setup) settings.on_port_setup(latency);
   port.discard_input();
   BoardLink link(port, settings.link);
   // A fresh filter on every channel, as `flange run` starts with: the outputs equal the model's.
@@ -135,13 +137,18 @@ StreamCounts stream_channel_recordings(const ChannelStreamSettings& settings) {
     bool clipped = false;
     const auto word = static_cast<std::int16_t>(scaling.to_word(raw_mm, clipped));
     clipped_inputs += clipped ? 1 : 0;
-    const board::Reply reply = session.send(run->channel, word);
-    // The Butterworth designs have no leftover gain (1.0): the word is the clearance.
-    const double filt_mm = scaling.unit_to_mm(reply.sample / scaling.full_scale());
-    run->csv << fmt::format("{},{},{},{},{},{}\n", row.t_s, fixed6(raw_mm), word, reply.sample,
-                            fixed6(filt_mm), reply.status);
+    // The row's reply comes later (a window of requests is in flight), in the order sent.
+    session.send(run->channel, word,
+                 [&scaling, csv = &run->csv, t_s = row.t_s, raw_mm, word](const board::Reply& r) {
+                   // The Butterworth designs have no leftover gain (1.0): the word is the
+                   // clearance.
+                   const double filt_mm = scaling.unit_to_mm(r.sample / scaling.full_scale());
+                   *csv << fmt::format("{},{},{},{},{},{}\n", t_s, fixed6(raw_mm), word, r.sample,
+                                       fixed6(filt_mm), r.status);
+                 });
     run->row = run->reader->next();
   }
+  session.finish();
   StreamCounts counts = session.counts();
   counts.clipped_inputs = clipped_inputs;
   counts.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -153,7 +160,8 @@ StreamCounts stream_recording(const StreamSettings& settings) {
   multi.port = settings.port;
   multi.channels = {{0, settings.input, settings.out, ""}};
   multi.calibration = settings.calibration;
-  multi.link = {settings.baud, settings.timeout_ms, settings.retries};
+  multi.link = {settings.baud, settings.timeout_ms, settings.retries, settings.window};
+  multi.on_port_setup = settings.on_port_setup;
   return stream_channel_recordings(multi);
 }
 

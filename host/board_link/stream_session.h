@@ -9,6 +9,7 @@
 // locomotive's) go out interleaved in time order (channel_stream.h).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct StreamSettings {
   int baud = 115200;        // the bitstream's: 100 MHz / ClksPerBit (docs/board.md)
   int timeout_ms = 500;     // per attempt, 1..60000
   int retries = 3;          // further attempts per sample before giving up, 0..100
+  int window = 16;          // requests in flight, 1..kMaxWindow (board_link.h)
+  // Gets one line on the port's latency setting (low_latency.h) once the port is open.
+  std::function<void(const std::string&)> on_port_setup;
 };
 
 // One channel of a multichannel session: its recording and where its output goes.
@@ -42,6 +46,8 @@ struct ChannelStreamSettings {
   std::string coeffs;                  // the board's filter.json: check every reply; empty: don't
   std::string source;                  // what error lines name for the whole set (a manifest)
   LinkSettings link;
+  // Gets one line on the port's latency setting (low_latency.h) once the port is open.
+  std::function<void(const std::string&)> on_port_setup;
 };
 
 // One recording on channel 0. Checks the whole recording first (a bad row throws InputError

@@ -19,7 +19,7 @@ namespace {
 using nlohmann::json;
 
 const std::set<std::string> top_level_fields = {"generated_by", "channels"};
-const std::set<std::string> channel_fields = {"channel", "axle", "side", "file"};
+const std::set<std::string> channel_fields = {"channel", "axle", "side", "file", "calibration"};
 
 // A value as a message may echo it.
 std::string shown(const json& value) { return printable_excerpt(value.dump()); }
@@ -78,6 +78,25 @@ void file_field(const std::string& path, const json& entry, const std::string& w
   }
 }
 
+// The wheel's calibration, optional; when given it must exist (relative to the manifest's folder).
+void calibration_field(const std::string& path, const json& entry, const std::string& where,
+                       ManifestChannel& channel) {
+  if (!entry.contains("calibration")) return;
+  if (!entry["calibration"].is_string() || entry["calibration"].get<std::string>().empty()) {
+    throw InputError(fmt::format(
+        "{}: field {}.calibration: {} is not a file name; valid: the wheel's model.json, a path "
+        "relative to the manifest's folder",
+        path, where, shown(entry["calibration"])));
+  }
+  channel.calibration = entry["calibration"].get<std::string>();
+  channel.calibration_path = std::filesystem::path(path).parent_path() / channel.calibration;
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(channel.calibration_path, error)) {
+    throw InputError(fmt::format("{}: field {}.calibration: {} does not exist", path, where,
+                                 printable_excerpt(channel.calibration_path.string(), 200)));
+  }
+}
+
 ManifestChannel channel_entry(const std::string& path, const json& entry, std::size_t index) {
   const std::string where = fmt::format("channels[{}]", index);
   if (!entry.is_object()) {
@@ -92,6 +111,7 @@ ManifestChannel channel_entry(const std::string& path, const json& entry, std::s
   channel.axle = whole_field(path, entry, where, "axle", 1, kManifestAxles);
   channel.side = side_field(path, entry, where);
   file_field(path, entry, where, channel);
+  calibration_field(path, entry, where, channel);
   return channel;
 }
 
@@ -187,6 +207,7 @@ void write_locomotive_manifest(const std::filesystem::path& path,
                                  {"axle", c.axle},
                                  {"side", manifest_side_name(c.side)},
                                  {"file", c.file}};
+    if (!c.calibration.empty()) entry["calibration"] = c.calibration;
     text += "    " + entry.dump() + (k + 1 < channels.size() ? ",\n" : "\n");
   }
   text += "  ]\n}\n";

@@ -4,7 +4,10 @@
 // says which wheel each channel measures and where its file is (docs/locomotive.md):
 //
 //   {"generated_by": "...",
-//    "channels": [{"channel": 0, "axle": 1, "side": "left", "file": "channel_00.csv"}, ...]}
+//    "channels": [{"channel": 0, "axle": 1, "side": "left", "file": "channel_00.csv",
+//                  "calibration": "cal/wheel_1l.json"}, ...]}
+//
+// "calibration" is optional: the wheel's own sensor calibration.
 #pragma once
 
 #include <filesystem>
@@ -24,6 +27,10 @@ struct ManifestChannel {
   ManifestSide side = ManifestSide::kLeft;
   std::string file;            // as written: relative to the manifest's folder
   std::filesystem::path path;  // the file as found: the manifest's folder / file
+  // This wheel's sensor calibration (model.json from flange calibrate), optional: as written
+  // (relative to the manifest's folder) and as found; empty: the command's --calibration.
+  std::string calibration;
+  std::filesystem::path calibration_path;
 };
 
 struct LocomotiveManifest {
@@ -43,7 +50,7 @@ std::string channel_file_name(int channel);
 // Reads and checks a manifest. Throws InputError with one line naming the file, the field
 // (e.g. channels[3].axle) and its valid range: file missing or unreadable, not valid JSON, no
 // channels array, a channel out of 0..11 or listed twice, an axle out of 1..6, a side other than
-// left/right, a wheel or file listed twice, a channel's file missing. Keys it does not know are
+// left/right, a wheel or file listed twice, a channel's file or calibration missing. Keys it does not know are
 // ignored with a note (input_notes.h).
 LocomotiveManifest load_locomotive_manifest(const std::string& path);
 

@@ -73,6 +73,10 @@ LocomotiveRun run_locomotive(const LocomotiveManifest& manifest, const RunOption
     channel_run.channel = channel;
     channel_run.options = shared;
     channel_run.options.input = channel.path.string();
+    // The wheel's own calibration when the manifest names one, else the command's.
+    if (!channel.calibration.empty()) {
+      channel_run.options.calibration = channel.calibration_path.string();
+    }
     // A set with a channel per sensor filters each on its own channel; a one-channel set is the
     // same filter for every sensor.
     channel_run.options.channel = core_channels > 1 ? channel.channel : 0;

@@ -27,7 +27,8 @@ struct LocomotiveRun {
 };
 
 // Runs every channel of `manifest` with the options of `shared` (calibration, coeffs, engine,
-// thresholds, lenient; its input, out_csv and report_dir are not used). With `out_dir`, each
+// thresholds, lenient; its input, out_csv and report_dir are not used); a channel whose manifest
+// entry names a calibration uses that one instead of shared.calibration. With `out_dir`, each
 // channel's output CSV goes to out_dir/channel_XX.csv (the folder is created). Throws InputError
 // (exit status 2) for bad input, naming the channel's file, and when an output would overwrite a
 // channel's input; std::runtime_error when a file cannot be written. `keep_trace`: fill each

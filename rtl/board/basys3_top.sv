@@ -3,21 +3,26 @@
 // the filtered clearance on the 7-segment display, flags on the LEDs (docs/board.md).
 //
 // Link (docs/board.md): host -> board SYNC 0xA5, SEQ, CHANNEL, SAMPLE_HI, SAMPLE_LO, CRC-8;
-// board -> host SYNC 0xA5, SEQ (echo), CHANNEL (echo), OUT_HI, OUT_LO, STATUS, CRC-8. The board
-// handles one frame at a time: it is busy from an accepted frame until the last stop bit of its
-// reply. A frame accepted while busy is dropped like the core drops an EN while busy (docs/core.md):
-// it never enters the filter, gets no reply, and the next reply on its channel has the overrun bit.
-// A frame that repeats the last accepted SEQ and CHANNEL is a retransmission: its stored reply is
-// sent again and the filter does not run. A frame whose CHANNEL the core does not have is answered
-// with OUT = 0 and the channel-error bit and never enters the filter. OVERRUN and SATURATION in a
-// reply are those of its channel. A command frame (CMD_SYNC 0x5A) with command 0x0001 restarts
-// the session: the core is reset (every channel's history and flags), the last SEQ forgotten, and
-// the reply has STATUS bit 5 (session reset) and OUT = the number of channels.
+// board -> host SYNC 0xA5, SEQ (echo), CHANNEL (echo), OUT_HI, OUT_LO, STATUS, CRC-8. Accepted
+// frames wait in a queue of QueueDepth and are answered one after another, so a host may keep
+// that many requests in flight; a frame that finds the queue full is dropped like the core drops
+// an EN while busy (docs/core.md): it never enters the filter, gets no reply, and the next reply
+// on its channel has the overrun bit. Every sample reply is kept under its SEQ: a frame that
+// repeats an answered one (the last SEQ and CHANNEL; in a windowed session any of the last
+// QueueDepth) is a retransmission, answered with the stored reply without filtering again. A
+// windowed session takes new frames only in SEQ order (a frame after a lost one is dropped
+// unanswered until the lost one comes again). A frame whose CHANNEL the core does not have is
+// answered with OUT = 0 and the channel-error bit and never enters the filter. OVERRUN and
+// SATURATION in a reply are those of its channel. A command frame (CMD_SYNC 0x5A) with command
+// 0x0001 (0x0002: windowed) restarts the session: the core is reset (every channel's history and
+// flags), the stored replies forgotten, and the reply has STATUS bit 5 (session reset) and OUT =
+// the number of channels.
 //
 // Controls: btnC resets everything; sw[0] = 1 bypasses the filter (the reply is the input sample,
 // the filter history is left alone); sw[1] = 1 shows the link-error count (hex) instead of the
-// clearance. LEDs: led[0] heartbeat, led[1] overrun, led[2] saturation, led[3] link error, led[4]
-// bypass, led[5] channel error (led[1-3] and led[5] sticky since reset).
+// clearance; sw[15:12] choose the channel the display shows. LEDs: led[0] heartbeat, led[1]
+// overrun, led[2] saturation, led[3] link error, led[4] bypass, led[5] channel error (led[1-3]
+// and led[5] sticky since reset).
 `default_nettype none
 
 module basys3_top #(
@@ -57,7 +62,12 @@ module basys3_top #(
   localparam int StRetransmit = 4;
   localparam int StSessionReset = 5;
   localparam int StChannelError = 6;
-  localparam logic [15:0] CMD_RESET = 16'h0001;
+  localparam int StWindowed     = 7;
+  localparam logic [15:0] CMD_RESET          = 16'h0001;
+  localparam logic [15:0] CMD_RESET_WINDOWED = 16'h0002;
+  // Frames in flight: the queue's depth, the reply store's and a windowed host's largest window.
+  localparam int QueueDepth    = 32;
+  localparam int QueueAddrBits = $clog2(QueueDepth);
 
   // Reset: a power-on count (registers start at 0 in the FPGA), then the debounced button //
   logic [3:0] por_q, por_d;
@@ -75,14 +85,16 @@ module basys3_top #(
   assign rst_n = &por_q && !btn;
 
   // Switches: synchronised (they are asynchronous and slow; no debouncing needed).
-  logic [1:0] sw_meta_q, sw_q;
+  logic [5:0] sw_meta_q, sw_q;
   always_ff @(posedge clk_i) begin
-    sw_meta_q <= sw_i[1:0];
+    sw_meta_q <= {sw_i[15:12], sw_i[1:0]};
     sw_q      <= sw_meta_q;
   end
-  logic bypass, show_errors;
-  assign bypass      = sw_q[0];
-  assign show_errors = sw_q[1];
+  logic       bypass, show_errors;
+  logic [3:0] display_chan;
+  assign bypass       = sw_q[0];
+  assign show_errors  = sw_q[1];
+  assign display_chan = sw_q[5:2];
 
   // UART and framing //
   logic [7:0]  rx_byte;
@@ -122,24 +134,17 @@ module basys3_top #(
   logic [NumChannels-1:0]  core_overrun, core_saturation;
   logic                    core_strobe, core_clear, core_reset;
   logic                    core_rst_n_q;
-  logic                    frame_channel_ok;  // the frame's CHANNEL is one of the core's
+  logic [ChannelWidth-1:0] core_channel_in;
+  logic signed [15:0]      core_sample_in;
 
   // The core's reset from a flip-flop: a reset decoded from a frame straight into the core's
   // synchronous resets costs about 250 LUTs (Yosys cannot use the plain FDRE reset pin then).
   always_ff @(posedge clk_i) core_rst_n_q <= rst_n && !core_reset;
 
-  // All eight bits count: channel 16 must not reach channel 0 through a 4-bit channel_i.
-  assign frame_channel_ok = 32'(frame_channel) < NumChannels;
-  // The core is strobed only for a channel it has: with one channel that is 0, and a constant
-  // channel_i lets synthesis drop the core's channel logic (measurement_sos: 47 LUT6 sites, 18
-  // CARRY4).
-  logic [ChannelWidth-1:0] core_channel_in;
-  assign core_channel_in = NumChannels == 1 ? '0 : frame_channel[ChannelWidth-1:0];
-
   iir_core #(.RomFile(RomFile)) u_core (
     .clk_i,
     .rst_ni         (core_rst_n_q),
-    .sample_i       (frame_sample),
+    .sample_i       (core_sample_in),
     .channel_i      (core_channel_in),
     .sample_valid_i (core_strobe),
     .sample_o       (core_out),
@@ -152,14 +157,76 @@ module basys3_top #(
     .flag_clear_i   (core_clear)
   );
 
-  // Control: one frame at a time //
+  // The channel a CHANNEL byte names, one-hot (none for a channel the core lacks).
+  function automatic logic [NumChannels-1:0] channel_bit(logic [7:0] chan);
+    channel_bit = '0;
+    for (int c = 0; c < NumChannels; c++) channel_bit[c] = (32'(chan) == c);
+  endfunction
+
+  // The frame queue //
+  // Accepted frames wait here in arrival order while the board answers earlier ones (a reply,
+  // seven bytes, is longer than a request): a host may keep up to QueueDepth requests in flight.
+  // A sample frame that finds the queue full is dropped; the next frame of its channel to enter
+  // the queue carries the mark, so that its reply has OVERRUN (a retransmission passes the mark
+  // on to the channel's next new reply).
+  typedef struct packed {
+    logic        command;
+    logic        dropped_before;  // a frame of this channel was dropped since the previous one
+    logic [7:0]  seq;
+    logic [7:0]  channel;
+    logic [15:0] sample;
+  } frame_t;
+
+  // Plain words: Yosys 0.23 does not take an unpacked array of a struct type as a memory.
+  localparam int FrameBits = 2 + 8 + 8 + 16;  // frame_t's width
+  logic [FrameBits-1:0]   queue_mem [QueueDepth];
+  logic [QueueAddrBits:0] q_wr_q, q_wr_d, q_rd_q, q_rd_d;  // one extra bit tells full from empty
+  logic                   q_empty, q_full, q_push, q_pop;
+  frame_t                 head;
+  logic [NumChannels-1:0] push_bit;                   // the channel of a sample frame pushed
+  logic [NumChannels-1:0] drop_pend_q, drop_pend_d;  // a dropped frame's mark, waiting for a push
+
+  assign q_empty = q_wr_q == q_rd_q;
+  assign q_full  = q_wr_q == {~q_rd_q[QueueAddrBits], q_rd_q[QueueAddrBits-1:0]};
+  assign q_push  = frame_valid && !q_full;
+  assign push_bit = frame_command ? '0 : channel_bit(frame_channel);
+  assign q_wr_d  = q_wr_q + {QueueAddrBits'(0), q_push};
+  assign q_rd_d  = q_rd_q + {QueueAddrBits'(0), q_pop};
+  assign head    = queue_mem[q_rd_q[QueueAddrBits-1:0]];
+
+  always_ff @(posedge clk_i) begin
+    if (q_push) queue_mem[q_wr_q[QueueAddrBits-1:0]] <= {frame_command, |(drop_pend_q & push_bit),
+                                                         frame_seq, frame_channel, frame_sample};
+  end
+
+  // The reply store //
+  // Every sample reply is kept under its SEQ's low bits, so that a retransmission of any of the
+  // last QueueDepth frames is answered with the reply it had (docs/board.md, "Windowed session").
+  typedef struct packed {
+    logic [7:0]  channel;
+    logic [15:0] out;
+    logic [7:0]  status;
+  } stored_t;
+
+  localparam int StoredBits = 8 + 16 + 8;  // stored_t's width
+  logic [StoredBits-1:0]  store_mem [QueueDepth];
+  logic [QueueDepth-1:0]  stored_q, stored_d;  // the entry holds a reply of this session
+  logic                   store_we;
+  stored_t                stored;              // the entry of the head frame's SEQ
+
+  assign stored = store_mem[head.seq[QueueAddrBits-1:0]];
+
+  // Control: the frames of the queue one after another //
   typedef enum logic [1:0] {StIdle, StCore, StReply, StWait} state_e;
 
   state_e      state_q, state_d;
-  logic [7:0]  seq_q, seq_d;            // the SEQ being answered (and the last accepted one)
+  logic [7:0]  seq_q, seq_d;            // the SEQ being answered (and the last answered one)
   logic [7:0]  chan_q, chan_d;          // its CHANNEL
   logic        have_seq_q, have_seq_d;
-  logic [15:0] out_q, out_d;            // the last filtered or bypassed sample: OUT, display
+  logic        window_q, window_d;      // windowed session: SEQs in order (docs/board.md)
+  logic [7:0]  expect_q, expect_d;      // windowed: the SEQ of the next new frame
+  logic [15:0] out_q, out_d;            // the filtered or bypassed sample being answered
+  logic [15:0] retx_out_q, retx_out_d;  // OUT of a retransmitted reply
   logic [7:0]  status_q, status_d;
   logic [7:0]  reply_status;            // STATUS of a new reply
   logic [15:0] reply_out;               // OUT of the reply
@@ -171,25 +238,53 @@ module basys3_top #(
   logic        send, send_q, retransmit_q, retransmit_d;
   logic        session_reset_q, session_reset_d;  // the reply being formed answers a reset
   logic        enc_busy;
+  logic        head_channel_ok;         // the head frame's CHANNEL is one of the core's
+  logic [7:0]  head_age;                // windowed: how many SEQs ago the head frame was new
+  logic        head_repeat;             // the head frame is a retransmission
+  logic        cur_dropped_q, cur_dropped_d;  // the frame being answered carries a drop mark
+  logic        session_start;           // a session-reset command leaves the queue
+
+  // All eight bits count: channel 16 must not reach channel 0 through a 4-bit channel_i.
+  assign head_channel_ok = 32'(head.channel) < NumChannels;
+  // A retransmission repeats an answered frame: in a windowed session one of the last QueueDepth
+  // SEQs with the CHANNEL it had, otherwise the last answered SEQ and CHANNEL.
+  assign head_age    = expect_q - head.seq;
+  assign head_repeat = window_q
+      ? head_age != 8'd0 && 32'(head_age) <= QueueDepth &&
+        stored_q[head.seq[QueueAddrBits-1:0]] && stored.channel == head.channel
+      : have_seq_q && head.seq == seq_q && head.channel == chan_q;
+
+  // The core is strobed only for a channel it has: with one channel that is 0, and a constant
+  // channel_i lets synthesis drop the core's channel logic (measurement_sos: 47 LUT6 sites, 18
+  // CARRY4).
+  assign core_channel_in = NumChannels == 1 ? '0 : head.channel[ChannelWidth-1:0];
+  assign core_sample_in  = head.sample;
+
+  // The display's values: each channel's latest filtered or bypassed sample //
+  logic [NumChannels*16-1:0] shown_q, shown_d;
+
+  function automatic logic [NumChannels*16-1:0] show_on(logic [NumChannels*16-1:0] shown,
+                                                         logic [7:0] chan, logic [15:0] word);
+    show_on = shown;
+    for (int c = 0; c < NumChannels; c++) if (32'(chan) == c) show_on[16*c +: 16] = word;
+  endfunction
 
   // Per-channel flags //
   // The core's sticky flags move into the board's pending bits as soon as they rise (and are
   // cleared in the core), so that a reply can clear its own channel's bits and keep the others.
-  // A sample frame dropped because the board is busy marks the channel its CHANNEL byte names (a
+  // A sample frame dropped because the queue is full marks the channel its CHANNEL byte names (a
   // dropped command marks none: its CHANNEL is only echoed).
-  function automatic logic [NumChannels-1:0] channel_bit(logic [7:0] chan);
-    channel_bit = '0;
-    for (int c = 0; c < NumChannels; c++) channel_bit[c] = (32'(chan) == c);
-  endfunction
 
   logic                   overrun_event, link_err_event;
   logic [NumChannels-1:0] ovr_now, sat_now, reply_bit;
   logic [NumChannels-1:0] pend_ovr_q, pend_ovr_d, pend_sat_q, pend_sat_d;
 
-  assign overrun_event  = frame_valid && state_q != StIdle;
+  assign overrun_event  = frame_valid && q_full;
   assign link_err_event = frame_discard || rx_frame_err;
-  assign ovr_now        = pend_ovr_q | core_overrun |
-                          (overrun_event && !frame_command ? channel_bit(frame_channel) : '0);
+  assign drop_pend_d    = session_start ? '0 :
+                          overrun_event ? drop_pend_q | push_bit :
+                          q_push        ? drop_pend_q & ~push_bit : drop_pend_q;
+  assign ovr_now        = pend_ovr_q | core_overrun;
   assign sat_now        = pend_sat_q | core_saturation;
   assign reply_bit      = channel_bit(chan_q);
   assign core_clear     = |{core_overrun, core_saturation};
@@ -198,68 +293,103 @@ module basys3_top #(
   // them all), the link errors since the previous reply, and what this reply is.
   always_comb begin
     reply_status                 = '0;
-    reply_status[StOverrun]      = session_reset_q ? |ovr_now : |(ovr_now & reply_bit);
+    reply_status[StOverrun]      = session_reset_q ? |{ovr_now, drop_pend_q}
+                                                   : |(ovr_now & reply_bit) || cur_dropped_q;
     reply_status[StSaturation]   = session_reset_q ? |sat_now : |(sat_now & reply_bit);
     reply_status[StLinkError]    = link_err_q || link_err_event;
     reply_status[StBypass]       = bypass_q;
     reply_status[StSessionReset] = session_reset_q;
     reply_status[StChannelError] = chan_err_q;
+    reply_status[StWindowed]     = window_q;
   end
-  assign reply_out = session_reset_q ? 16'(NumChannels) : chan_err_q ? '0 : out_q;
+  assign reply_out = retransmit_q ? retx_out_q :
+                     session_reset_q ? 16'(NumChannels) : chan_err_q ? '0 : out_q;
+  assign store_we  = state_q == StReply && !retransmit_q && !session_reset_q;
+  always_ff @(posedge clk_i) begin
+    if (store_we) store_mem[seq_q[QueueAddrBits-1:0]] <= {chan_q, reply_out, reply_status};
+  end
   // The LEDs light at the event: a channel that is never answered again still shows its overrun.
   assign sticky_d    = sticky_q | {state_q == StReply && chan_err_q, link_err_event,
                                    |core_saturation, overrun_event || |core_overrun};
   assign err_count_d = err_count_q + {15'd0, link_err_event && err_count_q != 16'hffff};
 
+  // Takes the head frame off the queue: a command, a retransmission, a new sample or (windowed,
+  // SEQ out of order: an earlier frame was lost) nothing.
   always_comb begin
     state_d         = state_q;
     seq_d           = seq_q;
     chan_d          = chan_q;
     have_seq_d      = have_seq_q;
+    window_d        = window_q;
+    expect_d        = expect_q;
     out_d           = out_q;
+    retx_out_d      = retx_out_q;
     status_d        = status_q;
     bypass_d        = bypass_q;
     chan_err_d      = chan_err_q;
     retransmit_d    = retransmit_q;
     session_reset_d = session_reset_q;
+    stored_d        = stored_q | (store_we ? QueueDepth'(1) << seq_q[QueueAddrBits-1:0] : '0);
     pend_ovr_d      = ovr_now;
+    cur_dropped_d   = cur_dropped_q;
+    session_start   = 1'b0;
     pend_sat_d      = sat_now;
     link_err_d      = link_err_q || link_err_event;
+    shown_d         = shown_q;
+    q_pop           = 1'b0;
     core_strobe     = 1'b0;
     core_reset      = 1'b0;
     send            = 1'b0;
     unique case (state_q)
       StIdle: begin
-        if (frame_valid && frame_command) begin
-          // Unknown commands are ignored (no reply): only a reset is defined.
-          if (frame_sample == CMD_RESET) begin
-            core_reset      = 1'b1;  // the core is idle with zero history from the next cycle
-            seq_d           = frame_seq;
-            chan_d          = frame_channel;
-            have_seq_d      = 1'b0;  // the next sample frame is new whatever its SEQ
-            out_d           = '0;
-            bypass_d        = 1'b0;
-            chan_err_d      = 1'b0;
-            retransmit_d    = 1'b0;
-            session_reset_d = 1'b1;
+        if (!q_empty) begin
+          q_pop = 1'b1;
+          // Only a new sample's reply reports the mark; otherwise it waits for the next one.
+          if (head.dropped_before) pend_ovr_d = ovr_now | channel_bit(head.channel);
+          if (head.command) begin
+            // Unknown commands are ignored (no reply): only the two resets are defined.
+            if (head.sample == CMD_RESET || head.sample == CMD_RESET_WINDOWED) begin
+              core_reset      = 1'b1;  // the core is idle with zero history from the next cycle
+              session_start   = 1'b1;
+              seq_d           = head.seq;
+              chan_d          = head.channel;
+              have_seq_d      = 1'b0;  // the next sample frame is new whatever its SEQ
+              window_d        = head.sample == CMD_RESET_WINDOWED;
+              expect_d        = head.seq + 8'd1;
+              stored_d        = '0;
+              shown_d         = '0;
+              out_d           = '0;
+              bypass_d        = 1'b0;
+              chan_err_d      = 1'b0;
+              retransmit_d    = 1'b0;
+              session_reset_d = 1'b1;
+              state_d         = StReply;
+            end
+          end else if (head_repeat) begin
+            // The reply of this frame went missing: send it again, do not filter again.
+            seq_d           = head.seq;
+            chan_d          = head.channel;
+            retx_out_d      = stored.out;
+            status_d        = stored.status | 8'(1 << StRetransmit);
+            retransmit_d    = 1'b1;
+            session_reset_d = 1'b0;
             state_d         = StReply;
-          end
-        end else if (frame_valid) begin
-          session_reset_d = 1'b0;
-          if (have_seq_q && frame_seq == seq_q && frame_channel == chan_q) begin
-            retransmit_d = 1'b1;  // the reply of this frame went missing: send it again
-            state_d      = StReply;
-          end else begin
-            seq_d        = frame_seq;
-            chan_d       = frame_channel;
-            have_seq_d   = 1'b1;
-            bypass_d     = frame_channel_ok && bypass;
-            chan_err_d   = !frame_channel_ok;
-            retransmit_d = 1'b0;
-            if (!frame_channel_ok) begin
+          end else if (!window_q || head.seq == expect_q) begin
+            seq_d           = head.seq;
+            chan_d          = head.channel;
+            have_seq_d      = 1'b1;
+            pend_ovr_d      = ovr_now;
+            cur_dropped_d   = head.dropped_before;
+            expect_d        = head.seq + 8'd1;
+            bypass_d        = head_channel_ok && bypass;
+            chan_err_d      = !head_channel_ok;
+            retransmit_d    = 1'b0;
+            session_reset_d = 1'b0;
+            if (!head_channel_ok) begin
               state_d = StReply;  // answered with the channel-error bit, never filtered
             end else if (bypass) begin
-              out_d   = frame_sample;
+              out_d   = head.sample;
+              shown_d = show_on(shown_q, head.channel, head.sample);
               state_d = StReply;
             end else begin
               core_strobe = 1'b1;
@@ -271,15 +401,14 @@ module basys3_top #(
       StCore: begin
         if (core_valid) begin
           out_d   = core_out;
+          shown_d = show_on(shown_q, chan_q, core_out);
           state_d = StReply;
         end
       end
       StReply: begin
         send    = 1'b1;
         state_d = StWait;
-        if (retransmit_q) begin
-          status_d = status_q | 8'(1 << StRetransmit);  // pending flags wait for a new reply
-        end else begin
+        if (!retransmit_q) begin  // a retransmission leaves the pending flags for a new reply
           status_d   = reply_status;
           link_err_d = 1'b0;
           pend_ovr_d = session_reset_q ? '0 : ovr_now & ~reply_bit;
@@ -296,34 +425,52 @@ module basys3_top #(
   always_ff @(posedge clk_i) begin
     if (!rst_n) begin
       state_q         <= StIdle;
+      q_wr_q          <= '0;
+      q_rd_q          <= '0;
       seq_q           <= '0;
       chan_q          <= '0;
       have_seq_q      <= 1'b0;
+      window_q        <= 1'b0;
+      expect_q        <= '0;
       out_q           <= '0;
+      retx_out_q      <= '0;
       status_q        <= '0;
       bypass_q        <= 1'b0;
       chan_err_q      <= 1'b0;
       retransmit_q    <= 1'b0;
       session_reset_q <= 1'b0;
+      stored_q        <= '0;
+      shown_q         <= '0;
       pend_ovr_q      <= '0;
       pend_sat_q      <= '0;
       link_err_q      <= 1'b0;
+      drop_pend_q     <= '0;
+      cur_dropped_q   <= 1'b0;
       sticky_q        <= '0;
       err_count_q     <= '0;
     end else begin
       state_q         <= state_d;
+      q_wr_q          <= q_wr_d;
+      q_rd_q          <= q_rd_d;
       seq_q           <= seq_d;
       chan_q          <= chan_d;
       have_seq_q      <= have_seq_d;
+      window_q        <= window_d;
+      expect_q        <= expect_d;
       out_q           <= out_d;
+      retx_out_q      <= retx_out_d;
       status_q        <= status_d;
       bypass_q        <= bypass_d;
       chan_err_q      <= chan_err_d;
       retransmit_q    <= retransmit_d;
       session_reset_q <= session_reset_d;
+      stored_q        <= stored_d;
+      shown_q         <= shown_d;
       pend_ovr_q      <= pend_ovr_d;
       pend_sat_q      <= pend_sat_d;
       link_err_q      <= link_err_d;
+      drop_pend_q     <= drop_pend_d;
+      cur_dropped_q   <= cur_dropped_d;
       sticky_q        <= sticky_d;
       err_count_q     <= err_count_d;
     end
@@ -363,18 +510,27 @@ module basys3_top #(
   logic [19:0] clearance_digits, digits;
   logic [3:0]  clearance_dp, dp;
   logic [HeartbeatBit:0] beat_q, beat_d;
+  logic [15:0]           shown_word;  // the latest sample of the channel sw[15:12] choose
+  logic                  shown_ok;    // the core has that channel
+  localparam logic [19:0] DASHES = {4{5'd17}};
+
+  always_comb begin
+    shown_word = '0;
+    for (int c = 0; c < NumChannels; c++) if (32'(display_chan) == c) shown_word = shown_q[16*c +: 16];
+  end
+  assign shown_ok = 32'(display_chan) < NumChannels;
 
   clearance_display u_clearance (
     .clk_i,
     .rst_ni  (rst_n),
-    .word_i  (out_q),
+    .word_i  (shown_word),
     .digits_o(clearance_digits),
     .dp_o    (clearance_dp)
   );
   assign digits = show_errors ? {1'b0, err_count_q[15:12], 1'b0, err_count_q[11:8],
                                  1'b0, err_count_q[7:4], 1'b0, err_count_q[3:0]}
-                              : clearance_digits;
-  assign dp     = show_errors ? 4'b0000 : clearance_dp;
+                : shown_ok    ? clearance_digits : DASHES;
+  assign dp     = show_errors || !shown_ok ? 4'b0000 : clearance_dp;
 
   seven_seg #(.RefreshBits(RefreshBits)) u_display (
     .clk_i,
@@ -394,9 +550,9 @@ module basys3_top #(
 
   assign led_o = {10'd0, sticky_q[3], bypass, sticky_q[2:0], beat_q[HeartbeatBit]};
 
-  // sw[15:2] are unused; core_busy, core_channel and core_channel_error only feed the assertions.
+  // sw[11:2] are unused; core_busy, core_channel and core_channel_error only feed the assertions.
   logic unused_sw;
-  assign unused_sw = ^{sw_i[15:2], core_busy, core_channel, core_channel_error};
+  assign unused_sw = ^{sw_i[11:2], core_busy, core_channel, core_channel_error};
 
 `ifndef SYNTHESIS
   // The control FSM strobes the core only in StIdle, after the previous output: never while busy,

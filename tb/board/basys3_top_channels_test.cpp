@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -21,6 +22,7 @@
 
 #include "board_bench.h"
 #include "board_frame.h"
+#include "display_text.h"
 #include "filter_json.h"
 #include "iir_core.h"
 #include "link_budget.h"
@@ -275,14 +277,15 @@ int Basys3TopChannels::send_damaged(Fault fault, const std::vector<std::uint8_t>
 
 TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
   // Back-to-back requests on random channels: a reply (7 bytes) is longer than a request (6), so
-  // about every other frame arrives while the board is busy and is dropped. A reply's OVERRUN says
-  // that a frame of its own channel was dropped since that channel's previous reply.
+  // the queue of accepted frames (32) fills and then about every seventh frame is dropped. A
+  // reply's OVERRUN says that a frame of its own channel was dropped since that channel's previous
+  // reply. SEQ wraps: a reply's SEQ is its frame's index modulo 256.
   std::mt19937 rng(31);
   std::uniform_int_distribution<int> any_channel(0, kChannels - 1);
   std::vector<std::pair<int, std::int16_t>> sent;  // channel, sample; the index is the SEQ
   std::vector<std::uint8_t> burst;
   std::vector<int> n(kChannels, 0);
-  for (int k = 0; k < 96; ++k) {
+  for (int k = 0; k < 320; ++k) {
     const int c = any_channel(rng);
     sent.emplace_back(c, wheel_word(c, n[c]++, rng));
     const std::vector<std::uint8_t> f =
@@ -303,7 +306,7 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
   std::size_t next = 0;  // index into got
   for (std::size_t k = 0; k < sent.size(); ++k) {
     const auto [c, word] = sent[k];
-    if (next < got.size() && static_cast<std::size_t>(got[next].seq) == k) {
+    if (next < got.size() && got[next].seq == static_cast<std::uint8_t>(k)) {
       const model::StepResult want = model_->step(word, c);
       const auto status =
           static_cast<std::uint8_t>((want.saturated ? frame::kStatusSaturation : 0) |
@@ -323,24 +326,49 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
 }
 
 TEST_F(Basys3TopChannels, DroppedCommandMarksNoChannel) {
-  // A session reset that arrives while the board answers a sample is dropped like any frame: no
-  // reply, no reset (channel 0's filter goes on), led[1]; its CHANNEL byte (0) is only an echo,
-  // so channel 0's next reply has no OVERRUN.
+  // A burst that overflows the frame queue: samples of channel 1, and from the 200th frame on
+  // every other frame an unknown command with CHANNEL 0 (ignored when accepted). The commands
+  // that find the queue full are dropped like any frame (led[1]), but their CHANNEL byte is only
+  // an echo: channel 0's next reply has no OVERRUN, channel 1's has it.
   std::mt19937 rng(6);
   std::uint8_t seq = 0;
   for (int n = 0; n < 60; ++n) expect_filtered(seq++, 0, wheel_word(0, n, rng));
-  const std::int16_t word = wheel_word(0, 60, rng);
-  const model::StepResult want = model_->step(word, 0);
-  std::vector<std::uint8_t> two = request(seq, 0, word);
-  const auto cmd = frame::encode_command(static_cast<std::uint8_t>(seq + 1), frame::kCommandReset);
-  const std::vector<std::uint8_t> command(cmd.begin(), cmd.end());
-  two.insert(two.end(), command.begin(), command.end());
-  const std::vector<frame::Reply> got = exchange(two);
-  ASSERT_EQ(got.size(), 1u) << "the command arrives during the reply: dropped";
-  EXPECT_EQ(got[0], (frame::Reply{seq, 0, static_cast<std::int16_t>(want.sample), 0}));
+  std::vector<std::uint8_t> burst;
+  std::vector<std::int16_t> words;  // channel 1's samples by frame index (0: a command)
+  const int first = seq;
+  for (int k = 0; k < 320; ++k) {
+    std::array<std::uint8_t, frame::kRequestBytes> f{};
+    if (k >= 200 && k % 2 == 1) {
+      f = frame::encode_command(static_cast<std::uint8_t>(first + k), 0x0077, 0);
+      words.push_back(0);
+    } else {
+      words.push_back(wheel_word(1, k, rng));
+      f = frame::encode_request({static_cast<std::uint8_t>(first + k), 1, words.back()});
+    }
+    burst.insert(burst.end(), f.begin(), f.end());
+  }
+  const std::vector<frame::Reply> got = exchange(burst);
+  std::size_t samples = 0;
+  for (int k = 0; k < 320; ++k) samples += words[static_cast<std::size_t>(k)] != 0 ? 1 : 0;
+  ASSERT_LT(got.size(), samples) << "the burst was meant to overflow the queue";
+  int expected = first;
+  for (const frame::Reply& r : got) {
+    const int index = expected + ((r.seq - expected) & 0xFF);
+    ASSERT_EQ(r.channel, 1);
+    EXPECT_EQ(r.sample, model_->step(words[static_cast<std::size_t>(index - first)], 1).sample);
+    expected = index + 1;
+  }
   EXPECT_TRUE(bench_->leds() & kLedOverrun);
-  seq = static_cast<std::uint8_t>(seq + 2);
-  for (int n = 61; n < 80; ++n) expect_filtered(seq++, 0, wheel_word(0, n, rng));
+  seq = static_cast<std::uint8_t>(first + 320);
+  expect_filtered(seq++, 0, wheel_word(0, 60, rng));  // STATUS 0: no OVERRUN on channel 0
+  const std::int16_t word = wheel_word(1, 400, rng);
+  const std::vector<frame::Reply> one = exchange(request(seq, 1, word));
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].sample, model_->step(word, 1).sample);
+  bool tail_dropped = false;  // a sample of channel 1 dropped after its last answered one
+  for (int k = expected - first; k < 320; ++k)
+    tail_dropped |= words[static_cast<std::size_t>(k)] != 0;
+  EXPECT_EQ((one[0].status & frame::kStatusOverrun) != 0, tail_dropped);
 }
 
 TEST_F(Basys3TopChannels, ChannelsTheCoreLacksAreAnsweredAndNeverFiltered) {
@@ -364,6 +392,39 @@ TEST_F(Basys3TopChannels, ChannelsTheCoreLacksAreAnsweredAndNeverFiltered) {
   }
   EXPECT_TRUE(bench_->leds() & kLedChannelError);
   EXPECT_FALSE(bench_->leds() & (kLedOverrun | kLedLinkError));
+}
+
+TEST_F(Basys3TopChannels, DisplayShowsTheChannelTheSwitchesChoose) {
+  // sw[15:12] choose the channel on the display: each channel's latest output, whatever channel
+  // replied last; channels 12 to 15, which the core lacks, show dashes; a session reset puts every
+  // channel back to " 6.00".
+  std::mt19937 rng(15);
+  std::uint8_t seq = 0;
+  std::vector<std::int16_t> latest(kChannels, 0);
+  for (int n = 0; n < 70; ++n) {
+    for (int c = 0; c < kChannels; ++c) {
+      latest[c] = expect_filtered(seq++, c, wheel_word(c, n, rng)).sample;
+    }
+  }
+  // Bypass on channel 7: its input becomes its shown value; the others keep theirs.
+  bench_->set_switches(0x1);
+  bench_->run(4);
+  const auto bypassed = static_cast<std::int16_t>(12345);
+  ASSERT_EQ(exchange(request(seq++, 7, bypassed)).size(), 1u);
+  latest[7] = bypassed;
+  for (int c = 0; c < 16; ++c) {
+    bench_->set_switches(static_cast<std::uint16_t>(c << 12));
+    bench_->run(4u + (4u << kSimRefreshBits) + 40u);  // synchroniser, conversion, a full refresh
+    const std::string want = c < kChannels ? expected_display(latest[c]) : "----";
+    EXPECT_EQ(bench_->display(), want) << "sw[15:12] = " << c;
+  }
+  const auto reset = frame::encode_command(seq, frame::kCommandReset);
+  ASSERT_EQ(exchange({reset.begin(), reset.end()}).size(), 1u);
+  for (int c : {0, 7, 11}) {
+    bench_->set_switches(static_cast<std::uint16_t>(c << 12));
+    bench_->run(4u + (4u << kSimRefreshBits) + 40u);
+    EXPECT_EQ(bench_->display(), " 6.00") << "channel " << c << " after the session reset";
+  }
 }
 
 TEST_F(Basys3TopChannels, SessionResetReportsTwelveChannelsAndRestartsEveryOne) {

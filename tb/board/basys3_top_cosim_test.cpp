@@ -20,6 +20,7 @@
 
 #include "board_bench.h"
 #include "board_frame.h"
+#include "display_text.h"
 #include "filter_json.h"
 #include "iir_core.h"
 
@@ -34,26 +35,6 @@ constexpr std::uint16_t kLedSaturation = 1u << 2;
 constexpr std::uint16_t kLedLinkError = 1u << 3;
 constexpr std::uint16_t kLedBypass = 1u << 4;
 constexpr std::uint16_t kLedChannelError = 1u << 5;
-
-// What the display must show for a Q1.15 word: mm = 6 + 8 word / 2^15 to two decimals, rounded
-// half up; computed in double (every value involved is exact in binary), independently of the
-// RTL's integer formula.
-std::string expected_display(std::int16_t word) {
-  const double hundredths = std::floor(100.0 * (6.0 + 8.0 * word / 32768.0) + 0.5);
-  const long h = static_cast<long>(hundredths);
-  const long mag = std::labs(h);
-  std::string text;
-  if (h < 0) {
-    text = "-";
-  } else if (mag >= 1000) {
-    text = std::to_string(mag / 1000);
-  } else {
-    text = " ";
-  }
-  text += std::to_string((mag / 100) % 10) + "." + std::to_string((mag / 10) % 10) +
-          std::to_string(mag % 10);
-  return text;
-}
 
 class Basys3Top : public ::testing::Test {
  protected:
@@ -246,13 +227,14 @@ TEST_F(Basys3Top, GarbageBetweenFramesIncludingSyncBytes) {
 }
 
 TEST_F(Basys3Top, BurstFasterThanTheBoardIsDroppedAndReported) {
-  // Back-to-back frames: a reply (7 bytes) takes longer than a request (6 bytes), so frames
-  // arrive while the board is still answering the previous one; those are dropped, as the core
-  // drops an EN while busy, and the next reply carries the overrun bit.
+  // Back-to-back frames: a reply (7 bytes) takes longer than a request (6 bytes), so the queue of
+  // accepted frames (32) fills after about 7 x 32 of them; a frame that finds it full is dropped,
+  // as the core drops an EN while busy, and the next reply carries the overrun bit. SEQ wraps.
+  constexpr int kBurst = 260;
   std::vector<std::uint8_t> burst;
   std::vector<std::int16_t> samples;
-  for (int n = 0; n < 24; ++n) {
-    samples.push_back(clearance_word(7.0 + 0.1 * n));
+  for (int n = 0; n < kBurst; ++n) {
+    samples.push_back(clearance_word(7.0 + 0.01 * (n % 200)));
     const auto f = request(static_cast<std::uint8_t>(n), samples.back());
     burst.insert(burst.end(), f.begin(), f.end());
   }
@@ -260,24 +242,25 @@ TEST_F(Basys3Top, BurstFasterThanTheBoardIsDroppedAndReported) {
   bench_->drain();
   std::vector<frame::Reply> got = replies();
   // One more frame after the burst: reports any drop at the end of the burst.
-  bench_->send(request(24, clearance_word(7.0)));
+  bench_->send(request(static_cast<std::uint8_t>(kBurst), clearance_word(7.0)));
   samples.push_back(clearance_word(7.0));
   bench_->drain();
   for (const frame::Reply& r : replies()) got.push_back(r);
 
-  ASSERT_FALSE(got.empty());
+  ASSERT_GT(got.size(), 200u) << "the queue takes most of the burst";
   EXPECT_LT(got.size(), samples.size()) << "the burst was expected to overrun the board";
-  int expected_seq = 0;
+  int expected = 0;  // the index of the next frame; a reply's SEQ is its index modulo 256
   for (const frame::Reply& r : got) {
-    ASSERT_GE(r.seq, expected_seq) << "replies out of order";
-    const bool gap = r.seq != expected_seq;
+    const int index = expected + ((r.seq - expected) & 0xFF);
+    ASSERT_LT(index, static_cast<int>(samples.size())) << "replies out of order";
+    const bool gap = index != expected;
     EXPECT_EQ((r.status & frame::kStatusOverrun) != 0, gap)
-        << "seq " << int{r.seq} << ": a dropped frame must be reported, and only then";
-    const model::StepResult want = model_->step(samples[r.seq]);
-    EXPECT_EQ(r.sample, want.sample) << "seq " << int{r.seq};
-    expected_seq = r.seq + 1;
+        << "frame " << index << ": a dropped frame must be reported, and only then";
+    const model::StepResult want = model_->step(samples[static_cast<std::size_t>(index)]);
+    EXPECT_EQ(r.sample, want.sample) << "frame " << index;
+    expected = index + 1;
   }
-  EXPECT_EQ(got.back().seq, 24);
+  EXPECT_EQ(expected, kBurst + 1);
   EXPECT_TRUE(bench_->leds() & kLedOverrun);
   EXPECT_FALSE(bench_->leds() & kLedLinkError);
 }
@@ -373,25 +356,36 @@ TEST_F(Basys3Top, CentreButtonResetsFilterFlagsAndDisplay) {
 }
 
 TEST_F(Basys3Top, CentreButtonClearsTheOverrunAndSaturationLeds) {
-  // Both sticky LEDs lit (a clipping full-scale edge, then a frame that arrives while the board
-  // is still answering), the STATUS bits back to 0 in the reply after the one that reported them,
-  // and btnC puts both LEDs out.
+  // Both sticky LEDs lit (a clipping full-scale edge, then a burst that overflows the frame
+  // queue), OVERRUN in the replies after the gaps only, STATUS back to 0 in the reply after the
+  // burst's, and btnC puts both LEDs out.
   bool saturated = false;
   for (int n = 0; n < 40; ++n) {
     const std::int16_t sample = n < 20 ? std::int16_t{-32768} : std::int16_t{32767};
     saturated = expect_filtered(static_cast<std::uint8_t>(n), sample) || saturated;
   }
   ASSERT_TRUE(saturated) << "the full-scale edge was meant to clip";
-  std::vector<std::uint8_t> two = request(40, clearance_word(8.0));
-  const std::vector<std::uint8_t> second = request(41, clearance_word(8.0));
-  two.insert(two.end(), second.begin(), second.end());
-  const model::StepResult want = model_->step(clearance_word(8.0));
-  const std::vector<frame::Reply> got = exchange(two);
-  ASSERT_EQ(got.size(), 1u) << "the second frame arrives during the first reply: dropped";
-  EXPECT_EQ(got[0].seq, 40);
-  EXPECT_EQ(got[0].sample, want.sample);
-  expect_filtered(42, clearance_word(8.0), frame::kStatusOverrun);
-  expect_filtered(43, clearance_word(8.0));  // reported once: STATUS is 0 again
+  constexpr int kBurst = 250;  // SEQ 40 to 289, modulo 256
+  std::vector<std::uint8_t> burst;
+  for (int k = 40; k < 40 + kBurst; ++k) {
+    const std::vector<std::uint8_t> f = request(static_cast<std::uint8_t>(k), clearance_word(8.0));
+    burst.insert(burst.end(), f.begin(), f.end());
+  }
+  const std::vector<frame::Reply> got = exchange(burst);
+  ASSERT_LT(got.size(), static_cast<std::size_t>(kBurst)) << "the burst was meant to overflow";
+  int expected = 40;
+  for (const frame::Reply& r : got) {
+    const int index = expected + ((r.seq - expected) & 0xFF);
+    EXPECT_EQ((r.status & frame::kStatusOverrun) != 0, index != expected) << "frame " << index;
+    EXPECT_EQ(r.sample, model_->step(clearance_word(8.0)).sample) << "frame " << index;
+    expected = index + 1;
+  }
+  // Every reply so far reported its own gap; the next ones have STATUS 0 (or OVERRUN once, if
+  // the burst's last frames were dropped).
+  const std::uint8_t next = static_cast<std::uint8_t>(40 + kBurst);
+  const bool tail_dropped = expected != 40 + kBurst;
+  expect_filtered(next, clearance_word(8.0), tail_dropped ? frame::kStatusOverrun : 0);
+  expect_filtered(static_cast<std::uint8_t>(next + 1), clearance_word(8.0));
   EXPECT_EQ(bench_->leds() & (kLedOverrun | kLedSaturation), kLedOverrun | kLedSaturation);
   bench_->press_reset();
   EXPECT_EQ(bench_->leds() & (kLedOverrun | kLedSaturation | kLedLinkError), 0);
@@ -477,9 +471,10 @@ TEST_F(Basys3Top, StartBitGlitchIsIgnored) {
 }
 
 TEST_F(Basys3Top, UnusedSwitchesChangeNothing) {
-  // sw[15:2] are not connected (sw[1] shows the error count, sw[0] bypasses): all of them up or
-  // down, the replies stay bit-exact, the display shows the clearance, the LEDs stay dark.
-  constexpr std::uint16_t kSwitches[] = {0xFFFC, 0x0000, 0xAAA8, 0x5554, 0x0000};
+  // sw[11:2] are not connected (sw[1] shows the error count, sw[0] bypasses, sw[15:12] choose the
+  // displayed channel): all of them up or down, the replies stay bit-exact, the display shows the
+  // clearance, the LEDs stay dark.
+  constexpr std::uint16_t kSwitches[] = {0x0FFC, 0x0000, 0x0AA8, 0x0554, 0x0000};
   std::uint8_t seq = 0;
   for (const std::uint16_t sw : kSwitches) {
     bench_->set_switches(sw);

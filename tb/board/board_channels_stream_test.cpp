@@ -5,7 +5,7 @@
 // against model::IirCore here; a noisy cable; recordings on chosen channels with their output CSVs;
 // channels the board or the coefficient set lacks refused with one line. (A pty has no baud rate:
 // the host sets 921600 as for a real board, the simulated board runs at its ClksPerBit.)
-// Reproduce: build/tb/basys3_top_channels_test --gtest_filter='BoardChannelsStream.<Name>'
+// Reproduce: build/tb/board_channels_stream_test --gtest_filter='BoardChannelsStream.<Name>'
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>

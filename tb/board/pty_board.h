@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The Verilated board top behind a pseudo-terminal: the host code opens the pty's slave exactly as
 // it opens /dev/ttyUSB1, and a thread moves the bytes between the pty's master and the board's
-// RX/TX pins (bit by bit in the simulation). Header only: each test binary links its own board
+// RX/TX pins (bit by bit in the simulation), at once or through an FTDI chip's timing
+// (ftdi_link.h). Header only: each test binary links its own board
 // build (board_bench.h).
 #pragma once
 
@@ -11,15 +12,20 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "basys3_top_model.h"
 #include "board_bench.h"
+#include "filter_json.h"
+#include "ftdi_link.h"
 
 namespace flange::tb::board {
 
@@ -54,13 +60,35 @@ class Pty {
   std::string slave_name_;
 };
 
-// The board behind the pty, in a thread. `mangle` may alter host -> board bytes (the n-th byte
-// overall) to model a noisy cable: return false to drop the byte.
+// What sits between the pty and the board: a noisy cable, an FTDI chip's timing, a reset.
+struct PtyBoardOptions {
+  using Mangle = std::function<bool(std::uint64_t index, std::uint8_t& byte)>;
+  // Alters host -> board bytes (the n-th byte overall) to model a noisy cable: return false to
+  // drop the byte.
+  Mangle mangle;
+  // The same for board -> host bytes (the n-th byte the board sent).
+  Mangle mangle_reply;
+  // With settings, the bytes go through an FTDI chip's timing (ftdi_link.h); without, at once.
+  std::optional<FtdiSettings> ftdi;
+  // btnC is pressed just before the host -> board byte with this index reaches the board.
+  std::optional<std::uint64_t> reset_before_byte;
+  // The protocol model (basys3_top_model.h) instead of the Verilated top: as fast as the link
+  // it is given, where the Verilated top is slower than a real 921600-baud wire.
+  bool protocol_model = false;
+};
+
+// The board behind the pty, in a thread.
 class PtyBoard {
  public:
-  using Mangle = std::function<bool(std::uint64_t index, std::uint8_t& byte)>;
+  using Mangle = PtyBoardOptions::Mangle;
+  using Clock = FtdiLink::Clock;
   explicit PtyBoard(const Pty& pty, Mangle mangle = {})
-      : pty_(pty), mangle_(std::move(mangle)), thread_([this] { loop(); }) {}
+      : PtyBoard(pty.master(), PtyBoardOptions{std::move(mangle), {}, {}, {}, false}) {}
+  PtyBoard(const Pty& pty, PtyBoardOptions options) : PtyBoard(pty.master(), std::move(options)) {}
+  // `fd`: the board's end of the connection, non-blocking (a pty's master, a socket pair's end:
+  // socket_stream.h).
+  PtyBoard(int fd, PtyBoardOptions options)
+      : fd_(fd), options_(std::move(options)), thread_([this] { loop(); }) {}
   ~PtyBoard() {
     stop_ = true;
     thread_.join();
@@ -68,46 +96,144 @@ class PtyBoard {
   PtyBoard(const PtyBoard&) = delete;
   PtyBoard& operator=(const PtyBoard&) = delete;
   bool assertion_failed() const { return assertion_failed_; }
+  bool was_reset() const { return was_reset_; }
 
  private:
+  // The board runs while it has bytes to take or has sent one within this many bit times (its
+  // queue of frames keeps it answering long after the last request came in).
+  static constexpr int kQuietBits = 200;
+
   void loop() {
+    if (options_.protocol_model) {
+      model_loop();
+      return;
+    }
     BoardBench bench;
-    std::uint64_t index = 0;
+    std::optional<FtdiLink> ftdi;
+    if (options_.ftdi) ftdi.emplace(*options_.ftdi, Clock::now());
+    std::uint64_t quiet_cycles = 0;
     while (!stop_) {
-      std::uint8_t buffer[256];
-      const ssize_t n = ::read(pty_.master(), buffer, sizeof buffer);
-      std::vector<std::uint8_t> bytes;
-      for (ssize_t i = 0; i < n; ++i) {
-        std::uint8_t byte = buffer[i];
-        if (!mangle_ || mangle_(index, byte)) bytes.push_back(byte);
-        ++index;
+      std::vector<std::uint8_t> to_board = from_host();
+      if (ftdi) {
+        ftdi->from_host(to_board, Clock::now());
+        to_board = ftdi->to_board(Clock::now());
       }
-      if (!bytes.empty()) bench.send(bytes);
-      bench.run(std::uint64_t{32} * kSimClksPerBit);
-      forward(bench);
-      if (n <= 0 && !bench.sending()) {
-        pollfd pfd{pty_.master(), POLLIN, 0};
-        ::poll(&pfd, 1, 1);
+      if (!to_board.empty()) {
+        feed(bench, to_board);
+        quiet_cycles = 0;
       }
+      const bool active =
+          bench.sending() || quiet_cycles < std::uint64_t{kQuietBits} * kSimClksPerBit;
+      if (active) {
+        constexpr std::uint64_t kChunk = std::uint64_t{32} * kSimClksPerBit;
+        bench.run(kChunk);
+        quiet_cycles += kChunk;
+      }
+      std::vector<std::uint8_t> sent = mangled_reply(from_board(bench));
+      if (!sent.empty()) quiet_cycles = 0;
+      if (ftdi) {
+        ftdi->from_board(sent, Clock::now());
+        sent = ftdi->to_host(Clock::now());
+      }
+      to_host(sent);
+      if (!active)
+        wait(ftdi ? ftdi->next_event(Clock::now() + kIdlePoll) : Clock::now() + kIdlePoll);
     }
     assertion_failed_ = bench.assertion_failed();
   }
-  // The bytes the board sent, to the host.
-  void forward(BoardBench& bench) {
-    std::vector<std::uint8_t> reply;
-    for (const TxByte& b : bench.received()) reply.push_back(b.value);
-    bench.received().clear();
-    std::size_t done = 0;
-    while (done < reply.size() && !stop_) {
-      const ssize_t w = ::write(pty_.master(), reply.data() + done, reply.size() - done);
-      if (w > 0) done += static_cast<std::size_t>(w);
+  static constexpr std::chrono::milliseconds kIdlePoll{1};
+
+  // The same with the protocol model: each byte is answered at once, the FTDI link times it.
+  void model_loop() {
+    Basys3TopModel board(model::load_core_config(kBoardFilterJson));
+    std::optional<FtdiLink> ftdi;
+    if (options_.ftdi) ftdi.emplace(*options_.ftdi, Clock::now());
+    while (!stop_) {
+      std::vector<std::uint8_t> to_board = from_host();
+      if (ftdi) {
+        ftdi->from_host(to_board, Clock::now());
+        to_board = ftdi->to_board(Clock::now());
+      }
+      std::vector<std::uint8_t> sent;
+      for (std::uint8_t byte : to_board) {
+        const std::vector<std::uint8_t> reply = board.take(byte);
+        sent.insert(sent.end(), reply.begin(), reply.end());
+      }
+      sent = mangled_reply(sent);
+      if (ftdi) {
+        ftdi->from_board(sent, Clock::now());
+        sent = ftdi->to_host(Clock::now());
+      }
+      to_host(sent);
+      wait(ftdi ? ftdi->next_event(Clock::now() + kIdlePoll) : Clock::now() + kIdlePoll);
     }
   }
 
-  const Pty& pty_;
-  Mangle mangle_;
+  // The host's bytes (through the noisy cable).
+  std::vector<std::uint8_t> from_host() {
+    std::uint8_t buffer[256];
+    const ssize_t n = ::read(fd_, buffer, sizeof buffer);
+    std::vector<std::uint8_t> bytes;
+    for (ssize_t i = 0; i < n; ++i) {
+      std::uint8_t byte = buffer[i];
+      if (!options_.mangle || options_.mangle(host_index_, byte)) bytes.emplace_back(byte);
+      ++host_index_;
+    }
+    return bytes;
+  }
+  // Onto the RX pin; btnC first when the reset byte is among them.
+  void feed(BoardBench& bench, const std::vector<std::uint8_t>& bytes) {
+    for (std::uint8_t byte : bytes) {
+      if (options_.reset_before_byte && *options_.reset_before_byte == fed_index_) {
+        bench.drain();
+        bench.press_reset();
+        was_reset_ = true;
+      }
+      bench.send({byte});
+      ++fed_index_;
+    }
+  }
+  // The bytes the board sent.
+  static std::vector<std::uint8_t> from_board(BoardBench& bench) {
+    std::vector<std::uint8_t> bytes;
+    for (const TxByte& b : bench.received()) bytes.push_back(b.value);
+    bench.received().clear();
+    return bytes;
+  }
+  // Through the noisy cable back.
+  std::vector<std::uint8_t> mangled_reply(const std::vector<std::uint8_t>& sent) {
+    std::vector<std::uint8_t> bytes;
+    for (std::uint8_t byte : sent) {
+      if (!options_.mangle_reply || options_.mangle_reply(board_index_, byte)) {
+        bytes.push_back(byte);
+      }
+      ++board_index_;
+    }
+    return bytes;
+  }
+  void to_host(const std::vector<std::uint8_t>& bytes) {
+    std::size_t done = 0;
+    while (done < bytes.size() && !stop_) {
+      const ssize_t w = ::write(fd_, bytes.data() + done, bytes.size() - done);
+      if (w > 0) done += static_cast<std::size_t>(w);
+    }
+  }
+  // Sleeps until `until` or a byte from the host.
+  void wait(Clock::time_point until) const {
+    const auto left = std::chrono::duration_cast<std::chrono::nanoseconds>(until - Clock::now());
+    if (left.count() <= 0) return;
+    const timespec ts{static_cast<time_t>(left.count() / 1'000'000'000),
+                      static_cast<long>(left.count() % 1'000'000'000)};
+    pollfd pfd{fd_, POLLIN, 0};
+    ::ppoll(&pfd, 1, &ts, nullptr);
+  }
+
+  int fd_;
+  PtyBoardOptions options_;
+  std::uint64_t host_index_ = 0, fed_index_ = 0, board_index_ = 0;
   std::atomic<bool> stop_{false};
   std::atomic<bool> assertion_failed_{false};
+  std::atomic<bool> was_reset_{false};
   std::thread thread_;
 };
 

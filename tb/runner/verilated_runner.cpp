@@ -93,6 +93,15 @@ fs::path cache_root(const runtime::DataDir& data) {
   return data.runner_cache;
 }
 
+// The runner links the project's archives, so it is compiled like them: with the build's C++
+// compiler, and in a sanitizer build (FLANGE_SANITIZE, scripts/reliability.sh) with its
+// sanitizers, whose runtime those archives need.
+constexpr const char* kRunnerCompiler = FLANGE_RUNNER_CXX;
+std::string runner_sanitize_flags() {
+  const std::string sanitizers = FLANGE_RUNNER_SANITIZE;
+  return sanitizers.empty() ? "" : "-fsanitize=" + sanitizers + " -fno-sanitize-recover=all";
+}
+
 // ccache for the runner's compiler when the one found at build time is still there.
 std::vector<std::string> compiler_cache_environment() {
   const fs::path ccache = FLANGE_CCACHE;
@@ -128,6 +137,7 @@ fs::path ensure_verilated_runner(const fs::path& filter_json, std::ostream& log)
   }
   key = fnv1a(key, read_file(package));
   key = fnv1a(key, read_file(rom));
+  key = fnv1a(key, kRunnerCompiler + std::string(" ") + runner_sanitize_flags());
   const fs::path dir =
       cache_root(data) / fmt::format("{}-{:016x}", set_dir.filename().string(), key);
   const fs::path runner = dir / "obj" / "flange_cosim_runner";
@@ -163,8 +173,13 @@ fs::path ensure_verilated_runner(const fs::path& filter_json, std::ostream& log)
     cmd.insert(
         cmd.end(),
         {"-CFLAGS",
-         fmt::format("-std=c++20 -O2 -I{} -I{}", (root / "tb").string(), (root / "model").string()),
-         "-LDFLAGS", fmt::format("{} {} -lfmt", libs[0].string(), libs[1].string()), "-o",
+         fmt::format("-std=c++20 -O2 -I{} -I{} {}", (root / "tb").string(),
+                     (root / "model").string(), runner_sanitize_flags()),
+         "-LDFLAGS",
+         fmt::format("{} {} -lfmt {}", libs[0].string(), libs[1].string(),
+                     runner_sanitize_flags()),
+         "-MAKEFLAGS", fmt::format("CXX={}", kRunnerCompiler), "-MAKEFLAGS",
+         fmt::format("LINK={}", kRunnerCompiler), "-o",
          "flange_cosim_runner"});
     const fs::path build_log = dir / "build.log";
     const int status = spawn(cmd, build_log, dir / "build.err", compiler_cache_environment());

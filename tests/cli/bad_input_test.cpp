@@ -184,7 +184,7 @@ std::vector<BadInput> run_cases(const InputFiles& f) {
   };
 }
 
-// `flange stream`: the recording or manifest to replay, and the baud rate.
+// `flange stream`: the recording or manifest to replay, the baud rate and the window.
 std::vector<BadInput> stream_cases(const InputFiles& f) {
   return {
       {{"stream", "--port", "/dev/null", "--input", f.header_only, "--out", f.out("b.csv")},
@@ -202,6 +202,14 @@ std::vector<BadInput> stream_cases(const InputFiles& f) {
        2,
        "--input excludes --manifest"},
       {{"stream", "--port", "/dev/null", "--out", f.out("s")}, 2, "give --input"},
+      {{"stream", "--port", "/dev/null", "--input", f.header_only, "--out", f.out("b.csv"),
+        "--window", "33"},
+       2,
+       "--window"},
+      {{"stream", "--port", "/dev/null", "--input", f.header_only, "--out", f.out("b.csv"),
+        "--window", "0"},
+       2,
+       "--window"},
   };
 }
 

@@ -244,5 +244,41 @@ TEST_F(LocomotiveCommands, AManifestRunRefusesToOverwriteItsInputs) {
   EXPECT_EQ(read(dir_ / "pair" / channel_csv(1)), before);
 }
 
+TEST_F(LocomotiveCommands, AWheelsOwnCalibrationFromTheManifestReplacesTheFallback) {
+  // Wheel 1's manifest entry names its own calibration (from another bench session): its output is
+  // that of `run --input` with that calibration; wheel 0 names none and falls back to
+  // --calibration. A calibration that does not exist is refused with the field's name.
+  flange_ok({"simulate", "--scenario", "bench", "--seed", "9", "--out", path("bench9.csv")});
+  flange_ok({"calibrate", "--data", path("bench9.csv"), "--out", path("model9.json")});
+  flange_ok({"simulate", "--scenario", "loco", "--wheels", "2", "--fs", "6", "--duration", "60",
+             "--seed", "3", "--out", path("own")});
+  nlohmann::json manifest = nlohmann::json::parse(read(dir_ / "own" / "locomotive.json"));
+  manifest["channels"][1]["calibration"] = "../model9.json";
+  std::ofstream(dir_ / "own" / "locomotive.json") << manifest.dump(2);
+  flange_ok({"run", "--manifest", path("own/locomotive.json"), "--calibration",
+             path("model.json"), "--coeffs", kMeasurement, "--out", path("own_run")});
+  for (const auto& [c, model] : {std::pair{0, "model.json"}, std::pair{1, "model9.json"}}) {
+    const std::string alone_csv = path(fmt::format("own_alone_{}.csv", c));
+    flange_ok({"run", "--input", path("own/" + channel_csv(c)), "--calibration", path(model),
+               "--coeffs", kMeasurement, "--out", alone_csv});
+    EXPECT_EQ(read(dir_ / "own_run" / channel_csv(c)), read(alone_csv)) << "channel " << c;
+  }
+  const std::string with_fallback = path("own_fallback.csv");
+  flange_ok({"run", "--input", path("own/" + channel_csv(1)), "--calibration",
+             path("model.json"), "--coeffs", kMeasurement, "--out", with_fallback});
+  EXPECT_NE(read(with_fallback), read(dir_ / "own_run" / channel_csv(1)))
+      << "the two calibrations should give different clearances";
+
+  manifest["channels"][0]["calibration"] = "missing.json";
+  std::ofstream(dir_ / "own" / "locomotive.json") << manifest.dump(2);
+  const FlangeOutcome refused =
+      run_flange_captured({"run", "--manifest", path("own/locomotive.json"), "--calibration",
+                           path("model.json"), "--coeffs", kMeasurement});
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("field channels[0].calibration: "), std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("missing.json does not exist"), std::string::npos) << refused.err;
+}
+
 }  // namespace
 }  // namespace flange::cli

@@ -68,13 +68,17 @@ TEST_F(LocomotiveManifestTest, ReadsChannelsInChannelOrderWithFilesBesideTheMani
 
 TEST_F(LocomotiveManifestTest, WrittenManifestReadsBack) {
   std::vector<ManifestChannel> channels(2);
-  channels[0] = {0, 1, ManifestSide::kLeft, "a.csv", {}};
-  channels[1] = {1, 1, ManifestSide::kRight, "b.csv", {}};
+  channels[0] = {0, 1, ManifestSide::kLeft, "a.csv", {}, {}, {}};
+  // A wheel's own calibration (any existing file: the loader only checks it is there).
+  channels[1] = {1, 1, ManifestSide::kRight, "b.csv", {}, "a.csv", {}};
   write_locomotive_manifest(dir_ / "locomotive.json", channels, "flange simulate ...");
   const LocomotiveManifest m = load_locomotive_manifest((dir_ / "locomotive.json").string());
   ASSERT_EQ(m.channels.size(), 2u);
   EXPECT_EQ(m.channels[1].side, ManifestSide::kRight);
   EXPECT_EQ(m.channels[1].path, dir_ / "b.csv");
+  EXPECT_TRUE(m.channels[0].calibration.empty());
+  EXPECT_EQ(m.channels[1].calibration, "a.csv");
+  EXPECT_EQ(m.channels[1].calibration_path, dir_ / "a.csv");
   EXPECT_EQ(channel_file_name(7), "channel_07.csv");
 }
 
@@ -143,6 +147,12 @@ TEST_F(LocomotiveManifestTest, EveryBadManifestGetsOneLineWithFieldAndRange) {
       {R"({"channels": [{"channel": 0, "axle": 1, "side": "left", "file": "a.csv"},
                         {"channel": 1, "axle": 1, "side": "right", "file": "./a.csv"}]})",
        "field channels[1].file: ./a.csv is already channels[0]'s file"},
+      {R"({"channels": [{"channel": 0, "axle": 1, "side": "left", "file": "a.csv",
+                         "calibration": 3}]})",
+       "field channels[0].calibration: 3 is not a file name; valid: the wheel's model.json"},
+      {R"({"channels": [{"channel": 0, "axle": 1, "side": "left", "file": "a.csv",
+                         "calibration": "gone.json"}]})",
+       "field channels[0].calibration: "},
   };
   for (const BadManifest& c : cases) {
     const std::string message = error_for(c.text);

@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: MIT
 # Regenerates the small SOS coefficient sets that the co-simulation tests build the RTL for
 # (orders 1, 2, 3, 4, 8 and 12; fs = 6 Hz, fc = 0.5 Hz, like the measurement filter), the
-# first-order direct form df1_order1 (the only set with sections of order M = 1), and the
-# multichannel cores: the vehicle filter shared by 4 and by 12 channels (loco_ch4, loco_ch12), and
+# first-order direct form df1_order1 (the one set `flange design` makes with sections of order
+# M = 1), df1_order1x2 (test-only: df1_order1's section twice, cascade_set.py, so that K = 2 with
+# M = 1 reaches the core's stall path), and the multichannel cores: the vehicle filter shared by 4 and by 12 channels (loco_ch4, loco_ch12), and
 # three channels with a coefficient set each (loco_sets3).
 #   bash tests/data/coeffs/regenerate.sh [FLANGE]          rewrite every set folder here
 #   bash tests/data/coeffs/regenerate.sh --check [FLANGE]  regenerate into a temp folder, compare
@@ -37,21 +38,27 @@ if [ "$check" -eq 1 ]; then
   trap 'rm -rf "$out_root"' EXIT
 fi
 
+# Every file of a set folder here against the fresh one.
 status=0
+compare() {
+  local name="$1" how="$2"
+  for file in "$here/$name"/* "$out_root/$name"/*; do
+    base="$(basename "$file")"
+    if ! cmp -s "$here/$name/$base" "$out_root/$name/$base"; then
+      echo "regenerate: $name/$base differs from a fresh run of: $how" >&2
+      echo "  to update: bash tests/data/coeffs/regenerate.sh" >&2
+      status=1
+    fi
+  done
+}
+
 for entry in "${SETS[@]}"; do
   name="${entry%%|*}"
   read -r -a args <<<"${entry#*|} --no-plot"
 
   "$flange" design "${args[@]}" --out "$out_root/$name" >/dev/null
-  if [ "$check" -eq 1 ]; then
-    for file in "$here/$name"/* "$out_root/$name"/*; do
-      base="$(basename "$file")"
-      if ! cmp -s "$here/$name/$base" "$out_root/$name/$base"; then
-        echo "regenerate: $name/$base differs from a fresh run of: flange design ${args[*]}" >&2
-        echo "  to update: bash tests/data/coeffs/regenerate.sh" >&2
-        status=1
-      fi
-    done
-  fi
+  if [ "$check" -eq 1 ]; then compare "$name" "flange design ${args[*]}"; fi
 done
+python3 "$here/cascade_set.py" "$out_root/df1_order1" 2 "$out_root/df1_order1x2" df1_order1x2
+if [ "$check" -eq 1 ]; then compare df1_order1x2 "python3 tests/data/coeffs/cascade_set.py df1_order1 2"; fi
 exit "$status"
