@@ -11,7 +11,7 @@ A unit that passed is remembered (like ccache does for objects) under a key made
 command, the clang version and the text of every file it includes (the g++ build's dependency
 list, `ninja -t deps`; without one, every header of the project), in
 ${XDG_CACHE_HOME:-~/.cache}/flange/clang_syntax; a later run checks only the units whose key
-changed, so CI pays the whole front-end pass (about 13 CPU minutes on this machine) once, then
+changed, so CI pays the whole front-end pass (about 12 CPU minutes on this machine) once, then
 only for what a change touches. FLANGE_CLANG_SYNTAX_CACHE overrides the folder (empty: none).
 
 Exit status 0 when every unit passes, 1 when one fails (its command and clang's message are
