@@ -6,16 +6,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <memory>
 #include <ostream>
 #include <sstream>
 
-#include "axle_clearance.h"
 #include "bench_scenario.h"
 #include "calibration.h"
-#include "content_sha256.h"
 #include "cli.h"
+#include "content_sha256.h"
 #include "data_dir.h"
 #include "fleet_day.h"
 #include "fleet_plan.h"
@@ -23,6 +21,7 @@
 #include "gaussian_source.h"
 #include "input_error.h"
 #include "locomotive_run.h"
+#include "locomotive_run_record.h"
 #include "locomotive_summary.h"
 #include "locomotive_wheels.h"
 #include "recording_csv.h"
@@ -181,96 +180,12 @@ host::LocomotiveManifest day_manifest(const Fleet& fleet) {
   return host::load_locomotive_manifest(path.string());
 }
 
-// A channel's settled samples: past the filter's start-up.
-host::WheelSamples settled_samples(const host::ChannelRun& channel) {
-  const double settle_s =
-      static_cast<double>(channel.summary.settle_samples) / channel.summary.fs_hz;
-  host::WheelSamples samples;
-  const host::RunTrace& trace = channel.trace;
-  for (std::size_t k = 0; k < trace.t_s.size(); ++k) {
-    if (trace.t_s[k] < settle_s) continue;
-    samples.clearance_mm.push_back(trace.filt_mm[k]);
-    samples.temp_c.push_back(trace.temp_c[k]);
-  }
-  return samples;
-}
-
-// The reduced trace: per wheel, the means over each kilometre of the recording.
-void add_reduced_trace(host::RunRecord& record, const host::ChannelRun& channel,
-                       const host::WheelKey& key, double speed_mps) {
-  std::map<int, host::TracePoint> bins;
-  const host::RunTrace& trace = channel.trace;
-  for (std::size_t k = 0; k < trace.t_s.size(); ++k) {
-    if (!std::isfinite(trace.filt_mm[k])) continue;
-    const int km = static_cast<int>(trace.t_s[k] * speed_mps / 1000.0);
-    host::TracePoint& point = bins[km];
-    point.axle = key.axle;
-    point.side = key.side;
-    point.km = km;
-    point.clearance_mm += trace.filt_mm[k];
-    point.temp_c += trace.temp_c[k];
-    ++point.samples;
-  }
-  for (auto& [km, point] : bins) {
-    point.clearance_mm /= static_cast<double>(point.samples);
-    point.temp_c /= static_cast<double>(point.samples);
-    record.trace.push_back(point);
-  }
-}
-
-host::WheelRunResult wheel_result(const host::ChannelRun& channel, const host::WheelKey& key,
-                                  const std::optional<double>& clearance_mm, double gap_mm) {
-  const host::RunSummary& summary = channel.summary;
-  host::WheelRunResult wheel;
-  wheel.axle = key.axle;
-  wheel.side = key.side;
-  wheel.channel = channel.channel.channel;
-  wheel.clearance_mm = clearance_mm;
-  if (clearance_mm) wheel.wear_mm = *clearance_mm - gap_mm;
-  const host::WheelSamples samples = settled_samples(channel);
-  double temp_sum = 0.0;
-  for (const double t : samples.temp_c) temp_sum += t;
-  wheel.temp_c =
-      samples.temp_c.empty() ? 0.0 : temp_sum / static_cast<double>(samples.temp_c.size());
-  wheel.samples = summary.rows_read;
-  wheel.flagged_samples = summary.rows_flagged;
-  wheel.final_alarm = summary.final_alarm;
-  if (summary.has_reference) {
-    wheel.mae_before_mm = summary.before.mae();
-    wheel.mae_after_mm = summary.after.mae();
-  }
-  return wheel;
-}
-
-// Every wheel's result: both wheels of an axle at reference conditions together.
-void add_wheels(host::RunRecord& record, const host::LocomotiveRun& run, const std::string& loco,
-                double gap_mm, double speed_mps) {
-  for (int axle = 0; axle < sim::kLocomotiveAxles; ++axle) {
-    const host::ChannelRun& left = run.channels.at(static_cast<std::size_t>(2 * axle));
-    const host::ChannelRun& right = run.channels.at(static_cast<std::size_t>(2 * axle + 1));
-    const std::optional<host::AxleClearance> clearance =
-        host::axle_clearance(settled_samples(left), settled_samples(right));
-    const host::WheelKey left_key = wheel_key(loco, 2 * axle);
-    const host::WheelKey right_key = wheel_key(loco, 2 * axle + 1);
-    record.wheels.push_back(wheel_result(
-        left, left_key, clearance ? std::optional(clearance->left_mm) : std::nullopt, gap_mm));
-    record.wheels.push_back(wheel_result(
-        right, right_key, clearance ? std::optional(clearance->right_mm) : std::nullopt, gap_mm));
-    for (const auto& [channel, key] : {std::pair{&left, left_key}, {&right, right_key}}) {
-      for (const host::AlarmEvent& event : channel->summary.alarm_events) {
-        record.alarms.push_back({key.axle, key.side, event.t_s, event.what});
-      }
-      add_reduced_trace(record, *channel, key, speed_mps);
-    }
-  }
-}
-
 std::string read_text(const fs::path& path) {
   std::ifstream file(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(file), {}};
 }
 
-// One locomotive's day: its recordings through the chain into the store. Returns the run's rows.
+// One locomotive's day: its recordings through the chain into the store as one run.
 void run_day(Fleet& fleet, int locomotive, int day, double odometer_km) {
   const sim::LocomotiveTruth& loco = fleet.truth.locomotives[static_cast<std::size_t>(locomotive)];
   sim::simulate_fleet_day(fleet.truth, locomotive, day, fleet.recording, fleet.twin,
@@ -280,26 +195,18 @@ void run_day(Fleet& fleet, int locomotive, int day, double odometer_km) {
   const std::string started_at = utc_at(fleet.truth.settings.start_day + day, kServiceStartHours);
   host::write_locomotive_summary_json(fleet.days_dir / "summary.json", run,
                                       "flange simulate --scenario fleet");
-  const double speed_mps = sim::LocoRun{}.track.speed_mps;
-  host::RunRecord record;
-  record.locomotive = loco.name;
+  // Each wheel's clearance at reference conditions and, the new flange's gap being known, its
+  // wear; alarm events and the reduced trace, as `flange run --manifest --store` keeps them.
+  const double distance_km = fleet.recording.duration_s * sim::LocoRun{}.track.speed_mps / 1000.0;
+  host::RunRecord record =
+      locomotive_run_record(run, loco.name, distance_km, fleet.chain.thresholds.sensor_gap_mm);
   record.started_at = started_at;
-  record.distance_km = fleet.recording.duration_s * speed_mps / 1000.0;
   record.odometer_km = odometer_km + record.distance_km;
   record.coefficient_set = fleet.chain.coeffs;
   record.calibration_id = fleet.calibration_id;
   record.engine = fleet.chain.engine;
   record.sample_rate_hz = fleet.recording.fs_hz;
-  for (const host::ChannelRun& channel : run.channels) {
-    record.rows += channel.summary.rows_read;
-    record.flagged_rows += channel.summary.rows_flagged;
-    record.bad_rows += channel.summary.bad_rows;
-  }
-  if (const std::optional<std::size_t> worst = host::worst_channel(run)) {
-    record.final_alarm = run.channels[*worst].summary.final_alarm;
-  }
   record.summary_json = read_text(fleet.days_dir / "summary.json");
-  add_wheels(record, run, loco.name, fleet.chain.thresholds.sensor_gap_mm, speed_mps);
   // The day's session: its twelve recordings, named by the manifest and hashed together (the
   // files are deleted once stored), written in the run's own transaction.
   host::SessionRecord session;

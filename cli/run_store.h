@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `flange run --store`: a run as the store keeps it. One recording becomes a service session
 // and a run (its summary, alarm events and reduced trace, no wheel rows); a locomotive manifest
-// also gives each wheel's figures. The reduced trace: per wheel, the means of the filtered
-// clearance and the temperature over each kilometre of the run (the run's distance spread
-// evenly over its time; one bin when the distance is not given), past the filter's start-up.
+// also gives each wheel's figures, built as the fleet scenario builds them
+// (locomotive_run_record.h): each wheel's clearance at reference conditions, wear_mm left empty.
 #pragma once
 
 #include <cstdint>

@@ -79,8 +79,8 @@ struct WheelRunResult {
   int axle = 1;
   std::string side = "left";
   int channel = 0;
-  std::optional<double> wear_mm;       // estimated flange wear
-  std::optional<double> clearance_mm;  // mean filtered clearance (at reference conditions)
+  std::optional<double> wear_mm;       // flange wear: clearance_mm - the gap over a new flange
+  std::optional<double> clearance_mm;  // static clearance at reference conditions
   double temp_c = 0.0;                 // mean temperature
   std::uint64_t samples = 0;
   std::uint64_t flagged_samples = 0;

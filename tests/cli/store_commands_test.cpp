@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `flange calibrate --store` and `flange run --store` as a user runs them (SQLite; the store's
-// own tests cover PostgreSQL): the refit from the store, a locomotive's wheels kept, two runs
-// written at once by two processes, bad and unreachable stores.
+// own tests cover PostgreSQL): the refit from the store, a locomotive's wheels kept (each at its
+// axle's clearance at reference conditions, which `flange wear` reads), two runs written at once
+// by two processes, bad and unreachable stores.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -11,7 +12,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "axle_clearance.h"
 #include "flange_in_process.h"
+#include "locomotive_run.h"
 #include "store.h"
 #include "test_files.h"
 
@@ -101,6 +104,68 @@ TEST_F(StoreCommands, RunKeepsEveryWheelOfALocomotive) {
   EXPECT_TRUE(history[0].clearance_mm.has_value());
   const auto trace = opened->run_trace(history[0].run_id);
   EXPECT_EQ(trace.size(), 36u);  // 12 wheels x 3 km
+}
+
+// One axle's settled samples straight from the chain: the rows past the filter's start-up.
+host::WheelSamples settled(const host::ChannelRun& channel) {
+  const double settle_s =
+      static_cast<double>(channel.summary.settle_samples) / channel.summary.fs_hz;
+  host::WheelSamples samples;
+  for (std::size_t k = 0; k < channel.trace.t_s.size(); ++k) {
+    if (channel.trace.t_s[k] < settle_s) continue;
+    samples.clearance_mm.push_back(channel.trace.filt_mm[k]);
+    samples.temp_c.push_back(channel.trace.temp_c[k]);
+  }
+  return samples;
+}
+
+TEST_F(StoreCommands, RunKeepsEachWheelAtItsAxlesClearanceAtReferenceConditions) {
+  const std::string store = "sqlite:" + path("axle.db");
+  flange_ok({"run", "--manifest", path("loco/locomotive.json"), "--calibration",
+             path("model_csv.json"), "--coeffs", kMeasurement, "--store", store, "--locomotive",
+             "A-1", "--started-at", "2026-03-01T06:00:00Z", "--odometer-km", "1000"});
+  host::RunOptions options;
+  options.calibration = path("model_csv.json");
+  options.coeffs = kMeasurement;
+  const host::LocomotiveRun run = host::run_locomotive(
+      host::load_locomotive_manifest(path("loco/locomotive.json")), options, std::nullopt, true);
+  ASSERT_EQ(run.channels.size(), 12u);
+  auto opened = host::open_store(store);
+  for (std::size_t k = 0; k < run.channels.size(); k += 2) {
+    const host::ManifestChannel& left = run.channels[k].channel;
+    ASSERT_EQ(left.side, host::ManifestSide::kLeft);
+    ASSERT_EQ(run.channels[k + 1].channel.axle, left.axle);
+    const std::optional<host::AxleClearance> axle =
+        host::axle_clearance(settled(run.channels[k]), settled(run.channels[k + 1]));
+    ASSERT_TRUE(axle.has_value()) << "axle " << left.axle;
+    for (const auto& [side, expected] :
+         {std::pair{"left", axle->left_mm}, {"right", axle->right_mm}}) {
+      const auto history = opened->wear_history({"A-1", left.axle, side});
+      ASSERT_EQ(history.size(), 1u);
+      ASSERT_TRUE(history[0].clearance_mm.has_value());
+      EXPECT_DOUBLE_EQ(*history[0].clearance_mm, expected) << "axle " << left.axle << " " << side;
+      EXPECT_FALSE(history[0].wear_mm.has_value());  // flange run is given no new flange's gap
+    }
+  }
+}
+
+TEST_F(StoreCommands, WearFollowsEveryWheelOfRunsStoredByFlangeRun) {
+  const std::string store = "sqlite:" + path("wear.db");
+  for (const auto& [at, odometer] : {std::pair{"2026-03-01T06:00:00Z", "1000"},
+                                     {"2026-03-02T06:00:00Z", "1300"},
+                                     {"2026-03-03T06:00:00Z", "1600"}}) {
+    flange_ok({"run", "--manifest", path("loco/locomotive.json"), "--calibration",
+               path("model_csv.json"), "--coeffs", kMeasurement, "--store", store, "--locomotive",
+               "W-1", "--started-at", at, "--distance-km", "300", "--odometer-km", odometer});
+  }
+  const std::string out = flange_ok({"wear", "--store", store, "--out", path("wear")});
+  EXPECT_NE(out.find("wear: 12 wheels from " + store), std::string::npos) << out;
+  const nlohmann::json wear = nlohmann::json::parse(std::ifstream(path("wear/wear.json")));
+  ASSERT_EQ(wear["wheels"].size(), 12u);
+  for (const nlohmann::json& wheel : wear["wheels"]) {
+    ASSERT_EQ(wheel["runs"].size(), 3u) << wheel.dump();
+    EXPECT_DOUBLE_EQ(wheel["runs"][2]["odometer_km"].get<double>(), 1600.0);
+  }
 }
 
 TEST_F(StoreCommands, TwoFlangeRunsAtOnceLoseNothing) {
