@@ -80,14 +80,18 @@ std::vector<std::int64_t> error_feedback_words(const std::vector<double>& a) {
 std::vector<SectionCoefficients> float_sections(const CoreConfig& config,
                                                 const FloatDesign& design) {
   std::vector<SectionCoefficients> sections;
-  // A cascade of biquads comes from the sos rows (as the generator quantises it), one section of
-  // the whole order from b/a (df1).
-  if (config.section_order == 2 &&
-      design.sos.size() == static_cast<std::size_t>(config.num_sections)) {
+  // A cascade of biquads (or of first-order sections, the test-only cascades) comes from the sos
+  // rows (as the generator quantises it), one section of the whole order from b/a (df1).
+  const bool cascade = config.section_order == 2 || config.num_sections > 1;
+  if (cascade && design.sos.size() == static_cast<std::size_t>(config.num_sections)) {
     for (const auto& row : design.sos) {
       const double a0 = row[3];
-      sections.push_back(
-          {{row[0] / a0, row[1] / a0, row[2] / a0}, {1.0, row[4] / a0, row[5] / a0}, {}});
+      if (config.section_order == 1) {
+        sections.push_back({{row[0] / a0, row[1] / a0}, {1.0, row[4] / a0}, {}});
+      } else {
+        sections.push_back(
+            {{row[0] / a0, row[1] / a0, row[2] / a0}, {1.0, row[4] / a0, row[5] / a0}, {}});
+      }
     }
     for (SectionCoefficients& section : sections) section.e = error_feedback_words(section.a);
     return sections;

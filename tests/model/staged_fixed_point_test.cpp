@@ -76,8 +76,10 @@ TEST(StagedFixedPoint, AllEffectsOnEqualsIirCoreOnEverySet) {
         ASSERT_EQ(staged.step(x), static_cast<double>(r.sample)) << where(set, s, n);
       }
       // The full-scale square wave drives the overshoot of every Butterworth low-pass of order
-      // >= 2 into the rails (a first-order one does not overshoot).
-      if (s == 2 && config.filter_order >= 2) {
+      // >= 2 into the rails (a first-order one does not overshoot, nor does a cascade of
+      // first-order sections: its poles are real).
+      const bool real_poles_only = config.section_order == 1 && config.num_sections > 1;
+      if (s == 2 && config.filter_order >= 2 && !real_poles_only) {
         EXPECT_TRUE(saturated) << where(set, s, 0) << ": meant to saturate";
       }
     }

@@ -7,7 +7,7 @@
 `flange design` writes first-order sections (M = 1) only as one direct form (K = 1), so no set it
 makes has two of them; the core's stall path (section k's W_b[0] waiting while section k - 1's
 last term is still in the MAC pipeline) needs K >= 2 with M = 1. This repeats SOURCE's ROM words,
-section values and poles TIMES times (the filter H(z)^TIMES, with the same fixed-point format,
+section values, sos rows and poles TIMES times (the filter H(z)^TIMES, with the same fixed-point format,
 which the core checks for overflow as it does any set) and writes iir_coeffs_pkg.sv, coeffs.mem
 and filter.json into OUT_DIR. tests/data/coeffs/regenerate.sh makes df1_order1x2 with it.
 """
@@ -15,6 +15,14 @@ import json
 import os
 import re
 import sys
+
+
+def convolve(p, q):
+    out = [0.0] * (len(p) + len(q) - 1)
+    for i, x in enumerate(p):
+        for j, y in enumerate(q):
+            out[i + j] += x * y
+    return out
 
 
 def main():
@@ -33,8 +41,14 @@ def main():
     design["generated_by"] = f"{command} (from: {design['generated_by']})"
     design["name"] = name
     design["order"] = design["order"] * times
-    for key in ("zeros", "poles"):
+    for key in ("zeros", "poles", "sos"):
         design[key] = design[key] * times
+    # The float design's transfer function is H(z)^TIMES: b and a raised by convolution.
+    b, a = [1.0], [1.0]
+    for _ in range(times):
+        b, a = convolve(b, design["b"]), convolve(a, design["a"])
+    design["b"], design["a"] = b, a
+    design["gain"] = design["gain"] ** times
     q["sections"] = old_sections * times
     q["rom_depth"] = q["rom_depth"] * times
     q["words"] = q["words"] * times
