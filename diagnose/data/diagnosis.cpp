@@ -81,6 +81,13 @@ DiagnoseOptions without_mount_motion(const DiagnoseOptions& given) {
   return replayed;
 }
 
+// The twin's voltage on `replay` with a fresh draw of the mount motion it holds, for the null
+// replicas; unset when it holds none.
+HeldMotion held_motion(const TwinReplay& replay, const DiagnoseOptions& given, bool holds_motion) {
+  if (!holds_motion) return {};
+  return [&replay, &given](std::uint64_t seed) { return replay.voltage(given.twin.effects, seed); };
+}
+
 }  // namespace
 
 double rms_above_noise(double rms, double noise) {
@@ -109,10 +116,12 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   result.diagnosis.noise_std_v = noise_v;
   const DegenerateData degenerate = degenerate_data(calibration, result.detail.noise_std_v);
   result.diagnosis.degenerate = degenerate.sentences;
-  locate(calibration, cal_base, fs_hz, options, result.detail);
+  locate(calibration, cal_base, fs_hz, options, result.detail,
+         held_motion(parts.cal_replay, given, twin_holds_motion));
   if (degenerate.nothing_to_locate()) forget_structure(result.detail);
   const std::vector<double> ho_base = parts.ho_replay.voltage(options.twin.effects);
-  confirm_alarm_timing_on_heldout(heldout, ho_base, options, result.detail);
+  confirm_alarm_timing_on_heldout(heldout, ho_base, options, result.detail,
+                                  held_motion(parts.ho_replay, given, twin_holds_motion));
   result.diagnosis.stage = first_significant_stage(result.detail.stages);
   // Selection: candidates scored on held-out data, forward, refined, backward.
   Selection selection = select_in_two_passes(

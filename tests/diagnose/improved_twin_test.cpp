@@ -88,19 +88,23 @@ TEST(TabulatedEffect, ATableIsRefusedWhereItDoesNotBelongOrIsMalformed) {
   }
 }
 
-// Re-diagnosis: the first single-effect case of every class the self-test draws, short sessions.
+// Re-diagnosis: for every class the self-test draws, its first single-effect cases (short
+// sessions) until one is explained.
 constexpr double kDurationS = 1200;
 constexpr std::uint64_t kSeed = 41;
+constexpr std::size_t kCasesPerClass = 3;
 
-std::vector<SelftestCaseSpec> one_case_per_class() {
-  std::map<std::string, SelftestCaseSpec> by_class;
+std::vector<std::vector<SelftestCaseSpec>> first_cases_of_every_class() {
+  std::map<std::string, std::vector<SelftestCaseSpec>> by_class;
   for (int index = 1; index < 400; ++index) {
     const SelftestCaseSpec spec = draw_selftest_case(index, kSeed);
-    if (spec.kind == SelftestKind::kSingle) by_class.try_emplace(spec.truth.front().name, spec);
+    if (spec.kind != SelftestKind::kSingle) continue;
+    std::vector<SelftestCaseSpec>& cases = by_class[spec.truth.front().name];
+    if (cases.size() < kCasesPerClass) cases.push_back(spec);
   }
-  std::vector<SelftestCaseSpec> cases;
-  for (const auto& [name, spec] : by_class) cases.push_back(spec);
-  return cases;
+  std::vector<std::vector<SelftestCaseSpec>> classes;
+  for (const auto& [name, cases] : by_class) classes.push_back(cases);
+  return classes;
 }
 
 struct Rediagnosis {
@@ -123,33 +127,38 @@ Rediagnosis rediagnose(const SelftestCaseSpec& spec) {
   return out;
 }
 
+// The first of `cases` whose first verdict is "explained", re-diagnosed; else the last tried.
+Rediagnosis rediagnose_first_explained(const std::vector<SelftestCaseSpec>& cases) {
+  Rediagnosis r;
+  for (const SelftestCaseSpec& spec : cases) {
+    r = rediagnose(spec);
+    if (r.first == "explained") break;
+  }
+  return r;
+}
+
 TEST(ImprovedTwin, RediagnosingAnExplainedPairOfEveryClassAgainstItLeavesNone) {
-  const std::vector<SelftestCaseSpec> cases = one_case_per_class();
-  ASSERT_EQ(cases.size(), 10u);
-  std::vector<Rediagnosis> results(cases.size());
-  run_in_parallel(static_cast<int>(cases.size()), 2,
-                  [&](int i) { results[static_cast<std::size_t>(i)] = rediagnose(cases[i]); });
-  int explained = 0;
+  const std::vector<std::vector<SelftestCaseSpec>> classes = first_cases_of_every_class();
+  ASSERT_EQ(classes.size(), 10u);
+  std::vector<Rediagnosis> results(classes.size());
+  run_in_parallel(static_cast<int>(classes.size()), 2, [&](int i) {
+    results[static_cast<std::size_t>(i)] = rediagnose_first_explained(classes[i]);
+  });
   for (const Rediagnosis& r : results) {
     std::cout << "case " << r.index << ", " << r.truth << ": " << r.first
               << (r.second.empty() ? "" : " -> " + r.second);
     for (const std::string& held : r.held_as) std::cout << " [" << held << "]";
     std::cout << "\n";
+    // Every class has an explained pair among its first cases, and against its improved twin
+    // (mount motion included: the stages' null replicas draw the motion the twin holds) the
+    // same pair leaves nothing.
+    EXPECT_EQ(r.first, "explained") << r.truth << ": none of its first " << kCasesPerClass
+                                    << " cases was explained";
     if (r.first != "explained") continue;
-    ++explained;
-    // Mount motion the twin holds is not a finding again, but the stages' floors are drawn from
-    // white noise alone, so the motion still stands above them: the verdict says "unexplained",
-    // never a claim (docs/diagnose.md, "The improved twin").
-    if (effect_class(r.truth).is_mount_motion) {
-      EXPECT_EQ(r.second, "unexplained") << r.truth;
-      continue;
-    }
     EXPECT_EQ(r.second, "none") << r.truth << " (reproduce: bash scripts/rediagnose_pairs.sh "
                                 << "--reality twin --seed " << kSeed << " --from " << r.index
                                 << " --to " << r.index << " --duration " << kDurationS << ")";
   }
-  // The test says nothing unless most classes are explained on these short sessions.
-  EXPECT_GE(explained, 7) << "explained pairs: " << explained;
 }
 
 // A recording whose gap is a bump in temperature that no library formula has: the free curve of

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <future>
 #include <vector>
 
@@ -15,28 +16,38 @@
 
 namespace flange::diagnose {
 
+// The twin's noiseless voltage with a fresh realisation of the mount motion it holds, drawn from
+// `seed`; unset when the twin holds none. Mount motion is each session's own random motion, so a
+// twin that holds it is replayed without it, and the null replicas draw it afresh, each its own.
+using HeldMotion = std::function<std::vector<double>(std::uint64_t seed)>;
+
 // Calls each(replica, noisy_v, d_noisy, f_noisy) for criteria::kNullReplicas draws of the noisy twin (on
-// the recording's converter grid, if it has one) of `sim_v`, with its compensated and filtered
-// clearance. The draws come from one stream in replica order, so the floors do not depend on the
-// threads; what each draw then costs (inversion, filter, alarms: most of it) runs two replicas at
-// a time, so `each` must only write to its replica's own place.
+// the recording's converter grid, if it has one) of `sim_v` (of `motion`'s voltage with the
+// replica's own motion, when set), with its compensated and filtered clearance. The draws come
+// from one stream in replica order, so the floors do not depend on the threads; what each draw
+// then costs (motion, inversion, filter, alarms: most of it) runs two replicas at a time, so
+// `each` must only write to its replica's own place.
 template <class Each>
 void for_each_null_replica(const RecordingSeries& real, const std::vector<double>& sim_v,
                            const WhiteNoise& white, const sim::PolynomialSensorModel& model,
-                           double fs_hz, std::uint64_t seed, Each each) {
+                           double fs_hz, std::uint64_t seed, Each each,
+                           const HeldMotion& motion = {}) {
   constexpr std::size_t kInFlight = 2;
   sim::GaussianSource noise(seed);
   std::vector<std::future<void>> running;
   for (int replica = 0; replica < criteria::kNullReplicas; ++replica) {
-    std::vector<double> noisy_v(sim_v.size());
-    for (std::size_t i = 0; i < sim_v.size(); ++i) {
-      noisy_v[i] = white.noisy(sim_v[i], noise.standard_normal());
-    }
+    std::vector<double> z(sim_v.size());
+    for (double& zi : z) zi = noise.standard_normal();
     if (running.size() == kInFlight) {
       running.front().get();
       running.erase(running.begin());
     }
-    running.push_back(std::async(std::launch::async, [&, replica, noisy_v = std::move(noisy_v)] {
+    running.push_back(std::async(std::launch::async, [&, replica, z = std::move(z)] {
+      std::vector<double> own_motion;
+      if (motion) own_motion = motion(sim::derive_seed(seed, 1000 + static_cast<std::uint64_t>(replica)));
+      const std::vector<double>& centre = motion ? own_motion : sim_v;
+      std::vector<double> noisy_v(sim_v.size());
+      for (std::size_t i = 0; i < sim_v.size(); ++i) noisy_v[i] = white.noisy(centre[i], z[i]);
       const std::vector<double> d_noisy = clearance_of(model, noisy_v, real.temp_c);
       each(static_cast<std::size_t>(replica), noisy_v, d_noisy, measurement_filter(d_noisy, fs_hz));
     }));

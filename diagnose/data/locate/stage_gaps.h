@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "diagnosis_detail.h"
+#include "null_replicas.h"
 #include "polynomial_sensor_model.h"
 #include "recording_series.h"
 #include "white_noise.h"
@@ -17,10 +18,10 @@ namespace flange::diagnose {
 // Each stage's gap of `real` against the twin's voltage `sim_v`, with its noise floor: the median
 // of the null replicas' (their spread is a few per cent) or, for alarm timing, their largest.
 // A stage is significant above criteria::kStageSignificanceRatio times its floor (alarm timing:
-// AlarmTiming::exceeds).
+// AlarmTiming::exceeds). The replicas draw the mount motion the twin holds (`motion`) afresh.
 std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<double>& sim_v,
                                  const WhiteNoise& white, const sim::PolynomialSensorModel& model,
-                                 double fs_hz, std::uint64_t seed);
+                                 double fs_hz, std::uint64_t seed, const HeldMotion& motion = {});
 
 // The first stage whose gap stands above its noise floor; empty when none does.
 std::string first_significant_stage(const std::vector<StageGap>& stages);
