@@ -19,15 +19,32 @@ BoardLink::BoardLink(ByteStream& port, const LinkSettings& settings)
   }
 }
 
+namespace {
+
+// A reset seen while a recovery replays the session: the recovery starts again.
+struct ResetDuringRecovery {};
+
+bool is_command(const std::array<std::uint8_t, board::kRequestBytes>& frame) {
+  return frame[0] == board::kCommandSync;
+}
+
+}  // namespace
+
 int BoardLink::reset_session() {
   flush();
+  board_channels_ = restart_board();
+  taken_.clear();
+  counts_.exchanges = 0;  // samples only
+  return board_channels_;
+}
+
+int BoardLink::restart_board() {
   board::Reply reply;
   const board::Request request{0, 0, 0};
   in_flight_.emplace_back(request, board::encode_command(0, board::kCommandResetWindowed),
                           "the session reset", [&reply](const board::Reply& r) { reply = r; });
   send(in_flight_.back());
   flush();
-  counts_.exchanges = 0;  // samples only
   constexpr std::uint8_t kConfirm = board::kStatusSessionReset | board::kStatusWindowed;
   if ((reply.status & kConfirm) != kConfirm) {
     throw std::runtime_error("the board on " + port_.device() +
@@ -44,12 +61,88 @@ int BoardLink::reset_session() {
 
 void BoardLink::post(std::uint8_t channel, std::int16_t word, std::string what,
                      OnReply on_reply) {
+  enqueue(channel, word, std::move(what), std::move(on_reply), false);
+}
+
+void BoardLink::enqueue(std::uint8_t channel, std::int16_t word, std::string what,
+                        OnReply on_reply, bool replay) {
   while (in_flight_.size() >= static_cast<std::size_t>(settings_.window)) pump();
   const board::Request request{next_seq_, channel, word};
   in_flight_.emplace_back(request, board::encode_request(request), std::move(what),
                           std::move(on_reply));
+  in_flight_.back().replay = replay;
   next_seq_ = static_cast<std::uint8_t>(next_seq_ + 1);
   send(in_flight_.back());
+}
+
+void BoardLink::recover_from_reset() {
+  // The requests in flight go again once the filters are rebuilt: what the board answered them
+  // so far may be its fresh filters'.
+  std::deque<InFlight> pending;
+  for (InFlight& request : in_flight_) {
+    if (!request.replay && !is_command(request.frame)) pending.push_back(std::move(request));
+  }
+  recovering_ = true;
+  try {
+    for (;;) {
+      in_flight_.clear();
+      if (++counts_.board_resets > kMostBoardResets) {
+        throw std::runtime_error(fmt::format(
+            "the board on {} was reset {} times during the session (btnC or power); each reset "
+            "replays the session, so the link gives up: check the board's supply and its button",
+            port_.device(), counts_.board_resets));
+      }
+      try {
+        const int channels = restart_board();
+        if (channels != board_channels_) {
+          throw std::runtime_error(fmt::format(
+              "the board on {} was reset during the session and then reports {} channels, {} "
+              "before: another bitstream?",
+              port_.device(), channels, board_channels_));
+        }
+        replay_taken();
+        break;
+      } catch (const ResetDuringRecovery&) {
+      }
+    }
+  } catch (...) {
+    recovering_ = false;
+    throw;
+  }
+  recovering_ = false;
+  for (InFlight& request : pending) {
+    request.request.seq = next_seq_;
+    next_seq_ = static_cast<std::uint8_t>(next_seq_ + 1);
+    request.frame = board::encode_request(request.request);
+    request.answered = false;
+    request.attempts = 1;
+    in_flight_.push_back(std::move(request));
+    send(in_flight_.back());
+  }
+}
+
+// Every sample taken since the session began, again, each reply checked against the one taken:
+// the board's filters are deterministic, so the same inputs from zero give the same outputs.
+void BoardLink::replay_taken() {
+  for (std::size_t i = 0; i < taken_.size(); ++i) {
+    const TakenSample sample = taken_[i];
+    enqueue(sample.channel, sample.word, fmt::format("sample {} of the replay", i),
+            [this, sample, i](const board::Reply& reply) {
+              constexpr std::uint8_t kCompared = board::kStatusSaturation;
+              if (reply.sample == sample.out &&
+                  (reply.status & kCompared) == (sample.status & kCompared)) {
+                return;
+              }
+              throw std::runtime_error(fmt::format(
+                  "the board on {} was reset during the session, and replaying the {} samples "
+                  "taken before gives OUT {} (STATUS 0x{:02X}) for the {}th, where it gave {} "
+                  "(0x{:02X}): its filters cannot be rebuilt (another bitstream, or sw[0] moved?)",
+                  port_.device(), taken_.size(), reply.sample, reply.status, i + 1, sample.out,
+                  sample.status));
+            },
+            true);
+  }
+  flush();
 }
 
 void BoardLink::flush() {
@@ -93,10 +186,22 @@ void BoardLink::pump() {
     if (std::optional<board::Reply> reply = scanner_.push(buffer[i])) take(*reply);
   }
   counts_.discarded_bytes = scanner_.discarded();
+  if (reset_seen_) {
+    reset_seen_ = false;
+    if (recovering_) throw ResetDuringRecovery{};
+    recover_from_reset();
+    return;
+  }
   while (!in_flight_.empty() && in_flight_.front().answered) {
     InFlight done = std::move(in_flight_.front());
     in_flight_.pop_front();
-    ++counts_.exchanges;
+    if (done.replay) {
+      ++counts_.replayed;
+    } else if (!is_command(done.frame)) {
+      ++counts_.exchanges;
+      taken_.push_back({done.request.channel, done.request.sample, done.reply.sample,
+                        done.reply.status});
+    }
     done.on_reply(done.reply);
   }
 }
@@ -110,11 +215,16 @@ void BoardLink::take(const board::Reply& reply) {
     ++counts_.stray_replies;
     return;
   }
+  // The session reset's answer has SESSION_RESET; another reply with SEQ 0 came from before it.
+  if (is_command(match->frame) && !(reply.status & board::kStatusSessionReset)) {
+    ++counts_.stray_replies;
+    return;
+  }
+  // A board reset (btnC, power) ends the windowed session: the board answers as a plain one, its
+  // filters from zero. Such a reply is never taken; the link recovers (pump).
   if (!(reply.status & board::kStatusWindowed)) {
-    throw std::runtime_error(fmt::format(
-        "the board on {} was reset during the session (btnC or power): its reply to {} is not "
-        "of a windowed session; {} samples were answered before it, start the session again",
-        port_.device(), match->what, counts_.exchanges));
+    reset_seen_ = true;
+    return;
   }
   match->answered = true;
   match->reply = reply;

@@ -5,7 +5,10 @@
 // back in the order the requests were made, and go-back-N on a timeout: every request still
 // unanswered is sent again (same SEQ, same CHANNEL). The board takes new frames only in SEQ order
 // and answers a repeated one from its reply store, so every sample is filtered exactly once and
-// in order, whatever is lost or damaged on the way.
+// in order, whatever is lost or damaged on the way. A board reset during the session (btnC, power)
+// is recovered from: the link restarts the windowed session and replays every sample it has
+// taken since the session began, so each channel's filter is back where it was, bit for bit,
+// before the requests still unanswered go again.
 #pragma once
 
 #include <array>
@@ -15,6 +18,7 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "board_frame.h"
 #include "byte_stream.h"
@@ -23,6 +27,8 @@ namespace flange::host {
 
 // The board's frame queue and reply store: the largest window (rtl/board/basys3_top.sv).
 inline constexpr int kMaxWindow = 32;
+// Board resets one session recovers from before it gives up (each costs a replay of the session).
+inline constexpr int kMostBoardResets = 8;
 
 struct LinkSettings {
   int baud = 115200;     // the bitstream's: 100 MHz / ClksPerBit (docs/board.md, "Link budget")
@@ -36,6 +42,8 @@ struct LinkCounts {
   std::uint64_t resent = 0;           // requests sent again after a timeout
   std::uint64_t stray_replies = 0;    // intact replies to no request in flight (late or repeated)
   std::uint64_t discarded_bytes = 0;  // received bytes that were part of no intact reply
+  std::uint64_t board_resets = 0;     // resets of the board during the session, recovered from
+  std::uint64_t replayed = 0;         // samples sent again after a reset to rebuild the filters
 };
 
 class BoardLink {
@@ -51,11 +59,21 @@ class BoardLink {
   // answer or does not confirm a windowed reset.
   int reset_session();
 
+  // The samples taken since the session began, with their replies: what a replay after a board
+  // reset sends again (8 bytes a sample: 35 MB for an hour of 12 wheels at 100 Hz).
+  struct TakenSample {
+    std::uint8_t channel = 0;
+    std::int16_t word = 0;
+    std::int16_t out = 0;
+    std::uint8_t status = 0;
+  };
+
   // Sends `word` on `channel` (0..255) with the next SEQ, after waiting while `window` requests
   // are in flight; `on_reply` gets its reply, and replies are handed on in the order of post().
   // Throws std::runtime_error naming the port when the oldest request stays unanswered after
-  // retries + 1 attempts (`what` names it, e.g. "sample 17 of channel 3") or when the replies
-  // show the board was reset during the session.
+  // retries + 1 attempts (`what` names it, e.g. "sample 17 of channel 3"), when the board was
+  // reset more than kMostBoardResets times, or when a replay after a reset does not give the
+  // replies the board gave before it.
   void post(std::uint8_t channel, std::int16_t word, std::string what, OnReply on_reply);
   // Waits until every request in flight is answered (throws as post()).
   void flush();
@@ -75,6 +93,7 @@ class BoardLink {
     std::array<std::uint8_t, board::kRequestBytes> frame;  // as sent: a sample or a command
     std::string what;
     OnReply on_reply;
+    bool replay = false;  // a sample sent again after a board reset: checked, not handed on
     bool answered = false;
     board::Reply reply;
     int attempts = 1;  // sends while it was the oldest request in flight
@@ -86,6 +105,15 @@ class BoardLink {
   void take(const board::Reply& reply);
   void resend_unanswered();
   void send(InFlight& request);
+  // The windowed session reset (SEQ 0); returns the board's channel count.
+  int restart_board();
+  // post(), or a replay's request (checked by `on_reply`, not taken again) when `replay`.
+  void enqueue(std::uint8_t channel, std::int16_t word, std::string what, OnReply on_reply,
+               bool replay);
+  void replay_taken();
+  // After replies showed a board reset: restart the session, replay every sample taken, then send
+  // the requests that were in flight again, in order, with new SEQs.
+  void recover_from_reset();
 
   ByteStream& port_;
   LinkSettings settings_;
@@ -93,6 +121,10 @@ class BoardLink {
   LinkCounts counts_;
   std::deque<InFlight> in_flight_;
   std::uint8_t next_seq_ = 1;
+  std::vector<TakenSample> taken_;  // since the session began
+  int board_channels_ = 0;
+  bool reset_seen_ = false;  // a reply to a request in flight was not of a windowed session
+  bool recovering_ = false;
 };
 
 }  // namespace flange::host

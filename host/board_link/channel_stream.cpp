@@ -107,6 +107,8 @@ StreamCounts ChannelSession::counts() const {
   counts.resent = link_.counts().resent;
   counts.stray_replies = link_.counts().stray_replies;
   counts.discarded_bytes = link_.counts().discarded_bytes;
+  counts.board_resets = link_.counts().board_resets;
+  counts.replayed = link_.counts().replayed;
   return counts;
 }
 
@@ -156,6 +158,10 @@ std::string stream_summary_line(const StreamCounts& counts) {
       counts.seconds, counts.resent, counts.stray_replies, counts.discarded_bytes,
       counts.link_errors, counts.overruns, counts.saturated, counts.bypassed,
       counts.clipped_inputs);
+  if (counts.board_resets > 0) {
+    line += fmt::format("; the board was reset {} time(s), {} samples replayed to rebuild its filters",
+                        counts.board_resets, counts.replayed);
+  }
   if (counts.checked) {
     line += fmt::format("; {} mismatches against the model", counts.mismatches);
     if (counts.mismatches > 0) line += " (first: " + counts.first_mismatch + ")";

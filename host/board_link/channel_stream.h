@@ -29,6 +29,8 @@ struct StreamCounts {
   std::uint64_t bypassed = 0;        // replies with the unfiltered input (sw[0] up)
   std::uint64_t clipped_inputs = 0;  // clearances outside the sample word's range
   std::uint64_t discarded_bytes = 0;
+  std::uint64_t board_resets = 0;  // board resets during the session, recovered from by a replay
+  std::uint64_t replayed = 0;      // samples sent again to rebuild the filters after them
   bool checked = false;          // replies were compared with the model
   std::uint64_t mismatches = 0;  // replies that differ from the model (word or SATURATION)
   std::string first_mismatch;    // one line on the first of them

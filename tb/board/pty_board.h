@@ -11,6 +11,7 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -70,8 +71,9 @@ struct PtyBoardOptions {
   Mangle mangle_reply;
   // With settings, the bytes go through an FTDI chip's timing (ftdi_link.h); without, at once.
   std::optional<FtdiSettings> ftdi;
-  // btnC is pressed just before the host -> board byte with this index reaches the board.
-  std::optional<std::uint64_t> reset_before_byte;
+  // btnC is pressed just before each host -> board byte with one of these indices reaches the
+  // board.
+  std::vector<std::uint64_t> reset_before_bytes;
   // The protocol model (basys3_top_model.h) instead of the Verilated top: as fast as the link
   // it is given, where the Verilated top is slower than a real 921600-baud wire.
   bool protocol_model = false;
@@ -96,7 +98,7 @@ class PtyBoard {
   PtyBoard(const PtyBoard&) = delete;
   PtyBoard& operator=(const PtyBoard&) = delete;
   bool assertion_failed() const { return assertion_failed_; }
-  bool was_reset() const { return was_reset_; }
+  int resets() const { return resets_; }
 
  private:
   // The board runs while it has bytes to take or has sent one within this many bit times (its
@@ -184,10 +186,11 @@ class PtyBoard {
   // Onto the RX pin; btnC first when the reset byte is among them.
   void feed(BoardBench& bench, const std::vector<std::uint8_t>& bytes) {
     for (std::uint8_t byte : bytes) {
-      if (options_.reset_before_byte && *options_.reset_before_byte == fed_index_) {
+      if (std::find(options_.reset_before_bytes.begin(), options_.reset_before_bytes.end(),
+                    fed_index_) != options_.reset_before_bytes.end()) {
         bench.drain();
         bench.press_reset();
-        was_reset_ = true;
+        ++resets_;
       }
       bench.send({byte});
       ++fed_index_;
@@ -233,7 +236,7 @@ class PtyBoard {
   std::uint64_t host_index_ = 0, fed_index_ = 0, board_index_ = 0;
   std::atomic<bool> stop_{false};
   std::atomic<bool> assertion_failed_{false};
-  std::atomic<bool> was_reset_{false};
+  std::atomic<int> resets_{0};
   std::thread thread_;
 };
 
