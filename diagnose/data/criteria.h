@@ -102,12 +102,13 @@ inline constexpr double kLaterClaimAccuracy = 0.31;
 inline constexpr int kMostPicks = 3;
 
 // ---- The verdict ---------------------------------------------------------------------------
-// A gap exists when the held-out RMS exceeds the noise by 5 % (what 1 % of sigma in resolution
-// and the noise estimate's own spread, a few % on a bench session, leave unambiguous).
-// Test: Verdict.NoGapIsNone.
+// Explained where the calibration reaches asks for a gap there: its RMS 5 % above the noise (what
+// 1 % of sigma in resolution and the noise estimate's own spread, a few % on a bench session,
+// leave unambiguous). Test: Verdict.ExplainedWithinReachNeedsAQuarterWithin.
 inline constexpr double kGapRatio = 1.05;
-// Explained: what the picks leave on held-out data is within 10 % of the noise.
-// Test: Verdict.LeftWithinTheNoiseIsExplained.
+// Explained: what the picks leave on held-out data is within 10 % of the noise. A held-out gap
+// within it before any pick is no gap (a verdict without a finding is then "none").
+// Tests: Verdict.LeftWithinTheNoiseIsExplained, ImprovedTwin.RediagnosingAnExplained*.
 inline constexpr double kExplainedRatio = 1.10;
 // Partly explained: picks that leave more still take at least this share of the held-out gap's
 // RMS above the noise; below it several classes together can take most of an effect that none of

@@ -79,7 +79,7 @@ std::string none() {
   return fmt::format(
       "the held-out gap is within {:.0f} % of the twin's noise and no stage exceeds its noise "
       "floor",
-      100.0 * (criteria::kGapRatio - 1.0));
+      100.0 * (criteria::kExplainedRatio - 1.0));
 }
 
 std::string nearest(bool picked, const EffectFinding& nearest, bool several_picks,

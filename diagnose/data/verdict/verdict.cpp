@@ -90,9 +90,11 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
   VerdictFigures f;
   f.any_findings = !findings.empty();
   // Against the larger of sigma and the verdict's noise: with a converter or mount motion the twin
-  // holds (and so no finding of theirs), what the noise leaves is the verdict's noise.
+  // holds (and so no finding of theirs), what the noise leaves is the verdict's noise. A held-out
+  // gap within what an explanation may leave (kExplainedRatio) is no gap: the same RMS left after
+  // picks would be "explained", so a twin that holds the explanation leaves "none".
   f.gap_exists =
-      diagnosis.heldout_rms_before > criteria::kGapRatio * std::max(sigma, verdict_noise) ||
+      diagnosis.heldout_rms_before > criteria::kExplainedRatio * std::max(sigma, verdict_noise) ||
       !diagnosis.stage.empty() || has_noise_type || !findings.empty();
   f.noise_v = verdict_noise;
   f.rms_before = diagnosis.heldout_rms_before;
