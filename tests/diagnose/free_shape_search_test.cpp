@@ -120,6 +120,22 @@ TEST(RippleSearch, FindsAKnownPeriod) {
   EXPECT_NEAR(ripple.period_mm(), 2.7, 0.01);
 }
 
+// A search that ends on an edge of its range reports a bound, not a value: a ripple longer than
+// two periods across the calibration's range.
+TEST(RippleSearch, ARippleLongerThanTheSearchIsABound) {
+  const SyntheticBench bench;
+  std::vector<double> gap = white_noise(bench.size(), 0.02, 6);
+  for (std::size_t i = 0; i < gap.size(); ++i) {
+    gap[i] += 0.1 * std::sin(2.0 * std::numbers::pi * bench.series().clearance_mm[i] / 60.0);
+  }
+  RippleFamily ripple;
+  const FreeShapeFit fit = fit_on_itself(ripple, bench, gap);
+  ASSERT_EQ(fit.search_edges.count("ripple_period_mm"), 1u) << ripple.period_mm();
+  EXPECT_EQ(fit.search_edges.at("ripple_period_mm").substr(0, 3), ">= ");
+  EXPECT_NEAR(std::stod(fit.search_edges.at("ripple_period_mm").substr(3)), ripple.period_mm(),
+              0.01 * ripple.period_mm());
+}
+
 // A clearance range shorter than two of the shortest periods: nothing to search.
 TEST(RippleSearch, NoPeriodOnARangeTooShortForTwo) {
   const SyntheticBench bench;

@@ -93,6 +93,8 @@ void resolve_free_shape(const FreeShapeFit& shape, double noise_v, EffectFinding
     finding.resolution[name] = r;
     if (r > largest) finding.undetermined.push_back(name);
   }
+  // A searched value pressed against an edge of its search is a bound, not a finding.
+  for (const auto& [name, bound] : shape.search_edges) finding.bounds[name] = bound;
 }
 
 }  // namespace

@@ -48,7 +48,9 @@ double resolution_noise(const Selection& selection);
 // pick's parameters at once; undetermined when the values the data cannot tell from the fitted
 // one cover criteria::kUndeterminedShareOfSearch of the search range, a bound when they reach an
 // edge. A free shape's values are its curve's, their sensitivities its own columns' (FreeShapeFit);
-// undetermined when the resolution exceeds the largest value the curve takes.
+// undetermined when the resolution exceeds the largest value the curve takes; a value its family
+// searched on a bounded range (a ripple's period, a settling time) that ended on an edge of it is
+// a bound.
 void resolve_parameters(const Parts& parts, Selection& selection);
 
 }  // namespace flange::diagnose

@@ -45,6 +45,15 @@ void AgeingFamily::search(const RecordedPart& calibration, const std::vector<dou
   tau_days_ = chosen_;
 }
 
+std::map<std::string, std::string> AgeingFamily::search_edges() const {
+  const std::vector<double> searched = taus();
+  if (tau_days_ == searched.back()) {
+    return {{"settling_tau_days", fmt::format(">= {:.3g}", tau_days_)}};
+  }
+  if (tau_days_ == searched[1]) return {{"settling_tau_days", fmt::format("<= {:.3g}", tau_days_)}};
+  return {};
+}
+
 int AgeingFamily::choose_on_heldout(const RecordedPart& calibration,
                                     const std::vector<double>& cal_gap, const RecordedPart& heldout,
                                     const std::vector<double>& ho_gap, std::string& how) {

@@ -25,6 +25,8 @@ class AgeingFamily : public LinearFamily {
                         const RecordedPart& heldout, const std::vector<double>& ho_gap,
                         std::string& how) override;
   std::vector<std::string> names() const override;
+  // The settling time, when its search ended on the longest or the shortest one searched.
+  std::map<std::string, std::string> search_edges() const override;
   int searched_values() const override { return 1; }
   Eigen::MatrixXd columns(const RecordedPart& part) const override;
   void summarise(const Eigen::VectorXd& beta, const RecordedPart& calibration,

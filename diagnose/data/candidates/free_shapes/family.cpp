@@ -26,6 +26,7 @@ FreeShapeFit LinearFamily::fit(const FreeShapeInputs& in) {
     fit.value_sensitivity_v[value_names[j]] = sensitivity(static_cast<Eigen::Index>(j));
   }
   summarise(beta, in.calibration, fit.params);
+  fit.search_edges = search_edges();
   fit.free_values = static_cast<int>(value_names.size()) + searched_values();
   fit.description = describe(beta) + chosen_on_heldout;
   fit.heldout_values = heldout_values;

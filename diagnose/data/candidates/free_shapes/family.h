@@ -58,6 +58,9 @@ class LinearFamily : public Family {
   virtual void summarise(const Eigen::VectorXd& /*beta*/, const RecordedPart& /*calibration*/,
                          std::map<std::string, double>& /*params*/) const {}
   virtual std::string describe(const Eigen::VectorXd& beta) const = 0;
+  // The summary parameters whose search ended on an edge of its range, where the data may hold
+  // the value beyond it: key -> "<= x" or ">= x", reported as a bound rather than a value.
+  virtual std::map<std::string, std::string> search_edges() const { return {}; }
   // Families whose shape the calibration part leaves open where the held-out part lies choose it
   // there, after search(): returns how many values that fitted on the held-out part, with a
   // phrase for the description.

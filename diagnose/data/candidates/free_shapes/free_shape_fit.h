@@ -82,6 +82,9 @@ struct FreeShapeFit {
   // compensated_sensitivity.h); 0 for a value nothing in the data moves with (a knot at a
   // temperature never visited). Empty for the mains' lines.
   std::map<std::string, double> value_sensitivity_v;
+  // Summary parameters whose search ended on an edge of its range: key -> "<= x" or ">= x"
+  // (LinearFamily::search_edges).
+  std::map<std::string, std::string> search_edges;
 };
 
 // What a family is fitted to: the two parts, the gap the modelled effects leave on each, and

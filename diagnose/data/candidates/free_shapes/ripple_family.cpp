@@ -37,6 +37,20 @@ void RippleFamily::search(const RecordedPart& calibration, const std::vector<dou
     }
   }
   per_mm_ = 0.5 * (a + b);
+  first_per_mm_ = first, last_per_mm_ = last, step_per_mm_ = step;
+}
+
+std::map<std::string, std::string> RippleFamily::search_edges() const {
+  // Golden section ends within a thousandth of a lattice step of an edge it is pressed against.
+  const double near = 1e-3 * step_per_mm_;
+  if (per_mm_ <= 0.0) return {};
+  if (per_mm_ <= first_per_mm_ + near) {
+    return {{"ripple_period_mm", fmt::format(">= {:.3g}", 1.0 / per_mm_)}};
+  }
+  if (per_mm_ >= last_per_mm_ - near) {
+    return {{"ripple_period_mm", fmt::format("<= {:.3g}", 1.0 / per_mm_)}};
+  }
+  return {};
 }
 
 std::vector<std::string> RippleFamily::names() const {

@@ -29,6 +29,8 @@ class RippleFamily : public LinearFamily {
   void summarise(const Eigen::VectorXd& beta, const RecordedPart& calibration,
                  std::map<std::string, double>& params) const override;
   std::string describe(const Eigen::VectorXd& beta) const override;
+  // The period, when the search ended on the longest (two across the range) or the shortest.
+  std::map<std::string, std::string> search_edges() const override;
 
   // The period searched, mm (0 before a search, or where the range is too short for one).
   double period_mm() const { return per_mm_ > 0.0 ? 1.0 / per_mm_ : 0.0; }
@@ -47,6 +49,7 @@ class RippleFamily : public LinearFamily {
                            double per_mm);
 
   double per_mm_ = 0.0;
+  double first_per_mm_ = 0.0, last_per_mm_ = 0.0, step_per_mm_ = 0.0;  // the search's range
 };
 
 }  // namespace flange::diagnose::free_shapes
