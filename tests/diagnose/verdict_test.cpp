@@ -31,6 +31,7 @@ VerdictFigures figures(double before, double after) {
   f.within_before_v = before;
   f.within_after_v = after;
   f.beyond_share_taken = 0.0;  // no sample beyond: nothing there to take
+  f.gap_before_picks = true;
   return f;
 }
 
@@ -50,6 +51,32 @@ TEST(Verdict, NoGapIsNone) {
   // Without a finding nothing is explained, even where what is left is the noise.
   f.rms_before = 3.0;
   EXPECT_EQ(decide(f), Decision::kUnexplained);
+}
+
+TEST(Verdict, PicksOfAResidueWithoutAGapAreNotFindings) {
+  // No gap before the picks (1.07 of the noise, no stage): a pick leaving 1.065 takes
+  // 1 - sqrt(1.065^2 - 1) / sqrt(1.07^2 - 1) = 1 - 0.3662 / 0.3808 = 3.8 % of the gap above the
+  // noise: none.
+  VerdictFigures residue = figures(1.07, 1.065);
+  residue.gap_before_picks = false;
+  EXPECT_EQ(decide(residue), Decision::kNone);
+  // A weak effect that takes it all (1.07 to 0.99 of the noise) is explained.
+  VerdictFigures weak = figures(1.07, 0.99);
+  weak.gap_before_picks = false;
+  EXPECT_EQ(decide(weak), Decision::kExplained);
+  // kLeastShareOfNoGapTaken = 0.5: 1.07 to 1.03 takes 1 - 0.2441 / 0.3808 = 35.9 %: none; to
+  // 1.01, 1 - 0.1418 / 0.3808 = 62.8 %: explained.
+  residue.rms_after = 1.03;
+  EXPECT_EQ(decide(residue), Decision::kNone);
+  residue.rms_after = 1.01;
+  EXPECT_EQ(decide(residue), Decision::kExplained);
+  // A class found by its signature is not judged by its gain.
+  VerdictFigures signature = figures(1.02, 1.02);
+  signature.gap_before_picks = false;
+  signature.found_by_signature = true;
+  EXPECT_EQ(decide(signature), Decision::kExplained);
+  // With a gap before the picks the rule does not apply.
+  EXPECT_EQ(decide(figures(1.2, 1.09)), Decision::kExplained);
 }
 
 TEST(Verdict, LeftWithinTheNoiseIsExplained) {

@@ -82,6 +82,16 @@ std::string none() {
       100.0 * (criteria::kExplainedRatio - 1.0));
 }
 
+std::string residue_fit(const std::vector<EffectFinding>& picks, double taken_pct,
+                        double least_pct) {
+  std::string names;
+  for (const EffectFinding& pick : picks) names += (names.empty() ? "" : " and ") + pick.name;
+  return fmt::format(
+      "{} would take {:.0f} % of the gap above the noise, less than the {:.0f} % a pick must take "
+      "where there was no gap before it: a fit of the noise's residue, not a finding",
+      names, taken_pct, least_pct);
+}
+
 std::string nearest(bool picked, const EffectFinding& nearest, bool several_picks,
                     const std::string& what_is_left) {
   return fmt::format("{}: it takes the held-out gap RMS from {:.4g} to {:.4g} V ({:.1f} %){}; {}",

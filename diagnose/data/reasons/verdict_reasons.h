@@ -39,6 +39,9 @@ std::string what_is_left(double left_v, double allowed_v, double worst_v, double
 
 std::string unexplained(bool any_findings);
 std::string none();
+// Picks on a held-out gap that was within the noise took only `taken_pct` of what stood above it.
+std::string residue_fit(const std::vector<EffectFinding>& picks, double taken_pct,
+                        double least_pct);
 
 // The nearest effect's evidence for an "unexplained" verdict.
 std::string nearest(bool picked, const EffectFinding& nearest, bool several_picks,

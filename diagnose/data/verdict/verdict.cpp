@@ -37,6 +37,13 @@ double partly_share(const VerdictFigures& f) {
   return above_noise_share_taken(f.rms_before, f.rms_after, f.noise_v);
 }
 
+// Picks on a held-out gap that was no gap, taking only a sliver of what stood above the noise: a
+// flexible class fitted to the noise's residue. A weak effect of the library takes all of it.
+bool picks_fit_a_residue(const VerdictFigures& f) {
+  return f.any_findings && !f.gap_before_picks && !f.found_by_signature &&
+         partly_share(f) < criteria::kLeastShareOfNoGapTaken;
+}
+
 // What the picks leave against what the noise allows, as a sentence.
 std::string what_is_left(const Selection& selection, double verdict_noise,
                          const HeldoutWindow& worst) {
@@ -93,9 +100,11 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
   // holds (and so no finding of theirs), what the noise leaves is the verdict's noise. A held-out
   // gap within what an explanation may leave (kExplainedRatio) is no gap: the same RMS left after
   // picks would be "explained", so a twin that holds the explanation leaves "none".
-  f.gap_exists =
+  f.gap_before_picks =
       diagnosis.heldout_rms_before > criteria::kExplainedRatio * std::max(sigma, verdict_noise) ||
-      !diagnosis.stage.empty() || has_noise_type || !findings.empty();
+      !diagnosis.stage.empty();
+  f.found_by_signature = has_noise_type;
+  f.gap_exists = f.gap_before_picks || has_noise_type || !findings.empty();
   f.noise_v = verdict_noise;
   f.rms_before = diagnosis.heldout_rms_before;
   f.rms_after = diagnosis.heldout_rms_after;
@@ -118,6 +127,7 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
 }  // namespace
 
 Decision decide(const VerdictFigures& f) {
+  if (picks_fit_a_residue(f)) return Decision::kNone;
   const bool overall = left_within_noise_overall(f);
   const bool locally = left_within_noise_locally(f);
   const bool within_reach =
@@ -187,6 +197,10 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
       break;
     case Decision::kNone:
       reasons.push_back(reasons::none());
+      if (picks_fit_a_residue(f)) {
+        reasons.push_back(reasons::residue_fit(findings, 100.0 * partly_share(f),
+                                               100.0 * criteria::kLeastShareOfNoGapTaken));
+      }
       break;
   }
   if (decision == Decision::kExplained || decision == Decision::kExplainedWithinReach ||

@@ -17,6 +17,10 @@ namespace flange::diagnose {
 struct VerdictFigures {
   bool any_findings = false;
   bool gap_exists = false;  // the held-out gap, a stage, or any finding shows a gap
+  // The held-out gap above what an explanation may leave, or a stage above its floor: a gap
+  // before any pick.
+  bool gap_before_picks = false;
+  bool found_by_signature = false;  // a noise-type finding recognised by its signature
   double noise_v = 0.0;     // what is left is compared with this (VerdictNoise)
   double rms_before = 0.0, rms_after = 0.0;  // the held-out gap before and after the picks
   double worst_window_v = 0.0;               // the worst window within reach (worst_window)
@@ -38,7 +42,10 @@ enum class Decision { kExplained, kExplainedWithinReach, kPartlyExplained, kUnex
 //   share of samples beyond of the gap above the noise there;
 // - partly explained: the picks take at least criteria::kPartlyExplainedShare of the gap above the
 //   noise;
-// - unexplained: a gap exists; none: none does.
+// - unexplained: a gap exists; none: none does;
+// - none, too, where there was no gap before the picks and the picks, none of them found by a
+//   signature, take less than criteria::kLeastShareOfNoGapTaken of the gap above the noise: a fit
+//   of the noise's residue, not a finding.
 Decision decide(const VerdictFigures& f);
 
 // "explained", "partly explained", "unexplained" or "none".
