@@ -6,12 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
 #include "cli.h"
+#include "diagnosis_detail.h"
 #include "recording_series.h"
 #include "test_files.h"
 
@@ -198,12 +200,29 @@ TEST(DiagnoseSelftest, MountMotionKeepsTheFirstPicksLeastGainAtTwoPercent) {
 }
 
 // A temperature-reading lag of 62 s at 0.07 V of noise (fixture: the twin self-test's seed 15, case
-// 25): the held-out gap is 1.017 times the noise, and a thermal lag takes 0.30 % of the noise
-// variance off it, the other candidates 0.08 % or less. That is below a fixed 0.5 %, but what the
-// candidates gain by chance against the held-out gap shifted in time is less than 0.2 % here, and
-// the lag is named.
-TEST(DiagnoseSelftest, AWeakReadingLagIsNamedAboveWhatChanceGainsOnThisData) {
-  expect_explained_by_its_one_effect(15, 25, "thermal_lag");
+// 25): the held-out gap is 1.017 times the noise, no gap, and a thermal lag takes 0.30 % of the
+// noise variance off it, above what the candidates gain by chance against the held-out gap
+// shifted in time (under 0.2 % here), so the selection picks it. But it takes only 4.5 % of the gap
+// above the noise, no better than seven other classes: what a flexible class fitted to a residue
+// of the noise also does (criteria::kLeastShareOfNoGapTaken). The verdict says "none" and names
+// the lag in its reasons, not as a finding.
+TEST(DiagnoseSelftest, AWeakReadingLagWithinTheNoiseIsNamedInTheReasonsNotClaimed) {
+  const SelftestCaseResult r = run_case(15, 25);
+  ASSERT_EQ(r.spec.truth.size(), 1u);
+  ASSERT_EQ(r.spec.truth.front().name, "thermal_lag");
+  EXPECT_EQ(r.diagnosis.status, "none");
+  EXPECT_TRUE(r.diagnosis.effects.empty());
+  ASSERT_TRUE(r.recordings);
+  DiagnoseOptions options;
+  options.bootstrap_rounds = SelftestOptions{}.bootstrap_rounds;
+  const DiagnosisResult again =
+      diagnose_in_detail(r.recordings->calibration, r.recordings->heldout, options);
+  EXPECT_EQ(again.diagnosis.status, "none");
+  const std::vector<std::string>& reasons = again.detail.reasons;
+  EXPECT_TRUE(std::any_of(reasons.begin(), reasons.end(), [](const std::string& reason) {
+    return reason.find("thermal_lag would take") != std::string::npos &&
+           reason.find("a fit of the noise's residue") != std::string::npos;
+  })) << "reasons: " << ::testing::PrintToString(reasons);
 }
 
 TEST(DiagnoseSelftestCommand, SmallBlindSetMeetsTheAims) {

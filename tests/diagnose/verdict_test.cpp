@@ -56,10 +56,15 @@ TEST(Verdict, NoGapIsNone) {
 TEST(Verdict, PicksOfAResidueWithoutAGapAreNotFindings) {
   // No gap before the picks (1.07 of the noise, no stage): a pick leaving 1.065 takes
   // 1 - sqrt(1.065^2 - 1) / sqrt(1.07^2 - 1) = 1 - 0.3662 / 0.3808 = 3.8 % of the gap above the
-  // noise: none.
+  // noise, alike with another class: none.
   VerdictFigures residue = figures(1.07, 1.065);
   residue.gap_before_picks = false;
+  residue.picks_alike = true;
   EXPECT_EQ(decide(residue), Decision::kNone);
+  // A pick that no other class fits as well stands: a weak effect alone.
+  VerdictFigures alone = residue;
+  alone.picks_alike = false;
+  EXPECT_EQ(decide(alone), Decision::kExplained);
   // A weak effect that takes it all (1.07 to 0.99 of the noise) is explained.
   VerdictFigures weak = figures(1.07, 0.99);
   weak.gap_before_picks = false;

@@ -87,8 +87,9 @@ std::string residue_fit(const std::vector<EffectFinding>& picks, double taken_pc
   std::string names;
   for (const EffectFinding& pick : picks) names += (names.empty() ? "" : " and ") + pick.name;
   return fmt::format(
-      "{} would take {:.0f} % of the gap above the noise, less than the {:.0f} % a pick must take "
-      "where there was no gap before it: a fit of the noise's residue, not a finding",
+      "{} would take {:.0f} % of the gap above the noise, no better than other classes, and less "
+      "than the {:.0f} % such a pick must take where there was no gap before it: a fit of the "
+      "noise's residue, not a finding",
       names, taken_pct, least_pct);
 }
 

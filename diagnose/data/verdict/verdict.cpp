@@ -37,10 +37,11 @@ double partly_share(const VerdictFigures& f) {
   return above_noise_share_taken(f.rms_before, f.rms_after, f.noise_v);
 }
 
-// Picks on a held-out gap that was no gap, taking only a sliver of what stood above the noise: a
-// flexible class fitted to the noise's residue. A weak effect of the library takes all of it.
+// Picks on a held-out gap that was no gap, taking only a sliver of what stood above the noise and
+// no better than another class would: a flexible class fitted to the noise's residue. A weak
+// effect of the library takes all of it, or stands alone.
 bool picks_fit_a_residue(const VerdictFigures& f) {
-  return f.any_findings && !f.gap_before_picks && !f.found_by_signature &&
+  return f.any_findings && !f.gap_before_picks && !f.found_by_signature && f.picks_alike &&
          partly_share(f) < criteria::kLeastShareOfNoGapTaken;
 }
 
@@ -104,6 +105,8 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
       diagnosis.heldout_rms_before > criteria::kExplainedRatio * std::max(sigma, verdict_noise) ||
       !diagnosis.stage.empty();
   f.found_by_signature = has_noise_type;
+  f.picks_alike = std::any_of(findings.begin(), findings.end(),
+                              [](const auto& finding) { return !finding.indistinguishable_from.empty(); });
   f.gap_exists = f.gap_before_picks || has_noise_type || !findings.empty();
   f.noise_v = verdict_noise;
   f.rms_before = diagnosis.heldout_rms_before;

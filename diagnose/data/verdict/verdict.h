@@ -21,6 +21,7 @@ struct VerdictFigures {
   // before any pick.
   bool gap_before_picks = false;
   bool found_by_signature = false;  // a noise-type finding recognised by its signature
+  bool picks_alike = false;  // a pick the data cannot tell from another class (confounded)
   double noise_v = 0.0;     // what is left is compared with this (VerdictNoise)
   double rms_before = 0.0, rms_after = 0.0;  // the held-out gap before and after the picks
   double worst_window_v = 0.0;               // the worst window within reach (worst_window)
@@ -44,8 +45,8 @@ enum class Decision { kExplained, kExplainedWithinReach, kPartlyExplained, kUnex
 //   noise;
 // - unexplained: a gap exists; none: none does;
 // - none, too, where there was no gap before the picks and the picks, none of them found by a
-//   signature, take less than criteria::kLeastShareOfNoGapTaken of the gap above the noise: a fit
-//   of the noise's residue, not a finding.
+//   signature, take less than criteria::kLeastShareOfNoGapTaken of the gap above the noise and
+//   fit it no better than another class: a fit of the noise's residue, not a finding.
 Decision decide(const VerdictFigures& f);
 
 // "explained", "partly explained", "unexplained" or "none".
