@@ -2,6 +2,20 @@
 # One helper adds a GoogleTest file and registers its tests with CTest.
 include(GoogleTest)
 
+# A sanitized build (FLANGE_SANITIZE) runs the tests several times slower: their time limits are
+# this many times longer there (flange_scaled_timeout).
+if(FLANGE_SANITIZE)
+  set(FLANGE_TIMEOUT_SCALE 5)
+else()
+  set(FLANGE_TIMEOUT_SCALE 1)
+endif()
+
+# flange_scaled_timeout(<out-var> <seconds>): a test's time limit in this build.
+function(flange_scaled_timeout out seconds)
+  math(EXPR scaled "${seconds} * ${FLANGE_TIMEOUT_SCALE}")
+  set(${out} ${scaled} PARENT_SCOPE)
+endfunction()
+
 # flange_add_gtest(<unit>_test SOURCES <files> LIBS <targets> [TIMEOUT s] [TEST_PREFIX p])
 # TEST_PREFIX (e.g. "VehicleSos.") tells apart the same tests built for several coefficient sets.
 function(flange_add_gtest name)
@@ -16,6 +30,7 @@ function(flange_add_gtest name)
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 300)
   endif()
+  flange_scaled_timeout(ARG_TIMEOUT ${ARG_TIMEOUT})
   gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_BINARY_DIR}
                        TEST_PREFIX "${ARG_TEST_PREFIX}"
                        PROPERTIES TIMEOUT ${ARG_TIMEOUT} DISCOVERY_TIMEOUT 60)

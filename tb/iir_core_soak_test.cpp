@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // One million full-scale random samples through the Verilated core and the model, back to back,
-// every pin compared in every cycle; the run must also stay fast enough for CI (< 120 s).
+// every pin compared in every cycle. It prints its rate; its time is bounded by the CTest timeout.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -42,7 +42,6 @@ TEST(IirCoreSoak, MillionRandomSamples) {
   EXPECT_FALSE(report.rtl_assertion) << reproduce;
   EXPECT_EQ(report.accepted, kSamples);
   EXPECT_EQ(report.outputs.size(), kSamples);
-  EXPECT_LT(seconds, 120.0) << "the soak test must stay under 2 minutes; " << reproduce;
 }
 
 }  // namespace

@@ -21,8 +21,10 @@ class Tabulated final : public Effect {
   Tabulated(const ParamValues& p, std::shared_ptr<const EffectTable> table)
       : table_(std::move(table)), start_age_days_(p.at("start_age_days")) {}
 
+  // At the temperature the channel reports: a table is fitted against recorded temperatures, and
+  // behind a lagging or late temperature channel those differ from the ambient.
   void apply(ChainSample& sample) override {
-    sample.voltage_v += table_->added_voltage(sample.clearance_mm, sample.ambient_c,
+    sample.voltage_v += table_->added_voltage(sample.clearance_mm, sample.thermocouple_c,
                                               start_age_days_ + sample.t_s / kSecondsPerDay);
   }
 
