@@ -91,7 +91,9 @@ Session stream(PtyBoardOptions options, const std::vector<host::ChannelWords>& i
   if (wire == Wire::kPty) serial.emplace(pty.slave_name(), kBaud);
   host::ByteStream& port = serial ? static_cast<host::ByteStream&>(*serial) : socket;
   PtyBoard board(wire == Wire::kPty ? pty.master() : socket.board_end(), std::move(options));
-  host::BoardLink link(port, {kBaud, timeout_ms, 8, window});
+  // The most retries a link takes: the Verilated top in a sanitized build answers tens of times
+  // slower than the wire, and a short timeout must not give up on it.
+  host::BoardLink link(port, {kBaud, timeout_ms, 100, window});
   host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
   Session s;
   const auto start = std::chrono::steady_clock::now();
