@@ -18,6 +18,9 @@ std::optional<double> km_at(double gap_mm, double rate_mm_per_km) {
 
 std::string date_of_day(double day) {
   using namespace std::chrono;
+  // A rate barely above zero puts the limit millions of years away, past what a date holds.
+  constexpr double kLastDay = 2932896.0;  // 9999-12-31
+  if (!(day <= kLastDay)) return "after 9999-12-31";
   const year_month_day date{sys_days{days{static_cast<int>(std::floor(day))}}};
   return fmt::format("{:04d}-{:02d}-{:02d}", static_cast<int>(date.year()),
                      static_cast<unsigned>(date.month()), static_cast<unsigned>(date.day()));

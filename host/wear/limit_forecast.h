@@ -18,7 +18,7 @@ struct LimitForecast {
   std::optional<double> km_low;   // at the upper rate
   std::optional<double> km_high;  // at the lower rate; nothing when it is not positive
   std::optional<double> days, days_low, days_high;
-  std::string date, date_low, date_high;  // YYYY-MM-DD; "" when unknown
+  std::string date, date_low, date_high;  // YYYY-MM-DD (date_of_day); "" when unknown
 };
 
 struct ForecastInput {
@@ -32,7 +32,8 @@ struct ForecastInput {
 
 LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_mm);
 
-// "YYYY-MM-DD" of a day count since 1970-01-01 (the fraction dropped).
+// "YYYY-MM-DD" of a day count since 1970-01-01 (the fraction dropped); "after 9999-12-31" beyond
+// that day (a rate barely above zero).
 std::string date_of_day(double day);
 
 }  // namespace flange::host

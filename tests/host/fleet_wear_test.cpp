@@ -4,6 +4,7 @@
 // partner flagged (and its drift fitted out of its rate), healthy sensors left alone, and the
 // forecast of the warning clearance.
 #include "fleet_wear.h"
+#include "limit_forecast.h"
 
 #include <gtest/gtest.h>
 
@@ -97,6 +98,16 @@ TEST(FleetWear, TheWarningForecastFollowsTheRate) {
   EXPECT_GT(*w.warning.km_high, *w.warning.km);
   EXPECT_FALSE(w.warning.date.empty());
   EXPECT_EQ(fleet.wheels.front().wheel.side, "left");  // the sooner wheel first
+}
+
+TEST(LimitForecast, ARateBarelyAboveZeroGivesADateBeyondTheCalendar) {
+  EXPECT_EQ(date_of_day(0.0), "1970-01-01");
+  EXPECT_EQ(date_of_day(2932896.0), "9999-12-31");
+  EXPECT_EQ(date_of_day(2932897.0), "after 9999-12-31");
+  // 1 mm to go at 1e-15 mm/km and 100 km a day: 1e13 days.
+  const LimitForecast f = forecast_limit({5.0, 1e-15, 1e-15, 1e-15, 100.0, 20000.0}, 6.0);
+  ASSERT_TRUE(f.days);
+  EXPECT_EQ(f.date, "after 9999-12-31");
 }
 
 }  // namespace
