@@ -8,8 +8,8 @@
 #
 # --all builds and runs the whole test suite under the sanitizers instead of the fast part (about
 # three hours on two shared cores: two to build, one to test). A fuzzer that finds a crash leaves
-# the input in DIR/fuzz_findings/ and the script fails with the command that reproduces it; keep such an input in
-# tests/fuzz/corpus/<harness>/ once it is fixed, so every build replays it.
+# the input in DIR/fuzz_findings/ and the script fails with the command that reproduces it; keep
+# such an input in tests/fuzz/corpus/<harness>/ once it is fixed, so every build replays it.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
