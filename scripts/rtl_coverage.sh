@@ -50,8 +50,11 @@ built=$SECONDS
 rm -rf "$out"
 mkdir -p "$out/raw" "$out/logs"
 export FLANGE_COVERAGE_DIR=$out/raw
-filter=-IirCoreSoak.*
-[[ ${FLANGE_COVERAGE_SOAK:-0} == 1 ]] && filter=*
+# The soak test adds time and no coverage; the link's rate tests time the wall clock, which an
+# instrumented model on a shared machine cannot keep to (the protocol model's rate tests reach no
+# RTL at all).
+filter=-IirCoreSoak.*:BoardFtdiStream.WindowCarries*:BoardFtdiStream.StopAndWait*
+[[ ${FLANGE_COVERAGE_SOAK:-0} == 1 ]] && filter=-BoardFtdiStream.WindowCarries*:BoardFtdiStream.StopAndWait*
 echo "rtl_coverage: running them (logs in $out/logs)"
 failed=0
 # Working directory: the build folder, as under CTest.
