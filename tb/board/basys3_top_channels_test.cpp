@@ -279,7 +279,8 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
   // Back-to-back requests on random channels: a reply (7 bytes) is longer than a request (6), so
   // the queue of accepted frames (32) fills and then about every seventh frame is dropped. A
   // reply's OVERRUN says that a frame of its own channel was dropped since that channel's previous
-  // reply. SEQ wraps: a reply's SEQ is its frame's index modulo 256.
+  // reply. SEQ wraps: a reply's SEQ is its frame's index modulo 256. Every channel has a frame
+  // dropped.
   std::mt19937 rng(31);
   std::uniform_int_distribution<int> any_channel(0, kChannels - 1);
   std::vector<std::pair<int, std::int16_t>> sent;  // channel, sample; the index is the SEQ
@@ -302,7 +303,7 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
     }
   }
   ASSERT_LT(got.size(), sent.size()) << "the burst was expected to overrun the board";
-  std::vector<bool> dropped_since_reply(kChannels, false);
+  std::vector<bool> dropped_since_reply(kChannels, false), ever_dropped(kChannels, false);
   std::size_t next = 0;  // index into got
   for (std::size_t k = 0; k < sent.size(); ++k) {
     const auto [c, word] = sent[k];
@@ -318,7 +319,11 @@ TEST_F(Basys3TopChannels, BurstReportsOverrunOnTheDroppedFramesChannel) {
       ++next;
     } else {
       dropped_since_reply[c] = true;  // never filtered: the model does not step
+      ever_dropped[c] = true;
     }
+  }
+  for (int c = 0; c < kChannels; ++c) {
+    EXPECT_TRUE(ever_dropped[c]) << "no frame of channel " << c << " was dropped";
   }
   EXPECT_EQ(next, got.size()) << "replies out of order or with unknown SEQ";
   EXPECT_TRUE(bench_->leds() & kLedOverrun);
