@@ -113,11 +113,12 @@ inline constexpr double kExplainedRatio = 1.10;
 // Where there was no gap before the picks (the held-out gap within kExplainedRatio of the noise,
 // no stage above its floor), picks found by their gain that the data cannot tell from another
 // class are findings only when they take at least this share of the gap above the noise. Weak
-// effects of the library take all of it (the twin's blind self-tests: such claims left the gap at
-// or below the noise) or stand alone (a reading lag taking 4.5 %:
-// DiagnoseSelftest.AWeakReadingLagWithinTheNoiseIsNamedInTheReasonsNotClaimed); a flexible class fitted
-// to what an improved twin leaves took 4-12 %, alike with two to six other classes, on the
-// alternative reality's pairs. Test: Verdict.PicksOfAResidueWithoutAGapAreNotFindings.
+// effects of the library mostly take all of it (the twin's blind self-tests: such claims left the
+// gap at or below the noise); a flexible class fitted to what an improved twin leaves took 4-12 %,
+// alike with two to six other classes, on the alternative reality's pairs. The price: a weak
+// reading lag taking 4.5 %, alike with seven classes, is named only in a reason
+// (DiagnoseSelftest.AWeakReadingLagWithinTheNoiseIsNamedInTheReasonsNotClaimed).
+// Test: Verdict.PicksOfAResidueWithoutAGapAreNotFindings.
 inline constexpr double kLeastShareOfNoGapTaken = 0.5;
 // Partly explained: picks that leave more still take at least this share of the held-out gap's
 // RMS above the noise; below it several classes together can take most of an effect that none of

@@ -59,15 +59,6 @@ class BoardLink {
   // answer or does not confirm a windowed reset.
   int reset_session();
 
-  // The samples taken since the session began, with their replies: what a replay after a board
-  // reset sends again (8 bytes a sample: 35 MB for an hour of 12 wheels at 100 Hz).
-  struct TakenSample {
-    std::uint8_t channel = 0;
-    std::int16_t word = 0;
-    std::int16_t out = 0;
-    std::uint8_t status = 0;
-  };
-
   // Sends `word` on `channel` (0..255) with the next SEQ, after waiting while `window` requests
   // are in flight; `on_reply` gets its reply, and replies are handed on in the order of post().
   // Throws std::runtime_error naming the port when the oldest request stays unanswered after
@@ -121,7 +112,15 @@ class BoardLink {
   LinkCounts counts_;
   std::deque<InFlight> in_flight_;
   std::uint8_t next_seq_ = 1;
-  std::vector<TakenSample> taken_;  // since the session began
+  // The samples taken since the session began, with their replies: what a replay after a board
+  // reset sends again (8 bytes a sample: 35 MB for an hour of 12 wheels at 100 Hz).
+  struct TakenSample {
+    std::uint8_t channel = 0;
+    std::int16_t word = 0;
+    std::int16_t out = 0;
+    std::uint8_t status = 0;
+  };
+  std::vector<TakenSample> taken_;
   int board_channels_ = 0;
   bool reset_seen_ = false;  // a reply to a request in flight was not of a windowed session
   bool recovering_ = false;

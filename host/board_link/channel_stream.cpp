@@ -159,8 +159,9 @@ std::string stream_summary_line(const StreamCounts& counts) {
       counts.link_errors, counts.overruns, counts.saturated, counts.bypassed,
       counts.clipped_inputs);
   if (counts.board_resets > 0) {
-    line += fmt::format("; the board was reset {} time(s), {} samples replayed to rebuild its filters",
-                        counts.board_resets, counts.replayed);
+    line += fmt::format(
+        "; the board was reset {} time(s), {} samples replayed to rebuild its filters",
+        counts.board_resets, counts.replayed);
   }
   if (counts.checked) {
     line += fmt::format("; {} mismatches against the model", counts.mismatches);

@@ -120,7 +120,7 @@ void expect_twelve_wheels_fit(int latency_timer_ms, bool protocol_model, double 
   EXPECT_EQ(s.counts.samples, 12u * in[0].words.size());
   EXPECT_EQ(s.counts.mismatches, 0u) << s.counts.first_mismatch;
   // The protocol model answers at once: nothing waits for the timeout. The Verilated top in an
-  // instrumented build (coverage, sanitizers) may, and its resends must still give each output once.
+  // instrumented build (coverage, sanitizers) may, and its resends still give each output once.
   if (protocol_model) {
     EXPECT_EQ(s.counts.resent, 0u);
   }

@@ -44,7 +44,9 @@ void for_each_null_replica(const RecordingSeries& real, const std::vector<double
     }
     running.push_back(std::async(std::launch::async, [&, replica, z = std::move(z)] {
       std::vector<double> own_motion;
-      if (motion) own_motion = motion(sim::derive_seed(seed, 1000 + static_cast<std::uint64_t>(replica)));
+      if (motion) {
+        own_motion = motion(sim::derive_seed(seed, 1000 + static_cast<std::uint64_t>(replica)));
+      }
       const std::vector<double>& centre = motion ? own_motion : sim_v;
       std::vector<double> noisy_v(sim_v.size());
       for (std::size_t i = 0; i < sim_v.size(); ++i) noisy_v[i] = white.noisy(centre[i], z[i]);

@@ -105,8 +105,9 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
       diagnosis.heldout_rms_before > criteria::kExplainedRatio * std::max(sigma, verdict_noise) ||
       !diagnosis.stage.empty();
   f.found_by_signature = has_noise_type;
-  f.picks_alike = std::any_of(findings.begin(), findings.end(),
-                              [](const auto& finding) { return !finding.indistinguishable_from.empty(); });
+  f.picks_alike = std::any_of(findings.begin(), findings.end(), [](const auto& finding) {
+    return !finding.indistinguishable_from.empty();
+  });
   f.gap_exists = f.gap_before_picks || has_noise_type || !findings.empty();
   f.noise_v = verdict_noise;
   f.rms_before = diagnosis.heldout_rms_before;
