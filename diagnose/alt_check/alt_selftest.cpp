@@ -31,20 +31,6 @@ std::string fmt_label(int index, const char* part) {
   return fmt::format("alt pair {} ({})", index, part);
 }
 
-// The session as `flange diagnose` reads it, with its start time (as a DAQ's file header or a lab
-// book gives it; the clock itself restarts at 0 in every session).
-RecordingSeries as_series(const alt_reality::AltRecording& r, const alt_reality::SessionPlan& plan,
-                          const std::string& label) {
-  RecordingSeries s;
-  s.path = label;
-  s.start_utc_s = alt_session_start_utc_s(plan);
-  s.t_s = r.t_s;
-  s.clearance_mm = r.clearance_mm;
-  s.temp_c = r.temp_c;
-  s.voltage_v = r.voltage_v;
-  return s;
-}
-
 void score_in_library(const AltPairSpec& spec, const Diagnosis& diagnosis, AltScore& score) {
   score.verdict_correct = diagnosis.status == "explained";
   score.top_correct = !score.claimed.empty() && holds_class(spec, score.claimed.front());
@@ -60,6 +46,18 @@ void score_in_library(const AltPairSpec& spec, const Diagnosis& diagnosis, AltSc
 }
 
 }  // namespace
+
+RecordingSeries alt_series(const alt_reality::AltRecording& r, const alt_reality::SessionPlan& plan,
+                           const std::string& label) {
+  RecordingSeries s;
+  s.path = label;
+  s.start_utc_s = alt_session_start_utc_s(plan);
+  s.t_s = r.t_s;
+  s.clearance_mm = r.clearance_mm;
+  s.temp_c = r.temp_c;
+  s.voltage_v = r.voltage_v;
+  return s;
+}
 
 double alt_session_start_utc_s(const alt_reality::SessionPlan& plan) {
   // When the alternative reality's sensor was calibrated (its age 0): any date serves, only the
@@ -119,8 +117,8 @@ std::vector<AltPairResult> run_alt_selftest(const SelftestOptions& options) {
     diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
     diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
     DiagnosisResult detailed = diagnose_in_detail(
-        as_series(pair.fit, r.spec.fit, fmt_label(index, "fit")),
-        as_series(pair.heldout, r.spec.heldout, fmt_label(index, "held-out")), diagnose_options);
+        alt_series(pair.fit, r.spec.fit, fmt_label(index, "fit")),
+        alt_series(pair.heldout, r.spec.heldout, fmt_label(index, "held-out")), diagnose_options);
     r.diagnosis = std::move(detailed.diagnosis);
     r.partial = std::move(detailed.detail.partial);
     r.score = score_alt_pair(r.spec, r.diagnosis, r.partial);

@@ -75,6 +75,11 @@ AltSummary summarise_alt_selftest(const std::vector<AltPairResult>& results);
 // --real-start / --holdout-start): the sensor's age at that instant after a fixed calibration date.
 double alt_session_start_utc_s(const alt_reality::SessionPlan& plan);
 
+// A session as `flange diagnose` reads it, with its start time (as a DAQ's file header or a lab
+// book gives it; the clock itself restarts at 0 in every session).
+RecordingSeries alt_series(const alt_reality::AltRecording& recording,
+                           const alt_reality::SessionPlan& plan, const std::string& label);
+
 // Every pair of options.seed (cases = pairs; only_case: just that pair; duration_s > 0 caps the
 // sessions), in parallel over options.jobs threads; results in pair order.
 std::vector<AltPairResult> run_alt_selftest(const SelftestOptions& options);

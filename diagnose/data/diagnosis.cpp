@@ -25,6 +25,7 @@
 #include "sample_rate.h"
 #include "selection.h"
 #include "session_clock.h"
+#include "session_lines.h"
 #include "stage_gaps.h"
 #include "start.h"
 #include "twin_noise.h"
@@ -88,6 +89,21 @@ HeldMotion held_motion(const TwinReplay& replay, const DiagnoseOptions& given, b
   return [&replay, &given](std::uint64_t seed) { return replay.voltage(given.twin.effects, seed); };
 }
 
+// A twin holding lines of each session (the mains) is diagnosed on the recordings less each
+// part's own lines, without them; the improved twin holds them again.
+DiagnosisResult diagnose_without_session_lines(const SessionLines& lines,
+                                               const DiagnoseOptions& given) {
+  DiagnosisResult result = diagnose_in_detail(lines.calibration, lines.heldout, lines.options);
+  result.detail.reasons.push_back(lines.reason);
+  std::vector<sim::EffectSettings>& effects = result.improved_twin.twin.effects;
+  for (const sim::EffectSettings& effect : given.twin.effects) {
+    const bool held = std::any_of(effects.begin(), effects.end(),
+                                  [&](const sim::EffectSettings& e) { return e.name == effect.name; });
+    if (!held) effects.push_back(effect);
+  }
+  return result;
+}
+
 }  // namespace
 
 double rms_above_noise(double rms, double noise) {
@@ -104,6 +120,10 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   DiagnosisResult result;
   result.detail.fs_hz = fs_hz;
   const SessionClock clock = session_clock(calibration, heldout);
+  if (const std::optional<SessionLines> lines = take_out_session_lines(
+          calibration, heldout, given, clock.age_offset_s, clock.heldout_age_unknown())) {
+    return diagnose_without_session_lines(*lines, given);
+  }
   result.diagnosis.clock = clock.kind;
   if (!clock.heldout_age_unknown()) result.diagnosis.heldout_starts_after_s = clock.age_offset_s;
   // Replay: the twin as given on both parts, and the converter grid they share.

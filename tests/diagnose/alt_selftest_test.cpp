@@ -15,9 +15,11 @@
 #include <tuple>
 
 #include "criteria.h"
+#include "diagnosis_detail.h"
 #include "finding_class.h"
 #include "flange_in_process.h"
 #include "test_files.h"
+#include "twin_file.h"
 
 namespace flange::diagnose {
 namespace {
@@ -313,6 +315,34 @@ TEST(AltSelftest, OnAConverterGridAFirstPickNeedsTwoPercent) {
 // 5 s where they fit better, and the mains is named.
 TEST(AltSelftest, AWanderingGridIsFollowedWithShorterWindows) {
   expect_explained_by_one_effect(436, 36, "mains_pickup");
+}
+
+// The same pair, diagnosed again against the twin.json its diagnosis wrote. Lines fitted window by
+// window cannot be replayed on another session: the improved twin holds mains pickup as each
+// session's own lines, and the diagnosis against it takes each part's own out before the rest.
+TEST(AltSelftest, AWanderingGridHeldAsEachSessionsOwnLinesLeavesNone) {
+  const alt_reality::AltPairSpec spec = alt_reality::draw_alt_pair(36, 436);
+  const alt_reality::AltPair pair = alt_reality::render_alt_pair(spec);
+  const RecordingSeries fit = alt_series(pair.fit, spec.fit, "fit");
+  const RecordingSeries heldout = alt_series(pair.heldout, spec.heldout, "held-out");
+  DiagnoseOptions options;
+  options.bootstrap_rounds = 20;
+  const DiagnosisResult first = diagnose_in_detail(fit, heldout, options);
+  ASSERT_EQ(first.diagnosis.status, "explained");
+  ASSERT_EQ(first.improved_twin.findings.size(), 1u);
+  EXPECT_EQ(first.improved_twin.findings[0].held_as, "session's own lines");
+  options.twin = sim::twin_from_json(sim::twin_to_json(first.improved_twin.twin), "twin.json");
+  const DiagnosisResult second = diagnose_in_detail(fit, heldout, options);
+  EXPECT_EQ(second.diagnosis.status, "none");
+  EXPECT_TRUE(std::any_of(second.detail.reasons.begin(), second.detail.reasons.end(),
+                          [](const std::string& r) {
+                            return r.find("whose lines are each session's own") != std::string::npos;
+                          }));
+  // The twin it hands back holds the lines still.
+  const std::vector<sim::EffectSettings>& again = second.improved_twin.twin.effects;
+  EXPECT_TRUE(std::any_of(again.begin(), again.end(), [](const sim::EffectSettings& e) {
+    return e.name == "mains_pickup";
+  }));
 }
 
 // Seed 447, pair 35: a log-time ageing, a ln(1 + age / 0.80 d), whose held-out session starts

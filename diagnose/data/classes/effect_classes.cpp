@@ -150,6 +150,7 @@ EffectClass mains_pickup() {
       .search = {{"amplitude_v", 0, 1}, {"phase_deg", -180, 180}, {"harmonic_ratio", 0, 1}},
       .fit = fit_mains,
       .follows = "the spectrum",
+      .lines_of_each_session = true,
       .families = {{"mains_pickup", "aliased lines", fs::make_mains_lines}},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"amplitude_v", d.uniform(0.05, 0.3)},

@@ -74,6 +74,11 @@ struct EffectClass {
   // Mount motion: found from how the gap's variance follows the sensitivity
   // (signatures/vibration_signature.h).
   bool is_mount_motion = false;
+  // Lines each session has of its own (the mains: its phase at a session's start, and with a
+  // wandering grid its amplitude window by window). A twin that holds the class is not replayed
+  // with it: a diagnosis against that twin takes each part's own lines, fitted by the class's
+  // free shape, out of its recording (replay/session_lines.h).
+  bool lines_of_each_session = false;
   // The channel delays a setting of this class makes.
   ChannelDelay (*channel_delay)(const sim::EffectSettings&) = nullptr;
   // The shape-free families that stand for it (free_shape_fit.h), in the order they are scored,

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 
 #include "criteria.h"
@@ -12,6 +13,7 @@
 #include "effect_classes.h"
 #include "parts.h"
 #include "selection.h"
+#include "series_arithmetic.h"
 #include "sim_error.h"
 #include "table_fit.h"
 
@@ -86,6 +88,24 @@ std::optional<sim::EffectSettings> library_member(const Pick& pick) {
   }
 }
 
+// A free shape of lines each session has of its own (the mains' lines fitted window by window) as
+// its library effect: one line at the mains' frequency with the lines' RMS, what `flange simulate`
+// plays; a diagnosis against the twin fits each session's own lines instead (session_lines.h).
+std::optional<sim::EffectSettings> session_lines_member(const Pick& pick) {
+  const std::map<std::string, double>& params = pick.chosen().free_shape->params;
+  const auto rms = params.find("rms_v"), mains = params.find("mains_hz");
+  if (rms == params.end() || mains == params.end() || mains->second <= 0.0) return std::nullopt;
+  try {
+    return sim::make_effect_settings(
+        pick.finding.name,
+        {{"amplitude_v", std::sqrt(2.0) * rms->second}, {"mains_hz", mains->second},
+         {"harmonics", 1.0}},
+        "improved twin");
+  } catch (const sim::BadArgument&) {
+    return std::nullopt;
+  }
+}
+
 // The replayed effects: all but mount motion, which the diagnosis does not replay.
 std::vector<sim::EffectSettings> replayed(const std::vector<sim::EffectSettings>& effects) {
   std::vector<sim::EffectSettings> out;
@@ -103,6 +123,17 @@ void add_library_members(const Parts& parts, const Selection& selection, Improve
   for (const Pick& pick : selection.picks) {
     if (pick.modelled_index >= 0 || !pick.chosen().free_shape) continue;
     if (class_held(out.twin.effects, pick.finding.name)) continue;
+    if (effect_class(pick.finding.name).lines_of_each_session) {
+      const std::optional<sim::EffectSettings> member = session_lines_member(pick);
+      if (!member) continue;
+      // The table takes none of the lines: the twin holds them as the session's own.
+      const FreeShapeFit& lines = *pick.chosen().free_shape;
+      cal_left = minus(cal_left, lines.cal_voltage_v);
+      ho_left = minus(ho_left, lines.heldout_voltage_v);
+      out.twin.effects.push_back(*member);
+      out.members.push_back(pick.finding.name);
+      continue;
+    }
     const std::optional<sim::EffectSettings> member = library_member(pick);
     if (!member) continue;
     const std::vector<sim::EffectSettings> before = replayed(out.twin.effects);
@@ -169,6 +200,18 @@ HeldFinding held(const EffectFinding& finding, const Selection& selection, const
                                  [&](const Pick& p) { return p.finding.name == finding.name; });
   const bool member =
       std::find(out.members.begin(), out.members.end(), finding.name) != out.members.end();
+  if (of.lines_of_each_session) {
+    const std::string lines =
+        pick != selection.picks.end() && pick->modelled_index < 0 && member
+            ? fmt::format("one line of the lines' {:.3g} V RMS at the {:g} Hz mains",
+                          pick->chosen().free_shape->params.at("rms_v"),
+                          pick->chosen().free_shape->params.at("mains_hz"))
+            : "the library effect with its fitted parameters";
+    return {finding.name, "session's own lines",
+            lines + " for `flange simulate` to play; a diagnosis against this twin fits each "
+                    "session's own lines at the mains' aliases and takes them out, since their "
+                    "phase (and with a wandering grid their amplitude) is each session's own"};
+  }
   if (pick != selection.picks.end() && pick->modelled_index < 0) {
     const double misfit =
         out.table_misfit_rms_v.empty()
@@ -195,11 +238,6 @@ HeldFinding held(const EffectFinding& finding, const Selection& selection, const
             fmt::format("its free shape, with the other free shapes, as the tabulated effect "
                         "(reproduced to {:.2g} V RMS on the worse part)",
                         misfit)};
-  }
-  if (of.reported_as_noise) {
-    return {finding.name, "library effect",
-            "the library effect with its fitted parameters, its phase the calibration session's "
-            "(each session has its own)"};
   }
   return {finding.name, "library effect", "the library effect with its fitted parameters"};
 }

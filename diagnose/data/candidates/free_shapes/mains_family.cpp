@@ -23,6 +23,21 @@ void MainsFamily::search(const RecordedPart& calibration, const std::vector<doub
     cal_lines_.clear();
     follow_sensitivity_ = true;
   }
+  // The mains the lines belong to. An alias can be a line of both (3 Hz at 9 Hz: 60 Hz, or the
+  // 3rd harmonic of 50 Hz); pickup is mostly the fundamental, so each line counts 1/h for the
+  // lowest harmonic h of each mains near it, and the mains with the larger sum is kept.
+  double score_50 = 0.0, score_60 = 0.0;
+  for (double f : cal_lines_) {
+    const auto lowest_harmonic = [&](double mains_hz) {
+      for (int h = 1; h <= kMainsHarmonics; ++h) {
+        if (std::abs(f - alias_hz(h * mains_hz, fs_hz)) <= kMainsSearchHz + 1e-9) return 1.0 / h;
+      }
+      return 0.0;
+    };
+    score_50 += lowest_harmonic(50.0);
+    score_60 += lowest_harmonic(60.0);
+  }
+  if (!cal_lines_.empty()) mains_hz_ = score_60 > score_50 ? 60.0 : 50.0;
   for (double f : cal_lines_) {
     for (double alias : aliases.distinct_hz) {
       if (std::abs(f - alias) <= kMainsSearchHz + 1e-9 &&
@@ -118,6 +133,7 @@ void MainsFamily::describe(FreeShapeFit& fit, const std::vector<double>& cal_ton
   }
   const double rms = std::sqrt(mean_square(cal_tones_v));
   fit.params["rms_v"] = rms;
+  fit.params["mains_hz"] = mains_hz_;
   fit.description = fmt::format(
       "lines at the aliases of the mains ({} on the calibration part), {:.3g} V RMS, their "
       "amplitude and phase free in every {:g} s window of each session (the mains' phase at a "

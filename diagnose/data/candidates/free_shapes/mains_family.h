@@ -46,6 +46,7 @@ class MainsFamily : public Family {
   std::vector<double> cal_lines_;    // the lines found there, Hz
   bool follow_sensitivity_ = false;  // lines were found, but their power followed dV/dd
   double dc_harmonic_hz_ = 0.0;
+  double mains_hz_ = 0.0;  // 50 or 60: the mains whose harmonics' aliases hold the most lines
 };
 
 }  // namespace flange::diagnose::free_shapes
