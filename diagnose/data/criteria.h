@@ -110,14 +110,13 @@ inline constexpr double kGapRatio = 1.05;
 // within it before any pick is no gap (a verdict without a finding is then "none").
 // Tests: Verdict.LeftWithinTheNoiseIsExplained, ImprovedTwin.RediagnosingAnExplained*.
 inline constexpr double kExplainedRatio = 1.10;
-// Where there was no gap before the picks (the held-out gap within kExplainedRatio of the noise,
-// no stage above its floor), picks found by their gain that the data cannot tell from another
-// class are findings only when they take at least this share of the gap above the noise. Weak
-// effects of the library mostly take all of it (the twin's blind self-tests: such claims left the
-// gap at or below the noise); a flexible class fitted to what an improved twin leaves took 4-12 %,
-// alike with two to six other classes, on the alternative reality's pairs. The price: a weak
-// reading lag taking 4.5 %, alike with seven classes, is named only in a reason
-// (DiagnoseSelftest.AWeakReadingLagWithinTheNoiseIsNamedInTheReasonsNotClaimed).
+// Where there was no gap before the picks (the held-out gap within kExplainedRatio of the noise
+// over the session and in every window), picks found by their gain are findings only when they
+// take at least this share of the gap above the noise. A weak effect of the library takes most of
+// it (the twin's blind self-tests: such claims left the gap at or below the noise); a flexible
+// class fitted to what an improved twin leaves took 4-12 %, and a pick beside held mount motion
+// on a gap below the noise takes none. The price: a weak reading lag taking 4.5 % is named only
+// in a reason (DiagnoseSelftest.AWeakReadingLagWithinTheNoiseIsNamedInTheReasonsNotClaimed).
 // Test: Verdict.PicksOfAResidueWithoutAGapAreNotFindings.
 inline constexpr double kLeastShareOfNoGapTaken = 0.5;
 // Partly explained: picks that leave more still take at least this share of the held-out gap's

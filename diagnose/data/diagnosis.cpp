@@ -4,6 +4,8 @@
 // signatures, the verdict and its reasons.
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <optional>
 
 #include "alarm_timing.h"
 #include "backward.h"
@@ -82,11 +84,42 @@ DiagnoseOptions without_mount_motion(const DiagnoseOptions& given) {
   return replayed;
 }
 
-// The twin's voltage on `replay` with a fresh draw of the mount motion it holds, for the null
-// replicas; unset when it holds none.
-HeldMotion held_motion(const TwinReplay& replay, const DiagnoseOptions& given, bool holds_motion) {
-  if (!holds_motion) return {};
-  return [&replay, &given](std::uint64_t seed) { return replay.voltage(given.twin.effects, seed); };
+// The null replicas of the twin on `replay` (null_replicas.h) when it holds mount motion or the
+// converter: a fresh draw of the motion, the analog noise, then the converter it holds (or the
+// recording's grid); unset when it holds neither.
+NullReplica null_replica(const TwinReplay& replay, const DiagnoseOptions& given,
+                         const WhiteNoise& white) {
+  const auto is_converter = [](const sim::EffectSettings& e) {
+    return effect_class(e.name).is_converter;
+  };
+  const std::vector<sim::EffectSettings>& held = given.twin.effects;
+  const auto converter = std::find_if(held.begin(), held.end(), is_converter);
+  const bool motion = std::any_of(held.begin(), held.end(), [](const sim::EffectSettings& e) {
+    return effect_class(e.name).is_mount_motion;
+  });
+  if (!motion && converter == held.end()) return {};
+  std::vector<sim::EffectSettings> before_converter = held;
+  std::erase_if(before_converter, is_converter);
+  std::optional<sim::EffectSettings> rounding;
+  if (converter != held.end()) rounding = *converter;
+  return [&replay, &white, before_converter, rounding](std::uint64_t seed,
+                                                       const std::vector<double>& z) {
+    std::vector<double> v = replay.voltage(before_converter, seed);
+    if (!rounding) {
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] = white.noisy(v[i], z[i]);
+      return v;
+    }
+    const std::unique_ptr<sim::Effect> rounds =
+        sim::make_effect(*rounding, replay.v_min_v(), replay.nominal().v_max_v(), seed);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      sim::ChainSample sample;
+      sample.t_s = replay.times()[i];
+      sample.voltage_v = v[i] + white.analog_std_v * z[i];
+      rounds->apply(sample);
+      v[i] = sample.voltage_v;
+    }
+    return v;
+  };
 }
 
 // A twin holding lines of each session (the mains) is diagnosed on the recordings less each
@@ -137,11 +170,11 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   const DegenerateData degenerate = degenerate_data(calibration, result.detail.noise_std_v);
   result.diagnosis.degenerate = degenerate.sentences;
   locate(calibration, cal_base, fs_hz, options, result.detail,
-         held_motion(parts.cal_replay, given, twin_holds_motion));
+         null_replica(parts.cal_replay, given, result.detail.white_noise));
   if (degenerate.nothing_to_locate()) forget_structure(result.detail);
   const std::vector<double> ho_base = parts.ho_replay.voltage(options.twin.effects);
   confirm_alarm_timing_on_heldout(heldout, ho_base, options, result.detail,
-                                  held_motion(parts.ho_replay, given, twin_holds_motion));
+                                  null_replica(parts.ho_replay, given, result.detail.white_noise));
   result.diagnosis.stage = first_significant_stage(result.detail.stages);
   // Selection: candidates scored on held-out data, forward, refined, backward.
   Selection selection = select_in_two_passes(

@@ -54,34 +54,35 @@ TEST(Verdict, NoGapIsNone) {
 }
 
 TEST(Verdict, PicksOfAResidueWithoutAGapAreNotFindings) {
-  // No gap before the picks (1.07 of the noise, no stage): a pick leaving 1.065 takes
+  // No gap before the picks (1.07 of the noise, in every window too): a pick leaving 1.065 takes
   // 1 - sqrt(1.065^2 - 1) / sqrt(1.07^2 - 1) = 1 - 0.3662 / 0.3808 = 3.8 % of the gap above the
-  // noise, alike with another class: none.
+  // noise: none, alike with another class or not.
   VerdictFigures residue = figures(1.07, 1.065);
   residue.gap_before_picks = false;
   residue.picks_alike = true;
   EXPECT_EQ(decide(residue), Decision::kNone);
-  // A pick that no other class fits as well stands: a weak effect alone.
-  VerdictFigures alone = residue;
-  alone.picks_alike = false;
-  EXPECT_EQ(decide(alone), Decision::kExplained);
-  // A weak effect that takes it all (1.07 to 0.99 of the noise) is explained.
-  VerdictFigures weak = figures(1.07, 0.99);
-  weak.gap_before_picks = false;
-  EXPECT_EQ(decide(weak), Decision::kExplained);
+  residue.picks_alike = false;
+  EXPECT_EQ(decide(residue), Decision::kNone);
   // kLeastShareOfNoGapTaken = 0.5: 1.07 to 1.03 takes 1 - 0.2441 / 0.3808 = 35.9 %: none; to
-  // 1.01, 1 - 0.1418 / 0.3808 = 62.8 %: explained.
+  // 1.01, 1 - 0.1418 / 0.3808 = 62.8 %: a weak effect, explained.
   residue.rms_after = 1.03;
   EXPECT_EQ(decide(residue), Decision::kNone);
   residue.rms_after = 1.01;
   EXPECT_EQ(decide(residue), Decision::kExplained);
+  // From below the noise there is nothing to take.
+  VerdictFigures below = figures(0.98, 0.97);
+  below.gap_before_picks = false;
+  EXPECT_EQ(decide(below), Decision::kNone);
   // A class found by its signature is not judged by its gain.
   VerdictFigures signature = figures(1.02, 1.02);
   signature.gap_before_picks = false;
   signature.found_by_signature = true;
   EXPECT_EQ(decide(signature), Decision::kExplained);
-  // With a gap before the picks the rule does not apply.
+  // With a gap before the picks (over the session, in a window, or a stage where the held-out
+  // part does not enter the gap's cell) the rule does not apply.
   EXPECT_EQ(decide(figures(1.2, 1.09)), Decision::kExplained);
+  VerdictFigures stage = figures(1.02, 1.019);
+  EXPECT_EQ(decide(stage), Decision::kExplained);
 }
 
 TEST(Verdict, LeftWithinTheNoiseIsExplained) {

@@ -60,7 +60,7 @@ namespace {
 // The alarm-timing gap of the held-out part against the twin replayed on it, with its own floor.
 AlarmTiming heldout_alarm_timing(const RecordingSeries& heldout, const std::vector<double>& sim_v,
                                  const WhiteNoise& white, const sim::PolynomialSensorModel& model,
-                                 double fs_hz, std::uint64_t seed, const HeldMotion& motion) {
+                                 double fs_hz, std::uint64_t seed, const NullReplica& replica_of) {
   const std::vector<double> f_real =
       measurement_filter(clearance_of(model, heldout.voltage_v, heldout.temp_c), fs_hz);
   const std::vector<double> f_sim =
@@ -74,7 +74,7 @@ AlarmTiming heldout_alarm_timing(const RecordingSeries& heldout, const std::vect
                           alarm_floor[replica] = alarm_timing_gap(
                               alarm_changes(heldout.t_s, f_noisy), a_sim, record_s);
                         },
-                        motion);
+                        replica_of);
   return alarm_timing(heldout, f_real, a_sim, alarm_floor);
 }
 
@@ -83,12 +83,12 @@ AlarmTiming heldout_alarm_timing(const RecordingSeries& heldout, const std::vect
 void confirm_alarm_timing_on_heldout(const RecordingSeries& heldout,
                                      const std::vector<double>& ho_sim_v,
                                      const DiagnoseOptions& options, DiagnosisDetail& detail,
-                                     const HeldMotion& motion) {
+                                     const NullReplica& replica_of) {
   for (StageGap& stage : detail.stages) {
     if (stage.name != "alarm_timing" || !stage.significant) continue;
     const AlarmTiming held_out = heldout_alarm_timing(
         heldout, ho_sim_v, detail.white_noise, options.twin.nominal, detail.fs_hz, options.seed,
-        motion);
+        replica_of);
     if (held_out.exceeds()) {
       stage.note += fmt::format("; the held-out part shows it too ({:.3g} s against {:.3g} s)",
                                 held_out.gap_s, held_out.floor_s);

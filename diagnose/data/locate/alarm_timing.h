@@ -47,10 +47,10 @@ AlarmTiming alarm_timing(const RecordingSeries& real, const std::vector<double>&
 
 // The alarm-timing stage counts only when the held-out part shows it too: a stage that the
 // calibration part alone exceeds is kept, not significant, with the held-out figures in its note.
-// Its floor's replicas draw the mount motion the twin holds (`motion`) afresh.
+// Its floor's replicas are drawn by `replica_of` when set (null_replicas.h).
 void confirm_alarm_timing_on_heldout(const RecordingSeries& heldout,
                                      const std::vector<double>& ho_sim_v,
                                      const DiagnoseOptions& options, DiagnosisDetail& detail,
-                                     const HeldMotion& motion = {});
+                                     const NullReplica& replica_of = {});
 
 }  // namespace flange::diagnose

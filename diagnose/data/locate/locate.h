@@ -17,10 +17,10 @@ namespace flange::diagnose {
 
 // Fills detail's stages, regions, where_region, gap_psd, noise_psd, band_hz, coherences,
 // segments and residual tests for the calibration part `cal` against the twin's `sim_v`, at the
-// noise detail.noise_std_v, with the mount motion the twin holds (`motion`) in the stages' floors.
+// noise detail.noise_std_v, the stages' floors drawn by `replica_of` when set (null_replicas.h).
 void locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double fs_hz,
             const DiagnoseOptions& options, DiagnosisDetail& detail,
-            const HeldMotion& motion = {});
+            const NullReplica& replica_of = {});
 
 // The band: from the bin of largest excess over `noise_psd`, widened while the PSD stays above
 // criteria::kBandPsdRatio times it; none when the peak is not that high. DC is left out (each

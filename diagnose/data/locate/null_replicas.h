@@ -16,22 +16,26 @@
 
 namespace flange::diagnose {
 
-// The twin's noiseless voltage with a fresh realisation of the mount motion it holds, drawn from
-// `seed`; unset when the twin holds none. Mount motion is each session's own random motion, so a
-// twin that holds it is replayed without it, and the null replicas draw it afresh, each its own.
-using HeldMotion = std::function<std::vector<double>(std::uint64_t seed)>;
+// The noisy twin of one null replica, from the replica's standard normals `z` (one per sample)
+// and a `seed` for what the twin draws itself; unset: the noiseless replay plus the white noise.
+// Set when the twin holds mount motion, each session's own random motion: the twin is replayed
+// without it, and each replica draws it afresh. Set when the twin holds the converter: its replay
+// lies on the converter's codes, and a replica adds the analog noise before the rounding, as the
+// converter sees it, or it would stay on the replay's codes.
+using NullReplica =
+    std::function<std::vector<double>(std::uint64_t seed, const std::vector<double>& z)>;
 
-// Calls each(replica, noisy_v, d_noisy, f_noisy) for criteria::kNullReplicas draws of the noisy twin (on
-// the recording's converter grid, if it has one) of `sim_v` (of `motion`'s voltage with the
-// replica's own motion, when set), with its compensated and filtered clearance. The draws come
-// from one stream in replica order, so the floors do not depend on the threads; what each draw
-// then costs (motion, inversion, filter, alarms: most of it) runs two replicas at a time, so
-// `each` must only write to its replica's own place.
+// Calls each(replica, noisy_v, d_noisy, f_noisy) for criteria::kNullReplicas draws of the noisy
+// twin (on the recording's converter grid, if it has one) of `sim_v` (drawn by `replica_of`,
+// when set), with its compensated and filtered clearance. The draws come from one stream in
+// replica order, so the floors do not depend on the threads; what each draw then costs (motion,
+// inversion, filter, alarms: most of it) runs two replicas at a time, so `each` must only write
+// to its replica's own place.
 template <class Each>
 void for_each_null_replica(const RecordingSeries& real, const std::vector<double>& sim_v,
                            const WhiteNoise& white, const sim::PolynomialSensorModel& model,
                            double fs_hz, std::uint64_t seed, Each each,
-                           const HeldMotion& motion = {}) {
+                           const NullReplica& replica_of = {}) {
   constexpr std::size_t kInFlight = 2;
   sim::GaussianSource noise(seed);
   std::vector<std::future<void>> running;
@@ -43,13 +47,12 @@ void for_each_null_replica(const RecordingSeries& real, const std::vector<double
       running.erase(running.begin());
     }
     running.push_back(std::async(std::launch::async, [&, replica, z = std::move(z)] {
-      std::vector<double> own_motion;
-      if (motion) {
-        own_motion = motion(sim::derive_seed(seed, 1000 + static_cast<std::uint64_t>(replica)));
-      }
-      const std::vector<double>& centre = motion ? own_motion : sim_v;
       std::vector<double> noisy_v(sim_v.size());
-      for (std::size_t i = 0; i < sim_v.size(); ++i) noisy_v[i] = white.noisy(centre[i], z[i]);
+      if (replica_of) {
+        noisy_v = replica_of(sim::derive_seed(seed, 1000 + static_cast<std::uint64_t>(replica)), z);
+      } else {
+        for (std::size_t i = 0; i < sim_v.size(); ++i) noisy_v[i] = white.noisy(sim_v[i], z[i]);
+      }
       const std::vector<double> d_noisy = clearance_of(model, noisy_v, real.temp_c);
       each(static_cast<std::size_t>(replica), noisy_v, d_noisy, measurement_filter(d_noisy, fs_hz));
     }));

@@ -15,7 +15,7 @@ namespace flange::diagnose {
 
 std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<double>& sim_v,
                                  const WhiteNoise& white, const sim::PolynomialSensorModel& model,
-                                 double fs_hz, std::uint64_t seed, const HeldMotion& motion) {
+                                 double fs_hz, std::uint64_t seed, const NullReplica& replica_of) {
   const std::vector<double> d_real = clearance_of(model, real.voltage_v, real.temp_c);
   const std::vector<double> d_sim = clearance_of(model, sim_v, real.temp_c);
   const std::vector<double> f_real = measurement_filter(d_real, fs_hz);
@@ -35,7 +35,7 @@ std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<
         filtered_floor[replica] = rms_of(minus(f_noisy, f_sim));
         alarm_floor[replica] = alarm_timing_gap(alarm_changes(real.t_s, f_noisy), a_sim, record_s);
       },
-      motion);
+      replica_of);
   const AlarmTiming alarm = alarm_timing(real, f_real, a_sim, alarm_floor);
 
   std::vector<StageGap> stages;

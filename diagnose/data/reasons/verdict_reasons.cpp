@@ -77,20 +77,33 @@ std::string unexplained(bool any_findings) {
 
 std::string none() {
   return fmt::format(
-      "the held-out gap is within {:.0f} % of the twin's noise and no stage exceeds its noise "
-      "floor",
+      "the held-out gap is within {:.0f} % of the twin's noise over the session and in every "
+      "window: what an explanation may leave",
       100.0 * (criteria::kExplainedRatio - 1.0));
 }
 
-std::string residue_fit(const std::vector<EffectFinding>& picks, double taken_pct,
-                        double least_pct) {
-  std::string names;
-  for (const EffectFinding& pick : picks) names += (names.empty() ? "" : " and ") + pick.name;
+std::string stage_not_confirmed(const std::string& stage) {
   return fmt::format(
-      "{} would take {:.0f} % of the gap above the noise, no better than other classes, and less "
-      "than the {:.0f} % such a pick must take where there was no gap before it: a fit of the "
-      "noise's residue, not a finding",
-      names, taken_pct, least_pct);
+      "the calibration part's {} stage exceeds its noise floor, but the held-out part shows no gap "
+      "beyond what an explanation may leave: a difference below the noise that the held-out data "
+      "do not confirm",
+      stage);
+}
+
+std::string residue_fit(const std::vector<EffectFinding>& picks, double taken_pct) {
+  std::string names, alike;
+  for (const EffectFinding& pick : picks) {
+    names += (names.empty() ? "" : " and ") + pick.name;
+    for (const std::string& other : pick.indistinguishable_from) {
+      if (alike.find(other) == std::string::npos) alike += (alike.empty() ? "" : ", ") + other;
+    }
+  }
+  return fmt::format(
+      "{} would take {:.0f} % of what stood above the noise on a held-out gap that was no gap, "
+      "less than the {:.0f} % a pick must take there{}: a fit of the noise's residue, not a "
+      "finding",
+      names, taken_pct, 100.0 * criteria::kLeastShareOfNoGapTaken,
+      alike.empty() ? "" : ", and no better than " + alike);
 }
 
 std::string nearest(bool picked, const EffectFinding& nearest, bool several_picks,

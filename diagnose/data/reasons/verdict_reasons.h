@@ -39,9 +39,11 @@ std::string what_is_left(double left_v, double allowed_v, double worst_v, double
 
 std::string unexplained(bool any_findings);
 std::string none();
-// Picks on a held-out gap that was within the noise took only `taken_pct` of what stood above it.
-std::string residue_fit(const std::vector<EffectFinding>& picks, double taken_pct,
-                        double least_pct);
+// A stage of the calibration part above its floor where the held-out part, entering the gap's
+// cell, shows no gap.
+std::string stage_not_confirmed(const std::string& stage);
+// Picks on a held-out gap that was no gap, taking only `taken_pct` of what stood above the noise.
+std::string residue_fit(const std::vector<EffectFinding>& picks, double taken_pct);
 
 // The nearest effect's evidence for an "unexplained" verdict.
 std::string nearest(bool picked, const EffectFinding& nearest, bool several_picks,

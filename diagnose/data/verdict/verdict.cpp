@@ -37,12 +37,25 @@ double partly_share(const VerdictFigures& f) {
   return above_noise_share_taken(f.rms_before, f.rms_after, f.noise_v);
 }
 
-// Picks on a held-out gap that was no gap, taking only a sliver of what stood above the noise and
-// no better than another class would: a flexible class fitted to the noise's residue. A weak
-// effect of the library takes all of it, or stands alone.
+// Picks on a held-out gap that was no gap, none of them found by its signature, taking less than
+// criteria::kLeastShareOfNoGapTaken of what little stood above the noise (nothing, from below
+// it): nothing in the held-out data asks for them, so they are a fit of the noise's residue.
 bool picks_fit_a_residue(const VerdictFigures& f) {
-  return f.any_findings && !f.gap_before_picks && !f.found_by_signature && f.picks_alike &&
+  return f.any_findings && !f.gap_before_picks && !f.found_by_signature &&
          partly_share(f) < criteria::kLeastShareOfNoGapTaken;
+}
+
+// Whether the held-out part enters the cell where the calibration gap stands out most with
+// enough samples to confirm or refute what lies there.
+bool heldout_covers_where(const RecordingSeries& heldout, const DiagnosisDetail& detail) {
+  if (!detail.where_region) return true;
+  const RegionCell& cell = detail.regions[*detail.where_region];
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < heldout.size(); ++i) {
+    n += heldout.clearance_mm[i] >= cell.clearance_lo && heldout.clearance_mm[i] <= cell.clearance_hi &&
+         heldout.temp_c[i] >= cell.temp_lo && heldout.temp_c[i] <= cell.temp_hi;
+  }
+  return n >= criteria::kLeastSamplesPerCell;
 }
 
 // What the picks leave against what the noise allows, as a sentence.
@@ -90,34 +103,38 @@ reasons::BeyondReach beyond_reach(const RecordingSeries& heldout, const Calibrat
 VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
                                const std::vector<EffectFinding>& findings,
                                const Diagnosis& diagnosis, const CalibrationReach& reach,
-                               double verdict_noise, HowFar& how) {
+                               double verdict_noise, const DiagnosisDetail& detail, HowFar& how) {
   const double sigma = selection.noise_v;
   const bool has_noise_type = std::any_of(findings.begin(), findings.end(), [](const auto& f) {
     return f.noise_type && effect_class(f.name).identification == Identification::kBySignature;
   });
   VerdictFigures f;
   f.any_findings = !findings.empty();
-  // Against the larger of sigma and the verdict's noise: with a converter or mount motion the twin
-  // holds (and so no finding of theirs), what the noise leaves is the verdict's noise. A held-out
-  // gap within what an explanation may leave (kExplainedRatio) is no gap: the same RMS left after
-  // picks would be "explained", so a twin that holds the explanation leaves "none".
+  f.noise_v = verdict_noise;
+  f.rms_before = diagnosis.heldout_rms_before;
+  f.rms_after = diagnosis.heldout_rms_after;
+  how.worst_window = worst_window(parts.heldout, reach, selection.current_error);
+  f.window_allowance_v = window_allowance(selection, verdict_noise);
+  // A held-out gap within what an explanation may leave, over the session (against the larger of
+  // sigma and the verdict's noise: with a converter or mount motion the twin holds, what the
+  // noise leaves is the verdict's noise) and in every window, is no gap: the same gap left after
+  // picks would be "explained", so a twin that holds the explanation leaves "none". A stage of
+  // the calibration part above its floor makes one only where the held-out part cannot confirm
+  // or refute it (it does not enter the cell where the calibration gap lies): otherwise the
+  // held-out data decide.
   f.gap_before_picks =
       diagnosis.heldout_rms_before > criteria::kExplainedRatio * std::max(sigma, verdict_noise) ||
-      !diagnosis.stage.empty();
+      worst_window(parts.heldout, reach, selection.raw_ho_gap).rms_v > f.window_allowance_v ||
+      (!diagnosis.stage.empty() && !heldout_covers_where(parts.heldout, detail));
   f.found_by_signature = has_noise_type;
   f.picks_alike = std::any_of(findings.begin(), findings.end(), [](const auto& finding) {
     return !finding.indistinguishable_from.empty();
   });
   f.gap_exists = f.gap_before_picks || has_noise_type || !findings.empty();
-  f.noise_v = verdict_noise;
-  f.rms_before = diagnosis.heldout_rms_before;
-  f.rms_after = diagnosis.heldout_rms_after;
-  how.worst_window = worst_window(parts.heldout, reach, selection.current_error);
   how.within_calibration_samples = reach.heldout_within.size();
   how.within_calibration_rms_before = rms_at(selection.raw_ho_gap, reach.heldout_within);
   how.within_calibration_rms_after = rms_at(selection.current_error, reach.heldout_within);
   f.worst_window_v = how.worst_window.rms_v;
-  f.window_allowance_v = window_allowance(selection, verdict_noise);
   f.share_within = static_cast<double>(reach.heldout_within.size()) /
                    static_cast<double>(selection.current_error.size());
   f.within_before_v = how.within_calibration_rms_before;
@@ -171,7 +188,7 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
   const CalibrationReach reach = calibration_reach(parts.calibration, parts.heldout);
   HowFar& how = result.detail.how_far;
   const VerdictFigures f =
-      verdict_figures(parts, selection, findings, diagnosis, reach, noise.rms_v, how);
+      verdict_figures(parts, selection, findings, diagnosis, reach, noise.rms_v, result.detail, how);
   const Decision decision = decide(f);
   diagnosis.status = status_of(decision);
   auto& reasons = result.detail.reasons;
@@ -201,9 +218,11 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
       break;
     case Decision::kNone:
       reasons.push_back(reasons::none());
+      if (!diagnosis.stage.empty()) {
+        reasons.push_back(reasons::stage_not_confirmed(diagnosis.stage));
+      }
       if (picks_fit_a_residue(f)) {
-        reasons.push_back(reasons::residue_fit(findings, 100.0 * partly_share(f),
-                                               100.0 * criteria::kLeastShareOfNoGapTaken));
+        reasons.push_back(reasons::residue_fit(findings, 100.0 * partly_share(f)));
       }
       break;
   }

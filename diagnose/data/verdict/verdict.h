@@ -16,9 +16,10 @@ namespace flange::diagnose {
 // The figures the verdict decides on (RMS in V, shares in 0..1).
 struct VerdictFigures {
   bool any_findings = false;
-  bool gap_exists = false;  // the held-out gap, a stage, or any finding shows a gap
-  // The held-out gap above what an explanation may leave, or a stage above its floor: a gap
-  // before any pick.
+  bool gap_exists = false;  // a gap before the picks, or any finding
+  // The held-out gap above what an explanation may leave, over the session or in a window, or a
+  // stage above its floor where the held-out part does not enter the calibration gap's cell: a
+  // gap before any pick.
   bool gap_before_picks = false;
   bool found_by_signature = false;  // a noise-type finding recognised by its signature
   bool picks_alike = false;  // a pick the data cannot tell from another class (confounded)
@@ -45,8 +46,8 @@ enum class Decision { kExplained, kExplainedWithinReach, kPartlyExplained, kUnex
 //   noise;
 // - unexplained: a gap exists; none: none does;
 // - none, too, where there was no gap before the picks and the picks, none of them found by a
-//   signature, take less than criteria::kLeastShareOfNoGapTaken of the gap above the noise and
-//   fit it no better than another class: a fit of the noise's residue, not a finding.
+//   signature, take less than criteria::kLeastShareOfNoGapTaken of the gap above the noise: a fit
+//   of the noise's residue, not a finding.
 Decision decide(const VerdictFigures& f);
 
 // "explained", "partly explained", "unexplained" or "none".
