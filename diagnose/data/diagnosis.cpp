@@ -130,8 +130,9 @@ DiagnosisResult diagnose_without_session_lines(const SessionLines& lines,
   result.detail.reasons.push_back(lines.reason);
   std::vector<sim::EffectSettings>& effects = result.improved_twin.twin.effects;
   for (const sim::EffectSettings& effect : given.twin.effects) {
-    const bool held = std::any_of(effects.begin(), effects.end(),
-                                  [&](const sim::EffectSettings& e) { return e.name == effect.name; });
+    const bool held =
+        std::any_of(effects.begin(), effects.end(),
+                    [&](const sim::EffectSettings& e) { return e.name == effect.name; });
     if (!held) effects.push_back(effect);
   }
   return result;

@@ -334,15 +334,14 @@ TEST(AltSelftest, AWanderingGridHeldAsEachSessionsOwnLinesLeavesNone) {
   options.twin = sim::twin_from_json(sim::twin_to_json(first.improved_twin.twin), "twin.json");
   const DiagnosisResult second = diagnose_in_detail(fit, heldout, options);
   EXPECT_EQ(second.diagnosis.status, "none");
-  EXPECT_TRUE(std::any_of(second.detail.reasons.begin(), second.detail.reasons.end(),
-                          [](const std::string& r) {
-                            return r.find("whose lines are each session's own") != std::string::npos;
-                          }));
+  EXPECT_TRUE(std::any_of(
+      second.detail.reasons.begin(), second.detail.reasons.end(), [](const std::string& r) {
+        return r.find("whose lines are each session's own") != std::string::npos;
+      }));
   // The twin it hands back holds the lines still.
   const std::vector<sim::EffectSettings>& again = second.improved_twin.twin.effects;
-  EXPECT_TRUE(std::any_of(again.begin(), again.end(), [](const sim::EffectSettings& e) {
-    return e.name == "mains_pickup";
-  }));
+  EXPECT_TRUE(std::any_of(again.begin(), again.end(),
+                          [](const sim::EffectSettings& e) { return e.name == "mains_pickup"; }));
 }
 
 // Seed 447, pair 35: a log-time ageing, a ln(1 + age / 0.80 d), whose held-out session starts

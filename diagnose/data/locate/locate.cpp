@@ -92,13 +92,14 @@ std::optional<std::pair<double, double>> gap_band(const Spectrum& psd, double no
 }
 
 void locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double fs_hz,
-            const DiagnoseOptions& options, DiagnosisDetail& detail, const NullReplica& replica_of) {
+            const DiagnoseOptions& options, DiagnosisDetail& detail,
+            const NullReplica& replica_of) {
   const double sigma = detail.noise_std_v;
   const std::vector<double> gap = minus(cal.voltage_v, sim_v);
   detail.t_s = cal.t_s;
   detail.gap_v = gap;
-  detail.stages =
-      stage_gaps(cal, sim_v, detail.white_noise, options.twin.nominal, fs_hz, options.seed, replica_of);
+  detail.stages = stage_gaps(cal, sim_v, detail.white_noise, options.twin.nominal, fs_hz,
+                             options.seed, replica_of);
   detail.regions =
       region_cells(cal, gap, region_grid_for(cal), options.bootstrap_rounds, options.seed);
   detail.where_region = where_region(detail.regions, sigma);

@@ -24,8 +24,9 @@ std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<
   const auto a_sim = alarm_changes(real.t_s, f_sim);
 
   // The noisy twin against the noiseless one: the floors every stage's gap is compared with.
-  std::vector<double> voltage_floor(criteria::kNullReplicas), clearance_floor(criteria::kNullReplicas),
-      filtered_floor(criteria::kNullReplicas), alarm_floor(criteria::kNullReplicas);
+  std::vector<double> voltage_floor(criteria::kNullReplicas),
+      clearance_floor(criteria::kNullReplicas), filtered_floor(criteria::kNullReplicas),
+      alarm_floor(criteria::kNullReplicas);
   for_each_null_replica(
       real, sim_v, white, model, fs_hz, sim::derive_seed(seed, 77),
       [&](std::size_t replica, const std::vector<double>& noisy_v,
@@ -55,12 +56,12 @@ std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<
                    "largest of {} null replicas at the estimated noise",
                    alarm.real_changes, alarm.sim_changes, criteria::kNullReplicas)});
   for (StageGap& stage : stages) {
-    stage.significant =
-        stage.name == "alarm_timing" ? alarm.exceeds() : stage.gap_rms > criteria::kStageSignificanceRatio * stage.noise_floor;
+    stage.significant = stage.name == "alarm_timing"
+                            ? alarm.exceeds()
+                            : stage.gap_rms > criteria::kStageSignificanceRatio * stage.noise_floor;
   }
   return stages;
 }
-
 
 std::string first_significant_stage(const std::vector<StageGap>& stages) {
   for (const StageGap& stage : stages) {
@@ -68,6 +69,5 @@ std::string first_significant_stage(const std::vector<StageGap>& stages) {
   }
   return "";
 }
-
 
 }  // namespace flange::diagnose

@@ -21,7 +21,8 @@ namespace flange::diagnose {
 // AlarmTiming::exceeds). The replicas are drawn by `replica_of` when set (null_replicas.h).
 std::vector<StageGap> stage_gaps(const RecordingSeries& real, const std::vector<double>& sim_v,
                                  const WhiteNoise& white, const sim::PolynomialSensorModel& model,
-                                 double fs_hz, std::uint64_t seed, const NullReplica& replica_of = {});
+                                 double fs_hz, std::uint64_t seed,
+                                 const NullReplica& replica_of = {});
 
 // The first stage whose gap stands above its noise floor; empty when none does.
 std::string first_significant_stage(const std::vector<StageGap>& stages);

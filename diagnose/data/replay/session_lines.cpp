@@ -58,9 +58,11 @@ std::optional<SessionLines> take_out_session_lines(const RecordingSeries& calibr
       const std::vector<double> cal_gap =
           minus(out.calibration.voltage_v, cal_replay.voltage(effects));
       const std::vector<double> ho_gap = minus(out.heldout.voltage_v, ho_replay.voltage(effects));
-      const FreeShapeFit lines =
-          fit_free_shape(family, {{out.calibration, cal_replay}, {out.heldout, ho_replay}, cal_gap,
-                                  ho_gap, heldout_age_unknown});
+      const FreeShapeFit lines = fit_free_shape(family, {{out.calibration, cal_replay},
+                                                         {out.heldout, ho_replay},
+                                                         cal_gap,
+                                                         ho_gap,
+                                                         heldout_age_unknown});
       take_out(out.calibration, lines.cal_voltage_v);
       take_out(out.heldout, lines.heldout_voltage_v);
       sentences.push_back(fmt::format(

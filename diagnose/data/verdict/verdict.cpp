@@ -52,8 +52,9 @@ bool heldout_covers_where(const RecordingSeries& heldout, const DiagnosisDetail&
   const RegionCell& cell = detail.regions[*detail.where_region];
   std::size_t n = 0;
   for (std::size_t i = 0; i < heldout.size(); ++i) {
-    n += heldout.clearance_mm[i] >= cell.clearance_lo && heldout.clearance_mm[i] <= cell.clearance_hi &&
-         heldout.temp_c[i] >= cell.temp_lo && heldout.temp_c[i] <= cell.temp_hi;
+    n += heldout.clearance_mm[i] >= cell.clearance_lo &&
+         heldout.clearance_mm[i] <= cell.clearance_hi && heldout.temp_c[i] >= cell.temp_lo &&
+         heldout.temp_c[i] <= cell.temp_hi;
   }
   return n >= criteria::kLeastSamplesPerCell;
 }
@@ -187,8 +188,8 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
   diagnosis.heldout_rms_after = rms_of(selection.current_error);
   const CalibrationReach reach = calibration_reach(parts.calibration, parts.heldout);
   HowFar& how = result.detail.how_far;
-  const VerdictFigures f =
-      verdict_figures(parts, selection, findings, diagnosis, reach, noise.rms_v, result.detail, how);
+  const VerdictFigures f = verdict_figures(parts, selection, findings, diagnosis, reach,
+                                           noise.rms_v, result.detail, how);
   const Decision decision = decide(f);
   diagnosis.status = status_of(decision);
   auto& reasons = result.detail.reasons;
