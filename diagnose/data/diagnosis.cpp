@@ -4,7 +4,6 @@
 // signatures, the verdict and its reasons.
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <optional>
 
 #include "alarm_timing.h"
@@ -20,6 +19,7 @@
 #include "inclusion.h"
 #include "locate.h"
 #include "next_measurement.h"
+#include "null_replica_twin.h"
 #include "parameter_resolution.h"
 #include "parts.h"
 #include "protocol.h"
@@ -82,44 +82,6 @@ DiagnoseOptions without_mount_motion(const DiagnoseOptions& given) {
   std::erase_if(replayed.twin.effects,
                 [](const sim::EffectSettings& e) { return effect_class(e.name).is_mount_motion; });
   return replayed;
-}
-
-// The null replicas of the twin on `replay` (null_replicas.h) when it holds mount motion or the
-// converter: a fresh draw of the motion, the analog noise, then the converter it holds (or the
-// recording's grid); unset when it holds neither.
-NullReplica null_replica(const TwinReplay& replay, const DiagnoseOptions& given,
-                         const WhiteNoise& white) {
-  const auto is_converter = [](const sim::EffectSettings& e) {
-    return effect_class(e.name).is_converter;
-  };
-  const std::vector<sim::EffectSettings>& held = given.twin.effects;
-  const auto converter = std::find_if(held.begin(), held.end(), is_converter);
-  const bool motion = std::any_of(held.begin(), held.end(), [](const sim::EffectSettings& e) {
-    return effect_class(e.name).is_mount_motion;
-  });
-  if (!motion && converter == held.end()) return {};
-  std::vector<sim::EffectSettings> before_converter = held;
-  std::erase_if(before_converter, is_converter);
-  std::optional<sim::EffectSettings> rounding;
-  if (converter != held.end()) rounding = *converter;
-  return [&replay, &white, before_converter, rounding](std::uint64_t seed,
-                                                       const std::vector<double>& z) {
-    std::vector<double> v = replay.voltage(before_converter, seed);
-    if (!rounding) {
-      for (std::size_t i = 0; i < v.size(); ++i) v[i] = white.noisy(v[i], z[i]);
-      return v;
-    }
-    const std::unique_ptr<sim::Effect> rounds =
-        sim::make_effect(*rounding, replay.v_min_v(), replay.nominal().v_max_v(), seed);
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      sim::ChainSample sample;
-      sample.t_s = replay.times()[i];
-      sample.voltage_v = v[i] + white.analog_std_v * z[i];
-      rounds->apply(sample);
-      v[i] = sample.voltage_v;
-    }
-    return v;
-  };
 }
 
 // A twin holding lines of each session (the mains) is diagnosed on the recordings less each

@@ -2,6 +2,7 @@
 #include "effect_classes.h"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 #include "effect_fit.h"
@@ -249,6 +250,18 @@ const std::string& name_of_the_one(bool EffectClass::*property) {
 }  // namespace
 
 const std::string& converter_class() { return name_of_the_one(&EffectClass::is_converter); }
+
+bool each_sessions_own(const sim::EffectSettings& effect) {
+  const EffectClass& of = effect_class(effect.name);
+  return of.is_mount_motion || of.lines_of_each_session;
+}
+
+std::vector<sim::EffectSettings> replayed_effects(const std::vector<sim::EffectSettings>& effects) {
+  std::vector<sim::EffectSettings> out;
+  std::copy_if(effects.begin(), effects.end(), std::back_inserter(out),
+               [](const sim::EffectSettings& e) { return !each_sessions_own(e); });
+  return out;
+}
 
 const std::string& motion_class() { return name_of_the_one(&EffectClass::is_mount_motion); }
 

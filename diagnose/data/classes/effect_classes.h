@@ -105,6 +105,14 @@ std::vector<FreeShapeFamily> all_free_shape_families();
 // The delays `effect` makes (zero for classes without any).
 ChannelDelay channel_delay_of(const sim::EffectSettings& effect);
 
+// Each session's own: mount motion, and lines of each session. A diagnosis does not replay them
+// on another session (a replayed realisation would add to the gap, not take from it): it draws
+// the motion afresh and fits each session's lines.
+bool each_sessions_own(const sim::EffectSettings& effect);
+
+// `effects` without those that are each session's own: what a diagnosis replays.
+std::vector<sim::EffectSettings> replayed_effects(const std::vector<sim::EffectSettings>& effects);
+
 // The converter class's name (the one entry with is_converter), and mount motion's.
 const std::string& converter_class();
 const std::string& motion_class();

@@ -106,15 +106,6 @@ std::optional<sim::EffectSettings> session_lines_member(const Pick& pick) {
   }
 }
 
-// The replayed effects: all but mount motion, which the diagnosis does not replay.
-std::vector<sim::EffectSettings> replayed(const std::vector<sim::EffectSettings>& effects) {
-  std::vector<sim::EffectSettings> out;
-  for (const sim::EffectSettings& e : effects) {
-    if (!effect_class(e.name).is_mount_motion) out.push_back(e);
-  }
-  return out;
-}
-
 // Free shapes that have a library member (library_member) are held as that member, and the table
 // takes what the member leaves of the shape: a shape of the time's course (a lag, a skew) has no
 // table over clearance and temperature, its mean member has a formula.
@@ -136,7 +127,7 @@ void add_library_members(const Parts& parts, const Selection& selection, Improve
     }
     const std::optional<sim::EffectSettings> member = library_member(pick);
     if (!member) continue;
-    const std::vector<sim::EffectSettings> before = replayed(out.twin.effects);
+    const std::vector<sim::EffectSettings> before = replayed_effects(out.twin.effects);
     std::vector<sim::EffectSettings> after = before;
     after.push_back(*member);
     for (const auto& [replay, left] :

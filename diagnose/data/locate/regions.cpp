@@ -62,4 +62,15 @@ std::vector<RegionCell> region_cells(const RecordingSeries& s, const std::vector
   return cells;
 }
 
+std::vector<std::size_t> samples_in(const RecordingSeries& s, const RegionCell& cell) {
+  std::vector<std::size_t> in;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.clearance_mm[i] >= cell.clearance_lo && s.clearance_mm[i] <= cell.clearance_hi &&
+        s.temp_c[i] >= cell.temp_lo && s.temp_c[i] <= cell.temp_hi) {
+      in.push_back(i);
+    }
+  }
+  return in;
+}
+
 }  // namespace flange::diagnose

@@ -3,6 +3,7 @@
 // temperature cells, each with its gap's bias and RMS and their block-bootstrap intervals.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct RegionGrid {
 };
 
 RegionGrid region_grid_for(const RecordingSeries& s);
+
+// The samples of `s` (another part, say) that lie in `cell`, in order.
+std::vector<std::size_t> samples_in(const RecordingSeries& s, const RegionCell& cell);
 
 // The cells of `grid` with the bias and RMS of `gap` in each, and 95 % intervals from `rounds`
 // resamples of blocks of consecutive in-cell samples (which keep the gap's slow correlation).

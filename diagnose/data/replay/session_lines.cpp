@@ -20,16 +20,6 @@ bool of_each_session(const sim::EffectSettings& effect) {
   return effect_class(effect.name).lines_of_each_session;
 }
 
-// The twin's effects the replay runs: neither the lines nor mount motion, which is each
-// session's own random motion (diagnosis.cpp, without_mount_motion).
-std::vector<sim::EffectSettings> replayed(const std::vector<sim::EffectSettings>& effects) {
-  std::vector<sim::EffectSettings> out;
-  for (const sim::EffectSettings& e : effects) {
-    if (!of_each_session(e) && !effect_class(e.name).is_mount_motion) out.push_back(e);
-  }
-  return out;
-}
-
 void take_out(RecordingSeries& series, const std::vector<double>& lines_v) {
   for (std::size_t i = 0; i < series.size(); ++i) series.voltage_v[i] -= lines_v[i];
 }
@@ -49,7 +39,7 @@ std::optional<SessionLines> take_out_session_lines(const RecordingSeries& calibr
   if (held.empty()) return std::nullopt;
   SessionLines out{calibration, heldout, options, {}};
   std::erase_if(out.options.twin.effects, of_each_session);
-  const std::vector<sim::EffectSettings> effects = replayed(options.twin.effects);
+  const std::vector<sim::EffectSettings> effects = replayed_effects(options.twin.effects);
   const TwinReplay cal_replay(calibration, options.twin.nominal);
   const TwinReplay ho_replay(heldout, options.twin.nominal, age_offset_s);
   std::vector<std::string> sentences;

@@ -2,6 +2,8 @@
 #include "how_far.h"
 
 #include "locate.h"
+#include "regions.h"
+#include "series_arithmetic.h"
 #include "residual_tests.h"
 
 namespace flange::diagnose {
@@ -17,19 +19,11 @@ void measure_how_far(const RecordingSeries& heldout, const Selection& selection,
   how.max_before = max_abs_of(ho_gap);
   how.max_after = max_abs_of(current_error);
   if (detail.where_region) {
-    const RegionCell& cell = detail.regions[*detail.where_region];
-    std::vector<double> before, after;
-    for (std::size_t i = 0; i < heldout.size(); ++i) {
-      if (heldout.clearance_mm[i] >= cell.clearance_lo &&
-          heldout.clearance_mm[i] <= cell.clearance_hi && heldout.temp_c[i] >= cell.temp_lo &&
-          heldout.temp_c[i] <= cell.temp_hi) {
-        before.push_back(ho_gap[i]);
-        after.push_back(current_error[i]);
-      }
-    }
-    how.region_rms_before = rms_of(before);
-    how.region_rms_after = rms_of(after);
-    how.region_samples = before.size();
+    const std::vector<std::size_t> in =
+        samples_in(heldout, detail.regions[*detail.where_region]);
+    how.region_rms_before = rms_at(ho_gap, in);
+    how.region_rms_after = rms_at(current_error, in);
+    how.region_samples = in.size();
   }
   if (detail.band_hz) {
     const std::size_t segment = spectrum_segment(heldout.size());

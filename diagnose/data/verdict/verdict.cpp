@@ -7,6 +7,7 @@
 #include "criteria.h"
 #include "effect_classes.h"
 #include "reach.h"
+#include "regions.h"
 #include "residual_tests.h"
 #include "series_arithmetic.h"
 #include "verdict_reasons.h"
@@ -49,14 +50,8 @@ bool picks_fit_a_residue(const VerdictFigures& f) {
 // enough samples to confirm or refute what lies there.
 bool heldout_covers_where(const RecordingSeries& heldout, const DiagnosisDetail& detail) {
   if (!detail.where_region) return true;
-  const RegionCell& cell = detail.regions[*detail.where_region];
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < heldout.size(); ++i) {
-    n += heldout.clearance_mm[i] >= cell.clearance_lo &&
-         heldout.clearance_mm[i] <= cell.clearance_hi && heldout.temp_c[i] >= cell.temp_lo &&
-         heldout.temp_c[i] <= cell.temp_hi;
-  }
-  return n >= criteria::kLeastSamplesPerCell;
+  return samples_in(heldout, detail.regions[*detail.where_region]).size() >=
+         criteria::kLeastSamplesPerCell;
 }
 
 // What the picks leave against what the noise allows, as a sentence.
