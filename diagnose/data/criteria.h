@@ -171,6 +171,12 @@ inline constexpr std::size_t kResidualTestLags = 25;
 // LowAliasedMotion.AResonanceOnAMainsAliasIsMotionNotPickup.
 inline constexpr double kMotionSlopeT = 8.0;
 inline constexpr double kMotionLeastShare = 0.1;
+// The converter: a grid found on the recordings is the one a twin's noise holds the rounding of
+// (sim::NoiseSettings::rounding_lsb_v) when their LSBs agree within 1 %. A grid's LSB is found
+// from the spacing of thousands of codes, far closer than that; converters of neighbouring
+// resolutions or ranges differ by a factor of two or by tens of percent.
+// Test: AltSelftest.AConverterHeldInTheNoiseIsNotNamedAgain.
+inline constexpr double kSameGridShare = 0.01;
 
 // ---- Protocol ------------------------------------------------------------------------------
 // A protocol reaches each clearance from one side only when, in every band of a twentieth of the

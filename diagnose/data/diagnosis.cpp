@@ -148,7 +148,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   measure_picks_in_final_fit(parts, selection);
   resolve_parameters(parts, selection);
   // Signatures: the noise-type classes.
-  recognise_quantisation(parts, result.detail.white_noise, selection);
+  recognise_quantisation(parts, result.detail.white_noise, options.twin.noise.rounding_lsb_v,
+                         selection);
   const VerdictNoise verdict_noise = with_converter_grid(selection, result.detail.white_noise,
                                                          recognise_vibration(parts, selection));
   if (twin_holds_motion) selection.vibration.reset();

@@ -33,6 +33,14 @@ void check_twin_config(const TwinConfig& config) {
         fmt::format("noise.temperature_std_c = {} is outside its valid range [0, 100] degC",
                     noise.temperature_std_c));
   }
+  const double rounding_std_v = noise.rounding_lsb_v / std::sqrt(12.0);
+  if (!std::isfinite(noise.rounding_lsb_v) || noise.rounding_lsb_v < 0.0 ||
+      rounding_std_v > noise.voltage_std_v * (1.0 + 1e-9)) {
+    throw BadArgument(fmt::format(
+        "noise.rounding_lsb_v = {} is outside its valid range [0, {:.6g}] V: its rounding "
+        "(LSB / sqrt(12)) is part of noise.voltage_std_v = {} V",
+        noise.rounding_lsb_v, noise.voltage_std_v * std::sqrt(12.0), noise.voltage_std_v));
+  }
   std::set<std::string> seen;
   for (const EffectSettings& effect : config.effects) {
     if (!seen.insert(effect.name).second) {

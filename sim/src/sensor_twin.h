@@ -24,6 +24,10 @@ inline constexpr double kThesisRepeatabilityRmsV = 0.07028;
 struct NoiseSettings {
   double voltage_std_v = kThesisRepeatabilityRmsV;  // >= 0, <= 10: white noise on the voltage
   double temperature_std_c = 0.0;  // >= 0, <= 100: on the thermocouple (the thesis gives none)
+  // >= 0, LSB / sqrt(12) <= voltage_std_v: of the voltage noise, the rounding of a converter grid
+  // with this LSB whose codes the twin does not replay (0: none). The twin adds white noise at
+  // voltage_std_v either way; `flange diagnose` against the twin takes that grid as held.
+  double rounding_lsb_v = 0.0;
   bool operator==(const NoiseSettings&) const = default;
 };
 

@@ -166,6 +166,9 @@ nlohmann::ordered_json twin_to_json(const TwinConfig& config) {
         {"temperature_std_c", config.noise.temperature_std_c}}},
       {"effects", effects},
   };
+  if (config.noise.rounding_lsb_v > 0.0) {
+    root["noise"]["rounding_lsb_v"] = config.noise.rounding_lsb_v;
+  }
   if (!config.notes.empty()) root["notes"] = config.notes;
   return root;
 }
@@ -182,7 +185,8 @@ TwinConfig twin_from_json(const json& root, const std::string& where) {
   if (root.contains("noise")) {
     const std::string noise_where = where + ": noise";
     const json& noise = require_object(root["noise"], noise_where);
-    reject_unknown_fields(noise, {"voltage_std_v", "temperature_std_c"}, noise_where);
+    reject_unknown_fields(noise, {"voltage_std_v", "temperature_std_c", "rounding_lsb_v"},
+                          noise_where);
     if (noise.contains("voltage_std_v")) {
       config.noise.voltage_std_v =
           require_number(noise["voltage_std_v"], noise_where + ".voltage_std_v");
@@ -190,6 +194,10 @@ TwinConfig twin_from_json(const json& root, const std::string& where) {
     if (noise.contains("temperature_std_c")) {
       config.noise.temperature_std_c =
           require_number(noise["temperature_std_c"], noise_where + ".temperature_std_c");
+    }
+    if (noise.contains("rounding_lsb_v")) {
+      config.noise.rounding_lsb_v =
+          require_number(noise["rounding_lsb_v"], noise_where + ".rounding_lsb_v");
     }
   }
   if (root.contains("effects")) {

@@ -113,6 +113,23 @@ TEST(TwinFile, BadFilesAreNamedWithTheFieldAndRange) {
                 .find("switched on twice"),
             std::string::npos);
   EXPECT_THROW(load_twin(scratch("does_not_exist.json")), BadArgument);
+  // A converter's rounding is part of the voltage noise: LSB / sqrt(12) <= voltage_std_v.
+  EXPECT_NE(load_error(R"({"noise": {"voltage_std_v": 0.1, "rounding_lsb_v": 0.5}})")
+                .find("bad.json: noise.rounding_lsb_v = 0.5 is outside its valid range [0, "
+                      "0.34641] V"),
+            std::string::npos)
+      << load_error(R"({"noise": {"voltage_std_v": 0.1, "rounding_lsb_v": 0.5}})");
+  EXPECT_NE(load_error(R"({"noise": {"rounding_lsb_v": -0.1}})").find("noise.rounding_lsb_v"),
+            std::string::npos);
+}
+
+TEST(TwinFile, ARoundingHeldInTheNoiseIsSavedOnlyWhenSet) {
+  TwinConfig config;
+  EXPECT_FALSE(twin_to_json(config)["noise"].contains("rounding_lsb_v"));
+  config.noise.voltage_std_v = 0.1;
+  config.noise.rounding_lsb_v = 0.3;
+  const TwinConfig back = twin_from_json(twin_to_json(config), "twin.json");
+  EXPECT_EQ(back.noise, config.noise);
 }
 
 }  // namespace

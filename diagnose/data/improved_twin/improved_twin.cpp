@@ -171,9 +171,12 @@ HeldFinding held(const EffectFinding& finding, const Selection& selection, const
   const EffectClass& of = effect_class(finding.name);
   if (of.is_converter) {
     if (selection.quantisation_as_noise) {
-      return {finding.name, "not held",
-              "its codes are not reproduced by the converter on this grid, so the twin holds its "
-              "rounding in the white noise level, not as a converter"};
+      return {finding.name, "white noise",
+              fmt::format("its codes are not reproduced by the converter on this grid, so the twin "
+                          "holds its rounding in the white noise level, and names the grid "
+                          "(noise.rounding_lsb_v = {:.4g} V) so that a diagnosis against it does "
+                          "not name the converter again",
+                          selection.quantised_on->lsb_v)};
     }
     std::string note = "the converter on the recorded grid, with its code boundaries";
     if (finding.params.count("calibration_gain") != 0) {
@@ -264,6 +267,11 @@ ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
       std::any_of(out.twin.effects.begin(), out.twin.effects.end(), is_converter);
   const WhiteNoise& white = result.detail.white_noise;
   out.twin.noise.voltage_std_v = converter_held ? white.analog_std_v : white.effective_std_v;
+  // A grid whose codes the twin does not replay: the white noise holds its rounding.
+  out.twin.noise.rounding_lsb_v =
+      !converter_held && selection.quantisation_as_noise && selection.quantised_on
+          ? std::min(selection.quantised_on->lsb_v, std::sqrt(12.0) * out.twin.noise.voltage_std_v)
+          : 0.0;
   out.summary = selected
                     ? fmt::format(
                           "the twin given, with the {} findings of the \"{}\" verdict and the "

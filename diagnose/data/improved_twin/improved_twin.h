@@ -21,8 +21,8 @@ struct DiagnosisResult;
 // How the improved twin holds one finding.
 struct HeldFinding {
   std::string name;  // the finding's class
-  // "library effect", "library effect and table", "table", "converter", "mount motion",
-  // "session's own lines" or "not held".
+  // "library effect", "library effect and table", "table", "converter", "white noise" (a grid
+  // whose codes are not replayed), "mount motion", "session's own lines" or "not held".
   std::string held_as;
   std::string note;  // one sentence: what the twin holds of it, or why it cannot
 };

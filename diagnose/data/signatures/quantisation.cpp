@@ -45,7 +45,8 @@ void add_placement(const Selection& selection, sim::EffectSettings& converter,
 
 }  // namespace
 
-void recognise_quantisation(const Parts& parts, const WhiteNoise& white, Selection& selection) {
+void recognise_quantisation(const Parts& parts, const WhiteNoise& white,
+                            double held_rounding_lsb_v, Selection& selection) {
   if (!parts.grid) return;
   const AdcGrid& grid = *parts.grid;
   // A twin that holds a converter replays its codes already: the grid sets the noise the verdict
@@ -53,6 +54,12 @@ void recognise_quantisation(const Parts& parts, const WhiteNoise& white, Selecti
   if (std::any_of(selection.modelled.begin(), selection.modelled.end(),
                   [](const sim::EffectSettings& e) { return effect_class(e.name).is_converter; })) {
     selection.quantised_on = grid;
+    return;
+  }
+  // A twin whose noise holds this grid's rounding (its codes were not reproduced): the same.
+  if (std::abs(held_rounding_lsb_v - grid.lsb_v) <= criteria::kSameGridShare * grid.lsb_v) {
+    selection.quantised_on = grid;
+    selection.quantisation_as_noise = true;
     return;
   }
   EffectFinding finding = grid_finding(grid);

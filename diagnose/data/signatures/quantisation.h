@@ -15,7 +15,11 @@ namespace flange::diagnose {
 // Sets selection.quantisation (with its own shrink: with the boundaries placed first, what placing
 // them took off the held-out gap; else what the converter's replay takes) and quantised_on; when
 // the twin's converter reproduces the codes, it joins `modelled` and replaces the placement's
-// offset.
-void recognise_quantisation(const Parts& parts, const WhiteNoise& white, Selection& selection);
+// offset. A twin that holds the converter, or whose noise holds the rounding of this grid
+// (`held_rounding_lsb_v`, sim::NoiseSettings::rounding_lsb_v, within criteria::kSameGridShare of
+// its LSB), sets only quantised_on (and, for the latter, quantisation_as_noise): the grid is no
+// finding again.
+void recognise_quantisation(const Parts& parts, const WhiteNoise& white,
+                            double held_rounding_lsb_v, Selection& selection);
 
 }  // namespace flange::diagnose
