@@ -51,6 +51,18 @@ std::string explained_within_reach(const BeyondReach& b) {
       b.left_beyond_v);
 }
 
+std::string gap_beyond_reach(const BeyondReach& b) {
+  return fmt::format(
+      "what is left is within {:.0f} % of the noise on the {} held-out samples within the "
+      "calibration's ranges ({:.1f}-{:.1f} C, {:.2f}-{:.2f} mm): {:.4g} V; the gap lies on the "
+      "other {} beyond them (the held-out part spans {:.1f}-{:.1f} C, {:.2f}-{:.2f} mm), {:.4g} V, "
+      "where the twin's curves are continued past what they were fitted on; a calibration "
+      "session that reaches there would tell their shape",
+      explained_pct(), b.within, b.temp_lo_c, b.temp_hi_c, b.clearance_lo_mm, b.clearance_hi_mm,
+      b.left_within_v, b.beyond, b.heldout_temp_lo_c, b.heldout_temp_hi_c,
+      b.heldout_clearance_lo_mm, b.heldout_clearance_hi_mm, b.left_beyond_v);
+}
+
 std::string partly_explained(double share, const std::string& what_is_left) {
   return fmt::format(
       "the selected effects take {:.1f} % of the held-out gap above the noise (at least {:.0f} "

@@ -30,6 +30,8 @@ struct BeyondReach {
   double left_within_v = 0, left_beyond_v = 0, beyond_share = 0;
 };
 std::string explained_within_reach(const BeyondReach& b);
+// What is left lies beyond the calibration's ranges, with nothing picked that takes most of it.
+std::string gap_beyond_reach(const BeyondReach& b);
 
 std::string partly_explained(double share, const std::string& what_is_left);
 

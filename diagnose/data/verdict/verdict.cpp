@@ -54,6 +54,14 @@ bool heldout_covers_where(const RecordingSeries& heldout, const DiagnosisDetail&
          criteria::kLeastSamplesPerCell;
 }
 
+// What is left is above the noise over the session, but within it in every window and on the
+// held-out samples within the calibration's ranges (a share of them enough to judge by).
+bool left_within_reach(const VerdictFigures& f) {
+  return !left_within_noise_overall(f) && left_within_noise_locally(f) &&
+         f.share_within >= criteria::kLeastShareWithinReach &&
+         f.within_after_v <= criteria::kExplainedRatio * f.noise_v;
+}
+
 // What the picks leave against what the noise allows, as a sentence.
 std::string what_is_left(const Selection& selection, double verdict_noise,
                          const HeldoutWindow& worst) {
@@ -148,9 +156,7 @@ Decision decide(const VerdictFigures& f) {
   const bool overall = left_within_noise_overall(f);
   const bool locally = left_within_noise_locally(f);
   const bool within_reach =
-      !overall && locally && f.share_within >= criteria::kLeastShareWithinReach &&
-      f.within_before_v > criteria::kGapRatio * f.noise_v &&
-      f.within_after_v <= criteria::kExplainedRatio * f.noise_v &&
+      left_within_reach(f) && f.within_before_v > criteria::kGapRatio * f.noise_v &&
       f.beyond_share_taken >= std::max(criteria::kLeastShareTakenBeyondReach, 1.0 - f.share_within);
   if (f.any_findings && overall && locally) return Decision::kExplained;
   if (f.any_findings && within_reach) return Decision::kExplainedWithinReach;
@@ -211,6 +217,10 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
       result.detail.partial = findings;
       diagnosis.nearest = nearest_effect(selection, findings, noise.rms_v, how.worst_window);
       reasons.push_back(reasons::unexplained(f.any_findings));
+      if (left_within_reach(f)) {
+        reasons.push_back(reasons::gap_beyond_reach(
+            beyond_reach(parts.heldout, reach, selection, f.beyond_share_taken)));
+      }
       break;
     case Decision::kNone:
       reasons.push_back(reasons::none());
