@@ -372,6 +372,23 @@ TEST(AltSelftest, AConverterHeldInTheNoiseIsNotNamedAgain) {
             r.first.improved_twin.twin.noise.rounding_lsb_v);
 }
 
+// Seed 470, pair 2: a DAQ whose channel clocks drift apart, the voltage late by a skew that
+// grows through each session. The free shape finds the skew's law; the improved twin holds it as
+// the library's channel_skew with its drift, and against that twin the pair leaves "none".
+TEST(AltSelftest, ADriftingSkewIsHeldByItsLaw) {
+  const Rediagnosis r = rediagnose_alt_pair(470, 2);
+  ASSERT_EQ(r.first.diagnosis.status, "explained");
+  ASSERT_EQ(r.first.improved_twin.findings.size(), 1u);
+  EXPECT_EQ(r.first.improved_twin.findings[0].held_as, "library effect and table");
+  const std::vector<sim::EffectSettings>& held = r.first.improved_twin.twin.effects;
+  const auto skew = std::find_if(held.begin(), held.end(), [](const sim::EffectSettings& e) {
+    return e.name == "channel_skew";
+  });
+  ASSERT_NE(skew, held.end());
+  EXPECT_NE(skew->params.at("drift_s_per_h"), 0.0);
+  EXPECT_EQ(r.second.diagnosis.status, "none");
+}
+
 // Seed 447, pair 35: a log-time ageing, a ln(1 + age / 0.80 d), whose held-out session starts
 // 16 h after an hour-long calibration session (start times given). Over that hour the settling
 // barely bends, so a straight line carries it too far (it would leave 0.103 V, 1.85 times the

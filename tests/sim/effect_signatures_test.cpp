@@ -161,6 +161,21 @@ TEST(ChannelSkew, NegativeSkewDelaysTheVoltageInstead) {
   }
 }
 
+// skew(t) = 1 - 2 h: the temperature late by 1 s at the start, the channels level after half an
+// hour, the voltage late by 1 s after an hour.
+TEST(ChannelSkew, ADriftingSkewMovesTheDelayFromOneChannelToTheOther) {
+  auto skew = effect("channel_skew", {{"skew_s", 1.0}, {"drift_s_per_h", -2.0}});
+  for (int n = 0; n < 3601; ++n) {
+    const double t = n;
+    ChainSample sample = sample_at(t, 1.0 + 0.001 * t, 20.0 + 0.01 * t);
+    skew->apply(sample);
+    const double skew_s = 1.0 - 2.0 * t / 3600.0;
+    const double temperature_t = t - std::max(0.0, skew_s), voltage_t = t + std::min(0.0, skew_s);
+    ASSERT_NEAR(sample.thermocouple_c, 20.0 + 0.01 * std::max(0.0, temperature_t), 1e-9) << t;
+    ASSERT_NEAR(sample.voltage_v, 1.0 + 0.001 * std::max(0.0, voltage_t), 1e-9) << t;
+  }
+}
+
 TEST(AgeingDrift, OffsetGrowsAtTheGivenRatePerDay) {
   auto ageing = effect("ageing_drift", {{"rate_v_per_day", -0.08}, {"start_age_days", 10.0}});
   // Least-squares slope over two days sampled once a minute.

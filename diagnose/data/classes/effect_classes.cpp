@@ -110,11 +110,21 @@ EffectClass channel_skew() {
       .follows = "the clearance's moves",
       .channel_delay =
           [](const sim::EffectSettings& e) {
-            const double skew_s = e.params.at("skew_s");
-            return ChannelDelay{.temperature_shift_s = skew_s > 0.0 ? skew_s : 0.0,
-                                .voltage_shift_s = skew_s < 0.0 ? skew_s : 0.0};
+            return ChannelDelay{.skew_s = e.params.at("skew_s"),
+                                .skew_drift_s_per_h = e.params.at("drift_s_per_h"),
+                                .skew_drift_change_s_per_h2 = e.params.at("drift_change_s_per_h2")};
           },
       .families = {{"channel_skew", "t", fs::make_skew}},
+      // The law the free shape found, as the effect's drift; the free shape's voltage is sampled
+      // late or early, the effect's makes the temperature late where the skew turns positive, so
+      // only a law that keeps the voltage late all session is the effect.
+      .member_of_shape = [](const FreeShapeFit& shape) -> std::optional<sim::ParamValues> {
+        const auto& p = shape.params;
+        if (p.count("skew_s_most") == 0 || p.at("skew_s_most") > 0.0) return std::nullopt;
+        return sim::ParamValues{{"skew_s", p.at("skew_s_at_start")},
+                                {"drift_s_per_h", p.at("drift_s_per_h")},
+                                {"drift_change_s_per_h2", p.at("drift_change_s_per_h2")}};
+      },
       // A late temperature channel moves the bench voltage by less than the noise (the blower
       // changes the temperature by 0.13 degC/s at most); a late voltage channel shows on every
       // micrometer step. Only the detectable side is drawn.

@@ -5,6 +5,7 @@
 // free-shape families (diagnose/data/README.md, "Adding an effect class").
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,14 +30,24 @@ struct SearchRange {
   double lo = 0.0, hi = 0.0;
 };
 
-// How a class's settings make a channel late. The temperature channel behind the coil: a pure
-// delay (shift_s > 0: the temperature at t is the coil's at t - shift_s) or a first-order lag of
-// the reading (lag_tau_s > 0); the voltage channel: voltage_shift_s < 0 (the voltage at t was
-// made at t + voltage_shift_s).
+// How a class's settings make a channel late. A skew between the channels on the session's
+// clock, skew(t) = skew_s + drift h + drift_change h^2 (h in hours): where it is > 0 the
+// temperature at t is the coil's at t - skew(t), where < 0 the voltage at t was made at
+// t + skew(t). Or a first-order lag of the temperature reading (temperature_lag_tau_s > 0).
 struct ChannelDelay {
-  double temperature_shift_s = 0.0;
+  double skew_s = 0.0, skew_drift_s_per_h = 0.0, skew_drift_change_s_per_h2 = 0.0;
   double temperature_lag_tau_s = 0.0;
-  double voltage_shift_s = 0.0;
+
+  double skew_at(double t_s) const {
+    const double h = t_s / 3600.0;
+    return skew_s + skew_drift_s_per_h * h + skew_drift_change_s_per_h2 * h * h;
+  }
+  bool skew_drifts() const {
+    return skew_drift_s_per_h != 0.0 || skew_drift_change_s_per_h2 != 0.0;
+  }
+  // Whether the skew makes (or, drifting, may make) the temperature channel late; the voltage.
+  bool temperature_late() const { return skew_s > 0.0 || skew_drifts(); }
+  bool voltage_late() const { return skew_s < 0.0 || skew_drifts(); }
 };
 
 class SelftestDraw;
@@ -84,6 +95,11 @@ struct EffectClass {
   // The shape-free families that stand for it (free_shape_fit.h), in the order they are scored,
   // each with how to make it (candidates/free_shapes/family_makers.h).
   std::vector<FreeShapeFamily> families{};
+  // A free shape's library member where its summary's keys are not the effect's parameters (a
+  // skew's law: the effect's skew_s is its value at the session's start, the summary's the
+  // mid-session one): the parameters, or nothing where the shape does what the effect cannot.
+  // Unset: the summary's keys (improved_twin/improved_twin.cpp, library_member).
+  std::optional<sim::ParamValues> (*member_of_shape)(const FreeShapeFit& shape) = nullptr;
   // The blind self-test's draw of its parameters: each range's low end moves a bench recording's
   // voltage by about the thesis's repeatability (docs/diagnose.md, "How it is checked").
   sim::ParamValues (*selftest_draw)(SelftestDraw& draw) = nullptr;

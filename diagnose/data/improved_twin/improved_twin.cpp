@@ -70,16 +70,23 @@ bool shapes_follow_age(const Selection& selection) {
 }
 
 // A free shape whose summary gives every parameter of its class's library effect (a lag's mean
-// delay, a skew's mean): that library member, or nothing when the summary leaves its valid range.
+// delay), or whose class says which member it is (a skew's law, EffectClass::member_of_shape):
+// that library member, or nothing when the shape lies beyond what the effect does.
 std::optional<sim::EffectSettings> library_member(const Pick& pick) {
   const FreeShapeFit& shape = *pick.chosen().free_shape;
   const sim::EffectSpec& spec =
       sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(pick.finding.name))];
   sim::ParamValues values;
-  for (const sim::ParamSpec& param : spec.params) {
-    const auto value = shape.params.find(param.key);
-    if (value == shape.params.end()) return std::nullopt;
-    values[param.key] = value->second;
+  if (const auto member_of = effect_class(pick.finding.name).member_of_shape) {
+    const std::optional<sim::ParamValues> member = member_of(shape);
+    if (!member) return std::nullopt;
+    values = *member;
+  } else {
+    for (const sim::ParamSpec& param : spec.params) {
+      const auto value = shape.params.find(param.key);
+      if (value == shape.params.end()) return std::nullopt;
+      values[param.key] = value->second;
+    }
   }
   try {
     return sim::make_effect_settings(spec.name, values, "improved twin");
@@ -223,9 +230,10 @@ HeldFinding held(const EffectFinding& finding, const Selection& selection, const
     }
     if (member) {
       return {finding.name, "library effect and table",
-              fmt::format("its free shape's mean as the library effect, and what that leaves of "
-                          "the shape, with the other free shapes, in the tabulated effect "
-                          "(reproduced to {:.2g} V RMS on the worse part)",
+              fmt::format("its free shape's summary as the library effect (a lag's mean delay, a "
+                          "skew's law), and what that leaves of the shape, with the other free "
+                          "shapes, in the tabulated effect (reproduced to {:.2g} V RMS on the worse "
+                          "part)",
                           misfit)};
     }
     return {finding.name, "table",

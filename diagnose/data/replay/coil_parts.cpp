@@ -2,31 +2,30 @@
 #include "coil_parts.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "effect_classes.h"
 
 namespace flange::diagnose {
 namespace {
 
-// How late the modelled effects make the voltage channel (s, <= 0: the voltage at t was made at
-// t + shift), or 0.
-double voltage_channel_shift_s(const std::vector<sim::EffectSettings>& modelled) {
+// The skew that makes the voltage channel late among the modelled effects, if any.
+std::optional<ChannelDelay> voltage_channel_skew(const std::vector<sim::EffectSettings>& modelled) {
   for (const sim::EffectSettings& effect : modelled) {
-    if (const double shift_s = channel_delay_of(effect).voltage_shift_s; shift_s < 0.0) {
-      return shift_s;
-    }
+    if (const ChannelDelay delay = channel_delay_of(effect); delay.voltage_late()) return delay;
   }
-  return 0.0;
+  return std::nullopt;
 }
 
-// `series` with its clearance and temperature taken `shift_s` later (held at the first row before
-// the record began, as the twin's skew holds it).
-void shift_inputs(RecordingSeries& series, double shift_s) {
+// `series` with its clearance and temperature taken where the voltage was made: |skew(t)| later
+// wherever `skew` makes the voltage late (held at the first row before the record began, as the
+// twin's skew holds it).
+void shift_inputs(RecordingSeries& series, const ChannelDelay& skew) {
   const RecordingSeries recorded = series;
   for (std::size_t i = 0; i < series.size(); ++i) {
-    series.clearance_mm[i] =
-        interpolate_at(recorded.t_s, recorded.clearance_mm, recorded.t_s[i] + shift_s);
-    series.temp_c[i] = interpolate_at(recorded.t_s, recorded.temp_c, recorded.t_s[i] + shift_s);
+    const double at = recorded.t_s[i] + std::min(0.0, skew.skew_at(recorded.t_s[i]));
+    series.clearance_mm[i] = interpolate_at(recorded.t_s, recorded.clearance_mm, at);
+    series.temp_c[i] = interpolate_at(recorded.t_s, recorded.temp_c, at);
   }
 }
 
@@ -34,9 +33,9 @@ void shift_inputs(RecordingSeries& series, double shift_s) {
 
 CoilParts::CoilParts(const Parts& parts, const std::vector<sim::EffectSettings>& modelled)
     : parts_(parts) {
-  const double voltage_shift_s = voltage_channel_shift_s(modelled);
+  const std::optional<ChannelDelay> voltage_skew = voltage_channel_skew(modelled);
   if (std::none_of(modelled.begin(), modelled.end(), delays_temperature_channel) &&
-      voltage_shift_s == 0.0) {
+      !voltage_skew) {
     return;
   }
   auto copies = std::make_unique<Copies>();
@@ -44,9 +43,9 @@ CoilParts::CoilParts(const Parts& parts, const std::vector<sim::EffectSettings>&
   copies->calibration.temp_c = ambient_from_recorded(parts.calibration, modelled);
   copies->heldout = parts.heldout;
   copies->heldout.temp_c = ambient_from_recorded(parts.heldout, modelled);
-  if (voltage_shift_s != 0.0) {
-    shift_inputs(copies->calibration, voltage_shift_s);
-    shift_inputs(copies->heldout, voltage_shift_s);
+  if (voltage_skew) {
+    shift_inputs(copies->calibration, *voltage_skew);
+    shift_inputs(copies->heldout, *voltage_skew);
   }
   copies->cal_replay = std::make_unique<TwinReplay>(
       copies->calibration, parts.cal_replay.nominal(), parts.cal_replay.age_offset_s());

@@ -80,7 +80,7 @@ double interpolate_at(const std::vector<double>& t, const std::vector<double>& v
 
 bool delays_temperature_channel(const sim::EffectSettings& effect) {
   const ChannelDelay delay = channel_delay_of(effect);
-  return delay.temperature_shift_s > 0.0 || delay.temperature_lag_tau_s > 0.0;
+  return delay.temperature_late() || delay.temperature_lag_tau_s > 0.0;
 }
 
 namespace {
@@ -128,10 +128,11 @@ std::vector<double> ambient_from_recorded(const RecordingSeries& series,
   const std::size_t n = ambient.size();
   // Undo in reverse chain order: the skew acts after the lag.
   for (const sim::EffectSettings& effect : effects) {
-    if (const double skew_s = channel_delay_of(effect).temperature_shift_s; skew_s > 0.0) {
+    if (const ChannelDelay delay = channel_delay_of(effect); delay.temperature_late()) {
       std::vector<double> advanced(n);
       for (std::size_t i = 0; i < n; ++i) {
-        advanced[i] = interpolate_at(series.t_s, ambient, series.t_s[i] + skew_s);
+        const double t = series.t_s[i];
+        advanced[i] = interpolate_at(series.t_s, ambient, t + std::max(0.0, delay.skew_at(t)));
       }
       ambient = std::move(advanced);
     }
@@ -260,7 +261,7 @@ std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& 
   std::vector<ChainStage> stages;
   for (const sim::EffectSettings* effect : ordered) {
     const ChainStage stage = sim::chain_stage_of(effect->name);
-    const bool moves_drive = channel_delay_of(*effect).temperature_shift_s > 0.0;
+    const bool moves_drive = channel_delay_of(*effect).temperature_late();
     if (stage <= ChainStage::kThermal || moves_drive) coil_effects.push_back(*effect);
     if (stage <= ChainStage::kThermal) continue;
     chain.push_back(sim::make_effect(*effect, nominal_.v_min_v(), nominal_.v_max_v(), seed));

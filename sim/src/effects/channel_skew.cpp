@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 // channel_skew: the voltage and temperature channels are not sampled at the same instant (a
-// multiplexed DAQ, or a thermocouple module with its own latency). skew_s > 0: the temperature
-// reported with a sample was taken skew_s earlier than the voltage; skew_s < 0: the voltage is
-// the older one. The delayed channel is interpolated linearly between past samples.
+// multiplexed DAQ, or a thermocouple module with its own latency). skew(t) > 0: the temperature
+// reported with a sample was taken skew(t) earlier than the voltage; skew(t) < 0: the voltage is
+// the older one. skew(t) = skew_s + drift_s_per_h h + drift_change_s_per_h2 h^2, h the session's
+// clock in hours: a DAQ whose channel clocks drift apart (and settle) from the session's start.
+// The delayed channel is interpolated linearly between past samples.
+#include <algorithm>
 #include <cmath>
 #include <deque>
 
@@ -11,39 +14,58 @@
 namespace flange::sim {
 namespace {
 
-class ChannelSkew final : public Effect {
+constexpr double kSecondsPerHour = 3600.0;
+
+// One channel's past samples, read back `delay_s` late. The instant read back, t - delay_s, never
+// moves backwards while the delay changes by less than a second per second, so samples older than
+// it are dropped.
+class DelayLine {
  public:
-  explicit ChannelSkew(double skew_s) : skew_s_(skew_s) {}
-
-  void apply(ChainSample& sample) override {
-    if (skew_s_ == 0.0) return;
-    const bool delay_voltage = skew_s_ < 0.0;
-    double& channel = delay_voltage ? sample.voltage_v : sample.thermocouple_c;
-    history_.push_back({sample.t_s, channel, sample.clip});
-    const double wanted_t_s = sample.t_s - std::abs(skew_s_);
-    // Keep one sample at or before the wanted instant; older ones are never needed again.
-    while (history_.size() >= 2 && history_[1].t_s <= wanted_t_s) history_.pop_front();
-    const Point& before = history_.front();
-    if (history_.size() == 1 || wanted_t_s <= before.t_s) {
-      channel = before.value;  // before the record began: hold the first value
-      if (delay_voltage) sample.clip = before.clip;
-      return;
-    }
-    const Point& after = history_[1];
-    const double weight = (wanted_t_s - before.t_s) / (after.t_s - before.t_s);
-    channel = before.value + weight * (after.value - before.value);
-    // The rail flag travels with the voltage it describes.
-    if (delay_voltage) sample.clip = weight < 0.5 ? before.clip : after.clip;
-  }
-
- private:
   struct Point {
     double t_s;
     double value;
     RailClip clip;
   };
-  double skew_s_;
+
+  // The channel's value (and rail flag) `delay_s` >= 0 before `now`, `now` stored first.
+  Point delayed(const Point& now, double delay_s) {
+    history_.push_back(now);
+    const double wanted_t_s = now.t_s - delay_s;
+    while (history_.size() >= 2 && history_[1].t_s <= wanted_t_s) history_.pop_front();
+    const Point& before = history_.front();
+    if (history_.size() == 1 || wanted_t_s <= before.t_s) return before;  // hold the first value
+    const Point& after = history_[1];
+    const double weight = (wanted_t_s - before.t_s) / (after.t_s - before.t_s);
+    // The rail flag travels with the value it describes.
+    return {wanted_t_s, before.value + weight * (after.value - before.value),
+            weight < 0.5 ? before.clip : after.clip};
+  }
+
+ private:
   std::deque<Point> history_;
+};
+
+class ChannelSkew final : public Effect {
+ public:
+  ChannelSkew(double skew_s, double drift_s_per_h, double drift_change_s_per_h2)
+      : skew_s_(skew_s), drift_(drift_s_per_h), change_(drift_change_s_per_h2) {}
+
+  void apply(ChainSample& sample) override {
+    if (skew_s_ == 0.0 && drift_ == 0.0 && change_ == 0.0) return;
+    const double h = sample.t_s / kSecondsPerHour;
+    const double skew_s = skew_s_ + drift_ * h + change_ * h * h;
+    const DelayLine::Point voltage =
+        voltage_.delayed({sample.t_s, sample.voltage_v, sample.clip}, std::max(0.0, -skew_s));
+    const DelayLine::Point temperature = temperature_.delayed(
+        {sample.t_s, sample.thermocouple_c, RailClip::kNone}, std::max(0.0, skew_s));
+    sample.voltage_v = voltage.value;
+    sample.clip = voltage.clip;
+    sample.thermocouple_c = temperature.value;
+  }
+
+ private:
+  double skew_s_, drift_, change_;
+  DelayLine voltage_, temperature_;
 };
 
 }  // namespace
@@ -55,10 +77,16 @@ EffectSpec channel_skew_effect() {
   spec.stage = ChainStage::kAcquisition;
   spec.params = {
       {"skew_s", 0.25, -10.0, 10.0, "s",
-       "> 0: the temperature is older than the voltage; < 0: the voltage is older"},
+       "at the session's start: > 0, the temperature is older than the voltage; < 0, the voltage "
+       "is older"},
+      {"drift_s_per_h", 0.0, -20.0, 20.0, "s/h",
+       "how fast the skew changes on the session's clock (channel clocks that drift apart)"},
+      {"drift_change_s_per_h2", 0.0, -20.0, 20.0, "s/h^2",
+       "how fast that drift changes (a drift that settles)"},
   };
   spec.make = [](const ParamValues& p, const EffectContext&) {
-    return std::make_unique<ChannelSkew>(p.at("skew_s"));
+    return std::make_unique<ChannelSkew>(p.at("skew_s"), p.at("drift_s_per_h"),
+                                         p.at("drift_change_s_per_h2"));
   };
   return spec;
 }

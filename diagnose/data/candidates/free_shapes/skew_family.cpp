@@ -58,6 +58,16 @@ void SkewFamily::summarise(const Eigen::VectorXd&, const RecordedPart& calibrati
   params["skew_s_at_start"] = skew_at(0.0);
   params["skew_s_at_end"] = skew_at(end_h);
   params["skew_s"] = skew_at(0.5 * end_h);
+  // The law itself, and where over the session the skew comes nearest to a late temperature
+  // channel (its largest value: the ends, or the parabola's vertex between them).
+  params["drift_s_per_h"] = law_[1];
+  params["drift_change_s_per_h2"] = law_[2];
+  double most = std::max(skew_at(0.0), skew_at(end_h));
+  if (law_[2] != 0.0) {
+    const double vertex_h = -law_[1] / (2.0 * law_[2]);
+    if (vertex_h > 0.0 && vertex_h < end_h) most = std::max(most, skew_at(vertex_h));
+  }
+  params["skew_s_most"] = most;
 }
 
 std::string SkewFamily::describe(const Eigen::VectorXd& beta) const {
