@@ -110,9 +110,8 @@ EffectClass channel_skew() {
       .follows = "the clearance's moves",
       .channel_delay =
           [](const sim::EffectSettings& e) {
-            return ChannelDelay{.skew_s = e.params.at("skew_s"),
-                                .skew_drift_s_per_h = e.params.at("drift_s_per_h"),
-                                .skew_drift_change_s_per_h2 = e.params.at("drift_change_s_per_h2")};
+            return ChannelDelay{.skew = {e.params.at("skew_s"), e.params.at("drift_s_per_h"),
+                                         e.params.at("drift_change_s_per_h2")}};
           },
       .families = {{"channel_skew", "t", fs::make_skew}},
       // The law the free shape found, as the effect's drift; the free shape's voltage is sampled

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "channel_skew_law.h"
 #include "effect_catalogue.h"
 #include "free_shape_fit.h"
 
@@ -30,24 +31,17 @@ struct SearchRange {
   double lo = 0.0, hi = 0.0;
 };
 
-// How a class's settings make a channel late. A skew between the channels on the session's
-// clock, skew(t) = skew_s + drift h + drift_change h^2 (h in hours): where it is > 0 the
-// temperature at t is the coil's at t - skew(t), where < 0 the voltage at t was made at
-// t + skew(t). Or a first-order lag of the temperature reading (temperature_lag_tau_s > 0).
+// How a class's settings make a channel late. A skew between the channels on the session's clock
+// (sim::ChannelSkewLaw): where it is > 0 the temperature at t is the coil's at t - skew(t), where
+// < 0 the voltage at t was made at t + skew(t). Or a first-order lag of the temperature reading
+// (temperature_lag_tau_s > 0).
 struct ChannelDelay {
-  double skew_s = 0.0, skew_drift_s_per_h = 0.0, skew_drift_change_s_per_h2 = 0.0;
+  sim::ChannelSkewLaw skew{};
   double temperature_lag_tau_s = 0.0;
 
-  double skew_at(double t_s) const {
-    const double h = t_s / 3600.0;
-    return skew_s + skew_drift_s_per_h * h + skew_drift_change_s_per_h2 * h * h;
-  }
-  bool skew_drifts() const {
-    return skew_drift_s_per_h != 0.0 || skew_drift_change_s_per_h2 != 0.0;
-  }
   // Whether the skew makes (or, drifting, may make) the temperature channel late; the voltage.
-  bool temperature_late() const { return skew_s > 0.0 || skew_drifts(); }
-  bool voltage_late() const { return skew_s < 0.0 || skew_drifts(); }
+  bool temperature_late() const { return skew.skew_s > 0.0 || skew.drifts(); }
+  bool voltage_late() const { return skew.skew_s < 0.0 || skew.drifts(); }
 };
 
 class SelftestDraw;

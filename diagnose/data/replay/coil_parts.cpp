@@ -23,7 +23,7 @@ std::optional<ChannelDelay> voltage_channel_skew(const std::vector<sim::EffectSe
 void shift_inputs(RecordingSeries& series, const ChannelDelay& skew) {
   const RecordingSeries recorded = series;
   for (std::size_t i = 0; i < series.size(); ++i) {
-    const double at = recorded.t_s[i] + std::min(0.0, skew.skew_at(recorded.t_s[i]));
+    const double at = recorded.t_s[i] + std::min(0.0, skew.skew.at(recorded.t_s[i]));
     series.clearance_mm[i] = interpolate_at(recorded.t_s, recorded.clearance_mm, at);
     series.temp_c[i] = interpolate_at(recorded.t_s, recorded.temp_c, at);
   }
@@ -34,8 +34,7 @@ void shift_inputs(RecordingSeries& series, const ChannelDelay& skew) {
 CoilParts::CoilParts(const Parts& parts, const std::vector<sim::EffectSettings>& modelled)
     : parts_(parts) {
   const std::optional<ChannelDelay> voltage_skew = voltage_channel_skew(modelled);
-  if (std::none_of(modelled.begin(), modelled.end(), delays_temperature_channel) &&
-      !voltage_skew) {
+  if (std::none_of(modelled.begin(), modelled.end(), delays_temperature_channel) && !voltage_skew) {
     return;
   }
   auto copies = std::make_unique<Copies>();
@@ -47,8 +46,8 @@ CoilParts::CoilParts(const Parts& parts, const std::vector<sim::EffectSettings>&
     shift_inputs(copies->calibration, *voltage_skew);
     shift_inputs(copies->heldout, *voltage_skew);
   }
-  copies->cal_replay = std::make_unique<TwinReplay>(
-      copies->calibration, parts.cal_replay.nominal(), parts.cal_replay.age_offset_s());
+  copies->cal_replay = std::make_unique<TwinReplay>(copies->calibration, parts.cal_replay.nominal(),
+                                                    parts.cal_replay.age_offset_s());
   copies->ho_replay = std::make_unique<TwinReplay>(copies->heldout, parts.ho_replay.nominal(),
                                                    parts.ho_replay.age_offset_s());
   copies_ = std::move(copies);

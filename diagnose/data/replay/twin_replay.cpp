@@ -132,7 +132,7 @@ std::vector<double> ambient_from_recorded(const RecordingSeries& series,
       std::vector<double> advanced(n);
       for (std::size_t i = 0; i < n; ++i) {
         const double t = series.t_s[i];
-        advanced[i] = interpolate_at(series.t_s, ambient, t + std::max(0.0, delay.skew_at(t)));
+        advanced[i] = interpolate_at(series.t_s, ambient, t + std::max(0.0, delay.skew.at(t)));
       }
       ambient = std::move(advanced);
     }

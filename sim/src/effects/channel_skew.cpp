@@ -9,12 +9,11 @@
 #include <cmath>
 #include <deque>
 
+#include "channel_skew_law.h"
 #include "effects.h"
 
 namespace flange::sim {
 namespace {
-
-constexpr double kSecondsPerHour = 3600.0;
 
 // One channel's past samples, read back `delay_s` late. The instant read back, t - delay_s, never
 // moves backwards while the delay changes by less than a second per second, so samples older than
@@ -47,13 +46,11 @@ class DelayLine {
 
 class ChannelSkew final : public Effect {
  public:
-  ChannelSkew(double skew_s, double drift_s_per_h, double drift_change_s_per_h2)
-      : skew_s_(skew_s), drift_(drift_s_per_h), change_(drift_change_s_per_h2) {}
+  explicit ChannelSkew(const ChannelSkewLaw& law) : law_(law) {}
 
   void apply(ChainSample& sample) override {
-    if (skew_s_ == 0.0 && drift_ == 0.0 && change_ == 0.0) return;
-    const double h = sample.t_s / kSecondsPerHour;
-    const double skew_s = skew_s_ + drift_ * h + change_ * h * h;
+    if (law_.zero()) return;
+    const double skew_s = law_.at(sample.t_s);
     const DelayLine::Point voltage =
         voltage_.delayed({sample.t_s, sample.voltage_v, sample.clip}, std::max(0.0, -skew_s));
     const DelayLine::Point temperature = temperature_.delayed(
@@ -64,7 +61,7 @@ class ChannelSkew final : public Effect {
   }
 
  private:
-  double skew_s_, drift_, change_;
+  ChannelSkewLaw law_;
   DelayLine voltage_, temperature_;
 };
 
@@ -85,8 +82,8 @@ EffectSpec channel_skew_effect() {
        "how fast that drift changes (a drift that settles)"},
   };
   spec.make = [](const ParamValues& p, const EffectContext&) {
-    return std::make_unique<ChannelSkew>(p.at("skew_s"), p.at("drift_s_per_h"),
-                                         p.at("drift_change_s_per_h2"));
+    return std::make_unique<ChannelSkew>(
+        ChannelSkewLaw{p.at("skew_s"), p.at("drift_s_per_h"), p.at("drift_change_s_per_h2")});
   };
   return spec;
 }
