@@ -16,6 +16,21 @@ double explained_pct() { return 100.0 * (criteria::kExplainedRatio - 1.0); }
 
 bool follows_age(const EffectFinding& f) { return !effect_class(f.name).age_param.empty(); }
 
+// "what is left is within 10 % of the noise on the N held-out samples within the calibration's
+// ranges (...): X V", and "(the held-out part spans ...)": what both reach sentences say.
+std::string left_within(const BeyondReach& b) {
+  return fmt::format(
+      "what is left is within {:.0f} % of the noise on the {} held-out samples within the "
+      "calibration's ranges ({:.1f}-{:.1f} C, {:.2f}-{:.2f} mm): {:.4g} V",
+      explained_pct(), b.within, b.temp_lo_c, b.temp_hi_c, b.clearance_lo_mm, b.clearance_hi_mm,
+      b.left_within_v);
+}
+std::string heldout_span(const BeyondReach& b) {
+  return fmt::format("(the held-out part spans {:.1f}-{:.1f} C, {:.2f}-{:.2f} mm)",
+                     b.heldout_temp_lo_c, b.heldout_temp_hi_c, b.heldout_clearance_lo_mm,
+                     b.heldout_clearance_hi_mm);
+}
+
 }  // namespace
 
 std::string heldout_summary(double before_v, double after_v, double sigma_v) {
@@ -39,28 +54,18 @@ std::string explained() {
 
 std::string explained_within_reach(const BeyondReach& b) {
   return fmt::format(
-      "what is left is within {:.0f} % of the noise on the {} held-out samples within the "
-      "calibration's ranges ({:.1f}-{:.1f} C, {:.2f}-{:.2f} mm): {:.4g} V; the other {} lie "
-      "beyond them (the held-out part spans {:.1f}-{:.1f} C, {:.2f}-{:.2f} mm), where the fitted "
-      "curves are continued past what they were fitted on: they take {:.0f} % of the gap above "
-      "the noise there and leave {:.4g} V; a calibration session that reaches there would tell "
-      "their shape",
-      explained_pct(), b.within, b.temp_lo_c, b.temp_hi_c, b.clearance_lo_mm, b.clearance_hi_mm,
-      b.left_within_v, b.beyond, b.heldout_temp_lo_c, b.heldout_temp_hi_c,
-      b.heldout_clearance_lo_mm, b.heldout_clearance_hi_mm, 100.0 * b.beyond_share,
-      b.left_beyond_v);
+      "{}; the other {} lie beyond them {}, where the fitted curves are continued past what they "
+      "were fitted on: they take {:.0f} % of the gap above the noise there and leave {:.4g} V; a "
+      "calibration session that reaches there would tell their shape",
+      left_within(b), b.beyond, heldout_span(b), 100.0 * b.beyond_share, b.left_beyond_v);
 }
 
 std::string gap_beyond_reach(const BeyondReach& b) {
   return fmt::format(
-      "what is left is within {:.0f} % of the noise on the {} held-out samples within the "
-      "calibration's ranges ({:.1f}-{:.1f} C, {:.2f}-{:.2f} mm): {:.4g} V; the gap lies on the "
-      "other {} beyond them (the held-out part spans {:.1f}-{:.1f} C, {:.2f}-{:.2f} mm), {:.4g} V, "
-      "where the twin's curves are continued past what they were fitted on; a calibration "
-      "session that reaches there would tell their shape",
-      explained_pct(), b.within, b.temp_lo_c, b.temp_hi_c, b.clearance_lo_mm, b.clearance_hi_mm,
-      b.left_within_v, b.beyond, b.heldout_temp_lo_c, b.heldout_temp_hi_c,
-      b.heldout_clearance_lo_mm, b.heldout_clearance_hi_mm, b.left_beyond_v);
+      "{}; the gap lies on the other {} beyond them {}, {:.4g} V, where the twin's curves are "
+      "continued past what they were fitted on; a calibration session that reaches there would "
+      "tell their shape",
+      left_within(b), b.beyond, heldout_span(b), b.left_beyond_v);
 }
 
 std::string partly_explained(double share, const std::string& what_is_left) {
