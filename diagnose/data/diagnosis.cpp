@@ -154,7 +154,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
                                                          recognise_vibration(parts, selection));
   if (twin_holds_motion) selection.vibration.reset();
   // Verdict and reasons.
-  verdict(parts, selection, verdict_noise, result);
+  verdict(parts, selection, verdict_noise, options.twin.effects, result);
   add_context_reasons(parts, result);
   measure_how_far(heldout, selection, result);
   add_coverage_reason(result);

@@ -4,10 +4,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "effect.h"
+#include "fitted_ranges.h"
 
 namespace flange::sim {
 
@@ -32,8 +34,11 @@ struct EffectSettings {
   ParamValues params;
   // The tabulated effect's table (twin file only); null for every other effect.
   std::shared_ptr<const EffectTable> table{};
+  // The ranges of the recordings its parameters were fitted on, where known (twin file only; the
+  // twin plays the effect alike everywhere).
+  std::optional<FittedRanges> fitted_over{};
   bool operator==(const EffectSettings& other) const {
-    return name == other.name && params == other.params &&
+    return name == other.name && params == other.params && fitted_over == other.fitted_over &&
            (table == other.table || (table && other.table && *table == *other.table));
   }
 };

@@ -129,6 +129,27 @@ nlohmann::ordered_json table_to_json(const EffectTable& table) {
   return out;
 }
 
+// An effect's "fitted_over": {"clearance_mm": [low, high], "temperature_c": [low, high]}.
+FittedRanges fitted_ranges_from_json(const json& value, const std::string& where) {
+  require_object(value, where);
+  reject_unknown_fields(value, {"clearance_mm", "temperature_c"}, where);
+  const auto pair_of = [&](const char* field) {
+    if (!value.contains(field)) throw BadArgument(fmt::format("{}.{}: missing", where, field));
+    const std::vector<double> pair = numbers_of(value[field], fmt::format("{}.{}", where, field));
+    if (pair.size() != 2) {
+      throw BadArgument(fmt::format("{}.{}: expected [low, high]", where, field));
+    }
+    return pair;
+  };
+  const std::vector<double> clearance = pair_of("clearance_mm");
+  const std::vector<double> temperature = pair_of("temperature_c");
+  const FittedRanges ranges{clearance[0], clearance[1], temperature[0], temperature[1]};
+  if (const std::string problem = fitted_ranges_problem(ranges); !problem.empty()) {
+    throw BadArgument(fmt::format("{}.{}", where, problem));
+  }
+  return ranges;
+}
+
 }  // namespace
 
 nlohmann::ordered_json twin_to_json(const TwinConfig& config) {
@@ -153,6 +174,10 @@ nlohmann::ordered_json twin_to_json(const TwinConfig& config) {
     for (const ParamSpec& param : spec.params) params[param.key] = effect->params.at(param.key);
     OrderedJson entry = {{"name", effect->name}, {"params", params}};
     if (effect->table) entry["table"] = table_to_json(*effect->table);
+    if (const std::optional<FittedRanges>& r = effect->fitted_over) {
+      entry["fitted_over"] = {{"clearance_mm", {r->clearance_lo_mm, r->clearance_hi_mm}},
+                              {"temperature_c", {r->temperature_lo_c, r->temperature_hi_c}}};
+    }
     effects.push_back(entry);
   }
   OrderedJson root = {
@@ -207,7 +232,7 @@ TwinConfig twin_from_json(const json& root, const std::string& where) {
     for (std::size_t k = 0; k < effects.size(); ++k) {
       const std::string effect_where = fmt::format("{}: effects[{}]", where, k);
       const json& effect = require_object(effects[k], effect_where);
-      reject_unknown_fields(effect, {"name", "params", "table"}, effect_where);
+      reject_unknown_fields(effect, {"name", "params", "table", "fitted_over"}, effect_where);
       if (!effect.contains("name") || !effect["name"].is_string()) {
         throw BadArgument(fmt::format("{}.name: expected the effect's name", effect_where));
       }
@@ -228,6 +253,10 @@ TwinConfig twin_from_json(const json& root, const std::string& where) {
                                               : ".table: only the tabulated effect has one"));
       }
       if (needs_table) settings.table = table_from_json(effect["table"], effect_where + ".table");
+      if (effect.contains("fitted_over")) {
+        settings.fitted_over =
+            fitted_ranges_from_json(effect["fitted_over"], effect_where + ".fitted_over");
+      }
       config.effects.push_back(std::move(settings));
     }
   }

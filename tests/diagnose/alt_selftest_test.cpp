@@ -389,6 +389,26 @@ TEST(AltSelftest, ADriftingSkewIsHeldByItsLaw) {
   EXPECT_EQ(r.second.diagnosis.status, "none");
 }
 
+// Seed 468, pair 36: an ageing, explained within the calibration's ranges only (24.9-69.9 C; the
+// held-out session reaches 16.5-88.3 C, where its free shape is held at its ends). The improved
+// twin's table carries those ranges, and against it the held-out gap within them is at the noise
+// while what lies beyond lies beyond the table's fits: "none", saying where the twin continues.
+TEST(AltSelftest, AGapExplainedWithinReachIsLeftOnlyBeyondTheTwinsFits) {
+  const Rediagnosis r = rediagnose_alt_pair(468, 36);
+  ASSERT_EQ(r.first.diagnosis.status, "explained");
+  EXPECT_TRUE(any_reason_holds(r.first, "lie beyond them"));
+  const std::vector<sim::EffectSettings>& held = r.first.improved_twin.twin.effects;
+  ASSERT_FALSE(held.empty());
+  for (const sim::EffectSettings& effect : held) {
+    ASSERT_TRUE(effect.fitted_over.has_value()) << effect.name;
+    EXPECT_NEAR(effect.fitted_over->temperature_lo_c, 24.9, 0.05);
+    EXPECT_NEAR(effect.fitted_over->temperature_hi_c, 69.9, 0.05);
+  }
+  EXPECT_EQ(r.second.diagnosis.status, "none");
+  EXPECT_TRUE(any_reason_holds(r.second, "beyond the ranges the twin's"));
+  EXPECT_TRUE(r.second.diagnosis.effects.empty());
+}
+
 // Seed 447, pair 35: a log-time ageing, a ln(1 + age / 0.80 d), whose held-out session starts
 // 16 h after an hour-long calibration session (start times given). Over that hour the settling
 // barely bends, so a straight line carries it too far (it would leave 0.103 V, 1.85 times the

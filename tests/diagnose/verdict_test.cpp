@@ -168,6 +168,48 @@ TEST(Verdict, ExplainedWithinReachNeedsTheCurvesToCarryBeyond) {
   EXPECT_EQ(decide(beyond_reach(0.3, 0.69)), Decision::kUnexplained);
 }
 
+// Against a twin whose effects carry the ranges they were fitted on: a gap of 3 before the picks
+// over the session, 1.05 of it within the calibration's ranges (on half the samples, no window
+// above 1.5), and every sample beyond lying beyond the twin's fits; picks that leave 2.5.
+VerdictFigures twin_fits_continued() {
+  VerdictFigures f = figures(3.0, 2.5);
+  f.share_within = 0.5;
+  f.within_before_v = 1.05;
+  f.within_worst_before_v = 1.5;
+  f.within_after_v = 1.0;
+  f.beyond_past_twin_fits = true;
+  return f;
+}
+
+TEST(Verdict, AGapOnlyBeyondTheTwinsFitsIsNone) {
+  EXPECT_EQ(decide(twin_fits_continued()), Decision::kNoneWithinTwinFits);
+  EXPECT_EQ(status(twin_fits_continued()), "none");
+  // Without picks, too.
+  VerdictFigures no_picks = twin_fits_continued();
+  no_picks.any_findings = false;
+  no_picks.rms_after = no_picks.rms_before;
+  EXPECT_EQ(decide(no_picks), Decision::kNoneWithinTwinFits);
+  // A sample beyond the calibration's ranges but within the twin's fits: the gap is the twin's.
+  VerdictFigures within_fits = twin_fits_continued();
+  within_fits.beyond_past_twin_fits = false;
+  EXPECT_EQ(decide(within_fits), Decision::kUnexplained);
+  // A gap within the ranges before the picks (1.11 of the noise, above 1.10), in a window (2.01,
+  // above the allowance 2) or too few samples there (24 %) to judge by: not this rule.
+  VerdictFigures gap_within = twin_fits_continued();
+  gap_within.within_before_v = 1.11;
+  EXPECT_EQ(decide(gap_within), Decision::kUnexplained);
+  VerdictFigures window = twin_fits_continued();
+  window.within_worst_before_v = 2.01;
+  EXPECT_EQ(decide(window), Decision::kUnexplained);
+  VerdictFigures few_within = twin_fits_continued();
+  few_within.share_within = 0.24;
+  EXPECT_EQ(decide(few_within), Decision::kUnexplained);
+  // Picks that explain the whole session still do.
+  VerdictFigures explained = twin_fits_continued();
+  explained.rms_after = 1.05;
+  EXPECT_EQ(decide(explained), Decision::kExplained);
+}
+
 // A session at 1 Hz: the clearance of each sample.
 RecordingSeries session(const std::vector<double>& clearance_mm) {
   RecordingSeries s;

@@ -132,6 +132,43 @@ TEST(TwinFile, ARoundingHeldInTheNoiseIsSavedOnlyWhenSet) {
   EXPECT_EQ(back.noise, config.noise);
 }
 
+TEST(TwinFile, AnEffectKeepsTheRangesItWasFittedOn) {
+  TwinConfig config;
+  config.effects.push_back(make_effect_settings("temp_offset_drift", {}, "test"));
+  EXPECT_FALSE(twin_to_json(config)["effects"][0].contains("fitted_over"));
+  config.effects[0].fitted_over = FittedRanges{2.5, 9.5, 24.9, 69.9};
+  const auto json = twin_to_json(config);
+  EXPECT_EQ(json["effects"][0]["fitted_over"]["temperature_c"][1], 69.9);
+  const TwinConfig back = twin_from_json(json, "twin.json");
+  ASSERT_EQ(back.effects.size(), 1u);
+  EXPECT_EQ(back.effects[0].fitted_over, config.effects[0].fitted_over);
+  EXPECT_TRUE(back.effects[0].fitted_over->contains(2.5, 69.9));
+  EXPECT_FALSE(back.effects[0].fitted_over->contains(2.5, 70.0));
+}
+
+TEST(TwinFile, BadFittedRangesAreNamedWithTheFieldAndRange) {
+  const auto error_of = [](const std::string& fitted_over) {
+    return load_error(R"({"effects": [{"name": "temp_offset_drift", "fitted_over": )" +
+                      fitted_over + "}]}");
+  };
+  EXPECT_NE(error_of(R"({"clearance_mm": [2, 9], "temperature_c": [70, 25]})")
+                .find("bad.json: effects[0].fitted_over.temperature_c: [70, 25] is not a range "
+                      "[low, high] with -40 <= low <= high <= 200 degC"),
+            std::string::npos)
+      << error_of(R"({"clearance_mm": [2, 9], "temperature_c": [70, 25]})");
+  EXPECT_NE(error_of(R"({"clearance_mm": [-1, 9], "temperature_c": [25, 70]})")
+                .find("effects[0].fitted_over.clearance_mm: [-1, 9] is not a range"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"clearance_mm": [2, 9, 10], "temperature_c": [25, 70]})")
+                .find("effects[0].fitted_over.clearance_mm: expected [low, high]"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"clearance_mm": [2, 9]})").find("fitted_over.temperature_c: missing"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"clearance_mm": [2, 9], "temperature_c": [25, 70], "age": 1})")
+                .find("fitted_over"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace flange::sim
 

@@ -244,6 +244,46 @@ HeldFinding held(const EffectFinding& finding, const Selection& selection, const
   return {finding.name, "library effect", "the library effect with its fitted parameters"};
 }
 
+// The clearance and temperature ranges of the calibration part, within the twin file's valid
+// ranges.
+sim::FittedRanges calibration_ranges(const RecordingSeries& calibration) {
+  const auto [x_lo, x_hi] =
+      std::minmax_element(calibration.clearance_mm.begin(), calibration.clearance_mm.end());
+  const auto [t_lo, t_hi] =
+      std::minmax_element(calibration.temp_c.begin(), calibration.temp_c.end());
+  const auto clearance = [](double x) { return std::clamp(x, 0.0, sim::kFittedClearanceMaxMm); };
+  const auto temperature = [](double t) {
+    return std::clamp(t, sim::kFittedTemperatureMinC, sim::kFittedTemperatureMaxC);
+  };
+  return {clearance(*x_lo), clearance(*x_hi), temperature(*t_lo), temperature(*t_hi)};
+}
+
+// Each effect the diagnosis fitted carries the ranges it was fitted on: the calibration part's
+// (sim::FittedRanges). The converter, mount motion and lines of each session do not continue a
+// curve over them. A table that replaced the given twin's holds both: the ranges they share, or
+// none known when the given table's are not known or do not meet the calibration's.
+void mark_fitted_ranges(const RecordingSeries& calibration, const sim::TwinConfig& given,
+                        sim::TwinConfig& twin) {
+  const sim::FittedRanges ranges = calibration_ranges(calibration);
+  for (sim::EffectSettings& effect : twin.effects) {
+    const bool as_given = std::find(given.effects.begin(), given.effects.end(), effect) !=
+                          given.effects.end();
+    if (as_given) continue;
+    if (is_table(effect)) {
+      const auto given_table = std::find_if(given.effects.begin(), given.effects.end(), is_table);
+      if (given_table == given.effects.end()) {
+        effect.fitted_over = ranges;
+      } else if (given_table->fitted_over) {
+        effect.fitted_over = sim::overlap(*given_table->fitted_over, ranges);
+      }
+      continue;
+    }
+    const EffectClass& of = effect_class(effect.name);
+    if (of.is_converter || of.is_mount_motion || of.lines_of_each_session) continue;
+    effect.fitted_over = ranges;
+  }
+}
+
 }  // namespace
 
 ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
@@ -270,6 +310,7 @@ ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
     for (const EffectFinding& finding : diagnosis.effects) {
       out.findings.push_back(held(finding, selection, out, result.diagnosis.noise_std_v));
     }
+    mark_fitted_ranges(parts.calibration, given, out.twin);
   }
   const bool converter_held =
       std::any_of(out.twin.effects.begin(), out.twin.effects.end(), is_converter);

@@ -2,6 +2,7 @@
 #include "verdict_reasons.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 
@@ -66,6 +67,25 @@ std::string gap_beyond_reach(const BeyondReach& b) {
       "continued past what they were fitted on; a calibration session that reaches there would "
       "tell their shape",
       left_within(b), b.beyond, heldout_span(b), b.left_beyond_v);
+}
+
+std::string none_within_twin_fits(const BeyondReach& b, const std::vector<std::string>& continued) {
+  return fmt::format(
+      "{}; the other {} lie beyond them {} and beyond the ranges the twin's {} {} fitted on (its "
+      "file's fitted_over), where it continues {} past what was measured: {:.4g} V there, which "
+      "these data cannot check; a calibration session that reaches there would tell how it goes on",
+      left_within(b), b.beyond, heldout_span(b), fmt::join(continued, ", "),
+      continued.size() == 1 ? "was" : "were", continued.size() == 1 ? "it" : "them",
+      b.left_beyond_v);
+}
+
+std::string picks_beyond_twin_fits(const std::vector<EffectFinding>& picks) {
+  std::vector<std::string> names;
+  for (const EffectFinding& pick : picks) names.push_back(pick.name);
+  return fmt::format(
+      "{} would change only how the twin continues past those ranges; the data within them ask "
+      "for nothing, so {} not a finding",
+      fmt::join(names, " and "), names.size() == 1 ? "it is" : "they are");
 }
 
 std::string partly_explained(double share, const std::string& what_is_left) {

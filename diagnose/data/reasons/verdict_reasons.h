@@ -32,6 +32,11 @@ struct BeyondReach {
 std::string explained_within_reach(const BeyondReach& b);
 // What is left lies beyond the calibration's ranges, with nothing picked that takes most of it.
 std::string gap_beyond_reach(const BeyondReach& b);
+// The twin leaves the gap at the noise within the calibration's ranges, and the samples beyond
+// them lie beyond the ranges its effects `continued` were fitted on (sim::FittedRanges).
+std::string none_within_twin_fits(const BeyondReach& b, const std::vector<std::string>& continued);
+// Picks beside such a verdict: they change only how the twin continues beyond its fits.
+std::string picks_beyond_twin_fits(const std::vector<EffectFinding>& picks);
 
 std::string partly_explained(double share, const std::string& what_is_left);
 

@@ -54,6 +54,36 @@ bool heldout_covers_where(const RecordingSeries& heldout, const DiagnosisDetail&
          criteria::kLeastSamplesPerCell;
 }
 
+// The twin leaves no gap within the calibration's ranges before any pick, and the held-out samples
+// beyond them lie beyond the ranges the twin's effects were fitted on (decide(), verdict.h).
+bool none_within_twin_fits(const VerdictFigures& f) {
+  return f.beyond_past_twin_fits && f.share_within >= criteria::kLeastShareWithinReach &&
+         f.within_before_v <= criteria::kExplainedRatio * f.noise_v &&
+         f.within_worst_before_v <= f.window_allowance_v;
+}
+
+// The replayed effects of the twin that carry the ranges they were fitted on.
+std::vector<const sim::EffectSettings*> effects_with_fits(
+    const std::vector<sim::EffectSettings>& twin_effects) {
+  std::vector<const sim::EffectSettings*> out;
+  for (const sim::EffectSettings& effect : twin_effects) {
+    if (effect.fitted_over && !each_sessions_own(effect)) out.push_back(&effect);
+  }
+  return out;
+}
+
+// Whether every held-out sample beyond the calibration's ranges lies beyond the ranges one of
+// `fitted` was fitted on (and there are some).
+bool beyond_past(const RecordingSeries& heldout, const CalibrationReach& reach,
+                 const std::vector<const sim::EffectSettings*>& fitted) {
+  if (reach.heldout_beyond.empty() || fitted.empty()) return false;
+  return std::all_of(reach.heldout_beyond.begin(), reach.heldout_beyond.end(), [&](auto i) {
+    return std::any_of(fitted.begin(), fitted.end(), [&](const sim::EffectSettings* e) {
+      return !e->fitted_over->contains(heldout.clearance_mm[i], heldout.temp_c[i]);
+    });
+  });
+}
+
 // What is left is above the noise over the session, but within it in every window and on the
 // held-out samples within the calibration's ranges (a share of them enough to judge by).
 bool left_within_reach(const VerdictFigures& f) {
@@ -83,8 +113,9 @@ std::optional<EffectFinding> nearest_effect(const Selection& selection,
   return nearest;
 }
 
+// The reach's figures, with what `error` leaves within and beyond it.
 reasons::BeyondReach beyond_reach(const RecordingSeries& heldout, const CalibrationReach& reach,
-                                  const Selection& selection, double beyond_share) {
+                                  const std::vector<double>& error, double beyond_share) {
   const auto [t_lo, t_hi] = std::minmax_element(heldout.temp_c.begin(), heldout.temp_c.end());
   const auto [x_lo, x_hi] =
       std::minmax_element(heldout.clearance_mm.begin(), heldout.clearance_mm.end());
@@ -98,8 +129,8 @@ reasons::BeyondReach beyond_reach(const RecordingSeries& heldout, const Calibrat
           *t_hi,
           *x_lo,
           *x_hi,
-          rms_at(selection.current_error, reach.heldout_within),
-          rms_at(selection.current_error, reach.heldout_beyond),
+          rms_at(error, reach.heldout_within),
+          rms_at(error, reach.heldout_beyond),
           beyond_share};
 }
 
@@ -107,7 +138,8 @@ reasons::BeyondReach beyond_reach(const RecordingSeries& heldout, const Calibrat
 VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
                                const std::vector<EffectFinding>& findings,
                                const Diagnosis& diagnosis, const CalibrationReach& reach,
-                               double verdict_noise, const DiagnosisDetail& detail, HowFar& how) {
+                               double verdict_noise, const DiagnosisDetail& detail,
+                               const std::vector<sim::EffectSettings>& twin_effects, HowFar& how) {
   const double sigma = selection.noise_v;
   const bool has_noise_type = std::any_of(findings.begin(), findings.end(), [](const auto& f) {
     return f.noise_type && effect_class(f.name).identification == Identification::kBySignature;
@@ -126,9 +158,10 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
   // the calibration part above its floor makes one only where the held-out part cannot confirm
   // or refute it (it does not enter the cell where the calibration gap lies): otherwise the
   // held-out data decide.
+  f.within_worst_before_v = worst_window(parts.heldout, reach, selection.raw_ho_gap).rms_v;
   f.gap_before_picks =
       diagnosis.heldout_rms_before > criteria::kExplainedRatio * std::max(sigma, verdict_noise) ||
-      worst_window(parts.heldout, reach, selection.raw_ho_gap).rms_v > f.window_allowance_v ||
+      f.within_worst_before_v > f.window_allowance_v ||
       (!diagnosis.stage.empty() && !heldout_covers_where(parts.heldout, detail));
   f.found_by_signature = has_noise_type;
   f.picks_alike = std::any_of(findings.begin(), findings.end(), [](const auto& finding) {
@@ -146,6 +179,7 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
   f.beyond_share_taken =
       above_noise_share_taken(rms_at(selection.raw_ho_gap, reach.heldout_beyond),
                               rms_at(selection.current_error, reach.heldout_beyond), verdict_noise);
+  f.beyond_past_twin_fits = beyond_past(parts.heldout, reach, effects_with_fits(twin_effects));
   return f;
 }
 
@@ -159,6 +193,7 @@ Decision decide(const VerdictFigures& f) {
       left_within_reach(f) && f.within_before_v > criteria::kGapRatio * f.noise_v &&
       f.beyond_share_taken >= std::max(criteria::kLeastShareTakenBeyondReach, 1.0 - f.share_within);
   if (f.any_findings && overall && locally) return Decision::kExplained;
+  if (f.gap_before_picks && none_within_twin_fits(f)) return Decision::kNoneWithinTwinFits;
   if (f.any_findings && within_reach) return Decision::kExplainedWithinReach;
   if (f.any_findings && partly_share(f) >= criteria::kPartlyExplainedShare) {
     return Decision::kPartlyExplained;
@@ -176,13 +211,14 @@ std::string status_of(Decision decision) {
     case Decision::kUnexplained:
       return "unexplained";
     case Decision::kNone:
+    case Decision::kNoneWithinTwinFits:
       break;
   }
   return "none";
 }
 
 void verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
-             DiagnosisResult& result) {
+             const std::vector<sim::EffectSettings>& twin_effects, DiagnosisResult& result) {
   Diagnosis& diagnosis = result.diagnosis;
   const std::vector<EffectFinding> findings = findings_of(selection);
   diagnosis.heldout_rms_before = rms_of(selection.raw_ho_gap);
@@ -190,7 +226,7 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
   const CalibrationReach reach = calibration_reach(parts.calibration, parts.heldout);
   HowFar& how = result.detail.how_far;
   const VerdictFigures f = verdict_figures(parts, selection, findings, diagnosis, reach,
-                                           noise.rms_v, result.detail, how);
+                                           noise.rms_v, result.detail, twin_effects, how);
   const Decision decision = decide(f);
   diagnosis.status = status_of(decision);
   auto& reasons = result.detail.reasons;
@@ -207,7 +243,7 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
       break;
     case Decision::kExplainedWithinReach:
       reasons.push_back(reasons::explained_within_reach(
-          beyond_reach(parts.heldout, reach, selection, f.beyond_share_taken)));
+          beyond_reach(parts.heldout, reach, selection.current_error, f.beyond_share_taken)));
       break;
     case Decision::kPartlyExplained:
       reasons.push_back(reasons::partly_explained(
@@ -219,7 +255,7 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
       reasons.push_back(reasons::unexplained(f.any_findings));
       if (left_within_reach(f)) {
         reasons.push_back(reasons::gap_beyond_reach(
-            beyond_reach(parts.heldout, reach, selection, f.beyond_share_taken)));
+            beyond_reach(parts.heldout, reach, selection.current_error, f.beyond_share_taken)));
       }
       break;
     case Decision::kNone:
@@ -231,6 +267,17 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
         reasons.push_back(reasons::residue_fit(findings, 100.0 * partly_share(f)));
       }
       break;
+    case Decision::kNoneWithinTwinFits: {
+      std::vector<std::string> continued;
+      for (const sim::EffectSettings* e : effects_with_fits(twin_effects)) {
+        continued.push_back(e->name);
+      }
+      reasons.push_back(reasons::none_within_twin_fits(
+          beyond_reach(parts.heldout, reach, selection.raw_ho_gap, f.beyond_share_taken),
+          continued));
+      if (f.any_findings) reasons.push_back(reasons::picks_beyond_twin_fits(findings));
+      break;
+    }
   }
   if (decision == Decision::kExplained || decision == Decision::kExplainedWithinReach ||
       decision == Decision::kPartlyExplained) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "diagnosis_detail.h"
 #include "parts.h"
@@ -30,9 +31,20 @@ struct VerdictFigures {
   double share_within = 0.0;  // of the held-out samples, within the calibration's ranges
   double within_before_v = 0.0, within_after_v = 0.0;  // the gap there, before and after
   double beyond_share_taken = 0.0;  // of the gap above the noise beyond the ranges, taken
+  double within_worst_before_v = 0.0;  // the worst window within reach before the picks
+  // Every held-out sample beyond the calibration's ranges lies beyond the ranges an effect of the
+  // twin was fitted on (sim::FittedRanges), and there are some.
+  bool beyond_past_twin_fits = false;
 };
 
-enum class Decision { kExplained, kExplainedWithinReach, kPartlyExplained, kUnexplained, kNone };
+enum class Decision {
+  kExplained,
+  kExplainedWithinReach,
+  kPartlyExplained,
+  kUnexplained,
+  kNone,
+  kNoneWithinTwinFits,
+};
 
 // The rules:
 // - explained: a finding, and what is left is within criteria::kExplainedRatio of the noise over
@@ -47,14 +59,22 @@ enum class Decision { kExplained, kExplainedWithinReach, kPartlyExplained, kUnex
 // - unexplained: a gap exists; none: none does;
 // - none, too, where there was no gap before the picks and the picks, none of them found by a
 //   signature, take less than criteria::kLeastShareOfNoGapTaken of the gap above the noise: a fit
-//   of the noise's residue, not a finding.
+//   of the noise's residue, not a finding;
+// - none within the twin's fits (reported as none), unless the picks explain the whole session:
+//   before any pick the gap is within criteria::kExplainedRatio of the noise on the held-out
+//   samples within the calibration's ranges (at least criteria::kLeastShareWithinReach of them)
+//   and within the window allowance in every window there, and every sample beyond those ranges
+//   lies beyond the ranges an effect of the twin was fitted on. There the twin continues its
+//   curves as the diagnosis that fitted them said it would ("explained within reach"); data that
+//   do not reach further cannot say more.
 Decision decide(const VerdictFigures& f);
 
 // "explained", "partly explained", "unexplained" or "none".
 std::string status_of(Decision decision);
 
-// The status and the reasons for it, into `result`.
+// The status and the reasons for it, into `result`; `twin_effects` are the effects of the twin
+// the recordings are compared with (their fitted ranges, where they carry them).
 void verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
-             DiagnosisResult& result);
+             const std::vector<sim::EffectSettings>& twin_effects, DiagnosisResult& result);
 
 }  // namespace flange::diagnose
