@@ -538,16 +538,7 @@ TEST(ResidualTests, MeanChangePointsRespectsMaxSegments) {
   EXPECT_NEAR(mean_change_points(x, 0.1, 0.05, 20, 1)[0].mean, 2.0, 0.02);
 }
 
-// DISABLED: a bug in mean_change_points (diagnose/data/residual_tests.cpp), left for its owner
-// to fix. The cuts are collected in depth-first pre-order (the first cut, then every cut of its
-// left side, then those of its right side) and a cap keeps the first max_segments - 1 of that
-// list. The code's comment calls that order "coarse first", but it is not: a cap keeps the
-// left side's finer cuts before the right side's coarse ones. Here it returns [0, 250) mean 0,
-// [250, 500) mean 1, [500, 1000) mean 16: the 1-unit step is kept, the 10-unit step at 750
-// dropped. In the diagnosis (max_segments 8) a gap with more than 7 change points would have
-// them reported from its early part only. Enable once the cap keeps cuts in order of their
-// strength (or breadth first).
-TEST(ResidualTests, DISABLED_MeanChangePointsKeepsTheLargestShiftsWhenCapped) {
+TEST(ResidualTests, MeanChangePointsKeepsTheLargestShiftsWhenCapped) {
   // Levels 0, 1, 11, 21 over 250 samples each. The first split is at 500 (between-segment
   // score 250 * 15.5^2 against 187.5 * 17^2 at 750 and 187.5 * 11^2 at 250). With
   // max_segments 3 the second cut kept should be the coarser one, the 10-unit step at 750, not

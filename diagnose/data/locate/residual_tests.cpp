@@ -6,6 +6,8 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <optional>
+#include <queue>
 #include <stdexcept>
 #include <unsupported/Eigen/FFT>
 
@@ -197,9 +199,17 @@ Spectrum coherence(const std::vector<double>& x, const std::vector<double>& y, d
 
 namespace {
 
-void split(const std::vector<double>& x, std::size_t begin, std::size_t end, double noise_std,
-           double min_shift, std::size_t min_length, std::vector<std::size_t>& cuts) {
-  if (end - begin < 2 * min_length) return;
+// The best split of [begin, end) by the mean, when it is kept (see mean_change_points), with its
+// strength: the between-segment sum of squares it explains.
+struct Split {
+  std::size_t begin = 0, end = 0, at = 0;
+  double score = 0.0;
+  bool operator<(const Split& other) const { return score < other.score; }
+};
+
+std::optional<Split> best_split(const std::vector<double>& x, std::size_t begin, std::size_t end,
+                                double noise_std, double min_shift, std::size_t min_length) {
+  if (end - begin < 2 * min_length) return std::nullopt;
   double total = 0.0;
   for (std::size_t i = begin; i < end; ++i) total += x[i];
   const double n = static_cast<double>(end - begin);
@@ -220,14 +230,12 @@ void split(const std::vector<double>& x, std::size_t begin, std::size_t end, dou
       best_right_mean = mr;
     }
   }
-  if (best == 0) return;
+  if (best == 0) return std::nullopt;
   const double nl = static_cast<double>(best - begin), nr = n - nl;
   const double shift = std::abs(best_left_mean - best_right_mean);
   const double standard_error = noise_std * std::sqrt(1.0 / nl + 1.0 / nr);
-  if (shift <= min_shift || shift <= 4.0 * standard_error) return;
-  cuts.push_back(best);
-  split(x, begin, best, noise_std, min_shift, min_length, cuts);
-  split(x, best, end, noise_std, min_shift, min_length, cuts);
+  if (shift <= min_shift || shift <= 4.0 * standard_error) return std::nullopt;
+  return Split{begin, end, best, best_score};
 }
 
 }  // namespace
@@ -235,10 +243,22 @@ void split(const std::vector<double>& x, std::size_t begin, std::size_t end, dou
 std::vector<MeanSegment> mean_change_points(const std::vector<double>& x, double noise_std,
                                             double min_shift, std::size_t min_length,
                                             std::size_t max_segments) {
+  min_length = std::max<std::size_t>(min_length, 2);
+  // Strongest split first: each taken split offers its two sides' own best splits, so a cap keeps
+  // the strongest shifts wherever they lie (a side's split is never taken before its parent).
+  std::priority_queue<Split> offered;
+  const auto offer = [&](std::size_t begin, std::size_t end) {
+    if (auto s = best_split(x, begin, end, noise_std, min_shift, min_length)) offered.push(*s);
+  };
+  offer(0, x.size());
   std::vector<std::size_t> cuts;
-  split(x, 0, x.size(), noise_std, min_shift, std::max<std::size_t>(min_length, 2), cuts);
-  // Splits come out coarse first (depth-first from the strongest): keep the first ones.
-  if (cuts.size() + 1 > max_segments) cuts.resize(max_segments > 0 ? max_segments - 1 : 0);
+  while (!offered.empty() && cuts.size() + 1 < max_segments) {
+    const Split s = offered.top();
+    offered.pop();
+    cuts.push_back(s.at);
+    offer(s.begin, s.at);
+    offer(s.at, s.end);
+  }
   std::sort(cuts.begin(), cuts.end());
   std::vector<MeanSegment> segments;
   std::size_t begin = 0;

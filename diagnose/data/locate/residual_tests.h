@@ -66,7 +66,8 @@ struct MeanSegment {
 };
 // Binary segmentation on the mean (CUSUM split points). A split is kept when the two sides'
 // means differ by more than `min_shift` and by more than 4 standard errors of `noise_std`
-// white noise; segments are at least `min_length` samples; at most `max_segments`.
+// white noise; segments are at least `min_length` samples; at most `max_segments`, the strongest
+// splits (largest between-segment sum of squares) kept first.
 std::vector<MeanSegment> mean_change_points(const std::vector<double>& x, double noise_std,
                                             double min_shift, std::size_t min_length,
                                             std::size_t max_segments);
