@@ -127,6 +127,25 @@ TEST(MainsFamilySearch, AHarmonicOnZeroHertzAddsEachSessionsConstant) {
   EXPECT_GT(fit.heldout_values, 0);
 }
 
+// At 9 Hz a 50 Hz grid's third harmonic (150 Hz) lands on 3 Hz, where 60 Hz's fundamental lands
+// too, and 60 Hz's third harmonic (180 Hz) lands on 0 Hz; 50 Hz has none there. The lines are the
+// 50 Hz mains' (its fundamental on 4 Hz is the stronger), so no session's constant joins them.
+TEST(MainsFamilySearch, OnlyTheLinesOwnMainsPutsAHarmonicOnZeroHertz) {
+  const SyntheticBench bench(9.0);
+  const std::vector<double>& t = bench.series().t_s;
+  const std::vector<double> gap =
+      with_tones(white_noise(t.size(), 0.02, 15), t, {{50.0, 0.1}, {150.0, 0.05}});
+  MainsFamily mains;
+  mains.search(bench.part(), gap);
+  ASSERT_EQ(mains.lines(), 2u) << ::testing::PrintToString(mains.calibration_lines_hz());
+  EXPECT_TRUE(has_line_near(mains.calibration_lines_hz(), 4.0, 0.006));
+  EXPECT_TRUE(has_line_near(mains.calibration_lines_hz(), 3.0, 0.006));
+  EXPECT_EQ(mains.dc_harmonic_hz(), 0.0);
+  const FreeShapeFit fit = mains.fit({bench.part(), bench.part(), gap, gap, false});
+  EXPECT_EQ(fit.params.at("mains_hz"), 50.0);
+  EXPECT_EQ(fit.params.count("dc_harmonic_hz"), 0u);
+}
+
 TEST(MainsFamilySearch, NothingOnPureNoise) {
   const SyntheticBench bench;
   const std::vector<double> gap = white_noise(bench.size(), 0.02, 14);

@@ -49,8 +49,11 @@ void MainsFamily::search(const RecordedPart& calibration, const std::vector<doub
   // A harmonic of the lines' mains that the sampling folds onto 0 Hz (the 3rd of 50 Hz at 6 Hz)
   // is a constant in each session, set by the mains' phase when the session starts: an offset
   // that differs from session to session by up to twice that harmonic's amplitude. Nothing
-  // carries it from one session to the other, so each part's own constant joins the lines.
+  // carries it from one session to the other, so each part's own constant joins the lines. Only
+  // the mains the lines belong to counts: the other one's harmonic on 0 Hz would add a constant
+  // of each session's own that no pickup makes.
   for (const MainsAlias& alias : aliases.of_harmonics) {
+    if (alias.mains_hz != mains_hz_) continue;
     const bool has_line = std::any_of(tones_hz_.begin(), tones_hz_.end(), [&](double f) {
       return std::abs(f - alias.hz) <= kMainsSearchHz + 1e-9;
     });
