@@ -58,6 +58,9 @@ struct Diagnosis {
   // explained" (they leave more, but take at least 90 % of the held-out gap above the noise),
   // "unexplained" or "none".
   std::string status;
+  // Where the status holds: "" over the whole held-out session; else a phrase such as "where the
+  // calibration reaches (24.9-69.9 C, 2.46-9.46 mm)", when the gap beyond that was left open.
+  std::string scope;
   std::vector<EffectFinding> effects;  // selected, in selection order (empty unless explained,
                                        // fully or partly)
   std::string stage;                   // the stage where the gap first appears

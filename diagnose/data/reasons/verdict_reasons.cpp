@@ -53,6 +53,11 @@ std::string explained() {
   return fmt::format("what is left is within {:.0f} % of the noise", explained_pct());
 }
 
+std::string where_the_calibration_reaches(const BeyondReach& b) {
+  return fmt::format("where the calibration reaches ({:.1f}-{:.1f} C, {:.2f}-{:.2f} mm)",
+                     b.temp_lo_c, b.temp_hi_c, b.clearance_lo_mm, b.clearance_hi_mm);
+}
+
 std::string explained_within_reach(const BeyondReach& b) {
   return fmt::format(
       "{}; the other {} lie beyond them {}, where the fitted curves are continued past what they "

@@ -30,6 +30,8 @@ struct BeyondReach {
   double left_within_v = 0, left_beyond_v = 0, beyond_share = 0;
 };
 std::string explained_within_reach(const BeyondReach& b);
+// The verdict's scope: "where the calibration reaches (24.9-69.9 C, 2.46-9.46 mm)".
+std::string where_the_calibration_reaches(const BeyondReach& b);
 // What is left lies beyond the calibration's ranges, with nothing picked that takes most of it.
 std::string gap_beyond_reach(const BeyondReach& b);
 // The twin leaves the gap at the noise within the calibration's ranges, and the samples beyond

@@ -270,7 +270,11 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   j["format"] = "flange-diagnosis/1";
   j["real"] = real;
   j["heldout"] = heldout;
-  j["verdict"] = {{"status", g.status}, {"effects", names}, {"reasons", d.reasons}};
+  j["verdict"] = {
+      {"status", g.status},
+      {"scope", g.scope.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(g.scope)},
+      {"effects", names},
+      {"reasons", d.reasons}};
   j["degenerate"] = g.degenerate;
   j["next_measurement"] = g.next_measurement;
   j["where"] = where_json(g, d);
@@ -301,7 +305,8 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
   const DiagnosisDetail& d = result.detail;
   std::ostringstream text;
   const std::string names = verdict_names(g.effects);
-  text << "verdict: " << g.status << (names.empty() ? "" : " by " + names) << "\n";
+  text << "verdict: " << g.status << (names.empty() ? "" : " by " + names)
+       << (g.scope.empty() ? "" : ", " + g.scope) << "\n";
   for (const std::string& what : g.degenerate) text << "  data: " << what << "\n";
   text << fmt::format("  where: stage {}", g.stage);
   if (d.where_region) {

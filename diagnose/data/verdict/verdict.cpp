@@ -237,6 +237,10 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
                                                   how.worst_window.from_s, how.worst_window.to_s,
                                                   f.window_allowance_v / f.noise_v));
   }
+  if (decision == Decision::kExplainedWithinReach || decision == Decision::kNoneWithinTwinFits) {
+    diagnosis.scope = reasons::where_the_calibration_reaches(
+        beyond_reach(parts.heldout, reach, selection.current_error, f.beyond_share_taken));
+  }
   switch (decision) {
     case Decision::kExplained:
       reasons.push_back(reasons::explained());
