@@ -399,11 +399,15 @@ TwinConfig twin_with_effects(const std::optional<std::filesystem::path>& twin_fi
     }
     if (existing != nullptr) {
       // On top of a twin file: the given keys retune the effect, the others keep their values.
+      // The ranges it was fitted on stay only while its parameters are the fitted ones.
       ParamValues values = existing->params;
       for (const auto& [key, value] : argument.values) values[key] = value;
       std::shared_ptr<const EffectTable> table = existing->table;
+      const std::optional<FittedRanges> fitted_over =
+          values == existing->params ? existing->fitted_over : std::nullopt;
       *existing = make_effect_settings(argument.name, values, where);
       existing->table = std::move(table);
+      existing->fitted_over = fitted_over;
     } else if (argument.name == tabulated_effect_name()) {
       throw BadArgument(where +
                         ": the tabulated effect needs its table, which only a twin file "

@@ -2,6 +2,7 @@
 // The twin file: what is saved loads back to the same twin, and bad files are named precisely.
 #include "twin_file.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -144,6 +145,20 @@ TEST(TwinFile, AnEffectKeepsTheRangesItWasFittedOn) {
   EXPECT_EQ(back.effects[0].fitted_over, config.effects[0].fitted_over);
   EXPECT_TRUE(back.effects[0].fitted_over->contains(2.5, 69.9));
   EXPECT_FALSE(back.effects[0].fitted_over->contains(2.5, 70.0));
+  // `--effect` on top of the file keeps them while the parameters stay the fitted ones.
+  const std::filesystem::path path =
+      std::filesystem::path(FLANGE_BINARY_DIR) / "twin_fitted_over_test.json";
+  save_twin(config, path);
+  const double fitted_v_per_c = config.effects[0].params.at("offset_v_per_c");
+  EXPECT_EQ(twin_with_effects(path, std::nullopt,
+                              {fmt::format("temp_offset_drift:offset_v_per_c={}", fitted_v_per_c)})
+                .effects[0]
+                .fitted_over,
+            config.effects[0].fitted_over);
+  EXPECT_FALSE(twin_with_effects(path, std::nullopt, {"temp_offset_drift:offset_v_per_c=0.01"})
+                   .effects[0]
+                   .fitted_over.has_value());
+  std::filesystem::remove(path);
 }
 
 TEST(TwinFile, BadFittedRangesAreNamedWithTheFieldAndRange) {
