@@ -7,11 +7,13 @@
 
 #include "coil_parts.h"
 #include "criteria.h"
+#include "effect_classes.h"
 #include "evidence.h"
 #include "free_shape_candidates.h"
 #include "library_candidates.h"
 #include "residual_tests.h"
 #include "series_arithmetic.h"
+#include "twin_replay.h"
 
 namespace flange::diagnose {
 namespace {
@@ -82,11 +84,30 @@ void give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
   selection.shapes_refined = true;
 }
 
+namespace {
+
+// Whether pick j is a library effect that makes a channel late (a lag of the reading, a skew):
+// the other classes' free shapes follow the inputs it leaves the coil (CoilParts).
+bool delays_a_channel(const Selection& selection, std::size_t j) {
+  const int index = selection.picks[j].modelled_index;
+  if (index < 0) return false;
+  const sim::EffectSettings& effect = selection.modelled[static_cast<std::size_t>(index)];
+  return delays_temperature_channel(effect) || channel_delay_of(effect).voltage_late();
+}
+
+}  // namespace
+
 Selection with_free_shapes_of_its_classes(const Parts& parts, const Selection& library) {
   Selection refined = library;
-  for (std::size_t j = 0; j < refined.picks.size(); ++j) {
-    give_pick_a_free_shape(parts, refined, j);
+  // Picks that delay a channel first: a free shape fitted behind a library delay that a free shape
+  // then replaced would follow inputs no effect of the final selection makes.
+  std::vector<std::size_t> order;
+  for (const bool delays : {true, false}) {
+    for (std::size_t j = 0; j < refined.picks.size(); ++j) {
+      if (delays_a_channel(refined, j) == delays) order.push_back(j);
+    }
   }
+  for (const std::size_t j : order) give_pick_a_free_shape(parts, refined, j);
   return refined;
 }
 
