@@ -158,7 +158,10 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   add_context_reasons(parts, result);
   measure_how_far(heldout, selection, result);
   add_coverage_reason(result);
-  result.diagnosis.next_measurement = next_measurements(parts, selection);
+  // What would tell the picks apart or determine them; a "none" names no finding to ask about.
+  if (result.diagnosis.status != "none") {
+    result.diagnosis.next_measurement = next_measurements(parts, selection);
+  }
   set_confidences(result.diagnosis);
   // The improved twin: the one given, with what the diagnosis found.
   result.improved_twin = improved_twin(parts, selection, result, given.twin);

@@ -407,6 +407,8 @@ TEST(AltSelftest, AGapExplainedWithinReachIsLeftOnlyBeyondTheTwinsFits) {
   EXPECT_EQ(r.second.diagnosis.status, "none");
   EXPECT_TRUE(any_reason_holds(r.second, "beyond the ranges the twin's"));
   EXPECT_TRUE(r.second.diagnosis.effects.empty());
+  // The rejected pick asks for no measurement.
+  EXPECT_TRUE(r.second.diagnosis.next_measurement.empty());
   // Both verdicts say where they hold.
   EXPECT_EQ(r.first.diagnosis.scope, "where the calibration reaches (24.9-69.9 C, 2.46-9.46 mm)");
   EXPECT_EQ(r.second.diagnosis.scope, r.first.diagnosis.scope);
