@@ -219,7 +219,9 @@ TEST(BoardFtdiStream, BoardResetsDuringTheSessionAreRecoveredByAReplay) {
   Pty pty;
   host::SerialPort port(pty.slave_name(), kBaud);
   PtyBoard board(pty, std::move(options));
-  host::BoardLink link(port, {kBaud, 100, 8, 16});
+  // A timeout of 300 ms, as the loss test's: on a loaded machine (the suite's -j2 beside the
+  // formal proofs) nine attempts of 100 ms once went by without the simulated board's reply.
+  host::BoardLink link(port, {kBaud, 300, 8, 16});
   host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
   host::StreamCounts counts;
   const std::vector<host::ChannelReplies> out = host::stream_channels(link, in, &checker, counts);
