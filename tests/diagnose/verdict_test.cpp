@@ -181,33 +181,37 @@ VerdictFigures twin_fits_continued() {
   return f;
 }
 
+// The decision on twin_fits_continued() with one figure changed.
+template <typename Change>
+Decision decide_continued_with(Change change) {
+  VerdictFigures f = twin_fits_continued();
+  change(f);
+  return decide(f);
+}
+
 TEST(Verdict, AGapOnlyBeyondTheTwinsFitsIsNone) {
   EXPECT_EQ(decide(twin_fits_continued()), Decision::kNoneWithinTwinFits);
   EXPECT_EQ(status(twin_fits_continued()), "none");
   // Without picks, too.
-  VerdictFigures no_picks = twin_fits_continued();
-  no_picks.any_findings = false;
-  no_picks.rms_after = no_picks.rms_before;
-  EXPECT_EQ(decide(no_picks), Decision::kNoneWithinTwinFits);
+  EXPECT_EQ(decide_continued_with([](VerdictFigures& f) {
+              f.any_findings = false;
+              f.rms_after = f.rms_before;
+            }),
+            Decision::kNoneWithinTwinFits);
   // A sample beyond the calibration's ranges but within the twin's fits: the gap is the twin's.
-  VerdictFigures within_fits = twin_fits_continued();
-  within_fits.beyond_past_twin_fits = false;
-  EXPECT_EQ(decide(within_fits), Decision::kUnexplained);
+  EXPECT_EQ(decide_continued_with([](VerdictFigures& f) { f.beyond_past_twin_fits = false; }),
+            Decision::kUnexplained);
   // A gap within the ranges before the picks (1.11 of the noise, above 1.10), in a window (2.01,
   // above the allowance 2) or too few samples there (24 %) to judge by: not this rule.
-  VerdictFigures gap_within = twin_fits_continued();
-  gap_within.within_before_v = 1.11;
-  EXPECT_EQ(decide(gap_within), Decision::kUnexplained);
-  VerdictFigures window = twin_fits_continued();
-  window.within_worst_before_v = 2.01;
-  EXPECT_EQ(decide(window), Decision::kUnexplained);
-  VerdictFigures few_within = twin_fits_continued();
-  few_within.share_within = 0.24;
-  EXPECT_EQ(decide(few_within), Decision::kUnexplained);
+  EXPECT_EQ(decide_continued_with([](VerdictFigures& f) { f.within_before_v = 1.11; }),
+            Decision::kUnexplained);
+  EXPECT_EQ(decide_continued_with([](VerdictFigures& f) { f.within_worst_before_v = 2.01; }),
+            Decision::kUnexplained);
+  EXPECT_EQ(decide_continued_with([](VerdictFigures& f) { f.share_within = 0.24; }),
+            Decision::kUnexplained);
   // Picks that explain the whole session still do.
-  VerdictFigures explained = twin_fits_continued();
-  explained.rms_after = 1.05;
-  EXPECT_EQ(decide(explained), Decision::kExplained);
+  EXPECT_EQ(decide_continued_with([](VerdictFigures& f) { f.rms_after = 1.05; }),
+            Decision::kExplained);
 }
 
 // A session at 1 Hz: the clearance of each sample.

@@ -19,12 +19,16 @@ bool follows_age(const EffectFinding& f) { return !effect_class(f.name).age_para
 
 // "what is left is within 10 % of the noise on the N held-out samples within the calibration's
 // ranges (...): X V", and "(the held-out part spans ...)": what both reach sentences say.
+// "(24.9-69.9 C, 2.46-9.46 mm)": the calibration's ranges.
+std::string calibration_ranges(const BeyondReach& b) {
+  return fmt::format("({:.1f}-{:.1f} C, {:.2f}-{:.2f} mm)", b.temp_lo_c, b.temp_hi_c,
+                     b.clearance_lo_mm, b.clearance_hi_mm);
+}
 std::string left_within(const BeyondReach& b) {
   return fmt::format(
       "what is left is within {:.0f} % of the noise on the {} held-out samples within the "
-      "calibration's ranges ({:.1f}-{:.1f} C, {:.2f}-{:.2f} mm): {:.4g} V",
-      explained_pct(), b.within, b.temp_lo_c, b.temp_hi_c, b.clearance_lo_mm, b.clearance_hi_mm,
-      b.left_within_v);
+      "calibration's ranges {}: {:.4g} V",
+      explained_pct(), b.within, calibration_ranges(b), b.left_within_v);
 }
 std::string heldout_span(const BeyondReach& b) {
   return fmt::format("(the held-out part spans {:.1f}-{:.1f} C, {:.2f}-{:.2f} mm)",
@@ -54,8 +58,7 @@ std::string explained() {
 }
 
 std::string where_the_calibration_reaches(const BeyondReach& b) {
-  return fmt::format("where the calibration reaches ({:.1f}-{:.1f} C, {:.2f}-{:.2f} mm)",
-                     b.temp_lo_c, b.temp_hi_c, b.clearance_lo_mm, b.clearance_hi_mm);
+  return "where the calibration reaches " + calibration_ranges(b);
 }
 
 std::string explained_within_reach(const BeyondReach& b) {

@@ -237,17 +237,18 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
                                                   how.worst_window.from_s, how.worst_window.to_s,
                                                   f.window_allowance_v / f.noise_v));
   }
+  // The reach's figures with what the picks leave: the scope and the reach sentences.
+  const reasons::BeyondReach left =
+      beyond_reach(parts.heldout, reach, selection.current_error, f.beyond_share_taken);
   if (decision == Decision::kExplainedWithinReach || decision == Decision::kNoneWithinTwinFits) {
-    diagnosis.scope = reasons::where_the_calibration_reaches(
-        beyond_reach(parts.heldout, reach, selection.current_error, f.beyond_share_taken));
+    diagnosis.scope = reasons::where_the_calibration_reaches(left);
   }
   switch (decision) {
     case Decision::kExplained:
       reasons.push_back(reasons::explained());
       break;
     case Decision::kExplainedWithinReach:
-      reasons.push_back(reasons::explained_within_reach(
-          beyond_reach(parts.heldout, reach, selection.current_error, f.beyond_share_taken)));
+      reasons.push_back(reasons::explained_within_reach(left));
       break;
     case Decision::kPartlyExplained:
       reasons.push_back(reasons::partly_explained(
@@ -258,8 +259,7 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
       diagnosis.nearest = nearest_effect(selection, findings, noise.rms_v, how.worst_window);
       reasons.push_back(reasons::unexplained(f.any_findings));
       if (left_within_reach(f)) {
-        reasons.push_back(reasons::gap_beyond_reach(
-            beyond_reach(parts.heldout, reach, selection.current_error, f.beyond_share_taken)));
+        reasons.push_back(reasons::gap_beyond_reach(left));
       }
       break;
     case Decision::kNone:
