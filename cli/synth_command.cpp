@@ -56,9 +56,10 @@ CLI::App* add_synth_command(CLI::App& app, SynthOptions& options) {
       ->default_val(options.max_core_lut_percent)
       ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--min-slack-percent", options.min_slack_percent,
-                  "fail when a top's estimated slack is a smaller share of the period (0-100)")
+                  "fail when a top's estimated slack is a smaller share of the period (-100 to "
+                  "100; below 0: a bound on how far a top known to miss may fall)")
       ->default_val(options.min_slack_percent)
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(CLI::Range(-100.0, 100.0));
   return cmd;
 }
 
