@@ -204,12 +204,13 @@ module basys3_top #(
   logic [QueueAddrBits:0] q_wr_q, q_wr_d, q_rd_q, q_rd_d;  // one extra bit tells full from empty
   logic                   q_empty, q_full, q_push, q_pop;
   frame_t                 head;
-  logic [FrameBits-1:0]   q_entry, head_read_q, head_read_d, head_entry_q;
-  logic                   head_bypass_q, head_bypass_d;
+  logic [FrameBits-1:0]   q_entry, head_read_q, head_read_d;
+  logic [QueueAddrBits:0] q_wr_seen_q, q_wr_seen_d;  // q_wr_q a cycle late: the frames head shows
   logic [NumChannels-1:0] push_bit;                   // the channel of a sample frame pushed
   logic [NumChannels-1:0] drop_pend_q, drop_pend_d;  // a dropped frame's mark, waiting for a push
 
-  assign q_empty = q_wr_q == q_rd_q;
+  assign q_wr_seen_d = q_wr_q;
+  assign q_empty = q_wr_seen_q == q_rd_q;
   assign q_full  = q_wr_q == {~q_rd_q[QueueAddrBits], q_rd_q[QueueAddrBits-1:0]};
   assign q_push  = frame_valid && !q_full;
   assign push_bit = frame_command ? '0 : channel_bit(frame_channel);
@@ -221,18 +222,15 @@ module basys3_top #(
   always_ff @(posedge clk_i) begin
     if (q_push) queue_mem[q_wr_q[QueueAddrBits-1:0]] <= q_entry;
   end
-  // The head frame, read a cycle ahead at the next read pointer into a register, and the frame
-  // written there in the same cycle beside it: head is always queue_mem[q_rd_q], but the
-  // decisions on it start at registers, not after a memory read (docs/synthesis.md, "Timing
-  // estimate"). The read is not transparent, so synthesis keeps its register after the memory.
-  assign head_read_d   = queue_mem[q_rd_d[QueueAddrBits-1:0]];
-  assign head_bypass_d = q_push && q_wr_q[QueueAddrBits-1:0] == q_rd_d[QueueAddrBits-1:0];
-  always_ff @(posedge clk_i) begin
-    head_read_q   <= head_read_d;
-    head_bypass_q <= head_bypass_d;
-    head_entry_q  <= q_entry;
-  end
-  assign head = head_bypass_q ? head_entry_q : head_read_q;
+  // The head frame is read a cycle ahead, at the next read pointer, into a register, so that the
+  // decisions on it start at a register and not after a memory read (docs/synthesis.md, "Timing
+  // estimate"); the read is not transparent, so synthesis keeps the register after the memory.
+  // A frame written at one edge is in that register from the next, so the queue counts it from
+  // then: q_empty compares q_rd_q with q_wr_q a cycle late, and head is queue_mem[q_rd_q]
+  // whenever the queue is not empty.
+  assign head_read_d = queue_mem[q_rd_d[QueueAddrBits-1:0]];
+  always_ff @(posedge clk_i) head_read_q <= head_read_d;
+  assign head = head_read_q;
 
   // The reply store //
   // Every sample reply is kept under its SEQ's low bits, so that a retransmission of any of the
@@ -461,6 +459,7 @@ module basys3_top #(
     if (!rst_n) begin
       state_q         <= StIdle;
       q_wr_q          <= '0;
+      q_wr_seen_q     <= '0;
       q_rd_q          <= '0;
       seq_q           <= '0;
       chan_q          <= '0;
@@ -486,6 +485,7 @@ module basys3_top #(
     end else begin
       state_q         <= state_d;
       q_wr_q          <= q_wr_d;
+      q_wr_seen_q     <= q_wr_seen_d;
       q_rd_q          <= q_rd_d;
       seq_q           <= seq_d;
       chan_q          <= chan_d;
