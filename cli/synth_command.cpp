@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "synth_command.h"
 
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -20,6 +22,11 @@ namespace {
 std::string command_line(const SynthOptions& options) {
   std::string command = "flange synth";
   for (const std::string& set : options.coeffs) command += " --coeffs " + set;
+  const SynthOptions defaults;
+  if (options.max_core_lut_percent != defaults.max_core_lut_percent)
+    command += fmt::format(" --max-core-lut-percent {:g}", options.max_core_lut_percent);
+  if (options.min_slack_percent != defaults.min_slack_percent)
+    command += fmt::format(" --min-slack-percent {:g}", options.min_slack_percent);
   command += " --out " + options.out;
   if (!options.json.empty()) command += " --json " + options.json;
   if (!options.vivado_report.empty()) command += " --vivado-report " + options.vivado_report;

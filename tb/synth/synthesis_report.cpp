@@ -200,7 +200,8 @@ std::string synthesis_report_markdown(const std::vector<SynthesisResult>& result
         "their read multiplexer; the core for 1, 4 and 12 channels and for a set per channel is "
         "tabulated in [core.md](core.md#channels) (`bash bench/synth_channels.sh`).\n\n";
   for (const SynthesisResult& r : results) write_utilisation(md, r, device);
-  md << "## Checks\n\nThe `FlangeSynth.*` CTest tests: each multiply-accumulate maps to exactly one "
+  md << "## Checks\n\nThe checks of this run (the `FlangeSynth.*` CTest tests run them per set with "
+     << "their own limits, tests/cli/CMakeLists.txt): each multiply-accumulate maps to exactly one "
      << "DSP48E1 (core and top: 1); the core occupies at most " << s.max_core_lut_percent
      << " % of the LUT6 sites; every top keeps at least " << s.min_slack_percent
      << " % of the period as estimated slack: " << (s.failures.empty() ? "**pass**" : "**FAIL**")

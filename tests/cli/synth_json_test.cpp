@@ -37,7 +37,9 @@ TEST(SynthJson, NamesEveryTopsSlackAndWorstPathsByRtlNames) {
       const std::string from = paths[i].at("from"), to = paths[i].at("to");
       EXPECT_NE(from.front(), '$') << from;  // an RTL name, not a Yosys cell id
       EXPECT_NE(to.front(), '$') << to;
-      if (i > 0) EXPECT_GE(paths[i - 1].at("total_ns"), paths[i].at("total_ns"));
+      if (i > 0) {
+        EXPECT_GE(paths[i - 1].at("total_ns").get<double>(), paths[i].at("total_ns").get<double>());
+      }
       double sum = paths[i].at("setup_ns");
       for (const nlohmann::json& step : paths[i].at("steps"))
         sum += step.at("cell_ns").get<double>() + step.at("net_ns").get<double>();
