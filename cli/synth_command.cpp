@@ -78,7 +78,8 @@ int run_synth_command(const SynthOptions& options, std::ostream& out, std::ostre
   std::vector<tb::SynthesisResult> results;
   try {
     // The Vivado reports first: a bad one fails in a second, not after minutes of Yosys.
-    if (!options.vivado_report.empty()) settings.vivado = tb::read_vivado_report(options.vivado_report);
+    if (!options.vivado_report.empty())
+      settings.vivado = tb::read_vivado_report(options.vivado_report);
     tb::SynthesisRequest request;
     request.yosys = options.yosys;
     request.data_dir = runtime::data_dir().root;
@@ -108,12 +109,12 @@ int run_synth_command(const SynthOptions& options, std::ostream& out, std::ostre
     return kExitFailure;
   }
   for (const tb::SynthesisResult& r : results) {
-    settings.failures += tb::check_utilisation(r.core.utilisation, r.top.utilisation,
-                                               options.max_core_lut_percent);
+    settings.failures +=
+        tb::check_utilisation(r.core.utilisation, r.top.utilisation, options.max_core_lut_percent);
     settings.failures += tb::check_timing(r, options.min_slack_percent);
   }
-  const fs::path json_path =
-      options.json.empty() ? fs::path(options.out).replace_extension(".json") : fs::path(options.json);
+  const fs::path json_path = options.json.empty() ? fs::path(options.out).replace_extension(".json")
+                                                  : fs::path(options.json);
   if (!write_file(options.out, tb::synthesis_report_markdown(results, settings))) {
     err << "flange synth: cannot write " << options.out << "\n";
     return kExitFailure;

@@ -22,7 +22,8 @@ struct SynthOptions {
   // and error feedback took measurement_sos from 140 to 214 LUT6 sites, 0.67 to 1.03 %).
   double max_core_lut_percent = 1.5;
   // Every top keeps at least this share of the 10 ns period as estimated slack: a margin for what
-  // the pre-route estimate cannot see (placement, congestion, clock uncertainty; docs/synthesis.md).
+  // the pre-route estimate cannot see (placement, congestion, clock uncertainty;
+  // docs/synthesis.md).
   double min_slack_percent = 20;
 };
 

@@ -101,8 +101,8 @@ std::vector<PinBit> parse_signal(const std::string& text, const ModuleText& modu
     const std::string name = wire_name(w);
     auto width = module.widths.find(name);
     if (width == module.widths.end()) {
-      throw CellTimingError(fmt::format("line {}: {} is not a wire of {}", line_no, name,
-                                        module.name));
+      throw CellTimingError(
+          fmt::format("line {}: {} is not a wire of {}", line_no, name, module.name));
     }
     int lo = 0, hi = width->second - 1;
     if (i + 1 < words.size() && words[i + 1].front() == '[') {
@@ -117,8 +117,8 @@ std::vector<PinBit> parse_signal(const std::string& text, const ModuleText& modu
     parts.push_back(bits);
   }
   std::vector<PinBit> bits;
-  for (auto it = parts.rbegin(); it != parts.rend(); ++it) bits.insert(bits.end(), it->begin(),
-                                                                       it->end());
+  for (auto it = parts.rbegin(); it != parts.rend(); ++it)
+    bits.insert(bits.end(), it->begin(), it->end());
   return bits;
 }
 
@@ -139,7 +139,8 @@ CellTiming timing_of(const ModuleText& module, const std::vector<int>& cell_line
   t.module = module.name;
   t.type = module_type(module.name);
   t.inputs = module.inputs;
-  for (const auto& [name, value] : module.parameters) t.parameters[name] = cell_parameter_value(value);
+  for (const auto& [name, value] : module.parameters)
+    t.parameters[name] = cell_parameter_value(value);
   for (std::size_t c = 0; c < module.cells.size(); ++c) {
     const RawCell& cell = module.cells[c];
     const int line_no = cell_lines[c];
@@ -229,19 +230,22 @@ CellTimingLibrary CellTimingLibrary::parse(const std::string& rtlil_text) {
     if (words.empty() || words[0] == "attribute" || words[0] == "autoidx") continue;
     const std::string& kw = words[0];
     if (kw == "module") {
-      if (!blocks.empty()) throw CellTimingError(fmt::format("line {}: module inside a block", line_no));
+      if (!blocks.empty())
+        throw CellTimingError(fmt::format("line {}: module inside a block", line_no));
       module = ModuleText{words.size() > 1 ? words[1] : "", {}, {}, {}, {}};
       cell_lines.clear();
       blocks.push_back(kw);
     } else if (kw == "cell" || kw == "process" || kw == "switch") {
-      if (blocks.empty()) throw CellTimingError(fmt::format("line {}: {} outside a module", line_no, kw));
+      if (blocks.empty())
+        throw CellTimingError(fmt::format("line {}: {} outside a module", line_no, kw));
       if (kw == "cell" && blocks.size() == 1) {
         module.cells.push_back({words.size() > 1 ? words[1] : "", {}, {}});
         cell_lines.push_back(line_no);
       }
       blocks.push_back(kw);
     } else if (kw == "end") {
-      if (blocks.empty()) throw CellTimingError(fmt::format("line {}: `end` without a block", line_no));
+      if (blocks.empty())
+        throw CellTimingError(fmt::format("line {}: `end` without a block", line_no));
       blocks.pop_back();
       if (blocks.empty()) library.cells_.push_back(timing_of(module, cell_lines));
     } else if (blocks.size() == 1 && kw == "wire") {
@@ -283,8 +287,9 @@ const CellTiming* CellTimingLibrary::find(
     if (agrees && (match == nullptr || c->module.rfind("$paramod", 0) == 0)) match = c;
   }
   if (match != nullptr) return match;
-  const bool all_same = std::all_of(of_type.begin(), of_type.end(),
-                                    [&](const CellTiming* c) { return same_arcs(*c, *of_type[0]); });
+  const bool all_same = std::all_of(of_type.begin(), of_type.end(), [&](const CellTiming* c) {
+    return same_arcs(*c, *of_type[0]);
+  });
   return all_same ? of_type[0] : nullptr;
 }
 

@@ -25,15 +25,15 @@ struct CombArc {
 
 // One cell model (one parameter set): its arcs in picoseconds.
 struct CellTiming {
-  std::string module;                                // "LUT6", "$paramod$...\\DSP48E1"
-  std::string type;                                  // the cell type: "LUT6", "DSP48E1"
-  std::map<std::string, std::string> parameters;     // normalised (cell_parameter_value)
-  std::set<std::string> inputs;                      // the input ports (the rest are outputs)
-  std::map<PinBit, std::vector<CombArc>> comb;       // input bit -> outputs ($specify2)
-  std::map<PinBit, int> clock_to_out;                // output bit -> clock edge to output
-  std::map<PinBit, std::string> clock_of_output;     // output bit -> its clock port ("C")
-  std::map<PinBit, int> setup;                       // input bit -> setup before the clock edge
-  std::map<PinBit, std::string> clock_of_input;      // input bit -> its clock port
+  std::string module;                             // "LUT6", "$paramod$...\\DSP48E1"
+  std::string type;                               // the cell type: "LUT6", "DSP48E1"
+  std::map<std::string, std::string> parameters;  // normalised (cell_parameter_value)
+  std::set<std::string> inputs;                   // the input ports (the rest are outputs)
+  std::map<PinBit, std::vector<CombArc>> comb;    // input bit -> outputs ($specify2)
+  std::map<PinBit, int> clock_to_out;             // output bit -> clock edge to output
+  std::map<PinBit, std::string> clock_of_output;  // output bit -> its clock port ("C")
+  std::map<PinBit, int> setup;                    // input bit -> setup before the clock edge
+  std::map<PinBit, std::string> clock_of_input;   // input bit -> its clock port
 };
 
 // The text does not hold the cell models the way write_rtlil writes them.

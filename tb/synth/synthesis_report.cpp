@@ -72,9 +72,9 @@ void write_timing_table(std::ostream& md, const std::vector<SynthesisResult>& re
     for (const YosysRun* run : {&r.core, &r.top}) {
       const std::string sta = run->yosys_sta_ps ? ns(*run->yosys_sta_ps) : "none";
       for (const ClockEstimate& c : run->timing.clocks) {
-        md << fmt::format("| `{}` | `{}` | `{}` | {} | {} | {} | {} | {:.1f} % | {} |\n", r.set_name,
-                          run->top, c.clock, c.endpoints, ns(c.worst_cells_ps), ns(c.worst_ps),
-                          ns(c.slack_ps), 100.0 * c.slack_ps / c.period_ps, sta);
+        md << fmt::format("| `{}` | `{}` | `{}` | {} | {} | {} | {} | {:.1f} % | {} |\n",
+                          r.set_name, run->top, c.clock, c.endpoints, ns(c.worst_cells_ps),
+                          ns(c.worst_ps), ns(c.slack_ps), 100.0 * c.slack_ps / c.period_ps, sta);
       }
     }
   }
@@ -82,10 +82,11 @@ void write_timing_table(std::ostream& md, const std::vector<SynthesisResult>& re
 }
 
 void write_path(std::ostream& md, int rank, const TimingPath& p) {
-  md << fmt::format("{}. `{}` -> `{}` ({}): {} ns = {} cells + {} nets, slack {} ns, {} logic "
-                    "levels<br>",
-                    rank, p.from, p.to, p.to_pin, ns(p.total_ps()), ns(p.cells_ps), ns(p.nets_ps),
-                    ns(p.slack_ps), p.logic_levels);
+  md << fmt::format(
+      "{}. `{}` -> `{}` ({}): {} ns = {} cells + {} nets, slack {} ns, {} logic "
+      "levels<br>",
+      rank, p.from, p.to, p.to_pin, ns(p.total_ps()), ns(p.cells_ps), ns(p.nets_ps), ns(p.slack_ps),
+      p.logic_levels);
   for (std::size_t i = 0; i < p.steps.size(); ++i) {
     const PathStep& s = p.steps[i];
     md << fmt::format("{}{} {} {} `{}` (fo {}) +{}", i == 0 ? "" : " &rarr; ", s.type, s.arc,
@@ -200,7 +201,8 @@ std::string synthesis_report_markdown(const std::vector<SynthesisResult>& result
         "their read multiplexer; the core for 1, 4 and 12 channels and for a set per channel is "
         "tabulated in [core.md](core.md#channels) (`bash bench/synth_channels.sh`).\n\n";
   for (const SynthesisResult& r : results) write_utilisation(md, r, device);
-  md << "## Checks\n\nThe checks of this run (the `FlangeSynth.*` CTest tests run them per set with "
+  md << "## Checks\n\nThe checks of this run (the `FlangeSynth.*` CTest tests run them per set "
+        "with "
      << "their own limits, tests/cli/CMakeLists.txt): each multiply-accumulate maps to exactly one "
      << "DSP48E1 (core and top: 1); the core occupies at most " << s.max_core_lut_percent
      << " % of the LUT6 sites; every top keeps at least " << s.min_slack_percent
@@ -234,13 +236,12 @@ std::string synthesis_summary_line(const SynthesisResult& result, const DeviceCa
       slack(result.core), slack(result.top), result.core.seconds + result.top.seconds);
 }
 
-
 namespace {
 
 using nlohmann::json;
 
 json utilisation_json(const Utilisation& u) {
-  return {{"lut_sites", u.lut_sites()}, {"estimated_lcs", u.estimated_lcs},
+  return {{"lut_sites", u.lut_sites()},   {"estimated_lcs", u.estimated_lcs},
           {"lutram_luts", u.lutram_luts}, {"luts", u.luts},
           {"inverters", u.inverters},     {"ffs", u.ffs},
           {"carry4", u.carry4},           {"dsp48e1", u.dsp48e1},
@@ -251,39 +252,55 @@ json utilisation_json(const Utilisation& u) {
 json path_json(const TimingPath& p) {
   json steps = json::array();
   for (const PathStep& s : p.steps) {
-    steps.push_back({{"cell", s.cell}, {"type", s.type}, {"arc", s.arc}, {"cell_ns", s.cell_ps / 1e3},
-                     {"net", s.net}, {"fanout", s.fanout}, {"net_ns", s.net_ps / 1e3}});
+    steps.push_back({{"cell", s.cell},
+                     {"type", s.type},
+                     {"arc", s.arc},
+                     {"cell_ns", s.cell_ps / 1e3},
+                     {"net", s.net},
+                     {"fanout", s.fanout},
+                     {"net_ns", s.net_ps / 1e3}});
   }
-  return {{"clock", p.clock},          {"from", p.from},
-          {"to", p.to},                {"to_pin", p.to_pin},
-          {"total_ns", p.total_ps() / 1e3}, {"cells_ns", p.cells_ps / 1e3},
-          {"nets_ns", p.nets_ps / 1e3}, {"setup_ns", p.setup_ps / 1e3},
-          {"slack_ns", p.slack_ps / 1e3}, {"logic_levels", p.logic_levels},
+  return {{"clock", p.clock},
+          {"from", p.from},
+          {"to", p.to},
+          {"to_pin", p.to_pin},
+          {"total_ns", p.total_ps() / 1e3},
+          {"cells_ns", p.cells_ps / 1e3},
+          {"nets_ns", p.nets_ps / 1e3},
+          {"setup_ns", p.setup_ps / 1e3},
+          {"slack_ns", p.slack_ps / 1e3},
+          {"logic_levels", p.logic_levels},
           {"steps", steps}};
 }
 
 json run_json(const YosysRun& run) {
   json clocks = json::array(), paths = json::array();
   for (const ClockEstimate& c : run.timing.clocks) {
-    clocks.push_back({{"clock", c.clock}, {"period_ns", c.period_ps / 1e3},
-                      {"endpoints", c.endpoints}, {"cells_only_ns", c.worst_cells_ps / 1e3},
-                      {"worst_ns", c.worst_ps / 1e3}, {"slack_ns", c.slack_ps / 1e3},
+    clocks.push_back({{"clock", c.clock},
+                      {"period_ns", c.period_ps / 1e3},
+                      {"endpoints", c.endpoints},
+                      {"cells_only_ns", c.worst_cells_ps / 1e3},
+                      {"worst_ns", c.worst_ps / 1e3},
+                      {"slack_ns", c.slack_ps / 1e3},
                       {"slack_percent", 100.0 * c.slack_ps / c.period_ps}});
   }
   for (const TimingPath& p : run.timing.worst_paths) paths.push_back(path_json(p));
   return {{"utilisation", utilisation_json(run.utilisation)},
-          {"timing", {{"clocks", clocks},
-                      {"worst_paths", paths},
-                      {"yosys_sta_latest_arrival_ns",
-                       run.yosys_sta_ps ? json(*run.yosys_sta_ps / 1e3) : json(nullptr)},
-                      {"types_without_model", run.timing.types_without_model}}}};
+          {"timing",
+           {{"clocks", clocks},
+            {"worst_paths", paths},
+            {"yosys_sta_latest_arrival_ns",
+             run.yosys_sta_ps ? json(*run.yosys_sta_ps / 1e3) : json(nullptr)},
+            {"types_without_model", run.timing.types_without_model}}}};
 }
 
 json vivado_json(const VivadoReport& v) {
   auto opt = [](const auto& x) { return x ? json(*x) : json(nullptr); };
   json clocks = json::array();
   for (const VivadoClock& c : v.timing.clocks) {
-    clocks.push_back({{"clock", c.name}, {"period_ns", c.period_ns}, {"wns_ns", opt(c.wns_ns)},
+    clocks.push_back({{"clock", c.name},
+                      {"period_ns", c.period_ns},
+                      {"wns_ns", opt(c.wns_ns)},
                       {"whs_ns", opt(c.whs_ns)}});
   }
   json out = {{"dir", v.dir.string()},
@@ -293,15 +310,16 @@ json vivado_json(const VivadoReport& v) {
               {"total_endpoints", v.timing.total_endpoints},
               {"whs_ns", opt(v.timing.whs_ns)},
               {"clocks", clocks},
-              {"utilisation", {{"device", v.utilisation.device},
-                               {"slice_luts", v.utilisation.slice_luts},
-                               {"slice_registers", v.utilisation.slice_registers},
-                               {"dsps", opt(v.utilisation.dsps)},
-                               {"block_ram_tiles", opt(v.utilisation.block_ram_tiles)}}}};
+              {"utilisation",
+               {{"device", v.utilisation.device},
+                {"slice_luts", v.utilisation.slice_luts},
+                {"slice_registers", v.utilisation.slice_registers},
+                {"dsps", opt(v.utilisation.dsps)},
+                {"block_ram_tiles", opt(v.utilisation.block_ram_tiles)}}}};
   if (v.timing.worst_path) {
     const VivadoPath& p = *v.timing.worst_path;
     out["worst_path"] = {{"slack_ns", p.slack_ns},        {"from", p.source},
-                         {"to", p.destination},          {"data_path_ns", p.data_path_ns},
+                         {"to", p.destination},           {"data_path_ns", p.data_path_ns},
                          {"logic_ns", p.logic_ns},        {"route_ns", p.route_ns},
                          {"logic_levels", p.logic_levels}};
   }
@@ -317,21 +335,27 @@ std::string synthesis_report_json(const std::vector<SynthesisResult>& results,
     sets.push_back({{"set", r.set_name},
                     {"tops", {{r.core.top, run_json(r.core)}, {r.top.top, run_json(r.top)}}}});
   }
-  json out = {
-      {"generated_by", runtime::generated_by(s.command)},
-      {"estimate", "pre-route: cell delays from Yosys's xc7 models plus a net allowance by "
-                   "fanout; not a sign-off (docs/synthesis.md)"},
-      {"device", {{"luts", device.luts}, {"ffs", device.ffs}, {"dsps", device.dsps},
-                  {"bram36", device.bram36}, {"ios", device.ios}}},
-      {"net_allowance", {{"base_ns", s.allowance.base_ps / 1e3},
-                         {"per_fanout_ns", s.allowance.per_fanout_ps / 1e3},
-                         {"dedicated_connections", s.allowance.dedicated_connections},
-                         {"source", "FloPoCo src/Targets/Zynq7000.hpp (xc7z020-1)"}}},
-      {"checks", {{"max_core_lut_percent", s.max_core_lut_percent},
-                  {"min_slack_percent", s.min_slack_percent},
-                  {"pass", s.failures.empty()},
-                  {"failures", s.failures}}},
-      {"sets", sets}};
+  json out = {{"generated_by", runtime::generated_by(s.command)},
+              {"estimate",
+               "pre-route: cell delays from Yosys's xc7 models plus a net allowance by "
+               "fanout; not a sign-off (docs/synthesis.md)"},
+              {"device",
+               {{"luts", device.luts},
+                {"ffs", device.ffs},
+                {"dsps", device.dsps},
+                {"bram36", device.bram36},
+                {"ios", device.ios}}},
+              {"net_allowance",
+               {{"base_ns", s.allowance.base_ps / 1e3},
+                {"per_fanout_ns", s.allowance.per_fanout_ps / 1e3},
+                {"dedicated_connections", s.allowance.dedicated_connections},
+                {"source", "FloPoCo src/Targets/Zynq7000.hpp (xc7z020-1)"}}},
+              {"checks",
+               {{"max_core_lut_percent", s.max_core_lut_percent},
+                {"min_slack_percent", s.min_slack_percent},
+                {"pass", s.failures.empty()},
+                {"failures", s.failures}}},
+              {"sets", sets}};
   out["vivado"] = s.vivado ? vivado_json(*s.vivado) : json(nullptr);
   return out.dump(2) + "\n";
 }

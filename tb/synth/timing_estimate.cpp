@@ -40,7 +40,7 @@ struct Graph {
   std::vector<Cell> cells;
   std::map<int, std::pair<int, PinBit>> driver;  // net -> (cell, output pin)
   std::map<int, std::vector<Sink>> sinks;
-  std::map<int, std::string> names;              // net -> RTL name, where Yosys kept one
+  std::map<int, std::string> names;  // net -> RTL name, where Yosys kept one
   std::set<int> top_inputs;
   std::vector<std::string> types_without_model;
 };
@@ -121,8 +121,8 @@ Graph read_graph(const std::string& netlist_json, const std::string& top,
       } else if (cell.timing != nullptr) {
         input = cell.timing->inputs.count(port) != 0;
       } else {
-        throw TimingEstimateError(fmt::format("cell {} ({}): no port directions and no model",
-                                              name, cell.type));
+        throw TimingEstimateError(
+            fmt::format("cell {} ({}): no port directions and no model", name, cell.type));
       }
       for (std::size_t i = 0; i < bits.size(); ++i) {
         if (!bits[i].is_number()) continue;
@@ -153,7 +153,8 @@ bool dedicated(const Graph& g, int net, const Sink& sink) {
   const std::string& to_type = g.cells[sink.cell].type;
   const std::string to_port = port_of(sink.pin);
   const bool from_lut = from.type.rfind("LUT", 0) == 0;
-  if (from.type == "CARRY4" && d->second.second == "CO[3]" && to_type == "CARRY4" && to_port == "CI")
+  if (from.type == "CARRY4" && d->second.second == "CO[3]" && to_type == "CARRY4" &&
+      to_port == "CI")
     return true;
   if (from_lut && to_type == "MUXF7" && to_port != "S") return true;
   if (from.type == "MUXF7" && to_type == "MUXF8" && to_port != "S") return true;
@@ -174,11 +175,11 @@ int net_ps(const Graph& g, const NetAllowance& a, int net, const Sink& sink) {
 // How a net's latest arrival came about: launched by a register, or through a cell arc.
 struct Arrival {
   int ps = kNoArrival;
-  int cell = -1;        // the cell driving the net on the latest path
-  PinBit from_pin;      // its input pin on that path ("" when the cell launched it)
+  int cell = -1;    // the cell driving the net on the latest path
+  PinBit from_pin;  // its input pin on that path ("" when the cell launched it)
   int from_net = -1;
   int cell_ps = 0;
-  int net_ps = 0;       // allowance from from_net to from_pin
+  int net_ps = 0;  // allowance from from_net to from_pin
 };
 
 class Analysis {
@@ -189,8 +190,8 @@ class Analysis {
     auto it = memo_.find(net);
     if (it != memo_.end()) {
       if (it->second.second) return it->second.first;
-      throw TimingEstimateError(fmt::format("a combinational loop runs through net {}",
-                                            name_of(net)));
+      throw TimingEstimateError(
+          fmt::format("a combinational loop runs through net {}", name_of(net)));
     }
     memo_[net] = {Arrival{}, false};
     Arrival best;
@@ -228,7 +229,8 @@ class Analysis {
     auto d = g_.driver.find(net);
     if (d == g_.driver.end()) return "(unnamed)";
     const Cell& cell = g_.cells[d->second.first];
-    if (!cell.name.empty() && cell.name[0] != '$') return "~" + cell.name.substr(0, cell.name.find('.'));
+    if (!cell.name.empty() && cell.name[0] != '$')
+      return "~" + cell.name.substr(0, cell.name.find('.'));
     const std::size_t sv = cell.src.find(".sv:");
     if (sv != std::string::npos) {
       const std::size_t start = cell.src.find_last_of('/', sv) + 1;
@@ -278,7 +280,8 @@ std::vector<Endpoint> endpoints(const Graph& g) {
       if (net == cell.pins.end() || clock_port == cell.timing->clock_of_input.end()) continue;
       auto clock_net = cell.pins.find(pin_bit(clock_port->second, 0));
       if (clock_net == cell.pins.end()) continue;
-      ends.push_back({static_cast<int>(c), pin, net->second, setup, clock_name(g, clock_net->second)});
+      ends.push_back(
+          {static_cast<int>(c), pin, net->second, setup, clock_name(g, clock_net->second)});
     }
   }
   return ends;
@@ -317,9 +320,13 @@ TimingPath trace(const Graph& g, Analysis& analysis, const Endpoint& end, int pe
     const Arrival& a = analysis.arrival(net);
     const Cell& cell = g.cells[a.cell];
     const PinBit out = g.driver.at(net).second;
-    PathStep step{cell.name,  cell.type,   a.from_pin.empty() ? "clock->" + port_of(out) :
-                                                              arc_name(a.from_pin, out),
-                  a.cell_ps,  analysis.name_of(net), fanout(g, net), wire};
+    PathStep step{cell.name,
+                  cell.type,
+                  a.from_pin.empty() ? "clock->" + port_of(out) : arc_name(a.from_pin, out),
+                  a.cell_ps,
+                  analysis.name_of(net),
+                  fanout(g, net),
+                  wire};
     reversed.push_back(step);
     if (a.from_pin.empty()) {
       path.from = analysis.name_of(net);
@@ -360,7 +367,8 @@ TimingEstimate estimate_timing(const std::string& netlist_json, const std::strin
   std::vector<std::pair<int, Endpoint>> timed;  // (arrival + allowance + setup, endpoint)
   for (const Endpoint& end : endpoints(g)) {
     const Arrival& a = with_nets.arrival(end.net);
-    if (a.ps == kNoArrival) continue;  // driven from the pins or constants: not register to register
+    if (a.ps == kNoArrival)
+      continue;  // driven from the pins or constants: not register to register
     const int total = a.ps + net_ps(g, allowance, end.net, Sink{end.cell, end.pin}) + end.setup_ps;
     const int cells = without_nets.arrival(end.net).ps + end.setup_ps;
     ClockEstimate& c = clocks[end.clock];

@@ -33,36 +33,36 @@ struct NetAllowance {
 
 // One stage of a path: a cell arc, then the net its output drives.
 struct PathStep {
-  std::string cell;       // the Yosys cell name
-  std::string type;       // "LUT6"
-  std::string arc;        // "I3->O", or "C->Q" for the launching register
+  std::string cell;  // the Yosys cell name
+  std::string type;  // "LUT6"
+  std::string arc;   // "I3->O", or "C->Q" for the launching register
   int cell_ps = 0;
-  std::string net;        // the RTL name of the net driven (or the nearest named source)
+  std::string net;  // the RTL name of the net driven (or the nearest named source)
   int fanout = 0;
-  int net_ps = 0;         // the allowance charged for it on the way to the next pin
+  int net_ps = 0;  // the allowance charged for it on the way to the next pin
 };
 
 struct TimingPath {
-  std::string clock;        // the capture clock's top-level port ("clk_i")
-  std::string from;         // RTL name of the launching register's output ("u_mac.p_q[47]")
-  std::string to;           // RTL name of the capturing register ("acc_q[3]") and its pin
-  std::string to_pin;       // "FDRE D"
+  std::string clock;   // the capture clock's top-level port ("clk_i")
+  std::string from;    // RTL name of the launching register's output ("u_mac.p_q[47]")
+  std::string to;      // RTL name of the capturing register ("acc_q[3]") and its pin
+  std::string to_pin;  // "FDRE D"
   std::vector<PathStep> steps;
   int setup_ps = 0;
-  int cells_ps = 0;         // clock-to-out, arcs and setup
-  int nets_ps = 0;          // the allowance
+  int cells_ps = 0;  // clock-to-out, arcs and setup
+  int nets_ps = 0;   // the allowance
   int total_ps() const { return cells_ps + nets_ps; }
-  int slack_ps = 0;         // period - total
-  int logic_levels = 0;     // combinational cells on the path
+  int slack_ps = 0;      // period - total
+  int logic_levels = 0;  // combinational cells on the path
 };
 
 struct ClockEstimate {
   std::string clock;
   int period_ps = 0;
-  int worst_ps = 0;         // the worst path (cells + nets)
-  int worst_cells_ps = 0;   // the worst path counting cells only (no allowance)
-  int slack_ps = 0;         // period - worst_ps
-  int endpoints = 0;        // register inputs timed
+  int worst_ps = 0;        // the worst path (cells + nets)
+  int worst_cells_ps = 0;  // the worst path counting cells only (no allowance)
+  int slack_ps = 0;        // period - worst_ps
+  int endpoints = 0;       // register inputs timed
 };
 
 struct TimingEstimate {

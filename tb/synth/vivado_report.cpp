@@ -90,8 +90,10 @@ std::vector<std::pair<std::size_t, std::map<std::string, std::string>>> summary_
       // "name  {0.000 5.000}  10.000  100.000": the waveform holds a space.
       static const std::regex row(R"(^\s*(\S+)\s+\{([^}]*)\}\s+(\S+)\s+(\S+)\s*$)");
       std::smatch m;
-      if (!std::regex_match(lines.text[i], m, row)) lines.fail(i, "a Clock Summary row without "
-                                                                  "name, waveform, period, frequency");
+      if (!std::regex_match(lines.text[i], m, row))
+        lines.fail(i,
+                   "a Clock Summary row without "
+                   "name, waveform, period, frequency");
       values = {m[1], "{" + m[2].str() + "}", m[3], m[4]};
     }
     if (values.size() != columns.size()) {
@@ -131,8 +133,10 @@ std::optional<VivadoPath> worst_setup_path(const Lines& lines) {
   static const std::regex delay_line(
       R"(Data Path Delay:\s*([\d.]+)ns\s*\(logic\s*([\d.]+)ns.*route\s*([\d.]+)ns)");
   std::smatch m;
-  if (!std::regex_search(lines.text[*slack], m, slack_line)) lines.fail(*slack, "field Slack: no "
-                                                                                "figure in ns");
+  if (!std::regex_search(lines.text[*slack], m, slack_line))
+    lines.fail(*slack,
+               "field Slack: no "
+               "figure in ns");
   path.slack_ns = std::stod(m[2]);
   auto value_of = [&](const std::string& key) -> std::pair<std::size_t, std::string> {
     const auto at = find_line(lines, key, *slack);
@@ -150,13 +154,15 @@ std::optional<VivadoPath> worst_setup_path(const Lines& lines) {
   path.logic_ns = std::stod(m[2]);
   path.route_ns = std::stod(m[3]);
   const auto [levels_at, levels] = value_of("Logic Levels:");
-  path.logic_levels = static_cast<int>(number(lines, levels_at, "Logic Levels", words(levels).at(0)));
+  path.logic_levels =
+      static_cast<int>(number(lines, levels_at, "Logic Levels", words(levels).at(0)));
   return path;
 }
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path);
-  if (!in) throw VivadoReportMissing(path.string() + ": cannot be read (run rtl/board/vivado_build.tcl)");
+  if (!in)
+    throw VivadoReportMissing(path.string() + ": cannot be read (run rtl/board/vivado_build.tcl)");
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();

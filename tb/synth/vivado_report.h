@@ -15,7 +15,7 @@
 namespace flange::tb {
 
 struct VivadoClock {
-  std::string name;           // "sys_clk_pin"
+  std::string name;  // "sys_clk_pin"
   double period_ns = 0;
   std::optional<double> wns_ns;  // from the Intra Clock Table; absent when Vivado printed none
   std::optional<double> whs_ns;

@@ -56,11 +56,13 @@ YosysRun run_yosys(const SynthesisRequest& request, const std::string& top, cons
     std::ofstream ys(script);
     ys << "read_verilog -sv " << (set / "iir_coeffs_pkg.sv").string() << "\n"
        << "read_verilog -sv -defer " << sources << "\n"
-       << "chparam -set RomFile \"" << (set / "coeffs.mem").string() << "\" " << top << "\n"
+       << "chparam -set RomFile \"" << (set / "coeffs.mem").string() << "\" " << top
+       << "\n"
        // -abc9: timing-driven LUT mapping with the same cell delays the estimate uses.
        << "synth_xilinx -family xc7 -top " << top << " -flatten -abc9\n"
        << "tee -o " << stat_path.string() << " stat -tech xilinx\n"
-       << "write_json " << netlist_path.string() << "\n"
+       << "write_json " << netlist_path.string()
+       << "\n"
        // The cell models with their specify blocks; `sta` elaborates them for each parameter set
        // in use, and write_rtlil hands those to the estimate (cell_timing.h).
        << "read_verilog -lib -specify +/xilinx/cells_sim.v\n"
@@ -89,8 +91,8 @@ YosysRun run_yosys(const SynthesisRequest& request, const std::string& top, cons
   run.yosys_sta_ps = parse_sta_latest_arrival(read_text(sta_path));
   try {
     const CellTimingLibrary models = CellTimingLibrary::parse(read_text(models_path));
-    run.timing = estimate_timing(read_text(netlist_path), top, models, request.period_ps,
-                                 request.allowance);
+    run.timing =
+        estimate_timing(read_text(netlist_path), top, models, request.period_ps, request.allowance);
   } catch (const std::runtime_error& e) {  // CellTimingError, TimingEstimateError
     throw SynthesisFailed("timing estimate of " + top + ": " + e.what() + " (netlist " +
                           netlist_path.string() + ", cell models " + models_path.string() + ")");

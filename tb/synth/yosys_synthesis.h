@@ -98,10 +98,10 @@ std::string check_timing(const SynthesisResult& result, double min_slack_percent
 
 // What the reports say besides the results: the checks' limits, their verdict, the command.
 struct ReportSettings {
-  std::string command;              // the flange synth command line that makes the report
+  std::string command;  // the flange synth command line that makes the report
   double max_core_lut_percent = 0;
   double min_slack_percent = 0;
-  std::string failures;             // "" when every check passed
+  std::string failures;  // "" when every check passed
   NetAllowance allowance;
   std::optional<VivadoReport> vivado;  // routed figures of the board top (--vivado-report)
 };

@@ -26,9 +26,9 @@ int synth(const std::vector<std::string>& args, std::string& err) {
 TEST(SynthCommand, RefusesAMissingOrBadVivadoReportInOneLine) {
   const fs::path dir = flange::testing::fresh_test_dir("synth_vivado_report");
   std::string err;
-  EXPECT_EQ(synth({"--vivado-report", (dir / "none").string(), "--out", (dir / "r.md").string()},
-                  err),
-            kExitFailure);
+  EXPECT_EQ(
+      synth({"--vivado-report", (dir / "none").string(), "--out", (dir / "r.md").string()}, err),
+      kExitFailure);
   EXPECT_NE(err.find("none/timing_summary.rpt: cannot be read"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
 
@@ -41,9 +41,9 @@ TEST(SynthCommand, RefusesAMissingOrBadVivadoReportInOneLine) {
   fs::create_directories(dir / "bad");
   flange::testing::write_file(dir / "bad" / "timing_summary.rpt", bad);
   fs::copy_file(samples / "utilization.rpt", dir / "bad" / "utilization.rpt");
-  EXPECT_EQ(synth({"--vivado-report", (dir / "bad").string(), "--out", (dir / "r.md").string()},
-                  err),
-            kExitBadArgument);
+  EXPECT_EQ(
+      synth({"--vivado-report", (dir / "bad").string(), "--out", (dir / "r.md").string()}, err),
+      kExitBadArgument);
   EXPECT_NE(err.find("bad/timing_summary.rpt:62: field WNS(ns): \"3,412\" is not a number"),
             std::string::npos)
       << err;

@@ -25,14 +25,13 @@ TEST(SynthJson, NamesEveryTopsSlackAndWorstPathsByRtlNames) {
     const nlohmann::json& timing = tops.at(top).at("timing");
     ASSERT_EQ(timing.at("clocks").size(), 1u);
     const nlohmann::json& clock = timing.at("clocks").at(0);
-    EXPECT_NEAR(clock.at("slack_ns").get<double>(),
-                10.0 - clock.at("worst_ns").get<double>(), 1e-9);
+    EXPECT_NEAR(clock.at("slack_ns").get<double>(), 10.0 - clock.at("worst_ns").get<double>(),
+                1e-9);
     EXPECT_GE(clock.at("slack_percent").get<double>(), 20.0);
     EXPECT_LT(clock.at("cells_only_ns").get<double>(), clock.at("worst_ns").get<double>());
     const nlohmann::json& paths = timing.at("worst_paths");
     ASSERT_EQ(paths.size(), 5u);
-    EXPECT_NEAR(paths.at(0).at("total_ns").get<double>(), clock.at("worst_ns").get<double>(),
-                1e-9);
+    EXPECT_NEAR(paths.at(0).at("total_ns").get<double>(), clock.at("worst_ns").get<double>(), 1e-9);
     for (std::size_t i = 0; i < paths.size(); ++i) {
       const std::string from = paths[i].at("from"), to = paths[i].at("to");
       EXPECT_NE(from.front(), '$') << from;  // an RTL name, not a Yosys cell id

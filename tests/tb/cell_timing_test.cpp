@@ -19,7 +19,7 @@ std::string models_text() {
 }
 
 TEST(CellTiming, NormalisesParameterValues) {
-  EXPECT_EQ(cell_parameter_value("00000000000000000000000000000001"), "1");  // Yosys JSON
+  EXPECT_EQ(cell_parameter_value("00000000000000000000000000000001"), "1");     // Yosys JSON
   EXPECT_EQ(cell_parameter_value("32'00000000000000000000000000000001"), "1");  // RTLIL
   EXPECT_EQ(cell_parameter_value("1"), "1");                                    // RTLIL decimal
   EXPECT_EQ(cell_parameter_value("2"), "10");

@@ -81,20 +81,23 @@ TEST(VivadoReport, NamesFileLineAndFieldOfABadReport) {
   EXPECT_NE(timing_error(bad).find("t.rpt:62: field WNS(ns): NA"), std::string::npos);
   bad = text;
   bad.replace(row, 24, "      3.412");  // one value short
-  EXPECT_EQ(timing_error(bad), "t.rpt:62: the \"Design Timing Summary\" row has 11 values for 12 "
-                               "columns");
+  EXPECT_EQ(timing_error(bad),
+            "t.rpt:62: the \"Design Timing Summary\" row has 11 values for 12 "
+            "columns");
   bad = text;
   bad.replace(text.find("| Design Timing Summary"), 22, "| Something Else");
   EXPECT_NE(timing_error(bad).find("no \"Design Timing Summary\" table"), std::string::npos);
   EXPECT_EQ(timing_error(""), "t.rpt:1: the file is empty");
 
   std::string util = sample("utilization.rpt");
-  util.replace(util.find("| Slice Registers         |  566"), 32, "| Slice Registers         |  5x6");
+  util.replace(util.find("| Slice Registers         |  566"), 32,
+               "| Slice Registers         |  5x6");
   try {
     parse_utilization(util, "u.rpt");
     FAIL() << "a bad Used figure";
   } catch (const VivadoReportError& e) {
-    EXPECT_EQ(std::string(e.what()), "u.rpt:32: field Slice Registers Used: \"5x6\" is not a number");
+    EXPECT_EQ(std::string(e.what()),
+              "u.rpt:32: field Slice Registers Used: \"5x6\" is not a number");
   }
 }
 

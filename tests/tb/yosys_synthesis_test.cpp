@@ -147,14 +147,16 @@ TEST(YosysSynthesis, ReportsSetTheEstimateBesideVivadosRoutedFigures) {
   settings.command = "flange synth --coeffs coeffs/measurement_sos --out docs/synthesis.md";
   settings.max_core_lut_percent = 1.5;
   settings.min_slack_percent = 20;
-  settings.vivado = read_vivado_report(std::string(FLANGE_SOURCE_DIR) + "/tests/data/vivado_report");
+  settings.vivado =
+      read_vivado_report(std::string(FLANGE_SOURCE_DIR) + "/tests/data/vivado_report");
   const std::vector<SynthesisResult> results = {small_result()};
   const std::string md = synthesis_report_markdown(results, settings);
   EXPECT_NE(md.find("An estimate before place and route, not a timing sign-off."),
             std::string::npos);
-  EXPECT_NE(md.find("| `measurement_sos` | `basys3_top` | `clk_i` | 42 | 3.00 | 7.50 | 2.50 | 25.0 % "
-                    "| 2.76 |"),
-            std::string::npos)
+  EXPECT_NE(
+      md.find("| `measurement_sos` | `basys3_top` | `clk_i` | 42 | 3.00 | 7.50 | 2.50 | 25.0 % "
+              "| 2.76 |"),
+      std::string::npos)
       << md;
   EXPECT_NE(md.find("1. `q_rd_q[0]` -> `retransmit_q` (FDRE D): 2.16 ns"), std::string::npos) << md;
   EXPECT_NE(md.find("| worst setup slack (ns) | 2.50 | 3.412 |"), std::string::npos) << md;
