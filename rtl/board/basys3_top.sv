@@ -72,7 +72,7 @@ module basys3_top #(
   // Reset: a power-on count (registers start at 0 in the FPGA), then the debounced button //
   logic [3:0] por_q, por_d;
   logic       btn;
-  logic       rst_n;
+  logic       rst_n, rst_n_q, rst_n_d;
 
   assign por_d = &por_q ? por_q : por_q + 1'b1;
   always_ff @(posedge clk_i) por_q <= por_d;
@@ -82,7 +82,11 @@ module basys3_top #(
     .btn_i(btn_c_i),
     .btn_o(btn)
   );
-  assign rst_n = &por_q && !btn;
+  // Registered: the reset drives some 390 register inputs, a net the estimate allows 4.4 ns of the
+  // 10 ns cycle on its own (docs/synthesis.md, "Timing estimate"). Registers start at 0: in reset.
+  assign rst_n_d = &por_q && !btn;
+  always_ff @(posedge clk_i) rst_n_q <= rst_n_d;
+  assign rst_n = rst_n_q;
 
   // Switches: synchronised (they are asynchronous and slow; no debouncing needed).
   logic [5:0] sw_meta_q, sw_q;
@@ -99,9 +103,12 @@ module basys3_top #(
   // UART and framing //
   logic [7:0]  rx_byte;
   logic        rx_valid, rx_frame_err;
+  logic [7:0]  dec_seq, dec_channel;
+  logic [15:0] dec_sample;
+  logic        dec_valid, dec_command, frame_discard;
   logic [7:0]  frame_seq, frame_channel;
   logic [15:0] frame_sample;
-  logic        frame_valid, frame_command, frame_discard;
+  logic        frame_valid, frame_command;
   logic [7:0]  tx_byte;
   logic        tx_valid, tx_ready;
 
@@ -119,13 +126,27 @@ module basys3_top #(
     .rst_ni       (rst_n),
     .byte_i       (rx_byte),
     .byte_valid_i (rx_valid),
-    .seq_o        (frame_seq),
-    .channel_o    (frame_channel),
-    .sample_o     (frame_sample),
-    .frame_valid_o(frame_valid),
-    .command_o    (frame_command),
+    .seq_o        (dec_seq),
+    .channel_o    (dec_channel),
+    .sample_o     (dec_sample),
+    .frame_valid_o(dec_valid),
+    .command_o    (dec_command),
     .discard_o    (frame_discard)
   );
+
+  // The decoded frame, registered: its CRC check and the queue's push would otherwise be one path
+  // of ten LUT levels (docs/synthesis.md, "Timing estimate"). A frame waits one cycle more.
+  logic            frame_valid_q, frame_valid_d;
+  logic [8+8+16:0] frame_fields_q, frame_fields_d;  // command, SEQ, CHANNEL, SAMPLE
+  assign frame_valid_d  = dec_valid;
+  assign frame_fields_d = {dec_command, dec_seq, dec_channel, dec_sample};
+  always_ff @(posedge clk_i) begin
+    if (!rst_n) frame_valid_q <= 1'b0;
+    else        frame_valid_q <= frame_valid_d;
+  end
+  always_ff @(posedge clk_i) frame_fields_q <= frame_fields_d;
+  assign frame_valid = frame_valid_q;
+  assign {frame_command, frame_seq, frame_channel, frame_sample} = frame_fields_q;
 
   // The filter //
   logic signed [15:0]      core_out;
@@ -183,21 +204,33 @@ module basys3_top #(
   logic [QueueAddrBits:0] q_wr_q, q_wr_d, q_rd_q, q_rd_d;  // one extra bit tells full from empty
   logic                   q_empty, q_full, q_push, q_pop;
   frame_t                 head;
+  logic [FrameBits-1:0]   q_entry, head_read_q, head_read_d;
+  logic [QueueAddrBits:0] q_wr_seen_q, q_wr_seen_d;  // q_wr_q a cycle late: the frames head shows
   logic [NumChannels-1:0] push_bit;                   // the channel of a sample frame pushed
   logic [NumChannels-1:0] drop_pend_q, drop_pend_d;  // a dropped frame's mark, waiting for a push
 
-  assign q_empty = q_wr_q == q_rd_q;
+  assign q_wr_seen_d = q_wr_q;
+  assign q_empty = q_wr_seen_q == q_rd_q;
   assign q_full  = q_wr_q == {~q_rd_q[QueueAddrBits], q_rd_q[QueueAddrBits-1:0]};
   assign q_push  = frame_valid && !q_full;
   assign push_bit = frame_command ? '0 : channel_bit(frame_channel);
   assign q_wr_d  = q_wr_q + {QueueAddrBits'(0), q_push};
   assign q_rd_d  = q_rd_q + {QueueAddrBits'(0), q_pop};
-  assign head    = queue_mem[q_rd_q[QueueAddrBits-1:0]];
+  assign q_entry = {frame_command, |(drop_pend_q & push_bit), frame_seq, frame_channel,
+                    frame_sample};
 
   always_ff @(posedge clk_i) begin
-    if (q_push) queue_mem[q_wr_q[QueueAddrBits-1:0]] <= {frame_command, |(drop_pend_q & push_bit),
-                                                         frame_seq, frame_channel, frame_sample};
+    if (q_push) queue_mem[q_wr_q[QueueAddrBits-1:0]] <= q_entry;
   end
+  // The head frame is read a cycle ahead, at the next read pointer, into a register, so that the
+  // decisions on it start at a register and not after a memory read (docs/synthesis.md, "Timing
+  // estimate"); the read is not transparent, so synthesis keeps the register after the memory.
+  // A frame written at one edge is in that register from the next, so the queue counts it from
+  // then: q_empty compares q_rd_q with q_wr_q a cycle late, and head is queue_mem[q_rd_q]
+  // whenever the queue is not empty.
+  assign head_read_d = queue_mem[q_rd_d[QueueAddrBits-1:0]];
+  always_ff @(posedge clk_i) head_read_q <= head_read_d;
+  assign head = head_read_q;
 
   // The reply store //
   // Every sample reply is kept under its SEQ's low bits, so that a retransmission of any of the
@@ -426,6 +459,7 @@ module basys3_top #(
     if (!rst_n) begin
       state_q         <= StIdle;
       q_wr_q          <= '0;
+      q_wr_seen_q     <= '0;
       q_rd_q          <= '0;
       seq_q           <= '0;
       chan_q          <= '0;
@@ -451,6 +485,7 @@ module basys3_top #(
     end else begin
       state_q         <= state_d;
       q_wr_q          <= q_wr_d;
+      q_wr_seen_q     <= q_wr_seen_d;
       q_rd_q          <= q_rd_d;
       seq_q           <= seq_d;
       chan_q          <= chan_d;

@@ -8,8 +8,10 @@
 # tests/data/coeffs/loco_ch12 gives a board with that many channels); OUT_DIR: where the bitstream
 # and reports go (default build/vivado); CLKS_PER_BIT: 100 MHz / baud, the UART's rate (default 868,
 # 115200 baud; 109 for 921600: docs/board.md, "Link budget"; `flange stream --baud` must match).
-# Run from the repository root. Writes OUT_DIR/basys3_top.bit, utilisation and timing reports;
-# exits non-zero when timing fails.
+# Run from the repository root. Writes OUT_DIR/basys3_top.bit and the routed design's reports
+# OUT_DIR/timing_summary.rpt (report_timing_summary) and OUT_DIR/utilization.rpt
+# (report_utilization), which `flange synth --coeffs COEFF_DIR --vivado-report OUT_DIR` sets beside
+# its pre-route estimate (docs/synthesis.md); exits non-zero when timing fails.
 
 set root [file normalize [file join [file dirname [info script]] .. ..]]
 set coeffs [file normalize [file join $root coeffs measurement_sos]]
@@ -38,6 +40,7 @@ opt_design
 place_design
 phys_opt_design
 route_design
+# The names flange synth --vivado-report reads (tb/synth/vivado_report.h).
 report_utilization -file [file join $out utilization.rpt]
 report_timing_summary -max_paths 10 -file [file join $out timing_summary.rpt]
 report_drc -file [file join $out drc.rpt]

@@ -22,11 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// used / capacity as "12.34 %".
-std::string percent(double used, int capacity) {
-  return fmt::format("{:.2f} %", 100.0 * used / capacity);
-}
-
 // The board sources, in dependency order (rtl/board/, docs/board.md).
 const char* const kBoardSources[] = {
     "crc8.sv",          "uart_rx.sv",         "uart_tx.sv",
@@ -52,16 +47,29 @@ YosysRun run_yosys(const SynthesisRequest& request, const std::string& top, cons
   }
   const fs::path stat_path = work / (top + "_stat.txt");
   const fs::path ltp_path = work / (top + "_ltp.txt");
+  const fs::path sta_path = work / (top + "_sta.txt");
+  const fs::path netlist_path = work / (top + "_netlist.json");
+  const fs::path models_path = work / (top + "_cells.il");
   const fs::path log_path = work / (top + "_yosys.log");
   const fs::path script = work / (top + ".ys");
   {
     std::ofstream ys(script);
     ys << "read_verilog -sv " << (set / "iir_coeffs_pkg.sv").string() << "\n"
        << "read_verilog -sv -defer " << sources << "\n"
-       << "chparam -set RomFile \"" << (set / "coeffs.mem").string() << "\" " << top << "\n"
-       << "synth_xilinx -family xc7 -top " << top << " -flatten\n"
-       << "tee -o " << stat_path.string()
-       << " stat -tech xilinx\n"
+       << "chparam -set RomFile \"" << (set / "coeffs.mem").string() << "\" " << top
+       << "\n"
+       // -abc9: timing-driven LUT mapping with the same cell delays the estimate uses.
+       << "synth_xilinx -family xc7 -top " << top << " -flatten -abc9\n"
+       << "tee -o " << stat_path.string() << " stat -tech xilinx\n"
+       << "write_json " << netlist_path.string()
+       << "\n"
+       // The cell models with their specify blocks; `sta` elaborates them for each parameter set
+       // in use, and write_rtlil hands those to the estimate (cell_timing.h).
+       << "read_verilog -lib -specify +/xilinx/cells_sim.v\n"
+       << "tee -o " << sta_path.string() << " sta\n"
+       << "select =" << top << "/t:* %M =$paramod*\n"
+       << "write_rtlil -selected " << models_path.string() << "\n"
+       << "select -clear\n"
        // Logic depth: cut the netlist at every register (flip-flops, the DSP48E1 with its
        // internal registers, block RAM); ltp then counts the cells on the longest path.
        << "delete t:FDRE t:FDSE t:FDCE t:FDPE t:DSP48E1 t:RAMB36E1 t:RAMB18E1\n"
@@ -80,6 +88,15 @@ YosysRun run_yosys(const SynthesisRequest& request, const std::string& top, cons
                           " (reproduce: " + request.yosys + " -s " + script.string() + ")");
   }
   run.utilisation = parse_utilisation(read_text(stat_path), read_text(ltp_path));
+  run.yosys_sta_ps = parse_sta_latest_arrival(read_text(sta_path));
+  try {
+    const CellTimingLibrary models = CellTimingLibrary::parse(read_text(models_path));
+    run.timing =
+        estimate_timing(read_text(netlist_path), top, models, request.period_ps, request.allowance);
+  } catch (const std::runtime_error& e) {  // CellTimingError, TimingEstimateError
+    throw SynthesisFailed("timing estimate of " + top + ": " + e.what() + " (netlist " +
+                          netlist_path.string() + ", cell models " + models_path.string() + ")");
+  }
   return run;
 }
 
@@ -144,6 +161,39 @@ std::string check_utilisation(const Utilisation& core, const Utilisation& top,
   return failures;
 }
 
+std::optional<int> parse_sta_latest_arrival(const std::string& sta_text) {
+  static const std::regex latest(R"(Latest arrival time in '[^']*' is (-?\d+):)");
+  std::smatch m;
+  if (!std::regex_search(sta_text, m, latest)) return std::nullopt;
+  return std::stoi(m[1]);
+}
+
+std::string check_timing(const SynthesisResult& result, double min_slack_percent) {
+  std::string failures;
+  for (const YosysRun* run : {&result.core, &result.top}) {
+    if (run->timing.clocks.empty()) {
+      failures += fmt::format("{} ({}): no register-to-register path was timed\n", run->top,
+                              result.set_name);
+    }
+    for (const ClockEstimate& c : run->timing.clocks) {
+      const double percent = 100.0 * c.slack_ps / c.period_ps;
+      if (percent >= min_slack_percent) continue;
+      failures += fmt::format(
+          "{} ({}), clock {}: estimated slack {:.3f} ns is {:.2f} % of the {:.2f} ns period, "
+          "below {:.1f} % (worst path {:.2f} ns)\n",
+          run->top, result.set_name, c.clock, c.slack_ps / 1000.0, percent, c.period_ps / 1000.0,
+          min_slack_percent, c.worst_ps / 1000.0);
+    }
+    if (!run->timing.types_without_model.empty()) {
+      std::string types;
+      for (const std::string& t : run->timing.types_without_model) types += " " + t;
+      failures += fmt::format("{} ({}): cells without a timing model break paths:{}\n", run->top,
+                              result.set_name, types);
+    }
+  }
+  return failures;
+}
+
 fs::path find_coeff_set(const fs::path& data_dir, const std::string& coeffs) {
   // A relative folder is looked up from the working folder, then from the data folder.
   fs::path set = fs::absolute(coeffs);
@@ -162,97 +212,11 @@ SynthesisResult synthesise(const SynthesisRequest& request) {
   fs::create_directories(work);
   SynthesisResult result;
   result.set_name = request.coeff_set.filename().string();
-  // On failure the work folder stays: the message names its log.
+  // On failure the work folder stays: the message names its log and files.
   result.core = run_yosys(request, "iir_core", work);
   result.top = run_yosys(request, "basys3_top", work);
   fs::remove_all(work);
   return result;
-}
-
-namespace {
-
-void write_utilisation_table(std::ostream& md, const Utilisation& c, const Utilisation& t,
-                             const DeviceCapacity& device) {
-  md << "| resource | `iir_core` | share | `basys3_top` | share |\n|---|---|---|---|---|\n";
-  md << fmt::format("| LUT6 sites (logic + distributed RAM) | {} | {} | {} | {} |\n", c.lut_sites(),
-                    percent(c.lut_sites(), device.luts), t.lut_sites(),
-                    percent(t.lut_sites(), device.luts))
-     << fmt::format("| of which logic (Yosys estimated LCs) | {} | | {} | |\n", c.estimated_lcs,
-                    t.estimated_lcs)
-     << fmt::format("| of which distributed RAM (load registers) | {} | | {} | |\n", c.lutram_luts,
-                    t.lutram_luts)
-     << fmt::format("| LUT cells (LUT1-LUT6) | {} | {} | {} | {} |\n", c.luts,
-                    percent(c.luts, device.luts), t.luts, percent(t.luts, device.luts))
-     << fmt::format("| INV cells | {} | | {} | |\n", c.inverters, t.inverters)
-     << fmt::format("| FF (FDRE/FDSE/FDCE/FDPE) | {} | {} | {} | {} |\n", c.ffs,
-                    percent(c.ffs, device.ffs), t.ffs, percent(t.ffs, device.ffs))
-     << fmt::format("| CARRY4 | {} | | {} | |\n", c.carry4, t.carry4)
-     << fmt::format("| DSP48E1 | {} | {} | {} | {} |\n", c.dsp48e1, percent(c.dsp48e1, device.dsps),
-                    t.dsp48e1, percent(t.dsp48e1, device.dsps))
-     << fmt::format("| BRAM36 | {} | {} | {} | {} |\n", c.bram36, percent(c.bram36, device.bram36),
-                    t.bram36, percent(t.bram36, device.bram36))
-     << fmt::format("| IO (IBUF/OBUF) | {} | {} | {} | {} |\n", c.ios, percent(c.ios, device.ios),
-                    t.ios, percent(t.ios, device.ios))
-     << fmt::format("| logic depth (`ltp`, cells) | {} | | {} | |\n\n", c.logic_depth,
-                    t.logic_depth);
-}
-
-void write_all_cells_table(std::ostream& md, const Utilisation& c, const Utilisation& t) {
-  md << "All cells (`stat -tech xilinx`):\n\n| cell | `iir_core` | `basys3_top` |\n|---|---|---|\n";
-  std::map<std::string, std::pair<int, int>> all;
-  for (const auto& [cell, n] : c.cells) all[cell].first = n;
-  for (const auto& [cell, n] : t.cells) all[cell].second = n;
-  for (const auto& [cell, n] : all)
-    md << "| " << cell << " | " << n.first << " | " << n.second << " |\n";
-}
-
-}  // namespace
-
-std::string synthesis_report_markdown(const SynthesisResult& result, double max_core_lut_percent,
-                                      const std::string& failures, const DeviceCapacity& device) {
-  const std::string& set_name = result.set_name;
-  std::ostringstream md;
-  md << "<!-- generated by: "
-     << runtime::generated_by("flange synth --coeffs coeffs/" + set_name +
-                              " --out docs/synthesis.md")
-     << "; Yosys synth_xilinx -family xc7; do not edit -->\n"
-     << "# Synthesis (Yosys, XC7A35T)\n\n"
-     << "Coefficient set: `" << set_name << "`. Yosys `synth_xilinx -family xc7 -flatten`, then "
-     << "`stat -tech xilinx`; percentages of the XC7A35T-1CPG236C (" << device.luts << " LUTs, "
-     << device.ffs << " flip-flops, " << device.dsps << " DSP48E1, " << device.bram36 << " BRAM36, "
-     << device.ios << " user I/O). Regenerate with `build/flange synth --coeffs "
-     << "coeffs/" << set_name << " --out docs/synthesis.md`.\n\n";
-  write_utilisation_table(md, result.core.utilisation, result.top.utilisation, device);
-  md << "LUTs: the XC7A35T's 20,800 LUTs are LUT6 sites, each of which can hold two smaller LUTs "
-        "with shared inputs; the share is occupied sites over 20,800: Yosys's `Estimated number of "
-        "LCs` for logic plus the sites of the distributed-RAM cells (RAM32M: 4), which Yosys does "
-        "not count as LCs. The raw LUT cell count is the upper bound, shown beside it. INV cells "
-        "are counted "
-        "apart: Vivado folds them into the logic they drive.\n\n"
-        "The core's IO row counts its ports as if it were a top level (it is not one on the "
-        "board). Logic depth: `ltp -noff` after deleting every flip-flop, DSP48E1 and block RAM "
-        "cell, i.e. the longest chain of LUT, CARRY4, MUXF7/F8 and I/O buffer cells between "
-        "registers or pins. It is an estimate only: Yosys has no timing model and there is no "
-        "place and route here (use the Vivado script, docs/board.md, for real timing).\n\n"
-        "A core shared by several channels (`NumChannels` > 1) grows by its load registers and "
-        "their read multiplexer; the core for 1, 4 and 12 channels and for a set per channel is "
-        "tabulated in [core.md](core.md#channels) (`bash bench/synth_channels.sh`).\n\n";
-  write_all_cells_table(md, result.core.utilisation, result.top.utilisation);
-  md << "\nChecks (the `FlangeSynth.*` CTest test): each multiply-accumulate maps to exactly one "
-     << "DSP48E1 (core and top: 1); the core occupies at most " << max_core_lut_percent
-     << " % of the LUT6 sites: " << (failures.empty() ? "**pass**" : "**FAIL**") << ".\n";
-  return md.str();
-}
-
-std::string synthesis_summary_line(const SynthesisResult& result, const DeviceCapacity& device) {
-  const Utilisation& c = result.core.utilisation;
-  const Utilisation& t = result.top.utilisation;
-  return fmt::format(
-      "{}: core LUT {} ({}), FF {}, DSP48E1 {}; top LUT {} ({}), FF {}, DSP48E1 {}, IO {}; "
-      "depth {}/{} cells; {:.1f} s",
-      result.set_name, c.luts, percent(c.luts, device.luts), c.ffs, c.dsp48e1, t.luts,
-      percent(t.luts, device.luts), t.ffs, t.dsp48e1, t.ios, c.logic_depth, t.logic_depth,
-      result.core.seconds + result.top.seconds);
 }
 
 }  // namespace flange::tb

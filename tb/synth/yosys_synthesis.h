@@ -1,13 +1,19 @@
 // SPDX-License-Identifier: MIT
-// Yosys `synth_xilinx -family xc7` of the IIR core and of the Basys-3 top for one coefficient set:
-// utilisation against the XC7A35T, a logic-depth estimate (`ltp`), the one-DSP48E1 and LUT-share
-// checks, and the Markdown report (docs/synthesis.md). `flange synth` is its command line.
+// Yosys `synth_xilinx -family xc7 -abc9` of the IIR core and of the Basys-3 top for one
+// coefficient set: utilisation against the XC7A35T, a logic-depth estimate (`ltp`), the pre-route
+// timing estimate (timing_estimate.h), the one-DSP48E1, LUT-share and slack checks, and the
+// Markdown and JSON reports (docs/synthesis.md). `flange synth` is its command line.
 #pragma once
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "timing_estimate.h"
+#include "vivado_report.h"
 
 namespace flange::tb {
 
@@ -45,6 +51,10 @@ Utilisation parse_utilisation(const std::string& stat_text, const std::string& l
 std::string check_utilisation(const Utilisation& core, const Utilisation& top,
                               double max_core_lut_percent, const DeviceCapacity& device = {});
 
+// Yosys's own `sta` figure: "Latest arrival time in 'top' is N:" -> N ps (cells only, from the
+// pins at 0 ps, the clock through its buffers, any endpoint); nullopt when it found no path.
+std::optional<int> parse_sta_latest_arrival(const std::string& sta_text);
+
 // Yosys failed; the message names the top, the log and the command that reproduces it.
 class SynthesisFailed : public std::runtime_error {
  public:
@@ -55,11 +65,15 @@ struct SynthesisRequest {
   std::filesystem::path data_dir;   // holds rtl/ (runtime/data_dir.h)
   std::filesystem::path coeff_set;  // folder with iir_coeffs_pkg.sv and coeffs.mem
   std::string yosys = "yosys";      // the executable
+  int period_ps = 10000;            // the board's 100 MHz clock
+  NetAllowance allowance;
 };
 
 struct YosysRun {
   std::string top;  // "iir_core" or "basys3_top"
   Utilisation utilisation;
+  TimingEstimate timing;
+  std::optional<int> yosys_sta_ps;  // parse_sta_latest_arrival of the same netlist
   std::string script_path;
   double seconds = 0;
 };
@@ -78,12 +92,34 @@ std::filesystem::path find_coeff_set(const std::filesystem::path& data_dir,
 // Runs Yosys on the core and on the board top (tens of seconds). Throws SynthesisFailed.
 SynthesisResult synthesise(const SynthesisRequest& request);
 
-// The report: utilisation, shares of the device, every cell, and the checks' verdict.
-std::string synthesis_report_markdown(const SynthesisResult& result, double max_core_lut_percent,
-                                      const std::string& failures,
+// The timing check: "" when every clock of every top keeps at least `min_slack_percent` of the
+// period as estimated slack, otherwise one line per top that does not.
+std::string check_timing(const SynthesisResult& result, double min_slack_percent);
+
+// What the reports say besides the results: the checks' limits, their verdict, the command.
+struct ReportSettings {
+  std::string command;  // the flange synth command line that makes the report
+  double max_core_lut_percent = 0;
+  double min_slack_percent = 0;
+  std::string failures;  // "" when every check passed
+  NetAllowance allowance;
+  std::optional<VivadoReport> vivado;  // routed figures of the board top (--vivado-report)
+};
+
+// The Markdown report: per set utilisation, shares of the device, every cell; the timing
+// estimate of every top with its five worst paths, Vivado's figures beside it when given; and
+// the checks' verdict.
+std::string synthesis_report_markdown(const std::vector<SynthesisResult>& results,
+                                      const ReportSettings& settings,
                                       const DeviceCapacity& device = {});
 
-// One line: the set, LUTs, FFs, DSPs and depth of core and top, and the time Yosys took.
+// The same figures as JSON (docs/synthesis.md, "JSON").
+std::string synthesis_report_json(const std::vector<SynthesisResult>& results,
+                                  const ReportSettings& settings,
+                                  const DeviceCapacity& device = {});
+
+// One line: the set, LUTs, FFs, DSPs, depth and estimated slack of core and top, the time Yosys
+// took.
 std::string synthesis_summary_line(const SynthesisResult& result,
                                    const DeviceCapacity& device = {});
 
