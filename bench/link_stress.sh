@@ -5,9 +5,12 @@
 # and the loss test of the plain link (tb/board/board_stream_test), each RUNS times, one process
 # per test and run, while BUSY busy loops that the script starts (and stops on exit) load the
 # machine beside whatever else runs on it. A stress run, not a test: CTest runs each test once.
-#   bash bench/link_stress.sh [BUILD_DIR] [RUNS] [BUSY] [PICK]   (defaults: build 200 2 .)
+#   bash bench/link_stress.sh [BUILD_DIR] [RUNS] [BUSY] [PICK] [SIDE_BY_SIDE]
+#                                                     (defaults: build 200 2 . 1)
 # PICK, a regular expression, keeps the tests whose names match it (BoardFtdiStream: the FTDI
-# link's). Needs the BUILD_DIR test binaries of the tests it runs. Writes BUILD_DIR/link_stress/:
+# link's). SIDE_BY_SIDE runs that many runs at a time (each one test after another), which loads
+# the machine further and shortens the wall-clock time: the tests mostly wait for the link's
+# timeouts. Needs the BUILD_DIR test binaries of the tests it runs. Writes BUILD_DIR/link_stress/:
 # runs.csv (run,test,outcome,seconds: one row per test and run), the log of every failed run
 # (fail-<run>-<test>.log) and summary.txt (per test and overall: runs, failures, min/median/max
 # seconds; the load average at the start and at the end). Exit status 0 when every run passed,
@@ -18,13 +21,18 @@ build="$(realpath -m "${1:-$here/../build}")"
 runs="${2:-200}"
 busy="${3:-2}"
 pick="${4:-.}"
+side_by_side="${5:-1}"
 out="$build/link_stress"
 
 # The tests: binary, then gtest name. The FTDI link's reset, loss and late-reply tests (every one
-# that recovers a session: a replay after a reset, go-back-N after a loss, stray replies after an
-# early timeout, the stop after too many resets) and the plain link's loss test.
+# that recovers a session: a replay after a reset, with replies held past the timeout, after a
+# damaged request the board took; go-back-N after a loss; stray replies after an early timeout;
+# the stop after too many resets) and the plain link's loss test.
 tests=(
   "board_ftdi_stream_test BoardFtdiStream.BoardResetsDuringTheSessionAreRecoveredByAReplay"
+  "board_ftdi_stream_test BoardFtdiStream.RepliesHeldPastTheTimeoutAroundResetsAreRecoveredExactly"
+  "board_ftdi_stream_test BoardFtdiStream.ADamagedRequestTheBoardTakesForAnotherChannelIsRecovered"
+  "board_ftdi_stream_test BoardFtdiStream.ADamagedRequestTheBoardFiltersOnAnotherChannelIsRecovered"
   "board_ftdi_stream_test BoardFtdiStream.LossCorruptionAndLostRepliesGiveEveryOutputOnce"
   "board_ftdi_stream_test BoardFtdiStream.RepliesLateForTheTimeoutAreStrayNotFilteredTwice"
   "board_ftdi_stream_test BoardFtdiStream.ABoardThatKeepsResettingStopsTheSession"
@@ -54,32 +62,45 @@ for ((b = 0; b < busy; ++b)); do
 done
 
 mkdir -p "$out"
-rm -f "$out"/fail-*.log
+rm -f "$out"/fail-*.log "$out"/runs-*.csv
 csv="$out/runs.csv"
-echo "run,test,outcome,seconds" >"$csv"
 load_start=$(cut -d' ' -f1-3 /proc/loadavg)
-failed=0
+
+# Runs first, first + side_by_side, ... each test in its own process; one CSV per worker.
+worker() {
+  local first=$1 run t binary name start end outcome
+  for ((run = first; run <= runs; run += side_by_side)); do
+    for t in "${tests[@]}"; do
+      binary=${t%% *}
+      name=${t#* }
+      start=$(date +%s.%N)
+      if "tb/$binary" --gtest_filter="$name" >"$out/current-$first.log" 2>&1; then
+        outcome=pass
+      else
+        outcome=fail
+        cp "$out/current-$first.log" "$out/fail-$run-$name.log"
+      fi
+      end=$(date +%s.%N)
+      printf '%d,%s,%s,%.3f\n' "$run" "$name" "$outcome" \
+        "$(awk "BEGIN { print $end - $start }")" >>"$out/runs-$first.csv"
+    done
+    (( run % 20 == 0 )) && echo "link_stress.sh: run $run of $runs done"
+  done
+  rm -f "$out/current-$first.log"
+}
 # Working directory: the build folder, as under CTest.
 cd "$build"
-for ((run = 1; run <= runs; ++run)); do
-  for t in "${tests[@]}"; do
-    binary=${t%% *}
-    name=${t#* }
-    start=$(date +%s.%N)
-    if "tb/$binary" --gtest_filter="$name" >"$out/current.log" 2>&1; then
-      outcome=pass
-    else
-      outcome=fail
-      failed=1
-      cp "$out/current.log" "$out/fail-$run-$name.log"
-    fi
-    end=$(date +%s.%N)
-    printf '%d,%s,%s,%.3f\n' "$run" "$name" "$outcome" "$(awk "BEGIN { print $end - $start }")" \
-      >>"$csv"
-  done
-  (( run % 20 == 0 )) && echo "link_stress.sh: $run of $runs runs done"
+workers=()
+for ((w = 1; w <= side_by_side; ++w)); do
+  worker "$w" &
+  workers+=("$!")
+  loops+=("$!")  # stopped with the busy loops if the script is stopped
 done
-rm -f "$out/current.log"
+wait "${workers[@]}"
+{ echo "run,test,outcome,seconds"; cat "$out"/runs-*.csv | sort -t, -k1,1n -s; } >"$csv"
+rm -f "$out"/runs-*.csv
+failed=0
+grep -q ',fail,' "$csv" && failed=1
 load_end=$(cut -d' ' -f1-3 /proc/loadavg)
 
 # runs, failures, min/median/max seconds of the rows whose test matches $1 (a regex).
@@ -95,6 +116,6 @@ summarise() {
 {
   for t in "${tests[@]}"; do summarise "^${t#* }\$" "${t#* }"; done
   summarise "." "all tests ($runs runs of ${#tests[@]})"
-  echo "busy loops: $busy; load average (1, 5, 15 min) at the start: $load_start, at the end: $load_end"
+  echo "busy loops: $busy; runs side by side: $side_by_side; load average (1, 5, 15 min) at the start: $load_start, at the end: $load_end"
 } | tee "$out/summary.txt"
 exit "$failed"
