@@ -299,13 +299,16 @@ void expect_a_false_frame_recovered(std::int16_t word) {
     dropped = dropped || drop;
     return !drop;
   };
-  const Session s = stream(std::move(options), in, 16, 100);
+  // Stop-and-wait: the board has taken SEQ 1 to 84 when the damaged SEQ 85 comes, and the next
+  // byte on the wire is the SYNC of SEQ 85 sent again, whatever the machine's load (with a window
+  // the board's queue can overflow under load before SEQ 85, and the damaged frame is then
+  // dropped for its order instead of taken).
+  const Session s = stream(std::move(options), in, 1, 100);
   EXPECT_EQ(s.counts.samples, 100u);
   EXPECT_EQ(s.counts.mismatches, 0u) << s.counts.first_mismatch;
   EXPECT_EQ(s.counts.false_frames, 1u);
   EXPECT_EQ(s.counts.board_resets, 0u);
-  EXPECT_LE(s.counts.replayed, 84u) << "at most the samples before it";
-  EXPECT_GE(s.counts.replayed, 84u - 16u) << "all but those in flight with it";
+  EXPECT_EQ(s.counts.replayed, 84u) << "the samples before it";
   expect_exactly_the_model(in, s.out);
 }
 
