@@ -80,9 +80,9 @@ struct PtyBoardOptions {
   // The protocol model (basys3_top_model.h) instead of the Verilated top: as fast as the link
   // it is given, where the Verilated top is slower than a real 921600-baud wire.
   bool protocol_model = false;
-  // With the FTDI chip: after each btnC and each windowed session reset that reaches the board,
-  // the chip holds the board's replies this long (FtdiLink::hold_until; a session reset that
-  // comes while it holds them does not extend the hold). Longer than the host's reply timeout,
+  // With the FTDI chip: after each btnC, and after the first windowed session reset that reaches
+  // the board at the start and after each btnC (not its copies the host sends again), the chip
+  // holds the board's replies this long (FtdiLink::hold_until). Longer than the host's timeout,
   // it makes the host send the session reset, and the requests in flight, again before their
   // replies come, whatever the machine's load (docs/board.md, "Recovery under stress").
   std::chrono::milliseconds hold_replies{0};
@@ -203,13 +203,15 @@ class PtyBoard {
         bench.press_reset();
         ++resets_;
         if (hold) ftdi->hold_until(Clock::now() + options_.hold_replies);
+        hold_armed_ = true;
       }
       bench.send({byte});
       ++fed_index_;
       std::copy(last_fed_.begin() + 1, last_fed_.end(), last_fed_.begin());
       last_fed_.back() = byte;
-      if (hold && !ftdi->holding(Clock::now()) && is_windowed_session_reset(last_fed_)) {
+      if (hold && hold_armed_ && is_windowed_session_reset(last_fed_)) {
         ftdi->hold_until(Clock::now() + options_.hold_replies);
+        hold_armed_ = false;
       }
     }
   }
@@ -258,6 +260,7 @@ class PtyBoard {
   PtyBoardOptions options_;
   std::uint64_t host_index_ = 0, fed_index_ = 0, board_index_ = 0;
   std::array<std::uint8_t, host::board::kRequestBytes> last_fed_{};  // the last frame's worth
+  bool hold_armed_ = true;  // the next windowed session reset starts a hold
   std::atomic<bool> stop_{false};
   std::atomic<bool> assertion_failed_{false};
   std::atomic<int> resets_{0};
