@@ -21,8 +21,11 @@ BoardLink::BoardLink(ByteStream& port, const LinkSettings& settings)
 
 namespace {
 
-// A reset seen while a recovery replays the session: the recovery starts again.
-struct ResetDuringRecovery {};
+// A reset (or a false frame) seen while a recovery replays the session: the recovery starts
+// again.
+struct ResetDuringRecovery {
+  bool board_reset = true;
+};
 
 bool is_command(const std::array<std::uint8_t, board::kRequestBytes>& frame) {
   return frame[0] == board::kCommandSync;
@@ -75,7 +78,7 @@ void BoardLink::enqueue(std::uint8_t channel, std::int16_t word, std::string wha
   send(in_flight_.back());
 }
 
-void BoardLink::recover_from_reset() {
+void BoardLink::recover_from_reset(bool board_reset) {
   // The requests in flight go again once the filters are rebuilt: what the board answered them
   // so far may be its fresh filters'.
   std::deque<InFlight> pending;
@@ -86,7 +89,9 @@ void BoardLink::recover_from_reset() {
   try {
     for (;;) {
       in_flight_.clear();
-      if (++counts_.board_resets > kMostBoardResets) {
+      if (!board_reset) {
+        ++counts_.false_frames;
+      } else if (++counts_.board_resets > kMostBoardResets) {
         throw std::runtime_error(fmt::format(
             "the board on {} was reset {} times during the session (btnC or power); each reset "
             "replays the session, so the link gives up: check the board's supply and its button",
@@ -102,7 +107,8 @@ void BoardLink::recover_from_reset() {
         }
         replay_taken();
         break;
-      } catch (const ResetDuringRecovery&) {
+      } catch (const ResetDuringRecovery& again) {
+        board_reset = again.board_reset;
       }
     }
   } catch (...) {
@@ -186,10 +192,12 @@ void BoardLink::pump() {
     if (std::optional<board::Reply> reply = scanner_.push(buffer[i])) take(*reply);
   }
   counts_.discarded_bytes = scanner_.discarded();
-  if (reset_seen_) {
+  if (reset_seen_ || false_frame_seen_) {
+    const bool board_reset = reset_seen_;
     reset_seen_ = false;
-    if (recovering_) throw ResetDuringRecovery{};
-    recover_from_reset();
+    false_frame_seen_ = false;
+    if (recovering_) throw ResetDuringRecovery{board_reset};
+    recover_from_reset(board_reset);
     return;
   }
   while (!in_flight_.empty() && in_flight_.front().answered) {
@@ -212,6 +220,21 @@ void BoardLink::take(const board::Reply& reply) {
     return f.request.seq == reply.seq && f.request.channel == reply.channel;
   });
   if (match == in_flight_.end() || match->answered) {
+    // A windowed sample reply under the SEQ of a request still unanswered, for another CHANNEL:
+    // the board took a damaged frame for that request and will drop the request itself (its SEQ
+    // is answered) while it takes the ones after it. Replies come in the order of the frames, so
+    // no earlier session's reply can come now. Recovered from as from a reset (pump).
+    constexpr std::uint8_t kWindowedOnly = board::kStatusWindowed | board::kStatusSessionReset;
+    const bool false_frame =
+        (reply.status & kWindowedOnly) == board::kStatusWindowed &&
+        std::any_of(in_flight_.begin(), in_flight_.end(), [&](const InFlight& f) {
+          return !f.answered && !is_command(f.frame) && f.request.seq == reply.seq &&
+                 f.request.channel != reply.channel;
+        });
+    if (false_frame) {
+      false_frame_seen_ = true;
+      return;
+    }
     ++counts_.stray_replies;
     return;
   }

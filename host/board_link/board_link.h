@@ -44,6 +44,9 @@ struct LinkCounts {
   std::uint64_t discarded_bytes = 0;  // received bytes that were part of no intact reply
   std::uint64_t board_resets = 0;     // resets of the board during the session, recovered from
   std::uint64_t replayed = 0;         // samples sent again after a reset to rebuild the filters
+  // Damaged requests the board took for valid ones under the SEQ of a request in flight (a lost
+  // byte and the next SYNC can pass the CRC-8), recovered from as from a reset.
+  std::uint64_t false_frames = 0;
 };
 
 class BoardLink {
@@ -102,9 +105,10 @@ class BoardLink {
   void enqueue(std::uint8_t channel, std::int16_t word, std::string what, OnReply on_reply,
                bool replay);
   void replay_taken();
-  // After replies showed a board reset: restart the session, replay every sample taken, then send
-  // the requests that were in flight again, in order, with new SEQs.
-  void recover_from_reset();
+  // After replies showed a board reset (`board_reset`) or a false frame: restart the session,
+  // replay every sample taken, then send the requests that were in flight again, in order, with
+  // new SEQs.
+  void recover_from_reset(bool board_reset);
 
   ByteStream& port_;
   LinkSettings settings_;
@@ -122,7 +126,8 @@ class BoardLink {
   };
   std::vector<TakenSample> taken_;
   int board_channels_ = 0;
-  bool reset_seen_ = false;  // a reply to a request in flight was not of a windowed session
+  bool reset_seen_ = false;        // a reply to a request in flight was not of a windowed session
+  bool false_frame_seen_ = false;  // a reply under a request's SEQ names another CHANNEL
   bool recovering_ = false;
 };
 

@@ -109,6 +109,7 @@ StreamCounts ChannelSession::counts() const {
   counts.discarded_bytes = link_.counts().discarded_bytes;
   counts.board_resets = link_.counts().board_resets;
   counts.replayed = link_.counts().replayed;
+  counts.false_frames = link_.counts().false_frames;
   return counts;
 }
 
@@ -162,6 +163,11 @@ std::string stream_summary_line(const StreamCounts& counts) {
     line += fmt::format(
         "; the board was reset {} time(s), {} samples replayed to rebuild its filters",
         counts.board_resets, counts.replayed);
+  }
+  if (counts.false_frames > 0) {
+    line += fmt::format(
+        "; the board took {} damaged request(s) for valid ones, recovered by a replay",
+        counts.false_frames);
   }
   if (counts.checked) {
     line += fmt::format("; {} mismatches against the model", counts.mismatches);

@@ -31,6 +31,7 @@ struct StreamCounts {
   std::uint64_t discarded_bytes = 0;
   std::uint64_t board_resets = 0;  // board resets during the session, recovered from by a replay
   std::uint64_t replayed = 0;      // samples sent again to rebuild the filters after them
+  std::uint64_t false_frames = 0;  // damaged requests the board took, recovered by a replay
   bool checked = false;          // replies were compared with the model
   std::uint64_t mismatches = 0;  // replies that differ from the model (word or SATURATION)
   std::string first_mismatch;    // one line on the first of them

@@ -136,8 +136,65 @@ class Basys3TopChannels : public ::testing::Test {
   int send_damaged(Fault fault, const std::vector<std::uint8_t>& frame_bytes, std::mt19937& rng,
                    std::vector<std::uint8_t>& prefix);
 
+  // A windowed session's new frame on every channel (SEQ seq, seq + 1, ...): each reply checked
+  // against its channel's model, with OVERRUN where `overrun` says. Keeps the frames and replies.
+  void new_frame_on_every_channel(std::uint8_t& seq, int n, std::mt19937& rng,
+                                  const std::vector<bool>& overrun) {
+    last_.resize(kChannels);
+    stored_.resize(kChannels);
+    for (int c = 0; c < kChannels; ++c) {
+      last_[c] = {seq, static_cast<std::uint8_t>(c), wheel_word(c, n, rng)};
+      const auto status = static_cast<std::uint8_t>(
+          frame::kStatusWindowed | (overrun[c] ? frame::kStatusOverrun : 0));
+      stored_[c] = expect_filtered(seq++, c, last_[c].sample, status);
+    }
+  }
+  static frame::Reply retransmitted(frame::Reply reply) {
+    reply.status |= frame::kStatusRetransmit;
+    return reply;
+  }
+  // Back to back, 700 frames: retransmissions of every channel's last frame, round robin, and
+  // every 16th frame an unknown command naming the next channel (accepted and ignored, or dropped
+  // without marking a channel: DroppedCommandMarksNoChannel). A reply takes longer than a request,
+  // so the queue (32) fills and frames are dropped. Every reply must be a frame's stored reply
+  // with RETRANSMIT, nothing else; returns, per channel, whether a retransmission of it was
+  // dropped (fewer replies than were sent).
+  std::vector<bool> overflow_with_retransmissions() {
+    std::vector<std::uint8_t> burst;
+    std::vector<int> sent(kChannels, 0), answered(kChannels, 0);
+    for (int k = 0; k < 700; ++k) {
+      const frame::Request& r = last_[static_cast<std::size_t>(k % kChannels)];
+      const bool command = k % 16 == 15;
+      const auto f = command ? frame::encode_command(r.seq, 0x0077, r.channel)
+                             : frame::encode_request(r);
+      if (!command) ++sent[r.channel];
+      burst.insert(burst.end(), f.begin(), f.end());
+    }
+    for (const frame::Reply& got : exchange(burst)) {
+      EXPECT_LT(got.channel, kChannels);
+      if (got.channel >= kChannels) continue;
+      EXPECT_EQ(got, retransmitted(stored_[got.channel])) << "channel " << int{got.channel};
+      ++answered[got.channel];
+    }
+    std::vector<bool> dropped(kChannels);
+    for (int c = 0; c < kChannels; ++c) dropped[c] = answered[c] < sent[c];
+    return dropped;
+  }
+  // One retransmission of every channel's last frame, each waited for: the reply it had, with
+  // RETRANSMIT and without OVERRUN, whatever the channel has pending.
+  void retransmit_each_once() {
+    for (int c = 0; c < kChannels; ++c) {
+      const auto f = frame::encode_request(last_[c]);
+      const std::vector<frame::Reply> got = exchange({f.begin(), f.end()});
+      ASSERT_EQ(got.size(), 1u) << "channel " << c;
+      EXPECT_EQ(got[0], retransmitted(stored_[c])) << "channel " << c;
+    }
+  }
+
   std::unique_ptr<BoardBench> bench_;
   std::unique_ptr<model::IirCore> model_;
+  std::vector<frame::Request> last_;  // every channel's last new frame (windowed tests)
+  std::vector<frame::Reply> stored_;  // and its reply
 };
 
 TEST_F(Basys3TopChannels, InterleavedChannelsMatchTheModelBitForBit) {
@@ -374,6 +431,40 @@ TEST_F(Basys3TopChannels, DroppedCommandMarksNoChannel) {
   for (int k = expected - first; k < 320; ++k)
     tail_dropped |= words[static_cast<std::size_t>(k)] != 0;
   EXPECT_EQ((one[0].status & frame::kStatusOverrun) != 0, tail_dropped);
+}
+
+TEST_F(Basys3TopChannels, OverrunBehindRetransmissionsWaitsForTheChannelsNextNewReply) {
+  // A windowed session whose queue a host overflows with retransmissions and commands of every
+  // channel. A dropped frame's mark rides on its channel's next accepted frame; when that is a
+  // retransmission, whose reply repeats the stored STATUS, the board keeps the channel's OVERRUN
+  // pending: retransmissions neither report nor clear it, the channel's next new reply reports it
+  // and the one after does not. A session reset reports the whole board's pending OVERRUN and
+  // clears it.
+  std::mt19937 rng(46);
+  std::uint8_t seq = 0;
+  const auto start = frame::encode_command(seq, frame::kCommandResetWindowed);
+  const std::vector<bool> none(kChannels, false), every(kChannels, true);
+  ASSERT_EQ(exchange({start.begin(), start.end()}),
+            (std::vector<frame::Reply>{{seq++, 0, kChannels,
+                                        frame::kStatusSessionReset | frame::kStatusWindowed}}));
+  new_frame_on_every_channel(seq, 0, rng, none);
+  EXPECT_EQ(overflow_with_retransmissions(), every) << "a frame of every channel is dropped";
+  retransmit_each_once();  // the marks still waiting in the queue's drop bits become pending
+  retransmit_each_once();
+  new_frame_on_every_channel(seq, 1, rng, every);
+  new_frame_on_every_channel(seq, 2, rng, none);
+  EXPECT_TRUE(bench_->leds() & kLedOverrun);
+
+  EXPECT_EQ(overflow_with_retransmissions(), every);
+  retransmit_each_once();
+  const auto reset = frame::encode_command(seq, frame::kCommandResetWindowed, 5);
+  ASSERT_EQ(exchange({reset.begin(), reset.end()}),
+            (std::vector<frame::Reply>{{seq++, 5, kChannels,
+                                        frame::kStatusSessionReset | frame::kStatusWindowed |
+                                            frame::kStatusOverrun}}));
+  model_ = std::make_unique<model::IirCore>(model::load_core_config(kBoardFilterJson));
+  new_frame_on_every_channel(seq, 3, rng, none);
+  EXPECT_FALSE(bench_->leds() & kLedLinkError);
 }
 
 TEST_F(Basys3TopChannels, ChannelsTheCoreLacksAreAnsweredAndNeverFiltered) {

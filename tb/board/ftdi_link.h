@@ -63,9 +63,16 @@ class FtdiLink {
     }
     tx_wire_free_ = at;
   }
+  // The chip hands the host nothing before `until` (a host whose USB stack stops polling it for
+  // a while), then catches up: what the board sent meanwhile goes at once, in full packets and
+  // a short one. A later `until` extends the hold; an earlier one changes nothing.
+  void hold_until(Time until) { hold_until_ = std::max(hold_until_, until); }
+  bool holding(Time now) const { return now < hold_until_; }
+
   // The packets the chip has handed to the host by `now`, as one byte string.
   std::vector<std::uint8_t> to_host(Time now) {
     std::vector<std::uint8_t> out;
+    if (holding(now)) return out;
     while (frame_start_ + kUsbFrame <= now) {
       frame_start_ += kUsbFrame;
       for (std::uint8_t byte : take_due(on_wire_, frame_start_)) buffer_.push_back(byte);
@@ -80,7 +87,9 @@ class FtdiLink {
   Time next_event(Time idle) const {
     Time next = idle;
     if (!to_board_.empty()) next = std::min(next, to_board_.front().first);
-    if (!on_wire_.empty() || !buffer_.empty()) next = std::min(next, frame_start_ + kUsbFrame);
+    if (!on_wire_.empty() || !buffer_.empty()) {
+      next = std::min(next, std::max(frame_start_ + kUsbFrame, hold_until_));
+    }
     return next;
   }
 
@@ -107,6 +116,7 @@ class FtdiLink {
   Time frame_start_;                    // the last USB frame boundary handled
   Time last_packet_;                    // the latency timer restarts here
   Time rx_wire_free_, tx_wire_free_;    // when each wire's last byte ends
+  Time hold_until_{};                   // nothing goes to the host before it
   Timed to_board_, on_wire_;
   std::deque<std::uint8_t> buffer_;  // in the chip, waiting for a packet
 };

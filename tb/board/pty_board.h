@@ -12,12 +12,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <functional>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -25,6 +27,7 @@
 
 #include "basys3_top_model.h"
 #include "board_bench.h"
+#include "board_frame.h"
 #include "filter_json.h"
 #include "ftdi_link.h"
 
@@ -77,6 +80,12 @@ struct PtyBoardOptions {
   // The protocol model (basys3_top_model.h) instead of the Verilated top: as fast as the link
   // it is given, where the Verilated top is slower than a real 921600-baud wire.
   bool protocol_model = false;
+  // With the FTDI chip: after each btnC, and after the first windowed session reset that reaches
+  // the board at the start and after each btnC (not its copies the host sends again), the chip
+  // holds the board's replies this long (FtdiLink::hold_until). Longer than the host's timeout,
+  // it makes the host send the session reset, and the requests in flight, again before their
+  // replies come, whatever the machine's load (docs/board.md, "Recovery under stress").
+  std::chrono::milliseconds hold_replies{0};
 };
 
 // The board behind the pty, in a thread.
@@ -121,7 +130,7 @@ class PtyBoard {
         to_board = ftdi->to_board(Clock::now());
       }
       if (!to_board.empty()) {
-        feed(bench, to_board);
+        feed(bench, to_board, ftdi ? &*ftdi : nullptr);
         quiet_cycles = 0;
       }
       const bool active =
@@ -183,18 +192,34 @@ class PtyBoard {
     }
     return bytes;
   }
-  // Onto the RX pin; btnC first when the reset byte is among them.
-  void feed(BoardBench& bench, const std::vector<std::uint8_t>& bytes) {
+  // Onto the RX pin; btnC first when the reset byte is among them. The chip holds the replies
+  // after a btnC or a windowed session reset when asked to.
+  void feed(BoardBench& bench, const std::vector<std::uint8_t>& bytes, FtdiLink* ftdi) {
     for (std::uint8_t byte : bytes) {
+      const bool hold = ftdi && options_.hold_replies.count() > 0;
       if (std::find(options_.reset_before_bytes.begin(), options_.reset_before_bytes.end(),
                     fed_index_) != options_.reset_before_bytes.end()) {
         bench.drain();
         bench.press_reset();
         ++resets_;
+        if (hold) ftdi->hold_until(Clock::now() + options_.hold_replies);
+        hold_armed_ = true;
       }
       bench.send({byte});
       ++fed_index_;
+      std::copy(last_fed_.begin() + 1, last_fed_.end(), last_fed_.begin());
+      last_fed_.back() = byte;
+      if (hold && hold_armed_ && is_windowed_session_reset(last_fed_)) {
+        ftdi->hold_until(Clock::now() + options_.hold_replies);
+        hold_armed_ = false;
+      }
     }
+  }
+  static bool is_windowed_session_reset(
+      const std::array<std::uint8_t, host::board::kRequestBytes>& frame) {
+    namespace f = host::board;
+    return frame[0] == f::kCommandSync && frame[3] == 0 && frame[4] == f::kCommandResetWindowed &&
+           f::crc8(std::span<const std::uint8_t>(frame).subspan(1, 4)) == frame[5];
   }
   // The bytes the board sent.
   static std::vector<std::uint8_t> from_board(BoardBench& bench) {
@@ -234,6 +259,8 @@ class PtyBoard {
   int fd_;
   PtyBoardOptions options_;
   std::uint64_t host_index_ = 0, fed_index_ = 0, board_index_ = 0;
+  std::array<std::uint8_t, host::board::kRequestBytes> last_fed_{};  // the last frame's worth
+  bool hold_armed_ = true;  // the next windowed session reset starts a hold
   std::atomic<bool> stop_{false};
   std::atomic<bool> assertion_failed_{false};
   std::atomic<int> resets_{0};
