@@ -4,26 +4,92 @@
 # and UndefinedBehaviorSanitizer, its fast unit tests run there, and each libFuzzer harness run for
 # a short time on a copy of its kept corpus. CI runs the default (the Reliability.* CTest test).
 #
-#   bash scripts/reliability.sh [--build-dir DIR] [--fuzz-seconds N] [--all]
+#   bash scripts/reliability.sh [--build-dir DIR] [--fuzz-seconds N] [--all | --tsan]
 #
 # --all builds and runs the whole test suite under the sanitizers instead of the fast part (about
 # three hours on two shared cores: two to build, one to test). A fuzzer that finds a crash leaves
 # the input in DIR/fuzz_findings/ and the script fails with the command that reproduces it; keep
 # such an input in tests/fuzz/corpus/<harness>/ once it is fixed, so every build replays it.
+#
+# --tsan builds the tree with clang under ThreadSanitizer instead (build/tsan/; TSan cannot share a
+# process with ASan) and runs every test that starts a thread of the project (the list below, each
+# with the thread it exercises); any report fails it. Nothing is suppressed.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build="$root/build/reliability"
+build=""
 fuzz_seconds=10
 all=0
+tsan=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --build-dir) build="$2"; shift 2 ;;
     --fuzz-seconds) fuzz_seconds="$2"; shift 2 ;;
     --all) all=1; shift ;;
-    *) echo "reliability.sh: unknown argument '$1' (valid: --build-dir DIR, --fuzz-seconds N, --all)" >&2; exit 2 ;;
+    --tsan) tsan=1; shift ;;
+    *) echo "reliability.sh: unknown argument '$1' (valid: --build-dir DIR, --fuzz-seconds N, --all, --tsan)" >&2; exit 2 ;;
   esac
 done
+if [ "$all" -eq 1 ] && [ "$tsan" -eq 1 ]; then
+  echo "reliability.sh: --all and --tsan are two builds; run them one at a time" >&2
+  exit 2
+fi
+export CCACHE_BASEDIR="$root"
+
+# The tests that start a thread of the project, as "binary gtest-filter reason" (a test that
+# starts no thread cannot race, and costs a TSan build its time). Found with
+#   grep -rn "std::thread\|std::async\|jthread\|pragma omp" --include=*.cpp --include=*.h
+# Not here: host/store (no thread: SQLite and PostgreSQL are used from the caller's thread; its
+# tests fork, which TSan allows), tb/systemc (SystemC's processes are coroutines on one thread,
+# whose stack switching TSan does not follow), the fleet simulation (runs its chains on one thread).
+tsan_tests=(
+  "recording_batch_reader_test * host/recording: the read-ahead thread and the caller, strict and lenient, errors in a later batch"
+  "run_output_csv_test * host/run: the writer thread behind the caller, a failed write reported across it"
+  "run_command_test RunCommand.WithTwoThreadsTheFirstBadLineIsReportedAndTheOutputIsTheSame flange run: the reader and writer threads around the filter, stopped by bad lines"
+  "board_ftdi_stream_test * host/board_link sessions against the board thread (tb/board/pty_board.h) through the FTDI model: windows, losses, resets"
+  "board_stream_test * flange stream through a pseudo-terminal to the board thread"
+  "board_channels_stream_test * the multichannel stream through a pseudo-terminal to the board thread"
+  "diagnose_test DiagnoseCommand.WritesJsonAndReportWithVerdictFirst:Diagnose.NullRecordingGivesNone the diagnosis's std::async work: candidates, null replicas, replays, inclusion, two passes"
+  "alt_selftest_test AltSelftestCommand.RunsBlindAndPrintsItsSeedAndTheTableByClass the alternative reality's self-test, two pairs on two threads (run_in_parallel)"
+  "diagnose_selftest_test DiagnoseSelftestCommand.SmallBlindSetMeetsTheAims the self-test's cases on parallel threads, each a whole diagnosis"
+  "improved_twin_test ImprovedTwin.RediagnosingAnExplainedPairOfEveryClassAgainstItLeavesNone re-diagnoses on two threads (run_in_parallel)"
+)
+
+# Builds the tree under ThreadSanitizer and runs tsan_tests; fails on the first report.
+run_tsan() {
+  [ -n "$build" ] || build="$root/build/tsan"
+  mkdir -p "$(dirname "$build")"
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLANGE_SANITIZE=thread -DFLANGE_WERROR=ON \
+    > "$build.configure.log" 2>&1 || { cat "$build.configure.log" >&2; exit 1; }
+  local entry binary filter targets=()
+  for entry in "${tsan_tests[@]}"; do targets+=("${entry%% *}"); done
+  cmake --build "$build" --target "${targets[@]}"
+
+  # halt_on_error: the first report fails the test; second_deadlock_stack: both stacks of a
+  # lock-order inversion.
+  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:history_size=4"
+  echo "== tests that start threads, under TSan"
+  local started=$SECONDS
+  for entry in "${tsan_tests[@]}"; do
+    read -r binary filter _ <<< "$entry"
+    local path log="$build/$binary.tsan.log" t0=$SECONDS
+    path="$(find "$build/tests" "$build/tb" -name "$binary" -type f -perm -u+x | head -1)"
+    if ! (cd "$build" && "$path" --gtest_brief=1 --gtest_filter="$filter") > "$log" 2>&1 \
+       || grep -q "WARNING: ThreadSanitizer" "$log"; then
+      grep -A40 "WARNING: ThreadSanitizer" "$log" >&2 || tail -40 "$log" >&2
+      echo "reliability: $binary failed under TSan (reproduce: cd $build && TSAN_OPTIONS='$TSAN_OPTIONS' $path --gtest_filter='$filter')" >&2
+      exit 1
+    fi
+    echo "  $binary: $(grep -E '^\[  PASSED  \]' "$log" | head -1), $((SECONDS - t0)) s"
+  done
+  echo "reliability: ThreadSanitizer clean, ${#tsan_tests[@]} programs in $((SECONDS - started)) s"
+}
+if [ "$tsan" -eq 1 ]; then
+  run_tsan
+  exit 0
+fi
+[ -n "$build" ] || build="$root/build/reliability"
 
 harnesses=(recording_csv_fuzz filter_json_fuzz calibration_json_fuzz twin_json_fuzz
            effect_argument_fuzz frame_decoder_fuzz locomotive_manifest_fuzz)
@@ -37,7 +103,6 @@ unit_tests=(butterworth_reference_test quantize_test thesis_filters_test filter_
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-export CCACHE_BASEDIR="$root"
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLANGE_SANITIZE=address,undefined -DFLANGE_FUZZ=ON \
