@@ -2,11 +2,15 @@
 #include "fleet_wear.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
+#include "daily_distance.h"
+#include "negative_rate.h"
 #include "reprofiling_search.h"
 
 namespace flange::host {
@@ -98,25 +102,42 @@ void fit_wheel(WheelWear& wheel, const FleetWear& fleet, std::optional<double> d
     return;
   }
   const WearLineFit& fit = *wheel.fit;
-  const double half_width = t95(fit.dof) * fit.rate_se;
   wheel.rate_mm_per_1000km = fit.rate_mm_per_km * 1000.0;
-  wheel.rate_low = (fit.rate_mm_per_km - half_width) * 1000.0;
-  wheel.rate_high = (fit.rate_mm_per_km + half_width) * 1000.0;
-  wheel.clearance_now_mm = wear_line_at(fit, wheel.segment.back(), runs.back().odometer_km);
+  wheel.rate_se = fit.rate_serial_se * 1000.0;
+  wheel.rate_dof = fit.serial_dof;
+  std::tie(wheel.rate_low, wheel.rate_high) = rate_interval(wheel, 0.95);
+  const int current = wheel.segment.back();
+  wheel.clearance_now_mm = wear_line_at(fit, current, runs.back().odometer_km);
   wheel.wear_now_mm = wheel.clearance_now_mm - fleet.thresholds.sensor_gap_mm;
-  const double elapsed_days = runs.back().day - runs.front().day;
-  wheel.km_per_day = elapsed_days > 0.0
-                         ? (runs.back().odometer_km - runs.front().odometer_km) / elapsed_days
-                         : 0.0;
-  ForecastInput input;
+  const DailyDistance distance = daily_distance(runs);
+  wheel.km_per_day = distance.km_per_day;
+  ForecastInput& input = wheel.forecast_input;
   input.clearance_now_mm = wheel.clearance_now_mm;
   input.rate_mm_per_km = fit.rate_mm_per_km;
   input.rate_low_mm_per_km = wheel.rate_low / 1000.0;
   input.rate_high_mm_per_km = wheel.rate_high / 1000.0;
   input.km_per_day = wheel.km_per_day;
   input.last_day = runs.back().day;
+  // The clearance now is a_current + r (km - km0): its variance and covariance with r.
+  const auto& cov = fit.serial_covariance;
+  const std::size_t a = static_cast<std::size_t>(current), r = fit.intercepts_mm.size();
+  const double lever = runs.back().odometer_km - fit.km0;
+  input.clearance_now_se_mm = std::sqrt(std::max(
+      0.0, cov[a][a] + 2.0 * lever * cov[a][r] + lever * lever * cov[r][r]));
+  input.rate_se_mm_per_km = fit.rate_serial_se;
+  input.clearance_rate_covariance = cov[a][r] + lever * cov[r][r];
+  input.dof = fit.serial_dof;
+  input.km_per_day_se = distance.se;
+  input.day_km_sd = distance.day_sd;
   wheel.warning = forecast_limit(input, fleet.warning_clearance_mm);
   wheel.critical = forecast_limit(input, fleet.critical_clearance_mm);
+}
+
+// A rate wholly below zero is never "ok": a missed reprofiling or a sensor fault
+// (negative_rate.h).
+void mark_negative_rate(WheelWear& wheel) {
+  if (wheel.status != "ok" || !wheel.fit || !(wheel.rate_high < 0.0)) return;
+  wheel.status = status_text(negative_rate_cause(series_of(wheel, clearances(wheel.runs))));
 }
 
 WheelWear wheel_with_runs(const WheelHistory& history, std::vector<WearObservation> runs) {
@@ -155,6 +176,8 @@ void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistor
   }
   fit_wheel(l, fleet, l.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
   fit_wheel(r, fleet, r.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
+  mark_negative_rate(l);
+  mark_negative_rate(r);
   fleet.wheels.push_back(std::move(l));
   fleet.wheels.push_back(std::move(r));
 }
@@ -166,10 +189,16 @@ void estimate_lone_wheel(FleetWear& fleet, const WheelHistory& history) {
   segment_runs(wheel, find_reprofilings(y, y, fleet.thresholds.max_step_mm),
                recorded_boundaries(wheel.runs, history.maintenance));
   fit_wheel(wheel, fleet, std::nullopt, {});
+  mark_negative_rate(wheel);
   fleet.wheels.push_back(std::move(wheel));
 }
 
 }  // namespace
+
+std::pair<double, double> rate_interval(const WheelWear& wheel, double level) {
+  const double half_width = t_quantile(level, wheel.rate_dof) * wheel.rate_se;
+  return {wheel.rate_mm_per_1000km - half_width, wheel.rate_mm_per_1000km + half_width};
+}
 
 double days_to_warning(const WheelWear& wheel) {
   if (wheel.status == "too few runs") return std::numeric_limits<double>::infinity();

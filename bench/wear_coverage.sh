@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# How often `flange wear`'s intervals hold the truth (docs/fleet.md, "How often the intervals
+# hold"): fleets simulated from seeds the method was never fitted on, each read back by
+# `flange wear --truth`, and the per-wheel checks pooled into one table by wheel kind (healthy,
+# reprofiled, drifting sensor) for the rate and the dates of the warning and critical limits, at
+# 95 % and 80 %; then the rate, reprofiling and drift checks summed over the fleets.
+#   bash bench/wear_coverage.sh [SEEDS] [LOCOMOTIVES] [DAYS] [FLANGE]
+#   (defaults: "9101 9102 9103 9104 9105", 6, 120, build/flange)
+# Leaves every seed's store, wear outputs and truth_check.json in build/wear_coverage/seed_S/.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+seeds="${1:-9101 9102 9103 9104 9105}"
+locomotives="${2:-6}"
+days="${3:-120}"
+flange="${4:-$here/../build/flange}"
+out="$here/../build/wear_coverage"
+rm -rf "$out"
+mkdir -p "$out"
+checks=()
+for seed in $seeds; do
+  dir="$out/seed_$seed"
+  mkdir -p "$dir"
+  "$flange" simulate --scenario fleet --locomotives "$locomotives" --days "$days" --seed "$seed" \
+    --store "sqlite:$dir/fleet.db" > "$dir/simulate.log"
+  # Exit status 1 is a failed check against the truth: counted below, not fatal here.
+  status=0
+  "$flange" wear --store "sqlite:$dir/fleet.db" --out "$dir/wear" \
+    --truth "$dir/fleet_truth.json" > "$dir/wear.log" || status=$?
+  if [ "$status" -gt 1 ]; then
+    echo "flange wear failed on seed $seed (exit $status): $dir/wear.log" >&2
+    exit "$status"
+  fi
+  echo "seed $seed: $(grep '^verdict' "$dir/wear.log")"
+  checks+=("$dir/wear/truth_check.json")
+done
+python3 - "${checks[@]}" <<'PY'
+import json, sys
+
+checks = [json.load(open(path)) for path in sys.argv[1:]]
+wheels = [w for c in checks for w in c["wheels"]]
+kinds = ["healthy", "reprofiled", "drifting sensor", "all"]
+quantities = [("rate", "rate_coverage"), ("warning date", "warning_coverage"),
+              ("critical date", "critical_coverage")]
+print(f"\n{len(checks)} fleets, {len(wheels)} wheels\n")
+print("| wheels | interval of | checked | holds the truth at 95 % | at 80 % |")
+print("|---|---|---|---|---|")
+for kind in kinds:
+    chosen = [w for w in wheels if kind == "all" or w["kind"] == kind]
+    for name, field in quantities:
+        known = [w[field] for w in chosen if w[field] is not None]
+        if not known:
+            print(f"| {kind} | {name} | 0 | - | - |")
+            continue
+        cells = []
+        for level in ("95", "80"):
+            held = sum(1 for c in known if c[level])
+            cells.append(f"{held} ({100.0 * held / len(known):.1f} %)")
+        print(f"| {kind} | {name} | {len(known)} | {cells[0]} | {cells[1]} |")
+total = lambda key: sum(c[key] for c in checks)
+errors = [abs(w["relative_error"]) for w in wheels]
+print(f"\nrates within 10 % or inside the interval: {total('rates_ok')} of {len(wheels)} "
+      f"(largest error {100.0 * max(errors):.1f} %); reprofilings found: "
+      f"{total('reprofilings_found')} of {total('reprofilings')}; drifting sensors flagged: "
+      f"{total('drifting_flagged')} of {total('drifting')}; healthy sensors flagged: "
+      f"{total('healthy_flagged')}; fleets passing: {sum(c['passed'] for c in checks)} of "
+      f"{len(checks)}")
+PY
