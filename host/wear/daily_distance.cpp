@@ -23,6 +23,7 @@ DailyDistance daily_distance(const std::vector<WearObservation>& runs) {
   if (days < 2.0) return distance;
   distance.day_sd = std::sqrt(squares / (days - 1.0));
   distance.se = distance.day_sd / std::sqrt(days);
+  distance.dof = static_cast<int>(std::lround(days)) - 1;
   return distance;
 }
 

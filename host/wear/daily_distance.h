@@ -19,6 +19,7 @@ struct DailyDistance {
   double km_per_day = 0.0;  // mu; 0 when the runs span no time
   double se = 0.0;          // of mu
   double day_sd = 0.0;      // sigma: one day's km about mu
+  int dof = 0;              // sigma's degrees of freedom: the days less one
 };
 
 // `runs` in time order. Fewer than two gaps give the mean alone (se and sigma 0).

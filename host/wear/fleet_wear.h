@@ -42,7 +42,7 @@ struct WheelWear {
   std::optional<WearLineFit> fit;
   double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;  // 95 % interval
   // The rate's standard error (per 1000 km) allowing errors correlated from run to run, and
-  // Student t's degrees of freedom for it (serial_variance.h): an interval at any level.
+  // Student t's degrees of freedom for it (block_jackknife.h): an interval at any level.
   double rate_se = 0.0;
   int rate_dof = 0;
   double clearance_now_mm = 0.0;  // the fitted line at the last run (drift fitted out)

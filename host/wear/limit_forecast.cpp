@@ -18,9 +18,11 @@ std::optional<double> km_at(double gap_mm, double rate_mm_per_km) {
   return gap_mm / rate_mm_per_km;
 }
 
-// Relative standard deviations of the distance left and of the days to it (see the header).
+// Relative standard deviations of the distance left and of the days to it (see the header),
+// and the degrees of freedom of the days' (Welch-Satterthwaite).
 struct RelativeSpread {
   double km = 0.0, days = 0.0;
+  double days_dof = 0.0;
 };
 
 RelativeSpread relative_spread(const ForecastInput& input, double gap_mm) {
@@ -34,7 +36,11 @@ RelativeSpread relative_spread(const ForecastInput& input, double gap_mm) {
   if (input.km_per_day > 0.0) {
     const double mean_term = input.km_per_day_se / input.km_per_day;
     const double future_term = input.day_km_sd * input.day_km_sd / (input.km_per_day * ratio);
-    spread.days = std::sqrt(spread.km * spread.km + mean_term * mean_term + future_term);
+    const double line = spread.km * spread.km, mean = mean_term * mean_term;
+    spread.days = std::sqrt(line + mean + future_term);
+    const double parts = line * line / std::max(1, input.dof) +
+                         mean * mean / std::max(1, input.km_per_day_dof);
+    spread.days_dof = parts > 0.0 ? std::pow(spread.days, 4.0) / parts : 1e9;
   }
   return spread;
 }
@@ -44,6 +50,10 @@ std::pair<std::optional<double>, std::optional<double>> bounds(double value, dou
   const std::optional<double> high =
       q_spread < 1.0 ? std::optional(value / (1.0 - q_spread)) : std::nullopt;
   return {value / (1.0 + q_spread), high};
+}
+
+int days_dof_of(const RelativeSpread& spread) {
+  return static_cast<int>(std::min(1e6, std::max(1.0, std::floor(spread.days_dof))));
 }
 
 }  // namespace
@@ -72,6 +82,7 @@ LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_
   const bool spread_known = input.dof > 0 && forecast.km && !forecast.reached;
   const double q = spread_known ? t_quantile(level, input.dof) : 0.0;
   const RelativeSpread spread = spread_known ? relative_spread(input, gap_mm) : RelativeSpread{};
+  const double q_days = spread_known ? t_quantile(level, days_dof_of(spread)) : 0.0;
   if (spread_known) {
     std::tie(forecast.km_low, forecast.km_high) = bounds(*forecast.km, q * spread.km);
   } else {
@@ -86,7 +97,7 @@ LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_
   };
   forecast.days = to_days(forecast.km);
   if (spread_known) {
-    std::tie(forecast.days_low, forecast.days_high) = bounds(*forecast.days, q * spread.days);
+    std::tie(forecast.days_low, forecast.days_high) = bounds(*forecast.days, q_days * spread.days);
   } else {
     forecast.days_low = to_days(forecast.km_low);
     forecast.days_high = to_days(forecast.km_high);

@@ -12,8 +12,10 @@
 // ago), the mean km per day estimated from the history (se mu) and the km the locomotive has
 // yet to run, a sum of days that scatter by sigma each (the first-passage time of a walk with
 // drift mu, whose variance is K sigma^2 / mu^3). The bounds are K / (1 +- q sd K / K) and the
-// same for T, q Student t's at the wear line's degrees of freedom: as for a rate interval, the
-// slow end is unbounded when the ratio reaches 1 (the rate's interval reaches 0).
+// same for T: as for a rate interval, the slow end is unbounded when the ratio reaches 1 (the
+// rate's interval reaches 0). q is Student t's: for K at the wear line's degrees of freedom,
+// for T at the Welch-Satterthwaite degrees of freedom of its three parts (the line's, the
+// history's days less one for mu, and none lost for the days to come, which are a sum of many).
 #pragma once
 
 #include <optional>
@@ -42,9 +44,10 @@ struct ForecastInput {
   double clearance_now_se_mm = 0.0;
   double rate_se_mm_per_km = 0.0;
   double clearance_rate_covariance = 0.0;  // mm^2 / km
-  int dof = 0;                             // Student t's for q
+  int dof = 0;                             // Student t's for the line's part
   double km_per_day_se = 0.0;              // of the mean km per day
   double day_km_sd = 0.0;                  // one calendar day's km about the mean
+  int km_per_day_dof = 0;                  // the history's days less one
 };
 
 // The 95 % interval.

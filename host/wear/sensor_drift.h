@@ -17,7 +17,9 @@
 // two clearances by as much in opposite directions, so an error in where a run's centre is taken
 // (a day of uneven curves) scatters the difference and cancels in the sum; the season's leftovers
 // do the opposite. A drift shows in both, so it is looked for where it stands out: the series
-// whose drift has the larger t.
+// whose drift has the larger t. A drift found in the sum must have moved the difference (fitted
+// with the same onset and slope) by at least half as much: a change both wheels share (a small
+// lathe pass the data did not show as a jump) moves the sum alone.
 #pragma once
 
 #include <optional>

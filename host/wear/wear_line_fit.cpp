@@ -7,8 +7,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "serial_variance.h"
-
 namespace flange::host {
 namespace {
 
@@ -69,10 +67,6 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
     fit.drift_coefficients.push_back(beta(segments + power));
   }
   fit.covariance = rows_of(cov);
-  const SerialCovariance serial = serial_covariance(x, y - x * beta, xtx_inv);
-  fit.serial_covariance = rows_of(serial.covariance);
-  fit.rate_serial_se = std::sqrt(std::max(0.0, serial.covariance(segments, segments)));
-  fit.serial_dof = serial.dof;
   return fit;
 }
 

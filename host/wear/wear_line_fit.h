@@ -34,13 +34,9 @@ struct WearLineFit {
   int dof = 0;                             // points minus parameters
   double residual_sd = 0.0;                // sqrt(rss / dof)
   // (X^T X)^-1 scaled by the residual variance, in the parameter order
-  // [intercepts..., rate, drift]: the run-to-run scatter only (the drift search's).
+  // [intercepts..., rate, drift]: the run-to-run scatter only (block_jackknife.h widens it for
+  // errors correlated from run to run).
   std::vector<std::vector<double>> covariance;
-  // The same allowing errors correlated from run to run (serial_variance.h): what the rate's
-  // and the forecast's intervals use, with Student t at serial_dof degrees of freedom.
-  std::vector<std::vector<double>> serial_covariance;
-  double rate_serial_se = 0.0;
-  int serial_dof = 0;
 };
 
 // drift_degree 1 or 2 (with an onset). At least one more point than parameters. Throws

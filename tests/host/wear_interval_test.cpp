@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // The wear line's intervals on synthetic series with a known rate and errors correlated from run
 // to run (white scatter plus a slow AR(1) part, as the season's leftovers are): the intervals
-// that allow the correlation (serial_variance.h) hold the truth about as often as their level
+// that allow the correlation (block_jackknife.h) hold the truth about as often as their level
 // says, at 95 % and at 80 %, where the run-to-run scatter's own intervals fall well short.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
+#include "block_jackknife.h"
 #include "daily_distance.h"
 #include "wear_line_fit.h"
 
@@ -51,9 +52,11 @@ Held coverage(double phi, bool reprofiled, double level, int replicates, std::ui
   std::mt19937 random(seed);
   int serial = 0, scatter_only = 0;
   for (int k = 0; k < replicates; ++k) {
-    const WearLineFit fit = fit_wear_line(synthetic_series(random, phi, reprofiled), std::nullopt);
+    const WearSeries series = synthetic_series(random, phi, reprofiled);
+    const WearLineFit fit = fit_wear_line(series, std::nullopt);
+    const SerialSpread spread = jackknife_rate(series, std::nullopt, 1, fit);
     const double error = std::abs(fit.rate_mm_per_km - kRatePerKm);
-    serial += error <= t_quantile(level, fit.serial_dof) * fit.rate_serial_se ? 1 : 0;
+    serial += error <= t_quantile(level, spread.dof) * spread.rate_se ? 1 : 0;
     scatter_only += error <= t_quantile(level, fit.dof) * fit.rate_se ? 1 : 0;
   }
   return {static_cast<double>(serial) / replicates,
