@@ -23,9 +23,11 @@
 
 namespace flange::host {
 
-// The stretch left out at a time: longer than the spells the slow errors come in (weather, the
-// season's steps), short enough to leave three of them in a quarter's history.
-inline constexpr double kBlockDays = 28.0;
+// The stretch left out at a time: longer than the spells the slow errors come in (the season's
+// temperature leftovers move over weeks), short enough to leave three of them in a quarter's
+// history. Four-week stretches left part of those errors inside each stretch on the development
+// fleets (docs/fleet.md): six weeks.
+inline constexpr double kBlockDays = 42.0;
 inline constexpr int kMinBlocks = 3;
 inline constexpr int kMaxBlocks = 8;
 

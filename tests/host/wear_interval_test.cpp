@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kRatePerKm = 0.06 / 1000.0;
 
-// 120 days, a depot day with chance 0.15, 150-750 km on the others; a reprofiling on day 70 when
+// 120 days (three stretches of 40 days), a depot day with chance 0.15, 150-750 km on the others; a reprofiling on day 70 when
 // `reprofiled`. Errors: white (sd 0.004 mm) plus AR(1) with coefficient `phi` per day whose
 // stationary sd is 0.01 mm.
 WearSeries synthetic_series(std::mt19937& random, double phi, bool reprofiled) {
@@ -63,23 +63,30 @@ Held coverage(double phi, bool reprofiled, double level, int replicates, std::ui
           static_cast<double>(scatter_only) / replicates};
 }
 
+// Errors correlated over about three weeks (AR(1) at 0.95 per day): the stretches left out
+// hold them. Bounds: 1000 series give a binomial standard error under 1.3 %; the jackknife's
+// few stretches make it somewhat conservative on fast errors and after a reprofiling (a
+// stretch left out takes part of a flange's runs with it), somewhat liberal on slower ones.
 TEST(WearInterval, HoldsAtItsLevelWhenErrorsAreCorrelatedFromDayToDay) {
   for (const bool reprofiled : {false, true}) {
-    const Held at95 = coverage(0.9, reprofiled, 0.95, 1000, 11);
-    EXPECT_GT(at95.serial, 0.92) << "reprofiled " << reprofiled;
-    EXPECT_LT(at95.serial, 0.985) << "reprofiled " << reprofiled;
+    const Held at95 = coverage(0.95, reprofiled, 0.95, 1000, 11);
+    EXPECT_GT(at95.serial, 0.91) << "reprofiled " << reprofiled;
+    EXPECT_LT(at95.serial, 0.99) << "reprofiled " << reprofiled;
     EXPECT_LT(at95.scatter_only, 0.85) << "reprofiled " << reprofiled;
-    const Held at80 = coverage(0.9, reprofiled, 0.80, 1000, 12);
-    EXPECT_GT(at80.serial, 0.75) << "reprofiled " << reprofiled;
-    EXPECT_LT(at80.serial, 0.86) << "reprofiled " << reprofiled;
+    const Held at80 = coverage(0.95, reprofiled, 0.80, 1000, 12);
+    EXPECT_GT(at80.serial, 0.74) << "reprofiled " << reprofiled;
+    EXPECT_LT(at80.serial, 0.91) << "reprofiled " << reprofiled;
   }
 }
 
 TEST(WearInterval, HoldsAtItsLevelWhenErrorsAreIndependent) {
   const Held at95 = coverage(0.0, false, 0.95, 1000, 13);
   EXPECT_GT(at95.serial, 0.93);
-  EXPECT_LT(at95.serial, 0.975);
+  EXPECT_LT(at95.serial, 0.985);
   EXPECT_GT(at95.scatter_only, 0.93);
+  const Held at80 = coverage(0.0, false, 0.80, 1000, 14);
+  EXPECT_GT(at80.serial, 0.77);
+  EXPECT_LT(at80.serial, 0.90);
 }
 
 TEST(DailyDistance, MeanSpreadAndItsErrorFromTheRuns) {
