@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -145,9 +145,9 @@ WheelCheck check_wheel(const host::WheelWear* w, const sim::FleetTruth& truth, i
                  (check.true_rate >= check.rate_low && check.true_rate <= check.rate_high));
   check.flagged = w->sensor_fault.has_value();
   count_reprofilings(check, *w, wheel.reprofiled_days, truth.settings.start_day);
-  check.kind = check.drifting                   ? "drifting sensor"
-               : check.true_reprofilings > 0    ? "reprofiled"
-                                                : "healthy";
+  check.kind = check.drifting                ? "drifting sensor"
+               : check.true_reprofilings > 0 ? "reprofiled"
+                                             : "healthy";
   check.rate_coverage = rate_coverage(*w, check.true_rate);
   return check;
 }
@@ -218,8 +218,7 @@ std::vector<std::pair<std::string, std::array<CoverageCount, 3>>> coverage_count
 
 std::string held_text(const CoverageCount& count, std::size_t level) {
   if (count.checked == 0) return "-";
-  return fmt::format("{} ({:.1f} %)", count.held[level],
-                     100.0 * count.held[level] / count.checked);
+  return fmt::format("{} ({:.1f} %)", count.held[level], 100.0 * count.held[level] / count.checked);
 }
 
 }  // namespace
@@ -231,8 +230,8 @@ std::string coverage_text(const TruthCheck& check) {
   constexpr std::array<const char*, 3> kQuantities{"rate", "warning date", "critical date"};
   for (const auto& [kind, counts] : coverage_counts(check)) {
     for (std::size_t q = 0; q < kQuantities.size(); ++q) {
-      text += fmt::format("| {} | {} | {} | {} | {} |\n", kind, kQuantities[q],
-                          counts[q].checked, held_text(counts[q], 0), held_text(counts[q], 1));
+      text += fmt::format("| {} | {} | {} | {} | {} |\n", kind, kQuantities[q], counts[q].checked,
+                          held_text(counts[q], 0), held_text(counts[q], 1));
     }
   }
   return text;

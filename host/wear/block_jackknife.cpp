@@ -20,8 +20,8 @@ WearSeries without_block(const WearSeries& series, const std::vector<int>& block
     kept.day.push_back(series.day[k]);
     kept.y.push_back(series.y[k]);
     const int segment = series.segment.empty() ? 0 : series.segment[k];
-    kept.segment.push_back(renumbered.emplace(segment, static_cast<int>(renumbered.size()))
-                               .first->second);
+    kept.segment.push_back(
+        renumbered.emplace(segment, static_cast<int>(renumbered.size())).first->second);
     if (!series.drift_scale.empty()) kept.drift_scale.push_back(series.drift_scale[k]);
   }
   return kept;
@@ -47,11 +47,11 @@ SerialSpread jackknife_rate(const WearSeries& series, std::optional<double> drif
   for (int b = 0; b < blocks; ++b) {
     const WearSeries kept = without_block(series, block, b);
     // A drift needs runs after its onset in what is kept to be fitted at all.
-    const bool drift_kept = drift_onset_day && !kept.day.empty() && kept.day.back() > *drift_onset_day;
+    const bool drift_kept =
+        drift_onset_day && !kept.day.empty() && kept.day.back() > *drift_onset_day;
     try {
-      rates.push_back(
-          fit_wear_line(kept, drift_kept ? drift_onset_day : std::nullopt, drift_degree)
-              .rate_mm_per_km);
+      rates.push_back(fit_wear_line(kept, drift_kept ? drift_onset_day : std::nullopt, drift_degree)
+                          .rate_mm_per_km);
     } catch (const std::invalid_argument&) {
       return spread;  // a stretch holds too much of the history
     }

@@ -45,8 +45,8 @@ struct WheelWear {
   // Student t's degrees of freedom for it (block_jackknife.h): an interval at any level.
   double rate_se = 0.0;
   int rate_dof = 0;
-  double clearance_now_mm = 0.0;  // the fitted line at the last run (drift fitted out)
-  double wear_now_mm = 0.0;       // clearance_now_mm - the sensor gap on a new flange
+  double clearance_now_mm = 0.0;    // the fitted line at the last run (drift fitted out)
+  double wear_now_mm = 0.0;         // clearance_now_mm - the sensor gap on a new flange
   LimitForecast warning, critical;  // 95 % intervals
   ForecastInput forecast_input;     // what they were made from: forecasts at other levels
   std::optional<DriftFinding> sensor_fault;

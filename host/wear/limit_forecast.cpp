@@ -38,8 +38,8 @@ RelativeSpread relative_spread(const ForecastInput& input, double gap_mm) {
     const double future_term = input.day_km_sd * input.day_km_sd / (input.km_per_day * ratio);
     const double line = spread.km * spread.km, mean = mean_term * mean_term;
     spread.days = std::sqrt(line + mean + future_term);
-    const double parts = line * line / std::max(1, input.dof) +
-                         mean * mean / std::max(1, input.km_per_day_dof);
+    const double parts =
+        line * line / std::max(1, input.dof) + mean * mean / std::max(1, input.km_per_day_dof);
     spread.days_dof = parts > 0.0 ? std::pow(spread.days, 4.0) / parts : 1e9;
   }
   return spread;
@@ -72,8 +72,7 @@ LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_
   return forecast_limit(input, limit_clearance_mm, 0.95);
 }
 
-LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_mm,
-                             double level) {
+LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_mm, double level) {
   LimitForecast forecast;
   forecast.limit_clearance_mm = limit_clearance_mm;
   const double gap_mm = std::max(0.0, limit_clearance_mm - input.clearance_now_mm);

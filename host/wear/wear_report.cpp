@@ -49,9 +49,9 @@ std::string panel_script(const WheelWear* w, const std::string& label, int index
   const std::string block = fmt::format("w{}", index);
   const bool fault = w->status == "sensor fault" || w->status == "missed reprofiling";
   std::string script = panel_data(*w, block, gap);
-  script += fmt::format("set title '{}: {:.3f} mm/1000 km{}' tc rgb '{}'\n", label,
-                        w->rate_mm_per_1000km, fault ? " (" + w->status + ")" : "",
-                        fault ? "#d62728" : "#000000");
+  script +=
+      fmt::format("set title '{}: {:.3f} mm/1000 km{}' tc rgb '{}'\n", label, w->rate_mm_per_1000km,
+                  fault ? " (" + w->status + ")" : "", fault ? "#d62728" : "#000000");
   // A wheel with too few runs for a line has no fitted block to draw.
   const std::string line =
       w->fit ? fmt::format(", ${}_fit using 1:2 with lines lw 2 lc rgb '#000000'", block) : "";

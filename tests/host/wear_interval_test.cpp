@@ -17,9 +17,9 @@ namespace {
 
 constexpr double kRatePerKm = 0.06 / 1000.0;
 
-// 120 days (three stretches of 40 days), a depot day with chance 0.15, 150-750 km on the others; a reprofiling on day 70 when
-// `reprofiled`. Errors: white (sd 0.004 mm) plus AR(1) with coefficient `phi` per day whose
-// stationary sd is 0.01 mm.
+// 120 days (three stretches of 40 days), a depot day with chance 0.15, 150-750 km on the others; a
+// reprofiling on day 70 when `reprofiled`. Errors: white (sd 0.004 mm) plus AR(1) with coefficient
+// `phi` per day whose stationary sd is 0.01 mm.
 WearSeries synthetic_series(std::mt19937& random, double phi, bool reprofiled) {
   std::uniform_real_distribution<double> unit(0.0, 1.0), km_of_day(150.0, 750.0);
   std::normal_distribution<double> white(0.0, 0.004), stationary(0.0, 0.01);
@@ -59,8 +59,7 @@ Held coverage(double phi, bool reprofiled, double level, int replicates, std::ui
     serial += error <= t_quantile(level, spread.dof) * spread.rate_se ? 1 : 0;
     scatter_only += error <= t_quantile(level, fit.dof) * fit.rate_se ? 1 : 0;
   }
-  return {static_cast<double>(serial) / replicates,
-          static_cast<double>(scatter_only) / replicates};
+  return {static_cast<double>(serial) / replicates, static_cast<double>(scatter_only) / replicates};
 }
 
 // Errors correlated over about three weeks (AR(1) at 0.95 per day): the stretches left out
@@ -91,9 +90,10 @@ TEST(WearInterval, HoldsAtItsLevelWhenErrorsAreIndependent) {
 
 TEST(DailyDistance, MeanSpreadAndItsErrorFromTheRuns) {
   // Runs on days 0, 1, 3, 4 (day 2 in the depot): days 0 to 3 ran 100, 300, 0 and 0 km.
-  std::vector<WearObservation> runs{
-      {1, "", 0.0, 0.0, 2.0}, {2, "", 1.0, 100.0, 2.0}, {3, "", 3.0, 400.0, 2.0},
-      {4, "", 4.0, 400.0, 2.0}};
+  std::vector<WearObservation> runs{{1, "", 0.0, 0.0, 2.0},
+                                    {2, "", 1.0, 100.0, 2.0},
+                                    {3, "", 3.0, 400.0, 2.0},
+                                    {4, "", 4.0, 400.0, 2.0}};
   const DailyDistance d = daily_distance(runs);
   EXPECT_DOUBLE_EQ(d.km_per_day, 100.0);  // 400 km over 4 days
   // Days 100, 300, 0, 0 about 100: (0 + 40000 + 10000 + 10000) / 3.
