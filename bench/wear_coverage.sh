@@ -41,9 +41,11 @@ for seed in $seeds; do
   checks+=("$dir/wear/truth_check.json")
 done
 python3 - "${checks[@]}" <<'PY'
-import json, sys
+import json, os, statistics, sys
 
 checks = [json.load(open(path)) for path in sys.argv[1:]]
+estimates = [json.load(open(os.path.join(os.path.dirname(path), "wear.json")))
+             for path in sys.argv[1:]]
 wheels = [w for c in checks for w in c["wheels"]]
 kinds = ["healthy", "reprofiled", "drifting sensor", "all"]
 quantities = [("rate", "rate_coverage"), ("warning date", "warning_coverage"),
@@ -71,4 +73,17 @@ print(f"\nrates within 10 % or inside the interval: {total('rates_ok')} of {len(
       f"{total('drifting_flagged')} of {total('drifting')}; healthy sensors flagged: "
       f"{total('healthy_flagged')}; fleets passing: {sum(c['passed'] for c in checks)} of "
       f"{len(checks)}")
+# How wide the 95 % intervals are: half the rate's in % of the rate, half the warning date's in days.
+rate_widths, date_widths = [], []
+for estimate in estimates:
+    for w in estimate["wheels"]:
+        rate = w["wear_rate_mm_per_1000km"]
+        rate_widths.append(50.0 * (w["wear_rate_high"] - w["wear_rate_low"]) / rate)
+        warning = w["warning"]
+        if not warning["reached"] and warning["days_low"] is not None \
+                and warning["days_high"] is not None:
+            date_widths.append((warning["days_high"] - warning["days_low"]) / 2.0)
+print(f"95 % intervals: rate +- {statistics.median(rate_widths):.2f} % (median; 90th percentile "
+      f"{sorted(rate_widths)[int(0.9 * len(rate_widths))]:.2f} %), warning date +- "
+      f"{statistics.median(date_widths):.1f} days (median of {len(date_widths)})")
 PY
