@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -40,6 +41,91 @@ void count_reprofilings(WheelCheck& check, const host::WheelWear& w, const std::
   }
 }
 
+// The fleet's days after the period, drawn again from its seed; nothing when the truth is not
+// the fleet scenario's (its km differ from the redrawn ones).
+std::optional<sim::FleetTruth> future_of(const sim::FleetTruth& truth) {
+  sim::FleetSettings settings = truth.settings;
+  settings.locomotives = static_cast<int>(truth.locomotives.size());
+  settings.days = sim::kMaxFleetDays;
+  if (settings.locomotives < 1 || settings.locomotives > sim::kMaxFleetLocomotives ||
+      truth.settings.days > settings.days) {
+    return std::nullopt;
+  }
+  sim::FleetTruth future = sim::plan_fleet(settings);
+  for (std::size_t l = 0; l < truth.locomotives.size(); ++l) {
+    const std::vector<double>& known = truth.locomotives[l].day_km;
+    const std::vector<double>& redrawn = future.locomotives[l].day_km;
+    for (std::size_t d = 0; d < known.size(); ++d) {
+      if (std::abs(known[d] - redrawn[d]) > 1e-6 * std::max(1.0, known[d])) return std::nullopt;
+    }
+  }
+  return future;
+}
+
+// The day (since 1970-01-01) on which the wheel's true wear, from the start of `first` (days
+// from the truth's first day) on at its true rate without a reprofiling, reaches `limit_wear_mm`.
+std::optional<int> true_limit_day(const sim::FleetTruth& future, int l, int channel, int first,
+                                  double limit_wear_mm) {
+  const sim::LocomotiveTruth& loco = future.locomotives[static_cast<std::size_t>(l)];
+  const auto c = static_cast<std::size_t>(channel);
+  const double rate = loco.wheels[c].wear_rate_mm_per_1000km / 1000.0;
+  double wear = loco.wear_mm.at(static_cast<std::size_t>(first))[c];
+  if (wear >= limit_wear_mm) return future.settings.start_day + first;
+  for (auto d = static_cast<std::size_t>(first); d < loco.day_km.size(); ++d) {
+    wear += rate * loco.day_km[d];  // reached in the day's service
+    if (wear >= limit_wear_mm) return future.settings.start_day + static_cast<int>(d);
+  }
+  return std::nullopt;
+}
+
+Coverage rate_coverage(const host::WheelWear& w, double true_rate) {
+  Coverage coverage;
+  coverage.known = w.fit.has_value();
+  for (std::size_t i = 0; i < kCoverageLevels.size(); ++i) {
+    const auto [low, high] = host::rate_interval(w, kCoverageLevels[i]);
+    coverage.held[i] = true_rate >= low && true_rate <= high;
+  }
+  return coverage;
+}
+
+// Whether the true day lies in the forecast's interval of days at each level (a day past the
+// redrawn future only in an interval open at its slow end or reaching past it).
+Coverage date_coverage(const host::WheelWear& w, double limit_clearance_mm,
+                       std::optional<int> true_day, double horizon_day) {
+  Coverage coverage;
+  coverage.known = w.fit.has_value();
+  const double last = std::floor(w.runs.back().day);
+  for (std::size_t i = 0; i < kCoverageLevels.size(); ++i) {
+    const host::LimitForecast f =
+        host::forecast_limit(w.forecast_input, limit_clearance_mm, kCoverageLevels[i]);
+    const double truth = true_day ? *true_day : horizon_day;
+    if (f.reached) {
+      coverage.held[i] = truth <= last;
+    } else if (f.days_low) {
+      const double low = std::floor(w.runs.back().day + *f.days_low);
+      const double high = f.days_high ? std::floor(w.runs.back().day + *f.days_high)
+                                      : std::numeric_limits<double>::infinity();
+      coverage.held[i] = truth >= low && (truth <= high || (!true_day && high >= horizon_day));
+    }
+  }
+  return coverage;
+}
+
+void check_dates(WheelCheck& check, const host::WheelWear& w, const host::FleetWear& wear,
+                 const sim::FleetTruth& future, int l, int channel) {
+  const int first = static_cast<int>(std::floor(w.runs.back().day)) - future.settings.start_day;
+  const double gap = wear.thresholds.sensor_gap_mm;
+  check.true_warning_day =
+      true_limit_day(future, l, channel, first, wear.warning_clearance_mm - gap);
+  check.true_critical_day =
+      true_limit_day(future, l, channel, first, wear.critical_clearance_mm - gap);
+  const double horizon = future.settings.start_day + future.settings.days;
+  check.warning_coverage =
+      date_coverage(w, wear.warning_clearance_mm, check.true_warning_day, horizon);
+  check.critical_coverage =
+      date_coverage(w, wear.critical_clearance_mm, check.true_critical_day, horizon);
+}
+
 WheelCheck check_wheel(const host::WheelWear* w, const sim::FleetTruth& truth, int l,
                        const sim::WheelTruth& wheel) {
   const sim::WheelPosition position = sim::wheel_position(wheel.channel);
@@ -59,6 +145,10 @@ WheelCheck check_wheel(const host::WheelWear* w, const sim::FleetTruth& truth, i
                  (check.true_rate >= check.rate_low && check.true_rate <= check.rate_high));
   check.flagged = w->sensor_fault.has_value();
   count_reprofilings(check, *w, wheel.reprofiled_days, truth.settings.start_day);
+  check.kind = check.drifting                ? "drifting sensor"
+               : check.true_reprofilings > 0 ? "reprofiled"
+                                             : "healthy";
+  check.rate_coverage = rate_coverage(*w, check.true_rate);
   return check;
 }
 
@@ -71,12 +161,16 @@ bool TruthCheck::passed() const {
 
 TruthCheck check_against_truth(const host::FleetWear& wear, const sim::FleetTruth& truth) {
   TruthCheck result;
+  const std::optional<sim::FleetTruth> future = future_of(truth);
   for (std::size_t l = 0; l < truth.locomotives.size(); ++l) {
     for (const sim::WheelTruth& wheel : truth.locomotives[l].wheels) {
       const sim::WheelPosition position = sim::wheel_position(wheel.channel);
       const host::WheelWear* w =
           find_wheel(wear, truth.locomotives[l].name, position.axle, sim::side_name(position.side));
-      const WheelCheck check = check_wheel(w, truth, static_cast<int>(l), wheel);
+      WheelCheck check = check_wheel(w, truth, static_cast<int>(l), wheel);
+      if (w != nullptr && w->fit && future) {
+        check_dates(check, *w, wear, *future, static_cast<int>(l), wheel.channel);
+      }
       result.rates_ok += check.rate_ok ? 1 : 0;
       result.reprofilings += check.true_reprofilings;
       result.reprofilings_found += check.found_reprofilings;
@@ -89,6 +183,58 @@ TruthCheck check_against_truth(const host::FleetWear& wear, const sim::FleetTrut
     }
   }
   return result;
+}
+
+namespace {
+
+constexpr std::array<const char*, 3> kKinds{"healthy", "reprofiled", "drifting sensor"};
+
+struct CoverageCount {
+  int checked = 0;
+  std::array<int, kCoverageLevels.size()> held{};
+  void add(const Coverage& c) {
+    if (!c.known) return;
+    ++checked;
+    for (std::size_t i = 0; i < held.size(); ++i) held[i] += c.held[i] ? 1 : 0;
+  }
+};
+
+// Per kind ("all" last) the counts of the rate, warning and critical intervals.
+std::vector<std::pair<std::string, std::array<CoverageCount, 3>>> coverage_counts(
+    const TruthCheck& check) {
+  std::vector<std::pair<std::string, std::array<CoverageCount, 3>>> rows;
+  for (const char* kind : kKinds) rows.push_back({kind, {}});
+  rows.push_back({"all", {}});
+  for (const WheelCheck& w : check.wheels) {
+    for (auto& [kind, counts] : rows) {
+      if (kind != "all" && kind != w.kind) continue;
+      counts[0].add(w.rate_coverage);
+      counts[1].add(w.warning_coverage);
+      counts[2].add(w.critical_coverage);
+    }
+  }
+  return rows;
+}
+
+std::string held_text(const CoverageCount& count, std::size_t level) {
+  if (count.checked == 0) return "-";
+  return fmt::format("{} ({:.1f} %)", count.held[level], 100.0 * count.held[level] / count.checked);
+}
+
+}  // namespace
+
+std::string coverage_text(const TruthCheck& check) {
+  std::string text =
+      "| wheels | interval of | checked | holds the truth at 95 % | at 80 % |\n"
+      "|---|---|---|---|---|\n";
+  constexpr std::array<const char*, 3> kQuantities{"rate", "warning date", "critical date"};
+  for (const auto& [kind, counts] : coverage_counts(check)) {
+    for (std::size_t q = 0; q < kQuantities.size(); ++q) {
+      text += fmt::format("| {} | {} | {} | {} | {} |\n", kind, kQuantities[q], counts[q].checked,
+                          held_text(counts[q], 0), held_text(counts[q], 1));
+    }
+  }
+  return text;
 }
 
 std::string truth_check_text(const TruthCheck& check) {
@@ -111,8 +257,27 @@ std::string truth_check_text(const TruthCheck& check) {
       100.0 * kRateTolerance, check.rates_ok, check.wheels.size(), 100.0 * check.max_relative_error,
       check.reprofilings_found, check.reprofilings, check.drifting_flagged, check.drifting,
       check.healthy_flagged, check.passed() ? "pass" : "FAIL");
+  text += "\nhow often the intervals hold the truth:\n\n" + coverage_text(check);
   return text;
 }
+
+namespace {
+
+// {"95": true, "80": false}, or null when there was nothing to check.
+nlohmann::ordered_json coverage_json(const Coverage& coverage) {
+  if (!coverage.known) return nullptr;
+  nlohmann::ordered_json json;
+  for (std::size_t i = 0; i < kCoverageLevels.size(); ++i) {
+    json[fmt::format("{:.0f}", 100.0 * kCoverageLevels[i])] = coverage.held[i];
+  }
+  return json;
+}
+
+nlohmann::ordered_json day_json(const std::optional<int>& day) {
+  return day ? nlohmann::ordered_json(host::date_of_day(*day)) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace
 
 void write_truth_check_json(const std::filesystem::path& path, const TruthCheck& check) {
   nlohmann::ordered_json wheels = nlohmann::ordered_json::array();
@@ -129,7 +294,13 @@ void write_truth_check_json(const std::filesystem::path& path, const TruthCheck&
                       {"true_reprofilings", w.true_reprofilings},
                       {"found_reprofilings", w.found_reprofilings},
                       {"drifting", w.drifting},
-                      {"flagged", w.flagged}});
+                      {"flagged", w.flagged},
+                      {"kind", w.kind},
+                      {"rate_coverage", coverage_json(w.rate_coverage)},
+                      {"true_warning_date", day_json(w.true_warning_day)},
+                      {"warning_coverage", coverage_json(w.warning_coverage)},
+                      {"true_critical_date", day_json(w.true_critical_day)},
+                      {"critical_coverage", coverage_json(w.critical_coverage)}});
   }
   const nlohmann::ordered_json json = {{"passed", check.passed()},
                                        {"rates_ok", check.rates_ok},

@@ -3,9 +3,18 @@
 // passes when it is within kRateTolerance of the truth or the truth lies inside its 95 %
 // interval; every reprofiling the data can show (one with a run after it) must be found in the
 // data (not only read from the depot's record); every drifting sensor flagged, no healthy one.
+//
+// And how often the intervals hold: per wheel, whether the true rate lies in its interval at
+// each of kCoverageLevels, and whether the true dates of the warning and the critical limit do.
+// A true date is the day the wheel's true wear, going on at its true rate from its last run over
+// the km its locomotive runs after the period (the scenario's own draws of those days, without a
+// reprofiling), reaches the limit; it is known only when the truth file is the fleet scenario's
+// (its days replanned from its seed give its km).
 #pragma once
 
+#include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +24,15 @@
 namespace flange::cli {
 
 inline constexpr double kRateTolerance = 0.10;  // the relative error a rate may have
+// The levels the intervals are checked at: the one printed and one further in.
+inline constexpr std::array<double, 2> kCoverageLevels{0.95, 0.80};
+
+// Whether a truth lies in an interval, at each of kCoverageLevels; `known` false when there is
+// nothing to check (no rate fitted, a date without its truth).
+struct Coverage {
+  bool known = false;
+  std::array<bool, kCoverageLevels.size()> held{};
+};
 
 struct WheelCheck {
   std::string locomotive;
@@ -28,6 +46,9 @@ struct WheelCheck {
   int found_reprofilings = 0;  // of those, found in the data
   bool drifting = false;       // the truth
   bool flagged = false;        // the estimate
+  std::string kind;            // "healthy", "reprofiled" (with a run after it) or "drifting sensor"
+  Coverage rate_coverage, warning_coverage, critical_coverage;
+  std::optional<int> true_warning_day, true_critical_day;  // days since 1970-01-01
 };
 
 struct TruthCheck {
@@ -41,7 +62,10 @@ struct TruthCheck {
 
 TruthCheck check_against_truth(const host::FleetWear& wear, const sim::FleetTruth& truth);
 
-// The table (Markdown, as in docs/fleet.md) and the verdict line.
+// The coverage table: per wheel kind and quantity, how many intervals at each level hold.
+std::string coverage_text(const TruthCheck& check);
+
+// The table (Markdown, as in docs/fleet.md), the verdict line and the coverage table.
 std::string truth_check_text(const TruthCheck& check);
 
 void write_truth_check_json(const std::filesystem::path& path, const TruthCheck& check);

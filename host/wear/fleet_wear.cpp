@@ -2,11 +2,16 @@
 #include "fleet_wear.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
+#include "block_jackknife.h"
+#include "daily_distance.h"
+#include "negative_rate.h"
 #include "reprofiling_search.h"
 
 namespace flange::host {
@@ -86,37 +91,65 @@ WearSeries series_of(const WheelWear& wheel, const std::vector<double>& y,
   return series;
 }
 
-// The wheel's line, rate interval and forecasts; "too few runs" when the line cannot be fitted.
-void fit_wheel(WheelWear& wheel, const FleetWear& fleet, std::optional<double> drift_onset,
-               const SensitivityAt& sensitivity) {
-  const std::vector<WearObservation>& runs = wheel.runs;
-  try {
-    wheel.fit =
-        fit_wear_line(series_of(wheel, clearances(runs), sensitivity), drift_onset, kDriftDegree);
-  } catch (const std::invalid_argument&) {
-    wheel.status = "too few runs";
-    return;
-  }
+// What the forecast is made from: the line at the last run with its uncertainties (the
+// least-squares covariance widened by the jackknife's inflation) and the km per day.
+ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread) {
   const WearLineFit& fit = *wheel.fit;
-  const double half_width = t95(fit.dof) * fit.rate_se;
-  wheel.rate_mm_per_1000km = fit.rate_mm_per_km * 1000.0;
-  wheel.rate_low = (fit.rate_mm_per_km - half_width) * 1000.0;
-  wheel.rate_high = (fit.rate_mm_per_km + half_width) * 1000.0;
-  wheel.clearance_now_mm = wear_line_at(fit, wheel.segment.back(), runs.back().odometer_km);
-  wheel.wear_now_mm = wheel.clearance_now_mm - fleet.thresholds.sensor_gap_mm;
-  const double elapsed_days = runs.back().day - runs.front().day;
-  wheel.km_per_day = elapsed_days > 0.0
-                         ? (runs.back().odometer_km - runs.front().odometer_km) / elapsed_days
-                         : 0.0;
+  const std::vector<WearObservation>& runs = wheel.runs;
+  const DailyDistance distance = daily_distance(runs);
   ForecastInput input;
   input.clearance_now_mm = wheel.clearance_now_mm;
   input.rate_mm_per_km = fit.rate_mm_per_km;
   input.rate_low_mm_per_km = wheel.rate_low / 1000.0;
   input.rate_high_mm_per_km = wheel.rate_high / 1000.0;
-  input.km_per_day = wheel.km_per_day;
+  input.km_per_day = distance.km_per_day;
   input.last_day = runs.back().day;
-  wheel.warning = forecast_limit(input, fleet.warning_clearance_mm);
-  wheel.critical = forecast_limit(input, fleet.critical_clearance_mm);
+  // The clearance now is a_current + r (km - km0): its variance and covariance with r.
+  const auto& cov = fit.covariance;
+  const auto a = static_cast<std::size_t>(wheel.segment.back());
+  const std::size_t r = fit.intercepts_mm.size();
+  const double lever = runs.back().odometer_km - fit.km0;
+  const double variance = cov[a][a] + 2.0 * lever * cov[a][r] + lever * lever * cov[r][r];
+  input.clearance_now_se_mm = std::sqrt(std::max(0.0, spread.inflation * variance));
+  input.rate_se_mm_per_km = spread.rate_se;
+  input.clearance_rate_covariance = spread.inflation * (cov[a][r] + lever * cov[r][r]);
+  input.dof = spread.dof;
+  input.km_per_day_se = distance.se;
+  input.day_km_sd = distance.day_sd;
+  input.km_per_day_dof = distance.dof;
+  return input;
+}
+
+// The wheel's line, rate interval and forecasts; "too few runs" when the line cannot be fitted.
+void fit_wheel(WheelWear& wheel, const FleetWear& fleet, std::optional<double> drift_onset,
+               const SensitivityAt& sensitivity) {
+  const std::vector<WearObservation>& runs = wheel.runs;
+  const WearSeries series = series_of(wheel, clearances(runs), sensitivity);
+  try {
+    wheel.fit = fit_wear_line(series, drift_onset, kDriftDegree);
+  } catch (const std::invalid_argument&) {
+    wheel.status = "too few runs";
+    return;
+  }
+  const WearLineFit& fit = *wheel.fit;
+  const SerialSpread spread = jackknife_rate(series, drift_onset, kDriftDegree, fit);
+  wheel.rate_mm_per_1000km = fit.rate_mm_per_km * 1000.0;
+  wheel.rate_se = spread.rate_se * 1000.0;
+  wheel.rate_dof = spread.dof;
+  std::tie(wheel.rate_low, wheel.rate_high) = rate_interval(wheel, 0.95);
+  wheel.clearance_now_mm = wear_line_at(fit, wheel.segment.back(), runs.back().odometer_km);
+  wheel.wear_now_mm = wheel.clearance_now_mm - fleet.thresholds.sensor_gap_mm;
+  wheel.forecast_input = forecast_input(wheel, spread);
+  wheel.km_per_day = wheel.forecast_input.km_per_day;
+  wheel.warning = forecast_limit(wheel.forecast_input, fleet.warning_clearance_mm);
+  wheel.critical = forecast_limit(wheel.forecast_input, fleet.critical_clearance_mm);
+}
+
+// A rate wholly below zero is never "ok": a missed reprofiling or a sensor fault
+// (negative_rate.h).
+void mark_negative_rate(WheelWear& wheel) {
+  if (wheel.status != "ok" || !wheel.fit || !(wheel.rate_high < 0.0)) return;
+  wheel.status = status_text(negative_rate_cause(series_of(wheel, clearances(wheel.runs))));
 }
 
 WheelWear wheel_with_runs(const WheelHistory& history, std::vector<WearObservation> runs) {
@@ -155,6 +188,8 @@ void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistor
   }
   fit_wheel(l, fleet, l.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
   fit_wheel(r, fleet, r.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
+  mark_negative_rate(l);
+  mark_negative_rate(r);
   fleet.wheels.push_back(std::move(l));
   fleet.wheels.push_back(std::move(r));
 }
@@ -166,10 +201,16 @@ void estimate_lone_wheel(FleetWear& fleet, const WheelHistory& history) {
   segment_runs(wheel, find_reprofilings(y, y, fleet.thresholds.max_step_mm),
                recorded_boundaries(wheel.runs, history.maintenance));
   fit_wheel(wheel, fleet, std::nullopt, {});
+  mark_negative_rate(wheel);
   fleet.wheels.push_back(std::move(wheel));
 }
 
 }  // namespace
+
+std::pair<double, double> rate_interval(const WheelWear& wheel, double level) {
+  const double half_width = t_quantile(level, wheel.rate_dof) * wheel.rate_se;
+  return {wheel.rate_mm_per_1000km - half_width, wheel.rate_mm_per_1000km + half_width};
+}
 
 double days_to_warning(const WheelWear& wheel) {
   if (wheel.status == "too few runs") return std::numeric_limits<double>::infinity();

@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "limit_forecast.h"
@@ -35,12 +36,19 @@ struct WheelWear {
   std::vector<WearObservation> runs;
   std::vector<int> segment;  // per run: which flange (0 before the first reprofiling, ...)
   std::vector<ReprofilingEvent> reprofilings;
-  std::string status = "ok";  // "ok", "sensor fault" or "too few runs"
+  // "ok", "sensor fault", "missed reprofiling" (a rate wholly below zero that a step explains
+  // better than a drift: negative_rate.h) or "too few runs"
+  std::string status = "ok";
   std::optional<WearLineFit> fit;
   double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;  // 95 % interval
-  double clearance_now_mm = 0.0;  // the fitted line at the last run (drift fitted out)
-  double wear_now_mm = 0.0;       // clearance_now_mm - the sensor gap on a new flange
-  LimitForecast warning, critical;
+  // The rate's standard error (per 1000 km) allowing errors correlated from run to run, and
+  // Student t's degrees of freedom for it (block_jackknife.h): an interval at any level.
+  double rate_se = 0.0;
+  int rate_dof = 0;
+  double clearance_now_mm = 0.0;    // the fitted line at the last run (drift fitted out)
+  double wear_now_mm = 0.0;         // clearance_now_mm - the sensor gap on a new flange
+  LimitForecast warning, critical;  // 95 % intervals
+  ForecastInput forecast_input;     // what they were made from: forecasts at other levels
   std::optional<DriftFinding> sensor_fault;
   double km_per_day = 0.0;  // the locomotive's, over this wheel's history
 };
@@ -57,6 +65,9 @@ struct FleetWear {
 FleetWear estimate_fleet_wear(const std::vector<WheelHistory>& histories,
                               const ThresholdConfig& thresholds,
                               const SensitivityAt& sensitivity = {});
+
+// The rate's interval at `level` (0 < level < 1), per 1000 km: {low, high}.
+std::pair<double, double> rate_interval(const WheelWear& wheel, double level);
 
 // Days to the warning clearance for sorting: 0 when reached, +inf when unknown.
 double days_to_warning(const WheelWear& wheel);

@@ -1,9 +1,21 @@
 // SPDX-License-Identifier: MIT
 // When a wheel reaches a clearance limit: the fitted line of its current flange (the segment
-// since the last reprofiling) extended from its last run at the fitted rate. The interval comes
-// from the rate's 95 % interval (the distance left at the fast and the slow end of it); days
-// from distance at the locomotive's mean km per calendar day over its history (depot days
-// included), which the interval does not widen.
+// since the last reprofiling) extended from its last run at the fitted rate; days from distance
+// at the locomotive's mean km per calendar day over its history (depot days included).
+//
+// The interval holds three uncertainties, combined to first order (delta method) as a relative
+// standard deviation of the distance K = (limit - c) / r and of the days T = K / mu:
+//   (sd K / K)^2 = (var c + (G/r)^2 var r + 2 (G/r) cov(c, r)) / G^2,  G = limit - c
+//   (sd T / T)^2 = (sd K / K)^2 + (se mu / mu)^2 + sigma^2 / (mu K)
+// the fitted clearance now and the rate (their covariance from the wear line, which allows
+// errors correlated from run to run, so it holds the reference of a flange reprofiled a few runs
+// ago), the mean km per day estimated from the history (se mu) and the km the locomotive has
+// yet to run, a sum of days that scatter by sigma each (the first-passage time of a walk with
+// drift mu, whose variance is K sigma^2 / mu^3). The bounds are K / (1 +- q sd K / K) and the
+// same for T: as for a rate interval, the slow end is unbounded when the ratio reaches 1 (the
+// rate's interval reaches 0). q is Student t's: for K at the wear line's degrees of freedom,
+// for T at the Welch-Satterthwaite degrees of freedom of its three parts (the line's, the
+// history's days less one for mu, and none lost for the days to come, which are a sum of many).
 #pragma once
 
 #include <optional>
@@ -24,13 +36,25 @@ struct LimitForecast {
 struct ForecastInput {
   double clearance_now_mm = 0.0;  // the fitted line at the last run
   double rate_mm_per_km = 0.0;
-  double rate_low_mm_per_km = 0.0;  // 95 % interval
+  double rate_low_mm_per_km = 0.0;  // 95 % interval: used alone when dof is 0
   double rate_high_mm_per_km = 0.0;
   double km_per_day = 0.0;  // > 0 for days and dates
   double last_day = 0.0;    // days since 1970-01-01 of the last run
+  // The uncertainties (see above); dof 0: the interval is the rate's alone, without days'.
+  double clearance_now_se_mm = 0.0;
+  double rate_se_mm_per_km = 0.0;
+  double clearance_rate_covariance = 0.0;  // mm^2 / km
+  int dof = 0;                             // Student t's for the line's part
+  double km_per_day_se = 0.0;              // of the mean km per day
+  double day_km_sd = 0.0;                  // one calendar day's km about the mean
+  int km_per_day_dof = 0;                  // the history's days less one
 };
 
+// The 95 % interval.
 LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_mm);
+
+// At `level` (0 < level < 1); with dof 0 the rate interval given is used whatever the level.
+LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_mm, double level);
 
 // "YYYY-MM-DD" of a day count since 1970-01-01 (the fraction dropped); "after 9999-12-31" beyond
 // that day (a rate barely above zero).

@@ -45,11 +45,9 @@ double own_drift_t(const WearSeries& series, double onset_day) {
   return drift.se > 0.0 ? drift.mm / drift.se : 0.0;
 }
 
-}  // namespace
-
-std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
-                                              const WearSeries& left_series,
-                                              const WearSeries& right_series) {
+// The flagged drift in one combination of the two wheels (their difference or their sum).
+std::optional<DriftFinding> drift_in(const WearSeries& difference, const WearSeries& left_series,
+                                     const WearSeries& right_series) {
   const std::optional<Candidate> best = best_candidate(difference, left_series, right_series);
   if (!best) return std::nullopt;
   const WearSeries& fitted_side = best->left ? left_series : right_series;
@@ -69,6 +67,39 @@ std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
       drift_at(fit_wear_line(own, best->onset_day, kDriftDegree), own.day.back(), last_scale(own));
   finding.rate_mm_per_day = own_drift.mm / (own.day.back() - best->onset_day);
   return finding;
+}
+
+// One sensor's drift moves the sum and the difference by as much; what both wheels share (a
+// step of both flanges the data did not show as a reprofiling, the season) moves only the sum.
+// A drift found in the sum is a sensor's only when the difference, fitted with the same onset
+// and slope, has moved by at least half as much.
+bool shows_in_difference(const DriftFinding& in_sum, const WearSeries& difference,
+                         const WearSeries& left_series, const WearSeries& right_series) {
+  const WearSeries& side = in_sum.left ? left_series : right_series;
+  WearSeries series = difference;
+  series.drift_scale = side.drift_scale;
+  const DriftValue moved = drift_at(fit_wear_line(series, in_sum.onset_day, kDriftDegree),
+                                    difference.day.back(), last_scale(side));
+  return std::abs(moved.mm) >= 0.5 * in_sum.size_mm;
+}
+
+}  // namespace
+
+std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
+                                              const WearSeries& left_series,
+                                              const WearSeries& right_series) {
+  WearSeries sum = difference;
+  for (std::size_t k = 0; k < sum.y.size(); ++k) sum.y[k] = left_series.y[k] + right_series.y[k];
+  std::optional<DriftFinding> found = drift_in(difference, left_series, right_series);
+  std::optional<DriftFinding> in_sum = drift_in(sum, left_series, right_series);
+  if (in_sum && !shows_in_difference(*in_sum, difference, left_series, right_series)) {
+    in_sum.reset();
+  }
+  if (in_sum) in_sum->in_sum = true;
+  if (!found || (in_sum && std::abs(in_sum->difference_t) > std::abs(found->difference_t))) {
+    return in_sum;
+  }
+  return found;
 }
 
 }  // namespace flange::host

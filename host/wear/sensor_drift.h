@@ -12,6 +12,14 @@
 // The onset (and slope) with the smallest residual wins; the drift by the last run is a fault
 // when it is both significant and large enough to matter, and it belongs to the sensor whose
 // own series carries it more strongly (the other's has only what the two share).
+//
+// The same search runs on the axle's sum left + right. A wheelset's lateral position moves the
+// two clearances by as much in opposite directions, so an error in where a run's centre is taken
+// (a day of uneven curves) scatters the difference and cancels in the sum; the season's leftovers
+// do the opposite. A drift shows in both, so it is looked for where it stands out: the series
+// whose drift has the larger t. A drift found in the sum must have moved the difference (fitted
+// with the same onset and slope) by at least half as much: a change both wheels share (a small
+// lathe pass the data did not show as a jump) moves the sum alone.
 #pragma once
 
 #include <optional>
@@ -37,13 +45,15 @@ struct DriftFinding {
   bool left = true;              // the faulty sensor's side
   double onset_day = 0.0;        // days since 1970-01-01
   double rate_mm_per_day = 0.0;  // in its own series: the drift by the last run / the days
-  double difference_t = 0.0;     // the difference's drift by the last run / its standard error
+  double difference_t = 0.0;     // the drift by the last run / its standard error, in the
+                                 // series it was found in (the difference or the sum)
   double size_mm = 0.0;          // |the difference's drift by the last run|
+  bool in_sum = false;           // found in the axle's sum (else in its difference)
 };
 
 // `difference`, `left_series` and `right_series` share km, day and segments (their y: right -
 // left, left, right); the side series carry their sensor's slope as drift_scale. Nothing when
-// no side and onset give a flagged drift.
+// no series, side and onset give a flagged drift.
 std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
                                               const WearSeries& left_series,
                                               const WearSeries& right_series);

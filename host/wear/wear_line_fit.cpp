@@ -8,6 +8,19 @@
 #include <stdexcept>
 
 namespace flange::host {
+namespace {
+
+std::vector<std::vector<double>> rows_of(const Eigen::MatrixXd& matrix) {
+  std::vector<std::vector<double>> rows(static_cast<std::size_t>(matrix.rows()));
+  for (Eigen::Index r = 0; r < matrix.rows(); ++r) {
+    for (Eigen::Index c = 0; c < matrix.cols(); ++c) {
+      rows[static_cast<std::size_t>(r)].push_back(matrix(r, c));
+    }
+  }
+  return rows;
+}
+
+}  // namespace
 
 WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day,
                           int drift_degree) {
@@ -53,12 +66,7 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
   for (int power = 1; drift_onset_day && power <= drift_degree; ++power) {
     fit.drift_coefficients.push_back(beta(segments + power));
   }
-  fit.covariance.assign(static_cast<std::size_t>(params), std::vector<double>());
-  for (Eigen::Index r = 0; r < params; ++r) {
-    for (Eigen::Index c = 0; c < params; ++c) {
-      fit.covariance[static_cast<std::size_t>(r)].push_back(cov(r, c));
-    }
-  }
+  fit.covariance = rows_of(cov);
   return fit;
 }
 
@@ -87,9 +95,11 @@ DriftValue drift_at(const WearLineFit& fit, double day, double scale) {
   return value;
 }
 
-double t95(int dof) {
+double t95(int dof) { return t_quantile(0.95, dof); }
+
+double t_quantile(double level, int dof) {
   const boost::math::students_t distribution(std::max(1, dof));
-  return boost::math::quantile(boost::math::complement(distribution, 0.025));
+  return boost::math::quantile(boost::math::complement(distribution, (1.0 - level) / 2.0));
 }
 
 }  // namespace flange::host

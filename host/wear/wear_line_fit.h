@@ -34,7 +34,8 @@ struct WearLineFit {
   int dof = 0;                             // points minus parameters
   double residual_sd = 0.0;                // sqrt(rss / dof)
   // (X^T X)^-1 scaled by the residual variance, in the parameter order
-  // [intercepts..., rate, drift]: for the forecast's interval.
+  // [intercepts..., rate, drift]: the run-to-run scatter only (block_jackknife.h widens it for
+  // errors correlated from run to run).
   std::vector<std::vector<double>> covariance;
 };
 
@@ -56,5 +57,8 @@ DriftValue drift_at(const WearLineFit& fit, double day, double scale = 1.0);
 
 // Half-width multiplier of a two-sided 95 % interval with `dof` degrees of freedom (Student t).
 double t95(int dof);
+
+// The same for a two-sided interval at `level` (0 < level < 1).
+double t_quantile(double level, int dof);
 
 }  // namespace flange::host

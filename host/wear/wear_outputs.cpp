@@ -23,6 +23,8 @@ ordered_json forecast_json(const LimitForecast& forecast) {
           {"km_low", optional_number(forecast.km_low)},
           {"km_high", optional_number(forecast.km_high)},
           {"days", optional_number(forecast.days)},
+          {"days_low", optional_number(forecast.days_low)},
+          {"days_high", optional_number(forecast.days_high)},
           {"date", forecast.date},
           {"date_low", forecast.date_low},
           {"date_high", forecast.date_high}};
@@ -56,7 +58,8 @@ ordered_json wheel_json(const WheelWear& wheel) {
     fault = {{"onset", date_of_day(wheel.sensor_fault->onset_day)},
              {"drift_mm_per_day", wheel.sensor_fault->rate_mm_per_day},
              {"drift_by_last_run_mm", wheel.sensor_fault->size_mm},
-             {"t_statistic", wheel.sensor_fault->difference_t}};
+             {"t_statistic", wheel.sensor_fault->difference_t},
+             {"found_in", wheel.sensor_fault->in_sum ? "sum" : "difference"}};
   }
   return {{"locomotive", wheel.wheel.locomotive},
           {"axle", wheel.wheel.axle},
@@ -66,6 +69,8 @@ ordered_json wheel_json(const WheelWear& wheel) {
           {"wear_rate_mm_per_1000km", wheel.rate_mm_per_1000km},
           {"wear_rate_low", wheel.rate_low},
           {"wear_rate_high", wheel.rate_high},
+          {"wear_rate_se", wheel.rate_se},
+          {"interval_dof", wheel.rate_dof},
           {"clearance_now_mm", wheel.clearance_now_mm},
           {"wear_now_mm", wheel.wear_now_mm},
           {"km_per_day", wheel.km_per_day},

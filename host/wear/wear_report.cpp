@@ -47,11 +47,11 @@ std::string panel_script(const WheelWear* w, const std::string& label, int index
   if (w == nullptr) return fmt::format("set title '{}: no sensor'\nplot NaN notitle\n", label);
   const double gap = fleet.thresholds.sensor_gap_mm;
   const std::string block = fmt::format("w{}", index);
-  const bool fault = w->sensor_fault.has_value();
+  const bool fault = w->status == "sensor fault" || w->status == "missed reprofiling";
   std::string script = panel_data(*w, block, gap);
   script +=
       fmt::format("set title '{}: {:.3f} mm/1000 km{}' tc rgb '{}'\n", label, w->rate_mm_per_1000km,
-                  fault ? " (sensor fault)" : "", fault ? "#d62728" : "#000000");
+                  fault ? " (" + w->status + ")" : "", fault ? "#d62728" : "#000000");
   // A wheel with too few runs for a line has no fitted block to draw.
   const std::string line =
       w->fit ? fmt::format(", ${}_fit using 1:2 with lines lw 2 lc rgb '#000000'", block) : "";
@@ -101,7 +101,7 @@ void write_table(std::ofstream& html, const FleetWear& fleet) {
                          f.date_high.empty() ? "-" : f.date_high);
     };
     const double days = days_to_warning(w);
-    html << (w.sensor_fault ? "<tr class='fault'>" : "<tr>");
+    html << (w.status == "ok" || w.status == "too few runs" ? "<tr>" : "<tr class='fault'>");
     html << fmt::format(
         "<td>{}</td><td>axle {} {}</td><td>{}</td><td>{}</td><td>{:.3f}</td><td>{}</td><td>{}</td>"
         "<td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
@@ -135,9 +135,12 @@ void write_wear_report(const std::filesystem::path& dir, const FleetWear& fleet,
        << "</p>\n<p>Wheels sorted by days to the warning clearance (" << fleet.warning_clearance_mm
        << " mm; critical " << fleet.critical_clearance_mm
        << " mm), soonest first. Rates and dates with their 95 % intervals; days from the "
-          "locomotive's mean km per day. A sensor drifting away from its axle partner is a "
-          "sensor fault (red): its drift is fitted out of its wear. How each figure is made: "
-          "docs/fleet.md.</p>\n";
+          "locomotive's mean km per day; the intervals allow errors correlated from day to day "
+          "and the km the locomotive has yet to run. A sensor drifting away from its axle "
+          "partner is a sensor fault (red): its drift is fitted out of its wear. A rate whose "
+          "interval lies below zero is no wear (wear only opens the clearance): a sensor fault "
+          "when a drift explains it better, a missed reprofiling (red) when a step does. How "
+          "each figure is made: docs/fleet.md.</p>\n";
   write_table(html, fleet);
   int number = 0;
   for (const auto& [locomotive, panels] : locomotives) {

@@ -19,6 +19,7 @@ struct Truth {
   std::optional<int> reprofile_day;            // both wheels back to 2 mm that day
   std::optional<int> drift_from_day;           // the right sensor drifts from then ...
   double drift_mm_per_day = 0.01;              // ... at this rate
+  std::optional<int> small_step_day;           // both flanges 0.45 mm thinner (< h) that day
 };
 
 // One axle's 90 days: depot days every 6th, 150-750 km on the others, 0.005 mm of noise per run.
@@ -31,6 +32,10 @@ std::vector<WheelHistory> axle_history(const Truth& truth, std::uint32_t seed) {
   for (int day = 0; day < 90; ++day) {
     const double t = 20454.0 + day + 0.25;
     if (truth.reprofile_day && day == *truth.reprofile_day) wear_left = wear_right = 0.0;
+    if (truth.small_step_day && day == *truth.small_step_day) {
+      wear_left -= 0.45;
+      wear_right -= 0.45;
+    }
     if (day % 6 == 5) continue;
     const double drift = truth.drift_from_day && day > *truth.drift_from_day
                              ? truth.drift_mm_per_day * (day - *truth.drift_from_day)
@@ -86,6 +91,29 @@ TEST(FleetWear, ADriftingSensorIsAFaultNotWear) {
   EXPECT_NEAR(right.sensor_fault->rate_mm_per_day, 0.01, 0.002);
   EXPECT_NEAR(right.rate_mm_per_1000km, 0.04, 0.004);  // the drift fitted out
   EXPECT_FALSE(left.sensor_fault.has_value());
+}
+
+TEST(FleetWear, ARateBelowZeroIsAMissedReprofilingWhenAStepExplainsIt) {
+  Truth truth;
+  truth.rate_left = truth.rate_right = 0.002;  // a lathe pass of 0.45 mm outweighs the wear
+  truth.small_step_day = 45;
+  const FleetWear fleet = estimate_fleet_wear(axle_history(truth, 5), {});
+  for (const WheelWear& w : fleet.wheels) {
+    EXPECT_LT(w.rate_high, 0.0) << w.wheel.side;
+    EXPECT_EQ(w.status, "missed reprofiling") << w.wheel.side;
+  }
+}
+
+TEST(FleetWear, ARateBelowZeroIsASensorFaultWhenADriftExplainsIt) {
+  Truth truth;
+  truth.rate_right = 0.002;
+  truth.drift_from_day = 0;
+  truth.drift_mm_per_day = -0.02;
+  // The right wheel alone (no partner to compare with): its own line falls with time.
+  const FleetWear fleet = estimate_fleet_wear({axle_history(truth, 6)[1]}, {});
+  ASSERT_EQ(fleet.wheels.size(), 1u);
+  EXPECT_LT(fleet.wheels[0].rate_high, 0.0);
+  EXPECT_EQ(fleet.wheels[0].status, "sensor fault");
 }
 
 TEST(FleetWear, TheWarningForecastFollowsTheRate) {

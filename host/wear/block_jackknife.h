@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// How far the wear line's rate can be trusted when its errors are correlated from run to run.
+// A wheel's clearance carries, besides each run's own scatter, errors that move slowly: the
+// season's temperature leftovers (the calibration is exact at no temperature, the ambient drifts
+// over weeks), a sensor's creep, a run's reference. The least-squares standard error treats them
+// as independent and is too small.
+//
+// Delete-a-block jackknife over time: the history is cut into B stretches of equal calendar
+// length (about kBlockDays each, 3 to 8 of them), the line refitted B times with one stretch
+// left out, and var r = (B - 1) / B sum_b (r_(b) - mean r_(.))^2; the rate over that standard
+// error is taken as Student t with B - 1 degrees of freedom. Errors correlated within a few weeks
+// move a whole stretch together, so leaving it out shows how much the rate leans on them. The
+// ratio of the jackknife's variance to the least-squares one (the inflation) scales the whole
+// least-squares covariance, so the forecast's clearance now, whose intercept may rest on a few
+// runs after a reprofiling, widens with the rate. On independent errors the jackknife scatters
+// about the least-squares figure (its few degrees of freedom are in t), so it is not floored
+// at it: a floor would make the interval hold more often than its level says.
+#pragma once
+
+#include <optional>
+
+#include "wear_line_fit.h"
+
+namespace flange::host {
+
+// The stretch left out at a time: longer than the spells the slow errors come in (the season's
+// temperature leftovers move over weeks), short enough to leave three of them in a quarter's
+// history. Four-week stretches left part of those errors inside each stretch on the development
+// fleets (docs/fleet.md): six weeks.
+inline constexpr double kBlockDays = 42.0;
+inline constexpr int kMinBlocks = 3;
+inline constexpr int kMaxBlocks = 8;
+
+struct SerialSpread {
+  double rate_se = 0.0;    // mm per km
+  double inflation = 1.0;  // (rate_se / fit.rate_se)^2
+  int dof = 0;             // Student t's: blocks - 1, or fit.dof when no jackknife could be made
+  int blocks = 0;          // stretches the refits left out (0: none)
+};
+
+// B for a history spanning `span_days`: round(span / kBlockDays) within [kMinBlocks, kMaxBlocks].
+int jackknife_blocks(double span_days);
+
+// `fit` is fit_wear_line(series, drift_onset_day, drift_degree). A stretch whose leaving out
+// leaves too few runs for the model makes the whole jackknife fall back on the least-squares
+// figures (blocks 0).
+SerialSpread jackknife_rate(const WearSeries& series, std::optional<double> drift_onset_day,
+                            int drift_degree, const WearLineFit& fit);
+
+}  // namespace flange::host
