@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `flange wear --truth FILE`: is FILE the truth of the fleet in the store? Its locomotives must
 // be the store's, every run must fall on one of its days, and each locomotive's odometer must
-// advance between runs by the distances the truth gives its days (most steps within
-// kOdometerToleranceKm: an odometer reset or a lost run moves one step, another fleet all).
+// advance between runs by the distances the truth gives its days, read at the day's start or
+// its end (most steps within kOdometerToleranceKm: an odometer reset moves one step, another
+// fleet nearly all).
 #pragma once
 
 #include <string>
