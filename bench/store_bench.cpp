@@ -251,9 +251,9 @@ int main(int argc, char** argv) {
         store->backend(), settings.locomotives, settings.days, counts.runs, counts.wheel_rows,
         counts.alarm_rows, ingest_s, static_cast<double>(rows) / ingest_s, history_median,
         history_max, history_rows, 1000.0 * fleet_times[1], fleet_rows, plan.read_s, plan.wheels,
-        plan.estimated_wheels > 0 ? fmt::format("{:.1f} ({})", plan.estimate_s,
-                                                plan.estimated_wheels)
-                                  : std::string("-"),
+        plan.estimated_wheels > 0
+            ? fmt::format("{:.1f} ({})", plan.estimate_s, plan.estimated_wheels)
+            : std::string("-"),
         plan.estimated_wheels > 0 ? fmt::format("{}", plan.due) : std::string("-"),
         static_cast<double>(store->size_bytes()) / 1e6);
     return 0;

@@ -14,9 +14,8 @@ namespace flange::cli {
 namespace {
 
 [[noreturn]] void another_fleet(const std::string& file, const std::string& what) {
-  throw host::InputError(
-      fmt::format("--truth {}: the truth of another fleet: {}", host::printable_excerpt(file, 80),
-                  what));
+  throw host::InputError(fmt::format("--truth {}: the truth of another fleet: {}",
+                                     host::printable_excerpt(file, 80), what));
 }
 
 // Each locomotive's runs (one wheel's history stands for its runs) by day, from the store.
@@ -50,8 +49,8 @@ void check_names(const sim::FleetTruth& truth,
 }
 
 // Every run on one of the truth's days, and the odometer's steps its days' distances.
-void check_runs(const sim::LocomotiveTruth& loco, const host::WheelHistory& history,
-                int start_day, const std::string& file) {
+void check_runs(const sim::LocomotiveTruth& loco, const host::WheelHistory& history, int start_day,
+                const std::string& file) {
   const int days = static_cast<int>(loco.day_km.size());
   std::vector<double> through(loco.day_km.size() + 1, 0.0);  // km run by the end of day d - 1
   for (int d = 0; d < days; ++d) through[d + 1] = through[d] + loco.day_km[d];
@@ -61,8 +60,7 @@ void check_runs(const sim::LocomotiveTruth& loco, const host::WheelHistory& hist
     const int day = static_cast<int>(std::floor(run.day)) - start_day;
     if (day < 0 || day >= days) {
       another_fleet(file, fmt::format("{}'s run at {} is outside its days {} to {}", loco.name,
-                                      host::printable_excerpt(run.at),
-                                      host::date_of_day(start_day),
+                                      host::printable_excerpt(run.at), host::date_of_day(start_day),
                                       host::date_of_day(start_day + days - 1)));
     }
     if (k == 0) continue;

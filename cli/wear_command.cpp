@@ -97,8 +97,7 @@ void check_inputs(const WearOptions& options, const std::vector<WheelHistory>& h
 }
 
 // --plan: the plan's CSV (to its file or stdout) and its line on `out`; the page's section.
-std::string write_plan(const WearOptions& options, const host::FleetWear& wear,
-                       std::ostream& out) {
+std::string write_plan(const WearOptions& options, const host::FleetWear& wear, std::ostream& out) {
   const host::ReprofilingPlan plan = host::plan_reprofiling(wear, {options.before, options.risk});
   const std::string csv_path = options.plan_csv.value_or((options.out / "plan.csv").string());
   if (csv_path == "-") {
@@ -147,8 +146,9 @@ CLI::App* add_wear_command(CLI::App& app, WearOptions& options) {
       cmd->add_flag("--plan", options.plan,
                     "a reprofiling plan: the wheels to reprofile before --before at --risk, as "
                     "plan.csv and a section of index.html");
-  cmd->add_option("--before", options.before, "the plan's horizon: a date YYYY-MM-DD after the "
-                                               "last run")
+  cmd->add_option("--before", options.before,
+                  "the plan's horizon: a date YYYY-MM-DD after the "
+                  "last run")
       ->needs(plan);
   cmd->add_option("--risk", options.risk,
                   "the plan's chance of a wheel reaching the critical clearance before its date: "
@@ -167,8 +167,9 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
   try {
     host::validate(options.thresholds);
     if (options.plan && options.before.empty()) {
-      throw host::InputError("--before is required with --plan: a date YYYY-MM-DD after the "
-                             "last run");
+      throw host::InputError(
+          "--before is required with --plan: a date YYYY-MM-DD after the "
+          "last run");
     }
     const std::unique_ptr<host::Store> store = open_existing_store(options.store);
     const std::vector<WheelHistory> histories = read_histories(*store);

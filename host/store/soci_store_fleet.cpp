@@ -63,8 +63,8 @@ std::vector<FleetRow> SociStore::fleet_table() {
         (sql_.prepare << kFleetQuery, into(row.wheel.locomotive), into(row.wheel.axle),
          into(row.wheel.side), into(runs), into(runs_since), into(row.last_run_at),
          into(row.last_odometer_km), into(last_wear, has_last_wear), into(sums.n), into(sums.sx),
-         into(sums.sy), into(sums.sxx), into(sums.sxy), into(sums.syy), into(row.last_maintenance_at),
-         into(events));
+         into(sums.sy), into(sums.sxx), into(sums.sxy), into(sums.syy),
+         into(row.last_maintenance_at), into(events));
     query.execute();
     while (query.fetch()) {
       row.runs = static_cast<std::uint64_t>(runs);

@@ -229,7 +229,9 @@ std::vector<std::int64_t> SociStore::record_runs(const std::vector<RunRecord>& r
       ids.push_back(run_ids[i]);
     }
     batches.flush(sql_, url_.backend);
-    if (schema_version_ >= kWheelFitSchemaVersion) add_runs_to_wheel_fit(sql_, url_.backend, run_ids);
+    if (schema_version_ >= kWheelFitSchemaVersion) {
+      add_runs_to_wheel_fit(sql_, url_.backend, run_ids);
+    }
     pause_for_test();
     transaction.commit();
     wheel_ids_.insert(created.begin(), created.end());

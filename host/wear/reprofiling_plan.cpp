@@ -19,9 +19,8 @@ namespace {
 // "YYYY-MM-DD" and nothing else, as days since 1970-01-01; InputError otherwise.
 double day_of_plan_date(const std::string& text) {
   const bool shaped = text.size() == 10 && text[4] == '-' && text[7] == '-' &&
-                      std::all_of(text.begin(), text.end(), [](char c) {
-                        return c == '-' || (c >= '0' && c <= '9');
-                      });
+                      std::all_of(text.begin(), text.end(),
+                                  [](char c) { return c == '-' || (c >= '0' && c <= '9'); });
   try {
     if (shaped) return day_of_iso_time(text);
   } catch (const std::invalid_argument&) {
@@ -77,9 +76,9 @@ std::string csv_field(const std::string& text) {
 void check_plan_request(const PlanRequest& request, double last_run_day,
                         const std::string& last_run_at) {
   if (!(request.risk > 0.0 && request.risk < 1.0)) {
-    throw InputError(fmt::format(
-        "--risk: {} is outside its valid range: a probability strictly between 0 and 1",
-        request.risk));
+    throw InputError(
+        fmt::format("--risk: {} is outside its valid range: a probability strictly between 0 and 1",
+                    request.risk));
   }
   const double before_day = day_of_plan_date(request.before);
   if (!(before_day > std::floor(last_run_day))) {
@@ -132,10 +131,9 @@ ReprofilingPlan plan_reprofiling(const FleetWear& fleet, const PlanRequest& requ
       plan.wheels.push_back(*planned);
     }
   }
-  std::stable_sort(plan.wheels.begin(), plan.wheels.end(),
-                   [](const PlannedWheel& a, const PlannedWheel& b) {
-                     return a.due_day < b.due_day;
-                   });
+  std::stable_sort(
+      plan.wheels.begin(), plan.wheels.end(),
+      [](const PlannedWheel& a, const PlannedWheel& b) { return a.due_day < b.due_day; });
   return plan;
 }
 
@@ -175,10 +173,10 @@ std::string plan_html_section(const ReprofilingPlan& plan) {
     html += fmt::format(
         "<tr><td>{}</td><td>{}</td><td>axle {} {}</td><td>{}</td><td>{:.3f}</td><td>{:.4f}</td>"
         "<td>{:.4f}</td><td>{}</td></tr>\n",
-        w.reached ? w.due_date + " (reached)" : w.due_date,
-        coeffs::html_escape(w.wheel.locomotive), w.wheel.axle, w.wheel.side,
-        coeffs::html_escape(w.status), w.wear_now_mm, w.rate_mm_per_1000km,
-        w.rate_at_risk_mm_per_1000km, w.critical_date.empty() ? "-" : w.critical_date);
+        w.reached ? w.due_date + " (reached)" : w.due_date, coeffs::html_escape(w.wheel.locomotive),
+        w.wheel.axle, w.wheel.side, coeffs::html_escape(w.status), w.wear_now_mm,
+        w.rate_mm_per_1000km, w.rate_at_risk_mm_per_1000km,
+        w.critical_date.empty() ? "-" : w.critical_date);
   }
   html += "</table>\n";
   if (!plan.unplanned.empty()) {
@@ -192,9 +190,8 @@ std::string plan_html_section(const ReprofilingPlan& plan) {
 }
 
 std::string plan_summary_text(const ReprofilingPlan& plan) {
-  std::string text =
-      fmt::format("plan: {} wheels to reprofile before {} at a risk of {:g}\n", plan.wheels.size(),
-                  plan.request.before, plan.request.risk);
+  std::string text = fmt::format("plan: {} wheels to reprofile before {} at a risk of {:g}\n",
+                                 plan.wheels.size(), plan.request.before, plan.request.risk);
   if (!plan.wheels.empty()) {
     text += fmt::format("  first: {} by {}\n", wheel_text(plan.wheels.front().wheel),
                         plan.wheels.front().due_date);

@@ -25,11 +25,11 @@ struct PlanRequest {
 
 struct PlannedWheel {
   WheelId wheel;
-  std::string status;         // the estimator's ("ok", "sensor fault", ...)
-  std::string due_date;       // reprofile on or before this date (YYYY-MM-DD)
-  double due_day = 0.0;       // the same in days since 1970-01-01 (with its fraction)
-  bool reached = false;       // the fitted clearance is at the critical limit already
-  double wear_now_mm = 0.0;   // the estimator's, at the last run
+  std::string status;        // the estimator's ("ok", "sensor fault", ...)
+  std::string due_date;      // reprofile on or before this date (YYYY-MM-DD)
+  double due_day = 0.0;      // the same in days since 1970-01-01 (with its fraction)
+  bool reached = false;      // the fitted clearance is at the critical limit already
+  double wear_now_mm = 0.0;  // the estimator's, at the last run
   double rate_mm_per_1000km = 0.0;
   double rate_at_risk_mm_per_1000km = 0.0;  // the rate's (1 - risk) quantile
   std::string critical_date;                // at the fitted rate; "" when it does not wear
@@ -37,8 +37,8 @@ struct PlannedWheel {
 
 struct ReprofilingPlan {
   PlanRequest request;
-  double before_day = 0.0;          // midnight starting `before`
-  std::string last_run_at;          // the latest run of any wheel
+  double before_day = 0.0;           // midnight starting `before`
+  std::string last_run_at;           // the latest run of any wheel
   std::vector<PlannedWheel> wheels;  // due before `before`, soonest first
   // Wheels without a forecast (too few runs, or a locomotive that never moved): not planned.
   std::vector<WheelWear> unplanned;

@@ -95,8 +95,8 @@ TEST_F(WearPlanCommand, ThePlanListsTheWheelsDueBeforeTheDateSoonestFirst) {
   std::stringstream html;
   html << page.rdbuf();
   EXPECT_NE(html.str().find("Reprofiling plan before 2027-01-01"), std::string::npos);
-  EXPECT_NE(outcome.out.find(fmt::format("plan: {} wheels to reprofile before 2027-01-01",
-                                         rows.size() - 1)),
+  EXPECT_NE(outcome.out.find(
+                fmt::format("plan: {} wheels to reprofile before 2027-01-01", rows.size() - 1)),
             std::string::npos)
       << outcome.out;
   // A lower risk brings every date forward, so no fewer wheels are due; stdout holds the CSV.
@@ -128,8 +128,9 @@ TEST_F(WearPlanCommand, ARiskOutsideZeroToOneIsRefused) {
 TEST_F(WearPlanCommand, AStoreWithNoRunsOrNoStoreIsRefused) {
   const std::string empty = "sqlite:" + (dir_ / "empty.db").string();
   host::open_store(empty);  // the schema, no run
-  std::vector<std::string> args{"wear", "--store", empty, "--out", (dir_ / "empty").string(),
-                                "--plan", "--before", "2027-01-01"};
+  std::vector<std::string> args{
+      "wear",   "--store",  empty,       "--out", (dir_ / "empty").string(),
+      "--plan", "--before", "2027-01-01"};
   expect_refused(args, 1, "no run with a wheel's wear estimate", "empty");
   const fs::path missing = dir_ / "missing.db";
   args[2] = "sqlite:" + missing.string();

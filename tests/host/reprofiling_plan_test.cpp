@@ -134,14 +134,14 @@ TEST(ReprofilingPlan, TheRiskAskedForIsTheShareThatReachTheLimitFirst) {
     const double rate = rate_of(random);
     double odometer = 0.0, clearance = 4.0;
     for (int day = 0; day < 60; ++day) {
-      h.runs.push_back({day, "2026-01-01T06:00:00Z", 20454.25 + day, odometer,
-                        clearance + noise(random)});
+      h.runs.push_back(
+          {day, "2026-01-01T06:00:00Z", 20454.25 + day, odometer, clearance + noise(random)});
       const double km = km_of_day(random);
       odometer += km;
       clearance += rate * km / 1000.0;
     }
-    truth[h.wheel.locomotive] = {rate, clearance - rate * (odometer - h.runs.back().odometer_km) /
-                                                       1000.0};
+    truth[h.wheel.locomotive] = {
+        rate, clearance - rate * (odometer - h.runs.back().odometer_km) / 1000.0};
     histories.push_back(std::move(h));
   }
   const FleetWear fleet = estimate_fleet_wear(histories, {});

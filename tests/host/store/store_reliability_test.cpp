@@ -116,8 +116,8 @@ TEST_P(StoreUnderTroubleTest, AStoreOfANewerSchemaIsRefusedUnchanged) {
         << message;
     EXPECT_EQ(message.find('\n'), std::string::npos);
   }
-  execute_sql(url(), "UPDATE schema_version SET version = " +
-                        std::to_string(host::kStoreSchemaVersion));
+  execute_sql(url(),
+              "UPDATE schema_version SET version = " + std::to_string(host::kStoreSchemaVersion));
   EXPECT_EQ(open()->run_count(), 1u);
 }
 

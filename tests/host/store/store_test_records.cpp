@@ -91,8 +91,8 @@ void write_mixed_history(host::Store& store) {
   store.record_maintenance({{"M", 1, "left"}, test_time(6, 1), 6100.0, "reprofile", "lathe"});
   store.record_maintenance({{"M", 1, "left"}, test_time(3), 3100.0, "inspect", "backdated"});
   // Tied in time with N's day 8 run, and one older than N's latest.
-  store.record_runs({test_run("N", test_time(8), 7200.0, 0.85), test_run("N", test_time(1), 900.0,
-                                                                         0.1)});
+  store.record_runs(
+      {test_run("N", test_time(8), 7200.0, 0.85), test_run("N", test_time(1), 900.0, 0.1)});
   store.record_run(test_run("M", test_time(9), 9000.0, 0.3));
 }
 
