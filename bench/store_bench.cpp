@@ -1,25 +1,35 @@
 // SPDX-License-Identifier: MIT
-// The measurement store at a fleet's scale (docs/benchmarks.md, "Store"): a year of a depot's
-// run summaries and alarm events ingested, then one wheel's wear history and the fleet table.
+// The measurement store at a national fleet's scale (docs/benchmarks.md, "Store"): a year of
+// run summaries and alarm events ingested, then one wheel's wear history, the fleet table and
+// the reprofiling plan as `flange wear --plan` makes it (every wheel's runs read in bulk, the
+// estimate, the plan).
 //
-//   store_bench --store URL [--locomotives 100] [--days 365] [--runs-per-transaction 100]
+//   store_bench --store URL [--locomotives 1000] [--days 365] [--runs-per-transaction 100]
+//               [--estimate-locomotives 100]
 //
 // A run is one locomotive's service day: its summary and 12 wheel rows (wear, clearance,
-// temperature), and now and then an alarm event. 100 locomotives x 365 days = 36,500 runs of
-// 438,000 wheel rows. The numbers are made up here (wear linear in distance plus noise, a
+// temperature), and now and then an alarm event. 1,000 locomotives x 365 days = 365,000 runs of
+// 4,380,000 wheel rows. The numbers are made up here (wear linear in distance plus noise, a
 // reprofiling, a maintenance event of its own transaction, when a wheel reaches 4 mm: about once
-// a year per wheel): the store's work does not depend on them. Prints one
-// line of figures; the URL must name an empty store.
+// a year per wheel): the store's work does not depend on them. Prints one line of figures; the
+// URL must name an empty store. The store's read for the plan is of the whole fleet; the
+// estimate and plan (which do not touch the store) of the first --estimate-locomotives
+// locomotives' wheels (0: none), because the estimator's drift search grows with the square of
+// a wheel's run count and takes minutes for the whole fleet.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "fleet_wear.h"
+#include "reprofiling_plan.h"
 #include "store.h"
 
 namespace {
@@ -30,9 +40,10 @@ using Clock = std::chrono::steady_clock;
 
 struct Settings {
   std::string url;
-  int locomotives = 100;
+  int locomotives = 1000;
   int days = 365;
   int runs_per_transaction = 100;
+  int estimate_locomotives = 100;
 };
 
 struct Counts {
@@ -134,10 +145,61 @@ std::pair<double, double> history_ms(Store& store, const Settings& settings, std
   return {times[times.size() / 2], times.back()};
 }
 
+struct PlanTimes {
+  double read_s = 0.0, estimate_s = 0.0;
+  std::size_t wheels = 0, estimated_wheels = 0, due = 0;
+};
+
+// `flange wear --plan`'s path: every wheel's runs and the maintenance records read (the
+// store's part), then the estimate and the plan (the estimator's).
+PlanTimes plan_times(Store& store, int estimate_locomotives) {
+  PlanTimes times;
+  auto start = Clock::now();
+  const std::vector<flange::host::WheelSeries> series = store.wear_series();
+  const std::vector<flange::host::StoredMaintenance> maintenance = store.maintenance_events("");
+  std::vector<flange::host::WheelHistory> histories;
+  for (const flange::host::WheelSeries& wheel : series) {
+    flange::host::WheelHistory history;
+    const flange::host::WheelKey& key = wheel.wheel.wheel;
+    history.wheel = {key.locomotive, key.axle, key.side, wheel.wheel.channel};
+    for (const flange::host::SeriesPoint& point : wheel.points) {
+      history.runs.push_back({point.run_id, point.started_at,
+                              flange::host::day_of_iso_time(point.started_at), point.odometer_km,
+                              point.clearance_mm.value_or(0.0)});
+    }
+    histories.push_back(std::move(history));
+  }
+  std::map<std::tuple<std::string, int, std::string>, flange::host::WheelHistory*> by_key;
+  for (flange::host::WheelHistory& history : histories) {
+    by_key[{history.wheel.locomotive, history.wheel.axle, history.wheel.side}] = &history;
+  }
+  for (const flange::host::StoredMaintenance& stored : maintenance) {
+    const flange::host::MaintenanceRecord& event = stored.event;
+    const auto at = by_key.find({event.wheel.locomotive, event.wheel.axle, event.wheel.side});
+    if (at == by_key.end()) continue;
+    at->second->maintenance.push_back(
+        {event.at, flange::host::day_of_iso_time(event.at), event.odometer_km, event.kind});
+  }
+  times.read_s = seconds_since(start);
+  times.wheels = histories.size();
+  if (estimate_locomotives == 0) return times;
+  const std::string past_last = fmt::format("loco-{:03d}", estimate_locomotives);
+  std::erase_if(histories, [&](const flange::host::WheelHistory& history) {
+    return history.wheel.locomotive >= past_last;
+  });
+  start = Clock::now();
+  const flange::host::FleetWear wear = flange::host::estimate_fleet_wear(histories, {});
+  times.due = flange::host::plan_reprofiling(wear, {"2027-01-01", 0.05}).wheels.size();
+  times.estimate_s = seconds_since(start);
+  times.estimated_wheels = histories.size();
+  return times;
+}
+
 Settings parse(int argc, char** argv) {
   Settings settings;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
+    if (i + 1 >= argc) throw std::invalid_argument(key + " needs a value");
     const std::string value = argv[i + 1];
     if (key == "--store")
       settings.url = value;
@@ -145,16 +207,19 @@ Settings parse(int argc, char** argv) {
       settings.locomotives = std::stoi(value);
     else if (key == "--days")
       settings.days = std::stoi(value);
+    else if (key == "--estimate-locomotives")
+      settings.estimate_locomotives = std::stoi(value);
     else if (key == "--runs-per-transaction")
       settings.runs_per_transaction = std::stoi(value);
     else
       throw std::invalid_argument("unknown option " + key);
   }
   if (settings.url.empty() || settings.locomotives < 1 || settings.days < 1 ||
-      settings.days > 365 || settings.runs_per_transaction < 1) {
+      settings.days > 365 || settings.runs_per_transaction < 1 ||
+      settings.estimate_locomotives < 0 || settings.estimate_locomotives > settings.locomotives) {
     throw std::invalid_argument(
         "usage: store_bench --store URL [--locomotives N] [--days 1..365] "
-        "[--runs-per-transaction N]");
+        "[--runs-per-transaction N] [--estimate-locomotives 0..N]");
   }
   return settings;
 }
@@ -178,13 +243,18 @@ int main(int argc, char** argv) {
       fleet_times.push_back(seconds_since(start));
     }
     std::sort(fleet_times.begin(), fleet_times.end());
+    const PlanTimes plan = plan_times(*store, settings.estimate_locomotives);
     const std::uint64_t rows = counts.runs + counts.wheel_rows + counts.alarm_rows;
     fmt::print(
-        "| {} | {} x {} d | {} | {} | {} | {:.1f} | {:.0f} | {:.1f} ({:.1f}) | {} | "
-        "{:.0f} ({}) | {:.0f} |\n",
+        "| {} | {} x {} d | {} | {} | {} | {:.0f} | {:.0f} | {:.1f} ({:.1f}) | {} | "
+        "{:.1f} ({}) | {:.1f} ({}) | {} | {} | {:.0f} |\n",
         store->backend(), settings.locomotives, settings.days, counts.runs, counts.wheel_rows,
         counts.alarm_rows, ingest_s, static_cast<double>(rows) / ingest_s, history_median,
-        history_max, history_rows, 1000.0 * fleet_times[1], fleet_rows,
+        history_max, history_rows, 1000.0 * fleet_times[1], fleet_rows, plan.read_s, plan.wheels,
+        plan.estimated_wheels > 0
+            ? fmt::format("{:.1f} ({})", plan.estimate_s, plan.estimated_wheels)
+            : std::string("-"),
+        plan.estimated_wheels > 0 ? fmt::format("{}", plan.due) : std::string("-"),
         static_cast<double>(store->size_bytes()) / 1e6);
     return 0;
   } catch (const std::invalid_argument& error) {

@@ -1,15 +1,20 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The store at a fleet's scale on both backends in one run (docs/benchmarks.md, "Store"): a
-# year of a 100-locomotive fleet (36,500 runs, 438,000 wheel rows and their alarm events) into
-# a new SQLite file and into a new database on a PostgreSQL server started for the run with its
-# durable defaults (fsync on), then one wheel's history and the fleet table. Prints a table.
+# The store at a national fleet's scale on both backends in one run (docs/benchmarks.md,
+# "Store"): a year of a 1,000-locomotive fleet (365,000 runs, 4,380,000 wheel rows and their
+# alarm events) into a new database on a PostgreSQL server started for the run with its durable
+# defaults (fsync on; a temporary data folder, Unix socket, stopped and deleted before the next
+# step), then into a new SQLite file; on each, one wheel's history, the fleet table and the
+# reprofiling plan (the store's read of every wheel's runs; the estimate and plan, which do not
+# touch the store, of the first 100 locomotives, after the PostgreSQL read), and as the
+# fleet table's baseline the read-time aggregate it replaced (bench/store_fleet_aggregate.sql)
+# on the same store. Prints two tables.
 #
-#   bash bench/store_bench.sh [BUILD_DIR] [DAYS (365)] [LOCOMOTIVES (100)]
+#   bash bench/store_bench.sh [BUILD_DIR] [DAYS (365)] [LOCOMOTIVES (1000)]
 set -euo pipefail
 build=${1:-build}
 days=${2:-365}
-locomotives=${3:-100}
+locomotives=${3:-1000}
 bench=$build/bench/store_bench
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d /tmp/flange_store_bench.XXXXXX)
@@ -20,12 +25,33 @@ cleanup() {
 }
 trap cleanup EXIT
 
+# Seconds the command takes, its output dropped.
+seconds_of() {
+  local start end
+  start=$(date +%s.%N)
+  "$@" >/dev/null
+  end=$(date +%s.%N)
+  printf "%.2f\n" "$(echo "$end - $start" | bc)"
+}
+
 FLANGE_POSTGRES_DURABLE=1 bash "$here/../tests/host/store/postgres_server.sh" start "$state"
 socket=$(cat "$state")
 psql -q -h "$socket" -U flange -d postgres -c "CREATE DATABASE store_bench" >/dev/null
 
-echo "| backend | fleet | runs | wheel rows | alarm rows | ingest s | rows/s in | one wheel's history ms: median (max) | its rows | fleet table ms (wheels) | size MB |"
-echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
-"$bench" --store "sqlite:$work/store_bench.db" --days "$days" --locomotives "$locomotives"
+rows=$work/rows.md
+echo "| backend | fleet | runs | wheel rows | alarm rows | ingest s | rows/s in | one wheel's history ms: median (max) | its rows | fleet table ms (wheels) | plan: store read s (wheels) | plan: estimate and plan s (wheels) | wheels due | size MB |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 "$bench" --store "postgresql://flange@/store_bench?host=$socket" --days "$days" \
-  --locomotives "$locomotives"
+  --locomotives "$locomotives" --estimate-locomotives "$((locomotives < 100 ? locomotives : 100))"
+aggregate_pg=$(seconds_of psql -q -h "$socket" -U flange -d store_bench \
+  -f "$here/store_fleet_aggregate.sql")
+# The server's work is done: stopped before SQLite runs, so that it does not hold memory.
+bash "$here/../tests/host/store/postgres_server.sh" stop "$state"
+"$bench" --store "sqlite:$work/store_bench.db" --days "$days" --locomotives "$locomotives" \
+  --estimate-locomotives 0
+aggregate_sqlite=$(seconds_of sqlite3 "$work/store_bench.db" <"$here/store_fleet_aggregate.sql")
+echo
+echo "| backend | fleet table as the read-time aggregate (baseline), s |"
+echo "|---|---:|"
+echo "| postgresql | $aggregate_pg |"
+echo "| sqlite | $aggregate_sqlite |"

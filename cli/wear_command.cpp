@@ -12,10 +12,13 @@
 #include "cli.h"
 #include "fleet_truth_check.h"
 #include "fleet_truth_file.h"
+#include "fleet_truth_match.h"
 #include "fleet_wear.h"
 #include "input_error.h"
+#include "reprofiling_plan.h"
 #include "sim_error.h"
 #include "store.h"
+#include "store_url.h"
 #include "version.h"
 #include "wear_outputs.h"
 #include "wear_report.h"
@@ -29,7 +32,8 @@ std::string key_text(const host::WheelKey& key) {
   return fmt::format("{}|{}|{}", key.locomotive, key.axle, key.side);
 }
 
-// Every wheel's runs with a clearance estimate, and its recorded maintenance, from the store.
+// Every wheel's runs with a clearance estimate, and its recorded maintenance, from the store
+// (a few queries for the whole fleet: Store::wear_series).
 std::vector<WheelHistory> read_histories(host::Store& store) {
   std::map<std::string, std::vector<host::MaintenanceMark>> maintenance;
   for (const host::StoredMaintenance& stored : store.maintenance_events("")) {
@@ -38,11 +42,11 @@ std::vector<WheelHistory> read_histories(host::Store& store) {
         {event.at, host::day_of_iso_time(event.at), event.odometer_km, event.kind});
   }
   std::vector<WheelHistory> histories;
-  for (const host::StoredWheel& stored : store.wheels()) {
+  for (const host::WheelSeries& stored : store.wear_series()) {
     const host::WheelKey& key = stored.wheel.wheel;
     WheelHistory history;
     history.wheel = {key.locomotive, key.axle, key.side, stored.wheel.channel};
-    for (const host::WearPoint& point : store.wear_history(key)) {
+    for (const host::SeriesPoint& point : stored.points) {
       if (!point.clearance_mm) continue;  // a run without an estimate for this wheel
       history.runs.push_back({point.run_id, point.started_at,
                               host::day_of_iso_time(point.started_at), point.odometer_km,
@@ -68,6 +72,41 @@ host::SensitivityAt store_sensitivity(host::Store& store, const std::filesystem:
   std::ofstream(path, std::ios::binary) << calibrations.back().second.model_json;
   return host::calibration_sensitivity(host::load_calibration(path.string()),
                                        host::kReferenceTempC);
+}
+
+// `flange wear` reads a store: a SQLite file that is not there is an error, not a new store.
+std::unique_ptr<host::Store> open_existing_store(const std::string& url) {
+  const host::StoreUrl parsed = host::parse_store_url(url);
+  if (parsed.backend == host::StoreBackend::kSqlite && !std::filesystem::exists(parsed.target)) {
+    throw host::StoreError("store " + parsed.shown + ": no such file");
+  }
+  return host::open_store(url);
+}
+
+// Everything that can refuse the inputs, before anything is written: the truth file's fleet
+// and the plan's risk and date against the store's runs.
+void check_inputs(const WearOptions& options, const std::vector<WheelHistory>& histories) {
+  if (options.truth) {
+    check_truth_matches_runs(sim::read_fleet_truth(*options.truth), histories,
+                             options.truth->string());
+  }
+  if (options.plan) {
+    const auto [day, at] = host::last_run(histories);
+    host::check_plan_request({options.before, options.risk}, day, at);
+  }
+}
+
+// --plan: the plan's CSV (to its file or stdout) and its line on `out`; the page's section.
+std::string write_plan(const WearOptions& options, const host::FleetWear& wear, std::ostream& out) {
+  const host::ReprofilingPlan plan = host::plan_reprofiling(wear, {options.before, options.risk});
+  const std::string csv_path = options.plan_csv.value_or((options.out / "plan.csv").string());
+  if (csv_path == "-") {
+    out << host::plan_csv(plan);
+  } else {
+    host::write_plan_csv(csv_path, plan);
+    out << host::plan_summary_text(plan) << "  wrote " << csv_path << "\n";
+  }
+  return host::plan_html_section(plan);
 }
 
 // --truth: the comparison printed and written beside the outputs; false when it fails.
@@ -103,6 +142,23 @@ CLI::App* add_wear_command(CLI::App& app, WearOptions& options) {
   cmd->add_option("--max-step-mm", t.max_step_mm,
                   "h of eq. 3.38: a larger fall of the clearance between runs is a reprofiling")
       ->default_val(t.max_step_mm);
+  CLI::Option* plan =
+      cmd->add_flag("--plan", options.plan,
+                    "a reprofiling plan: the wheels to reprofile before --before at --risk, as "
+                    "plan.csv and a section of index.html");
+  cmd->add_option("--before", options.before,
+                  "the plan's horizon: a date YYYY-MM-DD after the "
+                  "last run")
+      ->needs(plan);
+  cmd->add_option("--risk", options.risk,
+                  "the plan's chance of a wheel reaching the critical clearance before its date: "
+                  "a probability strictly between 0 and 1")
+      ->default_val(options.risk)
+      ->needs(plan);
+  cmd->add_option("--plan-csv", options.plan_csv,
+                  "where the plan's CSV goes (default OUT/plan.csv; - for stdout, the summary "
+                  "then on stderr)")
+      ->needs(plan);
   return cmd;
 }
 
@@ -110,24 +166,33 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
                      std::ostream& out, std::ostream& err) {
   try {
     host::validate(options.thresholds);
-    const std::unique_ptr<host::Store> store = host::open_store(options.store);
+    if (options.plan && options.before.empty()) {
+      throw host::InputError(
+          "--before is required with --plan: a date YYYY-MM-DD after the "
+          "last run");
+    }
+    const std::unique_ptr<host::Store> store = open_existing_store(options.store);
     const std::vector<WheelHistory> histories = read_histories(*store);
     if (histories.empty()) {
       err << "flange wear: " << store->name() << ": no run with a wheel's wear estimate\n";
       return kExitFailure;
     }
+    check_inputs(options, histories);
+    // With the plan's CSV on stdout, the rest of what is said goes to stderr.
+    std::ostream& said = options.plan && options.plan_csv == "-" ? err : out;
     std::filesystem::create_directories(options.out);
     const host::FleetWear wear = host::estimate_fleet_wear(
-        histories, options.thresholds, store_sensitivity(*store, options.out, out));
+        histories, options.thresholds, store_sensitivity(*store, options.out, said));
     const std::string generated_by = runtime::generated_by(command_line);
     host::write_wear_json(options.out / "wear.json", wear, generated_by);
     host::write_wear_csv(options.out / "wear.csv", wear);
-    host::write_wear_report(options.out, wear, generated_by);
-    out << fmt::format("wear: {} wheels from {}, by days to the warning clearance ({} mm)\n",
-                       wear.wheels.size(), store->name(), wear.warning_clearance_mm);
-    out << host::fleet_wear_text(wear);
-    const bool truth_ok = !options.truth || compare_with_truth(options, wear, out);
-    out << "  wrote " << (options.out / "index.html").string() << ", wear.json and wear.csv\n";
+    const std::string plan_section = options.plan ? write_plan(options, wear, out) : "";
+    host::write_wear_report(options.out, wear, generated_by, plan_section);
+    said << fmt::format("wear: {} wheels from {}, by days to the warning clearance ({} mm)\n",
+                        wear.wheels.size(), store->name(), wear.warning_clearance_mm);
+    said << host::fleet_wear_text(wear);
+    const bool truth_ok = !options.truth || compare_with_truth(options, wear, said);
+    said << "  wrote " << (options.out / "index.html").string() << ", wear.json and wear.csv\n";
     return truth_ok ? kExitOk : kExitFailure;
   } catch (const host::StoreUrlError& error) {
     err << "flange wear: --store: " << error.what() << "\n";

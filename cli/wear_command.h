@@ -19,12 +19,20 @@ struct WearOptions {
   std::filesystem::path out;
   std::optional<std::filesystem::path> truth;  // a fleet scenario's truth file to compare with
   host::ThresholdConfig thresholds;            // the alarm settings the limits come from
+  // --plan: the wheels to reprofile before `before` at `risk` (host/wear/reprofiling_plan.h),
+  // as OUT/plan.csv (or `plan_csv`; "-" for stdout) and a section of the wear page.
+  bool plan = false;
+  std::string before;  // YYYY-MM-DD, after the last run
+  double risk = 0.05;  // in (0, 1)
+  std::optional<std::string> plan_csv;
 };
 
 CLI::App* add_wear_command(CLI::App& app, WearOptions& options);
 
-// Returns 0; 1 when the store cannot be read or an output written, or when the comparison with
-// --truth fails; 2 for a bad argument (one line naming it and its valid range).
+// Returns 0; 1 when the store cannot be read, does not exist or holds no run, an output cannot be
+// written, or the comparison with --truth fails; 2 for a bad argument (one line naming it and
+// its valid range: a --risk outside (0, 1), a --before not after the last run, a --truth file
+// of another fleet). Nothing is written when it returns 2, or 1 before the estimate.
 int run_wear_command(const WearOptions& options, const std::vector<std::string>& command_line,
                      std::ostream& out, std::ostream& err);
 

@@ -37,6 +37,7 @@ class SociStore final : public Store {
   std::vector<LocomotiveRecord> locomotives() override;
   std::vector<StoredWheel> wheels() override;
   std::vector<WearPoint> wear_history(const WheelKey& wheel) override;
+  std::vector<WheelSeries> wear_series() override;
   std::vector<FleetRow> fleet_table() override;
   std::vector<StoredMaintenance> maintenance_events(const std::string& locomotive) override;
   std::vector<StoredAlarmEvent> alarm_events(const std::string& locomotive) override;

@@ -8,6 +8,7 @@
 #include "column_batch.h"
 #include "soci_store.h"
 #include "store_transaction.h"
+#include "wheel_fit_table.h"
 
 namespace flange::host {
 
@@ -206,6 +207,7 @@ std::int64_t SociStore::record_run(const RunRecord& run) {
     RunBatches batches;
     const long long id = insert_run(run, created, batches);
     batches.flush(sql_, url_.backend);
+    if (schema_version_ >= kWheelFitSchemaVersion) add_runs_to_wheel_fit(sql_, url_.backend, {id});
     pause_for_test();
     transaction.commit();
     wheel_ids_.insert(created.begin(), created.end());
@@ -227,6 +229,9 @@ std::vector<std::int64_t> SociStore::record_runs(const std::vector<RunRecord>& r
       ids.push_back(run_ids[i]);
     }
     batches.flush(sql_, url_.backend);
+    if (schema_version_ >= kWheelFitSchemaVersion) {
+      add_runs_to_wheel_fit(sql_, url_.backend, run_ids);
+    }
     pause_for_test();
     transaction.commit();
     wheel_ids_.insert(created.begin(), created.end());

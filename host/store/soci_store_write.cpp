@@ -2,6 +2,7 @@
 // The store's writes: each one transaction, every value a bound parameter.
 #include "soci_store.h"
 #include "store_transaction.h"
+#include "wheel_fit_table.h"
 
 namespace flange::host {
 
@@ -212,6 +213,7 @@ std::int64_t SociStore::record_maintenance(const MaintenanceRecord& event) {
             " VALUES (:wheel, :at, :km, :kind, :note) RETURNING id",
         use(wheel), use(event.at), use(event.odometer_km), use(event.kind), use(event.note),
         into(id);
+    if (schema_version_ >= kWheelFitSchemaVersion) refit_wheel_since_maintenance(sql_, wheel);
     transaction.commit();
     into_cache(wheel_ids_, created);
     return id;

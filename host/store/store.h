@@ -80,6 +80,9 @@ class Store {
   virtual std::vector<StoredWheel> wheels() = 0;
   // One wheel's runs in time order. Empty for a wheel with no runs (or none stored).
   virtual std::vector<WearPoint> wear_history(const WheelKey& wheel) = 0;
+  // Every wheel's runs (the wear estimate's columns), by locomotive, axle, side, each in time
+  // order: a few queries in all, not one per wheel (a national fleet's store holds millions).
+  virtual std::vector<WheelSeries> wear_series() = 0;
   // Every wheel's summary in one query, by locomotive, axle, side.
   virtual std::vector<FleetRow> fleet_table() = 0;
   // Maintenance events of one locomotive ("" for all), in time order.

@@ -150,6 +150,21 @@ struct WearPoint {
   std::string sensor_serial;  // the sensor fitted at the time ("" when none recorded)
 };
 
+// One run of a wheel as the wear estimate reads it (Store::wear_series).
+struct SeriesPoint {
+  std::int64_t run_id = 0;
+  std::string started_at;
+  double odometer_km = 0.0;
+  std::optional<double> wear_mm;
+  std::optional<double> clearance_mm;
+};
+
+// Every run of one wheel, in time order.
+struct WheelSeries {
+  WheelRecord wheel;
+  std::vector<SeriesPoint> points;
+};
+
 struct StoredWheel {
   WheelRecord wheel;
   std::string sensor_serial;  // the sensor fitted now ("" when none)
@@ -168,9 +183,10 @@ struct StoredMaintenance {
   MaintenanceRecord event;
 };
 
-// One row of the fleet table: a wheel's runs summarised by the database (one aggregate query).
-// The rate is the least-squares slope of wear against odometer over the runs after the wheel's
-// latest maintenance event (all runs when there is none), in mm per 1000 km.
+// One row of the fleet table: a wheel's runs summarised by the database (per-wheel sums the
+// writes keep: one row per wheel is read). The rate is the least-squares slope of wear against
+// odometer over the runs at or after the wheel's latest maintenance event (all runs when there
+// is none), in mm per 1000 km.
 struct FleetRow {
   WheelKey wheel;
   std::uint64_t runs = 0;  // all runs
@@ -179,6 +195,7 @@ struct FleetRow {
   double last_odometer_km = 0.0;
   std::optional<double> last_wear_mm;
   std::optional<double> wear_rate_mm_per_1000km;  // needs two runs at distinct odometers
+  std::optional<double> wear_rate_se;             // its standard error; needs three runs
   std::string last_maintenance_at;                // "" when none
   std::uint64_t alarm_events = 0;
 };

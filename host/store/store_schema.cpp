@@ -7,6 +7,7 @@
 
 #include "store.h"
 #include "store_transaction.h"
+#include "wheel_fit_table.h"
 
 namespace flange::host {
 
@@ -88,9 +89,14 @@ std::vector<std::string> migration_2() {
   };
 }
 
+// 3: the fleet table's per-wheel sums, kept by the writes (wheel_fit_table.h), filled from the
+// runs already stored.
+std::vector<std::string> migration_3() { return wheel_fit_migration(); }
+
 // Migration N is migrations()[N - 1]; kStoreSchemaVersion is their count.
 const std::vector<std::vector<std::string>>& migrations() {
-  static const std::vector<std::vector<std::string>> steps = {migration_1(), migration_2()};
+  static const std::vector<std::vector<std::string>> steps = {migration_1(), migration_2(),
+                                                              migration_3()};
   return steps;
 }
 

@@ -120,7 +120,7 @@ void write_table(std::ofstream& html, const FleetWear& fleet) {
 }  // namespace
 
 void write_wear_report(const std::filesystem::path& dir, const FleetWear& fleet,
-                       const std::string& generated_by) {
+                       const std::string& generated_by, const std::string& sections_html) {
   std::map<std::string, Panels> locomotives;
   for (const WheelWear& w : fleet.wheels) {
     locomotives[w.wheel.locomotive][{w.wheel.axle, w.wheel.side}] = &w;
@@ -142,6 +142,7 @@ void write_wear_report(const std::filesystem::path& dir, const FleetWear& fleet,
           "when a drift explains it better, a missed reprofiling (red) when a step does. How "
           "each figure is made: docs/fleet.md.</p>\n";
   write_table(html, fleet);
+  html << sections_html;
   int number = 0;
   for (const auto& [locomotive, panels] : locomotives) {
     // Numbered, not named: a locomotive's name may hold any character.

@@ -12,8 +12,9 @@
 
 namespace flange::host {
 
-// Writes DIR/index.html and DIR/wear_<locomotive>.svg (DIR exists).
+// Writes DIR/index.html and DIR/wear_<locomotive>.svg (DIR exists). `sections_html`, when
+// given, goes after the fleet table (the reprofiling plan: reprofiling_plan.h).
 void write_wear_report(const std::filesystem::path& dir, const FleetWear& fleet,
-                       const std::string& generated_by);
+                       const std::string& generated_by, const std::string& sections_html = "");
 
 }  // namespace flange::host

@@ -116,7 +116,8 @@ TEST_P(StoreUnderTroubleTest, AStoreOfANewerSchemaIsRefusedUnchanged) {
         << message;
     EXPECT_EQ(message.find('\n'), std::string::npos);
   }
-  execute_sql(url(), "UPDATE schema_version SET version = 2");
+  execute_sql(url(),
+              "UPDATE schema_version SET version = " + std::to_string(host::kStoreSchemaVersion));
   EXPECT_EQ(open()->run_count(), 1u);
 }
 
@@ -128,6 +129,21 @@ TEST_P(StoreUnderTroubleTest, AnOlderStoreIsMigratedKeepingItsRows) {
   EXPECT_EQ(store->locomotives().at(0).description, "from v1");
   const auto run = store->record_run(test_run("old", test_time(0), 1.0, 0.1));  // needs v2
   EXPECT_EQ(store->run_trace(run).size(), 36u);
+}
+
+// A version 2 store (no per-wheel sums) opens: migration 3 fills the sums from its runs, and the
+// writes keep them from then on.
+TEST_P(StoreUnderTroubleTest, AVersion2StoreGetsItsFleetSumsFromItsRuns) {
+  {
+    const auto old = host::open_store_at_schema_version(url(), 2);
+    write_mixed_history(*old);
+  }
+  auto store = open();
+  EXPECT_EQ(store->schema_version(), host::kStoreSchemaVersion);
+  expect_fleet_table_matches_runs(*store);
+  store->record_run(test_run("N", test_time(12), 9900.0, 1.2));
+  store->record_maintenance({{"N", 2, "right"}, test_time(10), 9000.0, "reprofile", "after"});
+  expect_fleet_table_matches_runs(*store);
 }
 
 TEST_P(StoreUnderTroubleTest, ATableThatIsNotAFlangeStoreIsRefused) {

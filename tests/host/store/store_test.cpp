@@ -92,6 +92,16 @@ TEST_P(StoreTest, WearHistoryIsInTimeOrderAndTheFleetRateFollowsTheLatestReprofi
   EXPECT_TRUE(store->maintenance_events("other").empty());
 }
 
+TEST_P(StoreTest, TheFleetTableTheWritesKeepEqualsOneRecomputedFromTheRuns) {
+  auto store = open();
+  write_mixed_history(*store);
+  expect_fleet_table_matches_runs(*store);
+  const auto fleet = store->fleet_table();
+  EXPECT_EQ(fleet.front().wheel, (WheelKey{"M", 1, "left"}));
+  EXPECT_EQ(fleet.front().last_maintenance_at, test_time(6, 1));  // not the backdated one
+  EXPECT_EQ(fleet.front().runs_since_maintenance, 3u);
+}
+
 TEST_P(StoreTest, NamesWithQuotesAndSemicolonsAreStoredAsData) {
   auto store = open();
   const std::string hostile = "O'Brien\"; DROP TABLE runs; --";

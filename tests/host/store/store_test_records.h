@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "store.h"
 #include "store_records.h"
 
 namespace flange::testing {
@@ -15,5 +16,14 @@ std::string test_time(int day, int hour = 0);
 // axle 1 left and a trace of three kilometres per wheel.
 host::RunRecord test_run(const std::string& locomotive, const std::string& started_at,
                          double odometer_km, double wear_mm);
+
+// Two locomotives' runs written every way the store takes them: one by one out of time order, in
+// batches, a run tied in time with another, a wheel without a wear figure in one run, a wheel
+// with no runs, maintenance before a wheel's runs, between them and backdated.
+void write_mixed_history(host::Store& store);
+
+// The fleet table's figures recomputed from every wheel's history, its maintenance events and
+// alarm events, checked against `store.fleet_table()` (what the writes kept).
+void expect_fleet_table_matches_runs(host::Store& store);
 
 }  // namespace flange::testing

@@ -1,0 +1,205 @@
+// SPDX-License-Identifier: MIT
+#include "reprofiling_plan.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <boost/math/distributions/students_t.hpp>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include "input_error.h"
+#include "limit_forecast.h"
+#include "report_format.h"
+
+namespace flange::host {
+namespace {
+
+// "YYYY-MM-DD" and nothing else, as days since 1970-01-01; InputError otherwise.
+double day_of_plan_date(const std::string& text) {
+  const bool shaped = text.size() == 10 && text[4] == '-' && text[7] == '-' &&
+                      std::all_of(text.begin(), text.end(),
+                                  [](char c) { return c == '-' || (c >= '0' && c <= '9'); });
+  try {
+    if (shaped) return day_of_iso_time(text);
+  } catch (const std::invalid_argument&) {
+  }
+  throw InputError(fmt::format("--before: '{}' is not a date: YYYY-MM-DD, after the last run",
+                               printable_excerpt(text)));
+}
+
+// The Student t quantile at `p` with the fit's degrees of freedom (at least 1).
+double t_quantile(double p, int dof) {
+  return boost::math::quantile(boost::math::students_t(std::max(1, dof)), p);
+}
+
+// The wheel's plan entry from the forecast at its rate at risk; nothing without a forecast.
+std::optional<PlannedWheel> planned_wheel(const WheelWear& wheel, const FleetWear& fleet,
+                                          double risk) {
+  if (!wheel.fit || wheel.runs.empty() || !(wheel.km_per_day > 0.0)) return std::nullopt;
+  PlannedWheel planned;
+  planned.wheel = wheel.wheel;
+  planned.status = wheel.status;
+  planned.wear_now_mm = wheel.wear_now_mm;
+  planned.rate_mm_per_1000km = wheel.rate_mm_per_1000km;
+  planned.rate_at_risk_mm_per_1000km = rate_at_risk(wheel, risk);
+  planned.critical_date = wheel.critical.reached ? "reached" : wheel.critical.date;
+  ForecastInput input;
+  input.clearance_now_mm = wheel.clearance_now_mm;
+  input.rate_mm_per_km = input.rate_low_mm_per_km = input.rate_high_mm_per_km =
+      planned.rate_at_risk_mm_per_1000km / 1000.0;
+  input.km_per_day = wheel.km_per_day;
+  input.last_day = wheel.runs.back().day;
+  const LimitForecast at_risk = forecast_limit(input, fleet.critical_clearance_mm);
+  planned.reached = at_risk.reached;
+  if (!at_risk.days) return planned;  // never at this rate: due_date stays ""
+  planned.due_day = input.last_day + *at_risk.days;
+  planned.due_date = date_of_day(planned.due_day);
+  return planned;
+}
+
+std::string wheel_text(const WheelId& wheel) {
+  return fmt::format("{} axle {} {}", wheel.locomotive, wheel.axle, wheel.side);
+}
+
+// A CSV field: quoted when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+void check_plan_request(const PlanRequest& request, double last_run_day,
+                        const std::string& last_run_at) {
+  if (!(request.risk > 0.0 && request.risk < 1.0)) {
+    throw InputError(
+        fmt::format("--risk: {} is outside its valid range: a probability strictly between 0 and 1",
+                    request.risk));
+  }
+  const double before_day = day_of_plan_date(request.before);
+  if (!(before_day > std::floor(last_run_day))) {
+    throw InputError(fmt::format(
+        "--before: {} is not after the store's last run ({}): a date YYYY-MM-DD after {}",
+        request.before, printable_excerpt(last_run_at), date_of_day(last_run_day)));
+  }
+}
+
+std::pair<double, std::string> last_run(const std::vector<WheelHistory>& histories) {
+  std::pair<double, std::string> latest{-INFINITY, ""};
+  for (const WheelHistory& history : histories) {
+    for (const WearObservation& run : history.runs) {
+      if (run.day > latest.first) latest = {run.day, run.at};
+    }
+  }
+  if (histories.empty() || latest.second.empty()) {
+    throw std::invalid_argument("last_run: no runs");
+  }
+  return latest;
+}
+
+double rate_at_risk(const WheelWear& wheel, double risk) {
+  const double t = t_quantile(1.0 - risk, wheel.fit ? wheel.fit->dof : 1);
+  const double t_stated = t95(wheel.fit ? wheel.fit->dof : 1);
+  // The half of the stated interval on the side the quantile lies (they differ when the
+  // interval is not symmetric about the rate).
+  const double half = t >= 0.0 ? wheel.rate_high - wheel.rate_mm_per_1000km
+                               : wheel.rate_mm_per_1000km - wheel.rate_low;
+  return wheel.rate_mm_per_1000km + t * half / t_stated;
+}
+
+ReprofilingPlan plan_reprofiling(const FleetWear& fleet, const PlanRequest& request) {
+  ReprofilingPlan plan;
+  plan.request = request;
+  double last_day = -INFINITY;
+  for (const WheelWear& wheel : fleet.wheels) {
+    if (!wheel.runs.empty() && wheel.runs.back().day > last_day) {
+      last_day = wheel.runs.back().day;
+      plan.last_run_at = wheel.runs.back().at;
+    }
+  }
+  check_plan_request(request, last_day, plan.last_run_at);
+  plan.before_day = day_of_plan_date(request.before);
+  for (const WheelWear& wheel : fleet.wheels) {
+    const std::optional<PlannedWheel> planned = planned_wheel(wheel, fleet, request.risk);
+    if (!planned) {
+      plan.unplanned.push_back(wheel);
+    } else if (!planned->due_date.empty() && planned->due_day < plan.before_day) {
+      plan.wheels.push_back(*planned);
+    }
+  }
+  std::stable_sort(
+      plan.wheels.begin(), plan.wheels.end(),
+      [](const PlannedWheel& a, const PlannedWheel& b) { return a.due_day < b.due_day; });
+  return plan;
+}
+
+std::string plan_csv(const ReprofilingPlan& plan) {
+  std::string csv =
+      "locomotive,axle,side,due_date,status,wear_now_mm,rate_mm_per_1000km,"
+      "rate_at_risk_mm_per_1000km,critical_date_at_rate\n";
+  for (const PlannedWheel& w : plan.wheels) {
+    csv += fmt::format("{},{},{},{},{},{:.3f},{:.4f},{:.4f},{}\n", csv_field(w.wheel.locomotive),
+                       w.wheel.axle, w.wheel.side, w.due_date, csv_field(w.status), w.wear_now_mm,
+                       w.rate_mm_per_1000km, w.rate_at_risk_mm_per_1000km, w.critical_date);
+  }
+  return csv;
+}
+
+void write_plan_csv(const std::filesystem::path& path, const ReprofilingPlan& plan) {
+  std::ofstream file(path, std::ios::binary);
+  file << plan_csv(plan);
+  file.close();
+  if (!file) throw std::runtime_error("cannot write " + path.string());
+}
+
+std::string plan_html_section(const ReprofilingPlan& plan) {
+  std::string html = fmt::format(
+      "<h2>Reprofiling plan before {}</h2>\n<p>{} wheels must be reprofiled before {} for a risk "
+      "of {:g} % of reaching the critical clearance first (each wheel's date: its current "
+      "flange at the critical clearance at the rate it exceeds with that probability, from the "
+      "last run, {}). Soonest first.</p>\n",
+      coeffs::html_escape(plan.request.before), plan.wheels.size(),
+      coeffs::html_escape(plan.request.before), 100.0 * plan.request.risk,
+      coeffs::html_escape(plan.last_run_at));
+  html +=
+      "<table><tr><th>reprofile by</th><th>locomotive</th><th>wheel</th><th>status</th>"
+      "<th>wear now (mm)</th><th>rate (mm/1000 km)</th><th>rate at risk</th>"
+      "<th>critical at the rate</th></tr>\n";
+  for (const PlannedWheel& w : plan.wheels) {
+    html += fmt::format(
+        "<tr><td>{}</td><td>{}</td><td>axle {} {}</td><td>{}</td><td>{:.3f}</td><td>{:.4f}</td>"
+        "<td>{:.4f}</td><td>{}</td></tr>\n",
+        w.reached ? w.due_date + " (reached)" : w.due_date, coeffs::html_escape(w.wheel.locomotive),
+        w.wheel.axle, w.wheel.side, coeffs::html_escape(w.status), w.wear_now_mm,
+        w.rate_mm_per_1000km, w.rate_at_risk_mm_per_1000km,
+        w.critical_date.empty() ? "-" : w.critical_date);
+  }
+  html += "</table>\n";
+  if (!plan.unplanned.empty()) {
+    html += "<p>Not planned (no forecast: too few runs, or no distance run):";
+    for (const WheelWear& w : plan.unplanned) {
+      html += " " + coeffs::html_escape(wheel_text(w.wheel)) + ";";
+    }
+    html += "</p>\n";
+  }
+  return html;
+}
+
+std::string plan_summary_text(const ReprofilingPlan& plan) {
+  std::string text = fmt::format("plan: {} wheels to reprofile before {} at a risk of {:g}\n",
+                                 plan.wheels.size(), plan.request.before, plan.request.risk);
+  if (!plan.wheels.empty()) {
+    text += fmt::format("  first: {} by {}\n", wheel_text(plan.wheels.front().wheel),
+                        plan.wheels.front().due_date);
+  }
+  if (!plan.unplanned.empty()) {
+    text += fmt::format("  {} wheels without a forecast are not planned\n", plan.unplanned.size());
+  }
+  return text;
+}
+
+}  // namespace flange::host

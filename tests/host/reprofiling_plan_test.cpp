@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: MIT
+// The reprofiling plan: each wheel's date from its rate at the chosen risk, the wheels due
+// before the horizon soonest first, the bad requests refused, and the risk kept: over many
+// wheels with known rates, the share that reach the critical clearance before their date is
+// the risk asked for.
+#include "reprofiling_plan.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "input_error.h"
+
+namespace flange::host {
+namespace {
+
+constexpr double kLastDay = 20500.25;  // 2026-02-16T06:00Z
+
+// A wheel as the estimator leaves it: `gap_mm` short of the 12 mm critical clearance, rate 0.1
+// mm/1000 km with the 95 % interval [0.08, 0.12], 100 km a day.
+WheelWear wheel(const std::string& loco, double gap_mm, double rate = 0.1, double half = 0.02) {
+  WheelWear w;
+  w.wheel = {loco, 1, "left", 0};
+  w.runs.push_back({1, "2026-02-16T06:00:00Z", kLastDay, 50000.0, 12.0 - gap_mm});
+  WearLineFit fit;
+  fit.dof = 100000;  // the t quantiles are the normal ones
+  fit.rate_mm_per_km = rate / 1000.0;
+  w.fit = fit;
+  w.rate_mm_per_1000km = rate;
+  w.rate_low = rate - half;
+  w.rate_high = rate + half;
+  w.clearance_now_mm = 12.0 - gap_mm;
+  w.km_per_day = 100.0;
+  return w;
+}
+
+FleetWear fleet_of(std::vector<WheelWear> wheels) {
+  FleetWear fleet;
+  fleet.critical_clearance_mm = 12.0;
+  fleet.wheels = std::move(wheels);
+  return fleet;
+}
+
+TEST(ReprofilingPlan, TheRateAtRiskIsTheStatedIntervalsQuantile) {
+  const WheelWear w = wheel("A", 2.0);
+  EXPECT_NEAR(rate_at_risk(w, 0.025), 0.12, 1e-6);  // the interval's upper end
+  EXPECT_NEAR(rate_at_risk(w, 0.975), 0.08, 1e-6);  // its lower end
+  EXPECT_NEAR(rate_at_risk(w, 0.5), 0.1, 1e-12);
+  // 5 %: 1.645 of the 1.960 standard errors the 95 % half-width stands for.
+  EXPECT_NEAR(rate_at_risk(w, 0.05), 0.1 + 0.02 * 1.6449 / 1.9600, 1e-4);
+  WheelWear lopsided = w;  // an interval wider above than below
+  lopsided.rate_high = 0.16;
+  EXPECT_NEAR(rate_at_risk(lopsided, 0.025), 0.16, 1e-6);
+  EXPECT_NEAR(rate_at_risk(lopsided, 0.975), 0.08, 1e-6);
+}
+
+TEST(ReprofilingPlan, DueDatesFromTheRateAtRiskSoonestFirst) {
+  // 2 mm at 0.12 mm/1000 km: 16,667 km, 166.7 days; 1 mm: 83.3 days; 3 mm: 250 days.
+  const FleetWear fleet = fleet_of({wheel("far", 3.0), wheel("near", 1.0), wheel("mid", 2.0)});
+  const ReprofilingPlan plan = plan_reprofiling(fleet, {"2026-10-01", 0.025});
+  ASSERT_EQ(plan.wheels.size(), 2u);  // 2026-10-01 is day 20727: 226.75 days after the last run
+  EXPECT_EQ(plan.wheels[0].wheel.locomotive, "near");
+  EXPECT_NEAR(plan.wheels[0].due_day, kLastDay + 1000.0 / 0.12 / 100.0, 1e-6);
+  EXPECT_EQ(plan.wheels[0].due_date, date_of_day(kLastDay + 83.33));
+  EXPECT_EQ(plan.wheels[1].wheel.locomotive, "mid");
+  EXPECT_NEAR(plan.wheels[1].due_day, kLastDay + 2000.0 / 0.12 / 100.0, 1e-6);
+  EXPECT_EQ(plan.last_run_at, "2026-02-16T06:00:00Z");
+  const std::string csv = plan_csv(plan);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "locomotive,axle,side,due_date,status,wear_now_mm,rate_mm_per_1000km,"
+            "rate_at_risk_mm_per_1000km,critical_date_at_rate");
+  EXPECT_NE(csv.find("\nnear,1,left," + plan.wheels[0].due_date + ",ok,"), std::string::npos);
+  // A lower risk brings the dates forward: the far wheel is due after 250 days at 0.12 mm/1000
+  // km (2026-10-24), after 300 at the fitted rate (2026-12-13).
+  EXPECT_EQ(plan_reprofiling(fleet, {"2026-11-01", 0.025}).wheels.size(), 3u);
+  EXPECT_EQ(plan_reprofiling(fleet, {"2026-11-01", 0.5}).wheels.size(), 2u);
+  EXPECT_EQ(plan_reprofiling(fleet, {"2027-01-01", 0.5}).wheels.size(), 3u);
+  EXPECT_EQ(plan_reprofiling(fleet, {"2026-10-01", 0.9}).wheels.size(), 1u);
+}
+
+TEST(ReprofilingPlan, AWheelAtTheLimitIsDueNowOneWithoutAForecastIsNotPlanned) {
+  WheelWear reached = wheel("reached", -0.5);
+  WheelWear shrinking = wheel("shrinking", 2.0, -0.05, 0.01);  // never at any risk asked
+  WheelWear unknown = wheel("unknown", 2.0);
+  unknown.fit.reset();
+  unknown.status = "too few runs";
+  const ReprofilingPlan plan =
+      plan_reprofiling(fleet_of({shrinking, unknown, reached}), {"2026-02-17", 0.05});
+  ASSERT_EQ(plan.wheels.size(), 1u);
+  EXPECT_EQ(plan.wheels[0].wheel.locomotive, "reached");
+  EXPECT_TRUE(plan.wheels[0].reached);
+  EXPECT_EQ(plan.wheels[0].due_date, "2026-02-16");
+  ASSERT_EQ(plan.unplanned.size(), 1u);
+  EXPECT_EQ(plan.unplanned[0].wheel.locomotive, "unknown");
+  EXPECT_NE(plan_html_section(plan).find("unknown axle 1 left"), std::string::npos);
+}
+
+TEST(ReprofilingPlan, BadRequestsAreRefusedWithTheirRange) {
+  const FleetWear fleet = fleet_of({wheel("A", 2.0)});
+  const auto message = [&](const PlanRequest& request) {
+    try {
+      plan_reprofiling(fleet, request);
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  for (const double risk : {0.0, 1.0, -0.1, 1.5, std::nan("")}) {
+    EXPECT_NE(message({"2026-10-01", risk}).find("--risk"), std::string::npos) << risk;
+  }
+  EXPECT_EQ(message({"2026-10-01", 1e-9}), "accepted");
+  EXPECT_NE(message({"2026-02-16", 0.05}).find("is not after the store's last run"),
+            std::string::npos);
+  EXPECT_NE(message({"2025-12-31", 0.05}).find("a date YYYY-MM-DD after 2026-02-16"),
+            std::string::npos);
+  for (const char* date : {"2026-13-01", "2026-02-30", "next week", "2026-10-01T00:00Z", ""}) {
+    EXPECT_NE(message({date, 0.05}).find("is not a date"), std::string::npos) << date;
+  }
+}
+
+// Wheels with known rates through the estimator (white noise, as its interval assumes): the
+// share whose true distance to the critical clearance is shorter than the plan's is the risk.
+TEST(ReprofilingPlan, TheRiskAskedForIsTheShareThatReachTheLimitFirst) {
+  std::mt19937 random(20260216);
+  std::uniform_real_distribution<double> rate_of(0.04, 0.1), km_of_day(150.0, 750.0);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  std::vector<WheelHistory> histories;
+  std::map<std::string, std::pair<double, double>> truth;  // rate, clearance at the last run
+  for (int loco = 0; loco < 400; ++loco) {
+    WheelHistory h{{fmt::format("L{:03d}", loco), 1, loco % 2 ? "right" : "left", 0}, {}, {}};
+    const double rate = rate_of(random);
+    double odometer = 0.0, clearance = 4.0;
+    for (int day = 0; day < 60; ++day) {
+      h.runs.push_back(
+          {day, "2026-01-01T06:00:00Z", 20454.25 + day, odometer, clearance + noise(random)});
+      const double km = km_of_day(random);
+      odometer += km;
+      clearance += rate * km / 1000.0;
+    }
+    truth[h.wheel.locomotive] = {
+        rate, clearance - rate * (odometer - h.runs.back().odometer_km) / 1000.0};
+    histories.push_back(std::move(h));
+  }
+  const FleetWear fleet = estimate_fleet_wear(histories, {});
+  for (const double risk : {0.1, 0.3}) {
+    const ReprofilingPlan plan = plan_reprofiling(fleet, {"2200-01-01", risk});
+    ASSERT_EQ(plan.wheels.size(), 400u);
+    int first = 0;
+    for (const PlannedWheel& w : plan.wheels) {
+      const auto& [rate, clearance_now] = truth.at(w.wheel.locomotive);
+      const WheelWear* estimated = nullptr;
+      for (const WheelWear& e : fleet.wheels) {
+        if (e.wheel == w.wheel) estimated = &e;
+      }
+      const double due_km = (w.due_day - estimated->runs.back().day) * estimated->km_per_day;
+      const double true_km = (fleet.critical_clearance_mm - clearance_now) / (rate / 1000.0);
+      if (true_km < due_km) ++first;
+    }
+    // Binomial(400, risk): within 3.5 standard deviations.
+    const double sd = std::sqrt(400.0 * risk * (1.0 - risk));
+    EXPECT_NEAR(first, 400.0 * risk, 3.5 * sd) << "risk " << risk;
+  }
+}
+
+}  // namespace
+}  // namespace flange::host
