@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -35,6 +36,7 @@ FleetAltWritten write_days(const FleetAltTruth& truth, const fs::path& dir,
   runs << "started_at,locomotive,manifest,distance_km,odometer_km\n";
   const int first = truth.settings.start_day;
   for (int day = 0; day < truth.settings.days; ++day) {
+    std::map<std::string, std::string> lines;  // by start time: the day's runs in time order
     for (std::size_t l = 0; l < truth.locomotives.size(); ++l) {
       const LocomotiveHistory& loco = truth.locomotives[l];
       const LocomotiveDay& today = loco.days[static_cast<std::size_t>(day)];
@@ -44,11 +46,13 @@ FleetAltWritten write_days(const FleetAltTruth& truth, const fs::path& dir,
       const fs::path folder = fs::path("days") / date_text(first + day) / loco.name;
       write_locomotive_day(truth, static_cast<int>(l), day, dir / folder, generated_by);
       const double km = recording_km(truth, today.route);
-      runs << fmt::format("{},{},{},{:.3f},{:.3f}\n", utc_text(first + day, today.start_hour),
-                          loco.name, (folder / "locomotive.json").string(), km,
-                          today.odometer_reading_km + km);
+      const std::string started_at = utc_text(first + day, today.start_hour);
+      lines[started_at + loco.name] =
+          fmt::format("{},{},{},{:.3f},{:.3f}\n", started_at, loco.name,
+                      (folder / "locomotive.json").string(), km, today.odometer_reading_km + km);
       ++written.runs;
     }
+    for (const auto& [key, line] : lines) runs << line;
   }
   check_written(runs, runs_path);
   return written;
