@@ -9,9 +9,11 @@
 // no healthy sensor flagged and the healthy wheels' rates near the truth.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "flange_in_process.h"
@@ -130,6 +132,20 @@ TEST_P(FleetAltService, WearThroughTheServicePathAgainstTheTruth) {
       last = point.odometer_km;
     }
   }
+  // The depot's records as the reference: a reprofiled wheel's wear is 0 at its first run after
+  // the lathe; a replaced sensor's wheel keeps the wear it had.
+  for (const auto& row : csv_rows(depot / "maintenance.csv")) {
+    if (row[4] != "reprofile" && row[4] != "sensor_replaced") continue;
+    const host::WheelKey key{row[1], std::stoi(row[2]), row[3].empty() ? "left" : row[3]};
+    std::optional<double> before, after;
+    for (const host::WearPoint& point : opened->wear_history(key)) {
+      if (point.started_at < row[0]) before = point.wear_mm;
+      if (point.started_at > row[0] && !after) after = point.wear_mm;
+    }
+    if (!after || !before) continue;
+    if (row[4] == "reprofile") EXPECT_NEAR(*after, 0.0, 1e-9) << row[0];
+    if (row[4] == "sensor_replaced") EXPECT_NEAR(*after, *before, 1e-9) << row[0];
+  }
   EXPECT_GT(check["reprofilings"].get<int>(), 0) << "the seed must show a lathe pass";
   EXPECT_EQ(check["reprofilings_found"], check["reprofilings"]);
   EXPECT_EQ(check["healthy_flagged"], 0);
@@ -142,6 +158,82 @@ TEST_P(FleetAltService, WearThroughTheServicePathAgainstTheTruth) {
     EXPECT_TRUE(std::abs(error) <= 0.25 || inside)
         << w["locomotive"] << " axle " << w["axle"] << " " << w["side"] << ": " << error;
   }
+}
+
+// A small depot's folder and a store with its calibration: for the refusals below.
+fs::path small_depot(const std::string& name, std::string& store) {
+  const fs::path dir = testing::fresh_test_dir(name);
+  store = "sqlite:" + (dir / "store.db").string();
+  flange_ok({"simulate", "--scenario", "fleet-alt", "--locomotives", "1", "--days", "21", "--seed",
+             "3", "--duration", "60", "--out", (dir / "depot").string()});
+  flange_ok({"calibrate", "--store", store, "--append", (dir / "depot/bench/bench_1.csv").string(),
+             "--out", (dir / "depot/model.json").string()});
+  return dir / "depot";
+}
+
+TEST(FleetAltServiceRefusals, AMaintenanceRecordMissingWhatItsKindNeeds) {
+  std::string store;
+  small_depot("fleet_alt_refusals", store);
+  const std::vector<std::string> base{
+      "maintenance", "--store", store, "--locomotive", "A01", "--at", "2027-03-05T12:00:00Z"};
+  for (const auto& [extra, named] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--kind", "reprofile"}, "--axle"},
+           {{"--kind", "wheelset_moved", "--axle", "2"}, "--from-axle"},
+           {{"--kind", "wheelset_moved", "--axle", "2", "--from-axle", "2"}, "--from-axle"},
+           {{"--kind", "sensor_replaced", "--axle", "2"}, "--side"},
+           {{"--kind", "odometer_reset", "--axle", "2", "--odometer-km", "5"}, "--axle"},
+           {{"--kind", "odometer_reset"}, "--odometer-km"},
+           {{"--kind", "reprofile", "--axle", "7"}, "--axle"},
+           {{"--kind", "repainted", "--axle", "1"}, "--kind"}}) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    const FlangeOutcome outcome = run_flange_captured(args);
+    EXPECT_EQ(outcome.status, 2) << command_text(args);
+    EXPECT_NE(outcome.err.find(named), std::string::npos) << command_text(args) << outcome.err;
+    EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
+  }
+  EXPECT_TRUE(host::open_store(store)->maintenance_events("").empty());
+}
+
+TEST(FleetAltServiceRefusals, AnOdometerThatRunsBackwardsWithoutARecordedReset) {
+  std::string store;
+  const fs::path depot = small_depot("fleet_alt_odometer", store);
+  const auto runs = csv_rows(depot / "runs.csv");
+  ASSERT_GE(runs.size(), 2u);
+  auto run_args = [&](const std::vector<std::string>& row, const std::string& odometer) {
+    return std::vector<std::string>{"run",
+                                    (std::string("--manifest")),
+                                    (depot / row[2]).string(),
+                                    "--calibration",
+                                    (depot / "model.json").string(),
+                                    "--coeffs",
+                                    kMeasurement,
+                                    "--store",
+                                    store,
+                                    "--locomotive",
+                                    row[1],
+                                    "--started-at",
+                                    row[0],
+                                    "--distance-km",
+                                    row[3],
+                                    "--odometer-km",
+                                    odometer};
+  };
+  flange_ok(run_args(runs[0], runs[0][4]));
+  const std::vector<std::string> backwards = run_args(runs[1], "12.5");
+  const FlangeOutcome refused = run_flange_captured(backwards);
+  EXPECT_EQ(refused.status, 2) << command_text(backwards);
+  EXPECT_NE(refused.err.find("--odometer-km 12.5"), std::string::npos) << refused.err;
+  EXPECT_EQ(host::open_store(store)->run_count(), 1u);
+  // Recorded, the reset is counted on from: the run is stored after the first one's odometer.
+  flange_ok({"maintenance", "--store", store, "--locomotive", runs[1][1], "--kind",
+             "odometer_reset", "--at", runs[0][0].substr(0, 11) + "23:00:00Z", "--odometer-km",
+             runs[0][4]});
+  flange_ok(backwards);
+  const std::vector<host::WearPoint> history =
+      host::open_store(store)->wear_history({runs[1][1], 1, "left"});
+  ASSERT_EQ(history.size(), 2u);
+  EXPECT_NEAR(history[1].odometer_km, std::stod(runs[0][4]) + 12.5, 1e-6);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, FleetAltService,
