@@ -14,6 +14,7 @@
 #include "diagnose_selftest_command.h"
 #include "hw_diagnose_command.h"
 #include "input_notes.h"
+#include "maintenance_command.h"
 #include "printable_stream.h"
 #include "run_command.h"
 #include "simulate_command.h"
@@ -53,6 +54,7 @@ struct Subcommands {
   HwDiagnoseOptions hw_diagnose_options;    // --hw: the float design against the Verilated RTL
   SelftestCommandOptions selftest_options;  // --selftest: the blind check of the data layer
   WearOptions wear_options;
+  MaintenanceOptions maintenance_options;
   CLI::App* design = nullptr;
   CLI::App* calibrate = nullptr;
   CLI::App* run = nullptr;
@@ -63,6 +65,7 @@ struct Subcommands {
   CLI::App* stream = nullptr;
   CLI::App* diagnose = nullptr;
   CLI::App* wear = nullptr;
+  CLI::App* maintenance = nullptr;
 
   void add_to(CLI::App& app) {
     design = add_design_command(app, design_options);
@@ -75,11 +78,12 @@ struct Subcommands {
     stream = add_stream_command(app, stream_options);
     diagnose = add_diagnose_command(app, diagnose_options);
     wear = add_wear_command(app, wear_options);
+    maintenance = add_maintenance_command(app, maintenance_options);
     add_hw_diagnose_options(*diagnose, hw_diagnose_options);
     add_selftest_options(*diagnose, selftest_options);
     // The three layers of diagnose take different inputs: say so rather than ignore one.
-    for (const char* data_option :
-         {"--real", "--holdout", "--holdout-fraction", "--real-start", "--holdout-start", "--twin"}) {
+    for (const char* data_option : {"--real", "--holdout", "--holdout-fraction", "--real-start",
+                                    "--holdout-start", "--twin"}) {
       diagnose->get_option("--selftest")->excludes(data_option);
       diagnose->get_option("--hw")->excludes(data_option);
     }
@@ -98,6 +102,7 @@ struct Subcommands {
     if (stream->parsed()) return run_stream_command(stream_options, out, err);
     if (diagnose->parsed()) return run_diagnose_layer(out, err);
     if (wear->parsed()) return run_wear_command(wear_options, args, out, err);
+    if (maintenance->parsed()) return run_maintenance_command(maintenance_options, out, err);
     return kExitBadArgument;
   }
 

@@ -89,9 +89,17 @@ void add_run_store_options(CLI::App& cmd, RunStoreOptions& store, CLI::Option* m
       ->needs(url)
       ->check(CLI::Range(0.0, 1e5));
   cmd.add_option("--odometer-km", store.odometer_km,
-                 "with --store: the locomotive's odometer at the end of the run, km")
+                 "with --store: the locomotive's odometer at the end of the run, km (as read: a "
+                 "reset recorded with flange maintenance is counted on from)")
       ->needs(url)
       ->check(CLI::Range(0.0, 1e8));
+  cmd.add_option("--new-flange-clearance-mm", store.new_flange_clearance_mm,
+                 "with --store and --manifest: each wheel's clearance over a new flange, the "
+                 "reference of its wear until the depot records a change (default: the sensor "
+                 "gap of the alarm settings, 2 mm)")
+      ->needs(url)
+      ->needs(manifest)
+      ->check(CLI::Range(0.1, 10.0));
 }
 
 }  // namespace

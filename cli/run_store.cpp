@@ -10,6 +10,7 @@
 #include "content_sha256.h"
 #include "locomotive_run_record.h"
 #include "utc_time.h"
+#include "wheel_wear_reference.h"
 
 namespace flange::cli {
 
@@ -113,11 +114,15 @@ std::int64_t store_locomotive_run(host::Store& store, const RunStoreOptions& opt
   for (const host::ChannelRun& channel : run.channels) {
     hashes += host::file_sha256(channel.options.input) + "\n";
   }
-  // Each wheel's clearance at reference conditions; the wear stays for `flange wear`, which
-  // reads the clearance (the sensor's gap over a new flange is not known here).
+  // Each wheel's clearance at reference conditions, and its wear against the reference the
+  // depot's records give (wheel_wear_reference.h).
   host::RunRecord record = locomotive_run_record(run, locomotive, options.distance_km);
-  describe_run(record, store, options, run.channels.at(0).options, run.manifest.path,
-               host::text_sha256(hashes), locomotive);
+  const host::RunOptions& first = run.channels.at(0).options;
+  describe_run(record, store, options, first, run.manifest.path, host::text_sha256(hashes),
+               locomotive);
+  record.odometer_km = continuous_odometer(store, record, options.odometer_km);
+  fill_wheel_wear(store, record,
+                  options.new_flange_clearance_mm.value_or(first.thresholds.sensor_gap_mm));
   nlohmann::ordered_json channels = nlohmann::ordered_json::array();
   for (const host::ChannelRun& channel : run.channels) {
     channels.push_back(summary_figures(channel.summary));

@@ -16,6 +16,7 @@
 #include "cli.h"
 #include "effect_argument.h"
 #include "effect_catalogue.h"
+#include "fleet_alt_simulation.h"
 #include "fleet_plan.h"
 #include "fleet_simulation.h"
 #include "loco_scenario.h"
@@ -144,9 +145,10 @@ CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options) {
       "depot's fleet over days through the chain into a store");
   cmd->add_option("--scenario", options.scenario,
                   "bench: the thesis's heated micrometer protocol; loco: a locomotive run; fleet: "
-                  "locomotives over days into --store (docs/fleet.md)")
+                  "locomotives over days into --store (docs/fleet.md); fleet-alt: a second "
+                  "fleet reality written into --out for the service path")
       ->required()
-      ->check(CLI::IsMember({"bench", "loco", "fleet"}));
+      ->check(CLI::IsMember({"bench", "loco", "fleet", "fleet-alt"}));
   cmd->add_option("--effect", options.effects,
                   "switch an effect on: NAME or NAME:key=value[,key=value...] (repeatable); "
                   "names and keys in docs/sensor_twin.md");
@@ -366,6 +368,9 @@ int run_simulate_command(const SimulateOptions& options,
                          std::ostream& err) {
   try {
     if (options.scenario == "fleet") return run_fleet_simulation(options, command_line, out, err);
+    if (options.scenario == "fleet-alt") {
+      return run_fleet_alt_simulation(options, command_line, out, err);
+    }
     const SimulationPlan plan = plan_simulation(options);
     if (options.save_twin) save_twin(plan.config, *options.save_twin);
     if (options.wheels.value_or(1) > 1) {

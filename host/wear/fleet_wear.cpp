@@ -54,9 +54,31 @@ std::map<std::size_t, std::string> recorded_boundaries(const std::vector<WearObs
   return boundaries;
 }
 
+// The first run after each recorded sensor replacement or wheelset move: a new segment (another
+// unit's offset, another flange) that is neither wear nor a reprofiling.
+std::set<std::size_t> recorded_changes(const std::vector<WearObservation>& runs,
+                                       const std::vector<MaintenanceMark>& marks) {
+  std::set<std::size_t> changes;
+  for (const MaintenanceMark& mark : marks) {
+    if (mark.kind != "sensor_replaced" && mark.kind != "wheelset_moved") continue;
+    for (std::size_t k = 1; k < runs.size(); ++k) {
+      if (runs[k - 1].day <= mark.day && runs[k].day > mark.day) changes.insert(k);
+    }
+  }
+  return changes;
+}
+
+// A jump at a recorded change is the change's, not a reprofiling.
+std::vector<std::size_t> unexplained(std::vector<std::size_t> found,
+                                     const std::set<std::size_t>& changes) {
+  std::erase_if(found, [&](std::size_t k) { return changes.count(k) != 0; });
+  return found;
+}
+
 // Segments and reprofiling events from what the data show and what the depot recorded.
 void segment_runs(WheelWear& wheel, const std::vector<std::size_t>& found,
-                  const std::map<std::size_t, std::string>& recorded) {
+                  const std::map<std::size_t, std::string>& recorded,
+                  const std::set<std::size_t>& changes = {}) {
   std::set<std::size_t> boundaries(found.begin(), found.end());
   for (const auto& [k, at] : recorded) boundaries.insert(k);
   for (const std::size_t k : boundaries) {
@@ -73,7 +95,7 @@ void segment_runs(WheelWear& wheel, const std::vector<std::size_t>& found,
   wheel.segment.clear();
   int segment = 0;
   for (std::size_t k = 0; k < wheel.runs.size(); ++k) {
-    if (boundaries.count(k) != 0) ++segment;
+    if (boundaries.count(k) != 0 || changes.count(k) != 0) ++segment;
     wheel.segment.push_back(segment);
   }
 }
@@ -166,12 +188,14 @@ void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistor
   WheelWear l = wheel_with_runs(left, std::move(axle.left));
   WheelWear r = wheel_with_runs(right, std::move(axle.right));
   const std::vector<double> yl = clearances(l.runs), yr = clearances(r.runs);
-  const std::vector<std::size_t> found = find_reprofilings(yl, yr, fleet.thresholds.max_step_mm);
   std::vector<MaintenanceMark> marks = left.maintenance;
   marks.insert(marks.end(), right.maintenance.begin(), right.maintenance.end());
+  const std::set<std::size_t> changes = recorded_changes(l.runs, marks);
+  const std::vector<std::size_t> found =
+      unexplained(find_reprofilings(yl, yr, fleet.thresholds.max_step_mm), changes);
   const auto recorded = recorded_boundaries(l.runs, marks);
-  segment_runs(l, found, recorded);
-  segment_runs(r, found, recorded);
+  segment_runs(l, found, recorded, changes);
+  segment_runs(r, found, recorded, changes);
   std::vector<double> difference;
   for (std::size_t k = 0; k < yl.size(); ++k) difference.push_back(yr[k] - yl[k]);
   std::optional<DriftFinding> drift;
@@ -198,8 +222,9 @@ void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistor
 void estimate_lone_wheel(FleetWear& fleet, const WheelHistory& history) {
   WheelWear wheel = wheel_with_runs(history, history.runs);
   const std::vector<double> y = clearances(wheel.runs);
-  segment_runs(wheel, find_reprofilings(y, y, fleet.thresholds.max_step_mm),
-               recorded_boundaries(wheel.runs, history.maintenance));
+  const std::set<std::size_t> changes = recorded_changes(wheel.runs, history.maintenance);
+  segment_runs(wheel, unexplained(find_reprofilings(y, y, fleet.thresholds.max_step_mm), changes),
+               recorded_boundaries(wheel.runs, history.maintenance), changes);
   fit_wheel(wheel, fleet, std::nullopt, {});
   mark_negative_rate(wheel);
   fleet.wheels.push_back(std::move(wheel));

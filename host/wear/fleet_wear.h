@@ -2,8 +2,9 @@
 // `flange wear`'s estimator: every wheel's history in, its wear rate, reprofilings, sensor fault
 // and forecast out. Per axle: the two wheels' runs side by side; reprofilings found where the
 // axle's clearance jumps back (reprofiling_search.h) or recorded by the depot start a new
-// segment; a drift of one sensor away from its partner (sensor_drift.h) is a sensor fault and is
-// fitted out of that wheel's series rather than read as wear; each wheel's line
+// segment (so does a recorded sensor replacement or wheelset move, without being a
+// reprofiling); a drift of one sensor away from its partner (sensor_drift.h) is a sensor fault and
+// is fitted out of that wheel's series rather than read as wear; each wheel's line
 // (wear_line_fit.h) gives its rate per 1000 km with a 95 % interval and the forecast of when its
 // current flange reaches the warning and the critical clearance (limit_forecast.h).
 #pragma once

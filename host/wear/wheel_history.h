@@ -29,7 +29,9 @@ struct MaintenanceMark {
   std::string at;  // ISO 8601 UTC
   double day = 0.0;
   double odometer_km = 0.0;
-  std::string kind;  // "reprofile" resets the flange; other kinds are listed only
+  // "reprofile" resets the flange; "sensor_replaced" and "wheelset_moved" start a new segment
+  // (another unit's offset, another flange) without a reprofiling; other kinds are listed only.
+  std::string kind;
 };
 
 struct WheelHistory {

@@ -144,7 +144,9 @@ TEST_F(StoreCommands, RunKeepsEachWheelAtItsAxlesClearanceAtReferenceConditions)
       ASSERT_EQ(history.size(), 1u);
       ASSERT_TRUE(history[0].clearance_mm.has_value());
       EXPECT_DOUBLE_EQ(*history[0].clearance_mm, expected) << "axle " << left.axle << " " << side;
-      EXPECT_FALSE(history[0].wear_mm.has_value());  // flange run is given no new flange's gap
+      // No maintenance recorded: the wear is against the sensor's 2 mm setting on a new flange.
+      ASSERT_TRUE(history[0].wear_mm.has_value());
+      EXPECT_DOUBLE_EQ(*history[0].wear_mm, expected - 2.0) << "axle " << left.axle << " " << side;
     }
   }
 }

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// `flange maintenance`: what the depot did to a locomotive, written into the store, so that
+// `flange run --store` and `flange wear` read each wheel's runs in the light of it
+// (docs/store.md, "Maintenance events"):
+//   reprofile        a lathe pass of an axle (--axle; both wheels unless --side): a new flange,
+//                    whose reference clearance is the wheel's first run after it
+//   wheelset_moved   the wheelset now on --axle ran on --from-axle before: its wear goes with it
+//   sensor_replaced  a new sensor on one wheel (--axle, --side, --sensor SERIAL): the wear
+//                    carries over the step of the new unit
+//   odometer_reset   the locomotive's odometer was reset (--odometer-km: its reading before the
+//                    reset); every later run's odometer is counted on from that reading
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace flange::cli {
+
+struct MaintenanceOptions {
+  std::string store;                  // sqlite:PATH or postgresql://...
+  std::string locomotive;             // the locomotive's name
+  std::string kind;                   // one of the four above
+  std::string at;                     // when, UTC
+  std::optional<int> axle;            // 1 to 6
+  std::optional<std::string> side;    // left or right
+  std::optional<int> from_axle;       // wheelset_moved: 1 to 6, not --axle
+  std::optional<double> odometer_km;  // the odometer then (odometer_reset: before the reset)
+  std::string sensor;                 // sensor_replaced: the new unit's serial
+  std::string note;
+};
+
+CLI::App* add_maintenance_command(CLI::App& app, MaintenanceOptions& options);
+
+// Returns 0, 1 (the store cannot be written) or 2 (a bad argument: one line naming it).
+int run_maintenance_command(const MaintenanceOptions& options, std::ostream& out,
+                            std::ostream& err);
+
+// The note a wheelset_moved event carries, "from axle N ...", and the axle read back from it
+// (nullopt for any other note).
+std::string wheelset_moved_note(int from_axle, const std::string& note);
+std::optional<int> moved_from_axle(const std::string& note);
+
+}  // namespace flange::cli
