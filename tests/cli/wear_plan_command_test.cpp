@@ -4,6 +4,7 @@
 // And its bad inputs, each refused with one line and its documented exit status before anything
 // is written: a date before the last run, a risk outside (0, 1), a store with no runs (or none
 // at all), a truth file of another fleet.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
