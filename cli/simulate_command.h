@@ -13,7 +13,7 @@
 namespace flange::cli {
 
 struct SimulateOptions {
-  std::string scenario;              // bench, loco or fleet
+  std::string scenario;              // bench, loco, fleet or fleet-alt
   std::vector<std::string> effects;  // NAME or NAME:key=value,...; one effect per argument
   std::optional<double> fs_hz;       // default: 6 Hz (bench), 100 Hz (loco)
   std::optional<double> duration_s;  // default: the scenario's own (6600 s bench, 300 s loco)

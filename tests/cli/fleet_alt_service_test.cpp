@@ -143,8 +143,8 @@ TEST_P(FleetAltService, WearThroughTheServicePathAgainstTheTruth) {
       if (point.started_at > row[0] && !after) after = point.wear_mm;
     }
     if (!after || !before) continue;
-    if (row[4] == "reprofile") EXPECT_NEAR(*after, 0.0, 1e-9) << row[0];
-    if (row[4] == "sensor_replaced") EXPECT_NEAR(*after, *before, 1e-9) << row[0];
+    const double expected = row[4] == "reprofile" ? 0.0 : *before;
+    EXPECT_NEAR(*after, expected, 1e-9) << row[4] << " " << row[0];
   }
   EXPECT_GT(check["reprofilings"].get<int>(), 0) << "the seed must show a lathe pass";
   EXPECT_EQ(check["reprofilings_found"], check["reprofilings"]);
@@ -230,10 +230,14 @@ TEST(FleetAltServiceRefusals, AnOdometerThatRunsBackwardsWithoutARecordedReset) 
   EXPECT_NEAR(history[1].odometer_km, std::stod(runs[0][4]) + 12.5, 1e-6);
 }
 
+std::string backend_name(const ::testing::TestParamInfo<StoreBackendUnderTest>& param) {
+  return testing::backend_test_name(param.param);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, FleetAltService,
                          ::testing::Values(StoreBackendUnderTest::kSqlite,
                                            StoreBackendUnderTest::kPostgresql),
-                         [](const auto& info) { return testing::backend_test_name(info.param); });
+                         backend_name);
 
 }  // namespace
 }  // namespace flange::cli
