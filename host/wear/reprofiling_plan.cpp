@@ -29,8 +29,8 @@ double day_of_plan_date(const std::string& text) {
                                printable_excerpt(text)));
 }
 
-// The Student t quantile at `p` with the fit's degrees of freedom (at least 1).
-double t_quantile(double p, int dof) {
+// The one-sided Student t quantile at `p` with the fit's degrees of freedom (at least 1).
+double student_t_quantile(double p, int dof) {
   return boost::math::quantile(boost::math::students_t(std::max(1, dof)), p);
 }
 
@@ -102,7 +102,7 @@ std::pair<double, std::string> last_run(const std::vector<WheelHistory>& histori
 }
 
 double rate_at_risk(const WheelWear& wheel, double risk) {
-  const double t = t_quantile(1.0 - risk, wheel.fit ? wheel.fit->dof : 1);
+  const double t = student_t_quantile(1.0 - risk, wheel.fit ? wheel.fit->dof : 1);
   const double t_stated = t95(wheel.fit ? wheel.fit->dof : 1);
   // The half of the stated interval on the side the quantile lies (they differ when the
   // interval is not symmetric about the rate).
