@@ -144,8 +144,8 @@ class Basys3TopChannels : public ::testing::Test {
     stored_.resize(kChannels);
     for (int c = 0; c < kChannels; ++c) {
       last_[c] = {seq, static_cast<std::uint8_t>(c), wheel_word(c, n, rng)};
-      const auto status = static_cast<std::uint8_t>(
-          frame::kStatusWindowed | (overrun[c] ? frame::kStatusOverrun : 0));
+      const auto status = static_cast<std::uint8_t>(frame::kStatusWindowed |
+                                                    (overrun[c] ? frame::kStatusOverrun : 0));
       stored_[c] = expect_filtered(seq++, c, last_[c].sample, status);
     }
   }
@@ -165,8 +165,8 @@ class Basys3TopChannels : public ::testing::Test {
     for (int k = 0; k < 700; ++k) {
       const frame::Request& r = last_[static_cast<std::size_t>(k % kChannels)];
       const bool command = k % 16 == 15;
-      const auto f = command ? frame::encode_command(r.seq, 0x0077, r.channel)
-                             : frame::encode_request(r);
+      const auto f =
+          command ? frame::encode_command(r.seq, 0x0077, r.channel) : frame::encode_request(r);
       if (!command) ++sent[r.channel];
       burst.insert(burst.end(), f.begin(), f.end());
     }
@@ -445,8 +445,8 @@ TEST_F(Basys3TopChannels, OverrunBehindRetransmissionsWaitsForTheChannelsNextNew
   const auto start = frame::encode_command(seq, frame::kCommandResetWindowed);
   const std::vector<bool> none(kChannels, false), every(kChannels, true);
   ASSERT_EQ(exchange({start.begin(), start.end()}),
-            (std::vector<frame::Reply>{{seq++, 0, kChannels,
-                                        frame::kStatusSessionReset | frame::kStatusWindowed}}));
+            (std::vector<frame::Reply>{
+                {seq++, 0, kChannels, frame::kStatusSessionReset | frame::kStatusWindowed}}));
   new_frame_on_every_channel(seq, 0, rng, none);
   EXPECT_EQ(overflow_with_retransmissions(), every) << "a frame of every channel is dropped";
   retransmit_each_once();  // the marks still waiting in the queue's drop bits become pending
@@ -459,9 +459,9 @@ TEST_F(Basys3TopChannels, OverrunBehindRetransmissionsWaitsForTheChannelsNextNew
   retransmit_each_once();
   const auto reset = frame::encode_command(seq, frame::kCommandResetWindowed, 5);
   ASSERT_EQ(exchange({reset.begin(), reset.end()}),
-            (std::vector<frame::Reply>{{seq++, 5, kChannels,
-                                        frame::kStatusSessionReset | frame::kStatusWindowed |
-                                            frame::kStatusOverrun}}));
+            (std::vector<frame::Reply>{
+                {seq++, 5, kChannels,
+                 frame::kStatusSessionReset | frame::kStatusWindowed | frame::kStatusOverrun}}));
   model_ = std::make_unique<model::IirCore>(model::load_core_config(kBoardFilterJson));
   new_frame_on_every_channel(seq, 3, rng, none);
   EXPECT_FALSE(bench_->leds() & kLedLinkError);
