@@ -81,7 +81,7 @@ run_tsan() {
       echo "reliability: $binary failed under TSan (reproduce: cd $build && TSAN_OPTIONS='$TSAN_OPTIONS' $path --gtest_filter='$filter')" >&2
       exit 1
     fi
-    echo "  $binary: $(grep -E '^\[  PASSED  \]' "$log" | head -1), $((SECONDS - t0)) s"
+    echo "  $binary: $(grep -E '^\[  PASSED  \]' "$log" | head -1) ($((SECONDS - t0)) s)"
   done
   echo "reliability: ThreadSanitizer clean, ${#tsan_tests[@]} programs in $((SECONDS - started)) s"
 }
