@@ -49,7 +49,7 @@ tsan_tests=(
   "board_ftdi_stream_test * host/board_link sessions against the board thread (tb/board/pty_board.h) through the FTDI model: windows, losses, resets"
   "board_stream_test * flange stream through a pseudo-terminal to the board thread"
   "board_channels_stream_test * the multichannel stream through a pseudo-terminal to the board thread"
-  "diagnose_test DiagnoseCommand.WritesJsonAndReportWithVerdictFirst:Diagnose.NullRecordingGivesNone the diagnosis's std::async work: candidates, null replicas, replays, inclusion, two passes"
+  "diagnose_test DiagnoseCommand.WritesJsonAndReportWithVerdictFirst:Diagnose.NullRecordingGivesNone:Diagnose.AnOffsetOfAnotherShapeIsNamedByItsClassWithAFreeCurve:Diagnose.AGapMostlyTakenByOneClassIsPartlyExplainedByIt the diagnosis's std::async work: candidates, null replicas, replays, inclusion, two passes"
   "alt_selftest_test AltSelftestCommand.RunsBlindAndPrintsItsSeedAndTheTableByClass the alternative reality's self-test, two pairs on two threads (run_in_parallel)"
   "diagnose_selftest_test DiagnoseSelftestCommand.SmallBlindSetMeetsTheAims the self-test's cases on parallel threads, each a whole diagnosis"
   "improved_twin_test ImprovedTwin.RediagnosingAnExplainedPairOfEveryClassAgainstItLeavesNone re-diagnoses on two threads (run_in_parallel)"
@@ -81,7 +81,7 @@ run_tsan() {
       echo "reliability: $binary failed under TSan (reproduce: cd $build && TSAN_OPTIONS='$TSAN_OPTIONS' $path --gtest_filter='$filter')" >&2
       exit 1
     fi
-    echo "  $binary: $(grep -E '^\[  PASSED  \]' "$log" | head -1), $((SECONDS - t0)) s"
+    echo "  $binary: $(grep -E '^\[  PASSED  \]' "$log" | head -1) ($((SECONDS - t0)) s)"
   done
   echo "reliability: ThreadSanitizer clean, ${#tsan_tests[@]} programs in $((SECONDS - started)) s"
 }
