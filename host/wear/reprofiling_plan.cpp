@@ -102,8 +102,10 @@ std::pair<double, std::string> last_run(const std::vector<WheelHistory>& histori
 }
 
 double rate_at_risk(const WheelWear& wheel, double risk) {
-  const double t = student_t_quantile(1.0 - risk, wheel.fit ? wheel.fit->dof : 1);
-  const double t_stated = t95(wheel.fit ? wheel.fit->dof : 1);
+  // The stated interval's own degrees of freedom (the block jackknife's, fleet_wear.h).
+  const int dof = wheel.rate_dof > 0 ? wheel.rate_dof : (wheel.fit ? wheel.fit->dof : 1);
+  const double t = student_t_quantile(1.0 - risk, dof);
+  const double t_stated = t95(dof);
   // The half of the stated interval on the side the quantile lies (they differ when the
   // interval is not symmetric about the rate).
   const double half = t >= 0.0 ? wheel.rate_high - wheel.rate_mm_per_1000km
