@@ -201,10 +201,16 @@ module iir_core #(
   // older than that reads as zero, as a cleared register would. (A word of age a in any line
   // holds a value once more than a samples were accepted: line k + 1's age 0 is read only after
   // section k wrote it.) Each channel has its own lines (from channel * LrSlots), its own newest
-  // slot and its own count; newest_q and filled_q are those of the channel being served (channel_i
-  // while idle, the sample's channel while busy). The error lines live in a second RAM of the
-  // same shape (K lines of F-bit words, from channel * ErrSlots), with the same pointers: section
-  // k writes its y_ext to line k + 1 and its error to error line k at age 0 in the same cycle.
+  // slot and its own count, kept in newest_mem_q and filled_mem_q. An EN reads channel_i's pair
+  // there, moves it one sample on, and writes it back; newest_q and filled_q hold the moved pair
+  // of the sample in flight. The error lines live in a second RAM of the same shape (K lines of
+  // F-bit words, from channel * ErrSlots), with the same pointers: section k writes its y_ext to
+  // line k + 1 and its error to error line k at age 0 in the same cycle.
+  // Timing: every RAM address comes from registers (chan_q, newest_q, the BTC), never from
+  // channel_i: with twelve channels the channel bits drive some 300 RAM address pins, and a path
+  // from the core's input through them would not close at 100 MHz (docs/synthesis.md). So x[n]
+  // enters line 0 in the cycle after the EN (x_pending_q), from x_q; the first term that reads
+  // it, W_b[0] of section 0, issues 2M cycles later.
   logic [ExtWidth-1:0]    lr_ram [LrDepth];
   logic [ErrWidth-1:0]    err_ram [ErrDepth];
   // Per channel c, at bits [c * width +: width] (flat: Yosys 0.23 reads no packed 2-D arrays).
@@ -225,10 +231,14 @@ module iir_core #(
     filled_base = NumChannels == 1 ? 0 : 32'(chan) * (AgeWidth + 1);
   endfunction
 
-  logic [ChannelWidth-1:0] cur_chan;
-  logic                   cur_chan_ok;                 // cur_chan < NumChannels
-  logic [AgeWidth-1:0]    newest_q, newest_d;
-  logic [AgeWidth:0]      filled_q, filled_d;
+  logic [ChannelWidth-1:0] cur_chan;                   // the channel whose lines are addressed
+  logic [AgeWidth-1:0]    newest_q, newest_d;          // the sample in flight's newest slot
+  logic [AgeWidth:0]      filled_q, filled_d;          // and its count
+  logic [AgeWidth-1:0]    en_newest;                   // channel_i's pair, moved on by an EN
+  logic [AgeWidth:0]      en_filled;
+  logic                   en_accept;                   // an EN is accepted in this cycle
+  logic signed [SampleWidth-1:0] x_q, x_d;             // x[n], written to line 0 ...
+  logic                   x_pending_q, x_pending_d;    // ... in the cycle after its EN
   logic                   lr_we;
   logic [LrAddrWidth-1:0] lr_waddr, lr_raddr;          // within the channel's lines
   logic [LrFullWidth-1:0] lr_waddr_full, lr_raddr_full;
@@ -238,10 +248,18 @@ module iir_core #(
   logic [ErrFullWidth-1:0] err_waddr_full, err_raddr_full;
   logic [ErrWidth-1:0]     err_wdata;
 
-  assign cur_chan    = (state_q == StIdle) ? channel_i : chan_q;
-  assign cur_chan_ok = channel_exists(cur_chan);
-  assign newest_q    = cur_chan_ok ? newest_mem_q[newest_base(cur_chan) +: AgeWidth] : '0;
-  assign filled_q    = cur_chan_ok ? filled_mem_q[filled_base(cur_chan) +: AgeWidth+1] : '0;
+  assign cur_chan = chan_q;
+
+  // channel_i's pair as an EN moves it: the history grows one sample older in every line.
+  logic [AgeWidth-1:0] in_newest;
+  logic [AgeWidth:0]   in_filled;
+  assign in_newest = channel_exists(channel_i) ? newest_mem_q[newest_base(channel_i) +: AgeWidth]
+                                               : '0;
+  assign in_filled = channel_exists(channel_i) ? filled_mem_q[filled_base(channel_i) +: AgeWidth+1]
+                                               : '0;
+  assign en_newest = (in_newest == AgeWidth'(SectionOrder)) ? '0 : in_newest + 1'b1;
+  assign en_filled = (in_filled == (AgeWidth + 1)'(LrLine)) ? in_filled : in_filled + 1'b1;
+  assign en_accept = (state_q == StIdle) && sample_valid_i && channel_exists(channel_i);
 
   // Channel c's word at `addr` within its lines: c * LrSlots + addr, which is {c, addr} since
   // LrSlots is a power of two (no adder). One channel drops the always-0 channel bit.
@@ -436,6 +454,8 @@ module iir_core #(
     filled_d   = filled_q;
     out_d      = out_q;
     out_chan_d = out_chan_q;
+    x_d        = x_q;
+    x_pending_d = 1'b0;
     valid_d   = 1'b0;
     issue     = 1'b0;
     lr_we     = 1'b0;
@@ -447,20 +467,26 @@ module iir_core #(
 
     unique case (state_q)
       StIdle: begin
-        if (sample_valid_i && cur_chan_ok) begin
-          // EN: the history grows one sample older in every line; x[n] << s enters line 0.
-          newest_d = (newest_q == AgeWidth'(SectionOrder)) ? '0 : newest_q + 1'b1;
-          if (filled_q != (AgeWidth + 1)'(LrLine)) filled_d = filled_q + 1'b1;
-          lr_we    = 1'b1;
-          lr_waddr = {LineWidth'(0), newest_d};
-          lr_wdata = ExtWidth'(sample_i) <<< FeedbackShift;
-          btc_d    = '0;
-          wb_sec_d = '0;
-          chan_d   = channel_i;
-          state_d  = StIssue;
+        if (en_accept) begin
+          // EN: the channel's pointers move on (newest_mem_q, below); x[n] waits in x_q.
+          newest_d    = en_newest;
+          filled_d    = en_filled;
+          x_d         = sample_i;
+          x_pending_d = 1'b1;
+          btc_d       = '0;
+          wb_sec_d    = '0;
+          chan_d      = channel_i;
+          state_d     = StIssue;
         end
       end
       StIssue: begin
+        // The cycle after the EN: x[n] << s enters line 0 at the new newest slot. No write-back
+        // can fall in this cycle: the previous sample's last one ended its computation.
+        if (x_pending_q) begin
+          lr_we    = 1'b1;
+          lr_waddr = {LineWidth'(0), newest_q};
+          lr_wdata = ExtWidth'(x_q) <<< FeedbackShift;
+        end
         if (!stall) begin
           issue = 1'b1;
           if (btc_q == BtcWidth'(RomDepth - 1)) begin
@@ -520,6 +546,9 @@ module iir_core #(
       chan_q          <= '0;
       newest_mem_q    <= '0;
       filled_mem_q    <= '0;
+      newest_q        <= '0;
+      filled_q        <= '0;
+      x_pending_q     <= 1'b0;
       out_q           <= '0;
       out_chan_q      <= '0;
       valid_q         <= 1'b0;
@@ -532,9 +561,12 @@ module iir_core #(
       wb_pipe_q       <= wb_pipe_d;
       wb_sec_q        <= wb_sec_d;
       chan_q          <= chan_d;
-      if (cur_chan_ok) begin
-        newest_mem_q[newest_base(cur_chan) +: AgeWidth]           <= newest_d;
-        filled_mem_q[filled_base(cur_chan) +: AgeWidth+1]     <= filled_d;
+      newest_q        <= newest_d;
+      filled_q        <= filled_d;
+      x_pending_q     <= x_pending_d;
+      if (en_accept) begin
+        newest_mem_q[newest_base(channel_i) +: AgeWidth]   <= en_newest;
+        filled_mem_q[filled_base(channel_i) +: AgeWidth+1] <= en_filled;
       end
       out_q           <= out_d;
       out_chan_q      <= out_chan_d;
@@ -544,6 +576,9 @@ module iir_core #(
       channel_error_q <= channel_error_d;
     end
   end
+
+  // x[n] needs no reset: it is written to line 0 only in the cycle after its EN.
+  always_ff @(posedge clk_i) x_q <= x_d;
 
   assign sample_o        = out_q;
   assign channel_o       = out_chan_q;

@@ -87,6 +87,13 @@ module basys3_top #(
   assign rst_n_d = &por_q && !btn;
   always_ff @(posedge clk_i) rst_n_q <= rst_n_d;
   assign rst_n = rst_n_q;
+  // Two more copies, a cycle later, for the link's and the display's modules, so that no copy
+  // drives much more than 250 resets (one copy: a net of some 500 loads after its inverter, 5.5 ns
+  // of allowance). A copy of rst_n_d itself would be merged back into rst_n_q by synthesis. The
+  // link's modules leave reset a cycle after the rest, long before a byte can arrive.
+  logic rst_n_link_q, rst_n_view_q;
+  always_ff @(posedge clk_i) rst_n_link_q <= rst_n_q;
+  always_ff @(posedge clk_i) rst_n_view_q <= rst_n_q;
 
   // Switches: synchronised (they are asynchronous and slow; no debouncing needed).
   logic [5:0] sw_meta_q, sw_q;
@@ -114,7 +121,7 @@ module basys3_top #(
 
   uart_rx #(.ClksPerBit(ClksPerBit)) u_uart_rx (
     .clk_i,
-    .rst_ni      (rst_n),
+    .rst_ni      (rst_n_link_q),
     .rx_i        (uart_rx_i),
     .data_o      (rx_byte),
     .data_valid_o(rx_valid),
@@ -123,7 +130,7 @@ module basys3_top #(
 
   frame_decoder u_decoder (
     .clk_i,
-    .rst_ni       (rst_n),
+    .rst_ni       (rst_n_link_q),
     .byte_i       (rx_byte),
     .byte_valid_i (rx_valid),
     .seq_o        (dec_seq),
@@ -277,15 +284,45 @@ module basys3_top #(
   logic        cur_dropped_q, cur_dropped_d;  // the frame being answered carries a drop mark
   logic        session_start;           // a session-reset command leaves the queue
 
+  // The head frame's classification, registered (head_*_q): from the head register through the
+  // SEQ's age, the stored reply's CHANNEL and the compares to the core's strobe is a path of about
+  // ten LUT levels, which the twelve-channel top would not close at 100 MHz (docs/synthesis.md,
+  // "Timing estimate"). The classes are taken only once they are settled (head_settled_q): the
+  // head was the head in the cycle before and nothing they read changed then (a pop or a reply
+  // being stored). A frame reaching an empty queue therefore waits one cycle more.
+  logic head_channel_ok_d, head_repeat_d, head_in_order_d, head_reset_d;
+  logic head_channel_ok_q, head_repeat_q, head_in_order_q, head_reset_q;
+  logic head_settled_q, head_settled_d;
+  logic head_ready;  // a head frame whose classes are settled
+
   // All eight bits count: channel 16 must not reach channel 0 through a 4-bit channel_i.
-  assign head_channel_ok = 32'(head.channel) < NumChannels;
+  assign head_channel_ok_d = 32'(head.channel) < NumChannels;
   // A retransmission repeats an answered frame: in a windowed session one of the last QueueDepth
   // SEQs with the CHANNEL it had, otherwise the last answered SEQ and CHANNEL.
-  assign head_age    = expect_q - head.seq;
-  assign head_repeat = window_q
+  assign head_age      = expect_q - head.seq;
+  assign head_repeat_d = window_q
       ? head_age != 8'd0 && 32'(head_age) <= QueueDepth &&
         stored_q[head.seq[QueueAddrBits-1:0]] && stored.channel == head.channel
       : have_seq_q && head.seq == seq_q && head.channel == chan_q;
+  // A new frame is taken in SEQ order in a windowed session, in any order otherwise.
+  assign head_in_order_d = !window_q || head.seq == expect_q;
+  // Only the two resets are defined commands; any other is ignored (no reply).
+  assign head_reset_d    = head.sample == CMD_RESET || head.sample == CMD_RESET_WINDOWED;
+  assign head_settled_d  = !q_empty && !q_pop && state_q != StReply;
+  assign head_ready      = !q_empty && head_settled_q;
+  assign head_channel_ok = head_channel_ok_q;
+  assign head_repeat     = head_repeat_q;
+
+  always_ff @(posedge clk_i) begin
+    head_channel_ok_q <= head_channel_ok_d;
+    head_repeat_q     <= head_repeat_d;
+    head_in_order_q   <= head_in_order_d;
+    head_reset_q      <= head_reset_d;
+  end
+  always_ff @(posedge clk_i) begin
+    if (!rst_n) head_settled_q <= 1'b0;
+    else        head_settled_q <= head_settled_d;
+  end
 
   // The core is strobed only for a channel it has: with one channel that is 0, and a constant
   // channel_i lets synthesis drop the core's channel logic (measurement_sos: 47 LUT6 sites, 18
@@ -375,13 +412,13 @@ module basys3_top #(
     send            = 1'b0;
     unique case (state_q)
       StIdle: begin
-        if (!q_empty) begin
+        if (head_ready) begin
           q_pop = 1'b1;
           // Only a new sample's reply reports the mark; otherwise it waits for the next one.
           if (head.dropped_before) pend_ovr_d = ovr_now | channel_bit(head.channel);
           if (head.command) begin
             // Unknown commands are ignored (no reply): only the two resets are defined.
-            if (head.sample == CMD_RESET || head.sample == CMD_RESET_WINDOWED) begin
+            if (head_reset_q) begin
               core_reset      = 1'b1;  // the core is idle with zero history from the next cycle
               session_start   = 1'b1;
               seq_d           = head.seq;
@@ -407,7 +444,7 @@ module basys3_top #(
             retransmit_d    = 1'b1;
             session_reset_d = 1'b0;
             state_d         = StReply;
-          end else if (!window_q || head.seq == expect_q) begin
+          end else if (head_in_order_q) begin
             seq_d           = head.seq;
             chan_d          = head.channel;
             have_seq_d      = 1'b1;
@@ -520,7 +557,7 @@ module basys3_top #(
 
   frame_encoder u_encoder (
     .clk_i,
-    .rst_ni    (rst_n),
+    .rst_ni    (rst_n_link_q),
     .seq_i     (seq_q),
     .channel_i (chan_q),
     .sample_i  (reply_out),
@@ -534,7 +571,7 @@ module basys3_top #(
 
   uart_tx #(.ClksPerBit(ClksPerBit)) u_uart_tx (
     .clk_i,
-    .rst_ni      (rst_n),
+    .rst_ni      (rst_n_link_q),
     .data_i      (tx_byte),
     .data_valid_i(tx_valid),
     .ready_o     (tx_ready),
@@ -545,20 +582,23 @@ module basys3_top #(
   logic [19:0] clearance_digits, digits;
   logic [3:0]  clearance_dp, dp;
   logic [HeartbeatBit:0] beat_q, beat_d;
-  logic [15:0]           shown_word;  // the latest sample of the channel sw[15:12] choose
+  logic [15:0]           shown_word, shown_word_q;  // the latest sample of the channel sw[15:12] choose
   logic                  shown_ok;    // the core has that channel
   localparam logic [19:0] DASHES = {4{5'd17}};
 
+  // Registered before the conversion: the channel select and the conversion's adders would be one
+  // path of about thirteen LUT levels with twelve channels (docs/synthesis.md, "Timing estimate").
   always_comb begin
     shown_word = '0;
     for (int c = 0; c < NumChannels; c++) if (32'(display_chan) == c) shown_word = shown_q[16*c +: 16];
   end
+  always_ff @(posedge clk_i) shown_word_q <= shown_word;
   assign shown_ok = 32'(display_chan) < NumChannels;
 
   clearance_display u_clearance (
     .clk_i,
-    .rst_ni  (rst_n),
-    .word_i  (shown_word),
+    .rst_ni  (rst_n_view_q),
+    .word_i  (shown_word_q),
     .digits_o(clearance_digits),
     .dp_o    (clearance_dp)
   );
@@ -569,7 +609,7 @@ module basys3_top #(
 
   seven_seg #(.RefreshBits(RefreshBits)) u_display (
     .clk_i,
-    .rst_ni  (rst_n),
+    .rst_ni  (rst_n_view_q),
     .digits_i(digits),
     .dp_i    (dp),
     .seg_no,
@@ -579,7 +619,7 @@ module basys3_top #(
 
   assign beat_d = beat_q + 1'b1;
   always_ff @(posedge clk_i) begin
-    if (!rst_n) beat_q <= '0;
+    if (!rst_n_view_q) beat_q <= '0;
     else        beat_q <= beat_d;
   end
 

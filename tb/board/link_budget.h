@@ -14,11 +14,11 @@ namespace flange::tb::board {
 // A request (6 bytes) and its reply (7 bytes) are 130 bit times on the wire. The board's receiver
 // takes the request's last byte in the middle of its stop bit, and the host's has the reply's last
 // byte in the middle of its stop bit, so a host that sends the next request at once starts it 129
-// bit times after the previous one, plus the board's turnaround: 16 cycles of receiver, frame check
-// and its register, frame queue and its head register, and encoder, and the core's latency (52
-// cycles for the vehicle filter, docs/core.md).
+// bit times after the previous one, plus the board's turnaround: 17 cycles of receiver, frame check
+// and its register, frame queue, its head register and the head's classification register, and
+// encoder, and the core's latency (52 cycles for the vehicle filter, docs/core.md).
 inline constexpr int kLinkBitsPerExchange = 129;
-inline constexpr int kBoardTurnaroundCycles = 16;
+inline constexpr int kBoardTurnaroundCycles = 17;
 
 inline std::int64_t exchange_cycles(int clks_per_bit, int core_latency_cycles) {
   return std::int64_t{kLinkBitsPerExchange} * clks_per_bit + kBoardTurnaroundCycles +

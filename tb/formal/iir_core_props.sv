@@ -122,6 +122,7 @@ module iir_core_props #(
   logic [LrFullWidth-1:0]      dut_lr_waddr_full, dut_lr_raddr_full;
   logic [NumChannels*AgeWidth-1:0]     dut_newest_mem_q;
   logic [NumChannels*(AgeWidth+1)-1:0] dut_filled_mem_q;
+  logic                        dut_x_pending_q;
 `ifndef YOSYS
   assign dut_state_q       = dut.state_q;
   assign dut_btc_q         = dut.btc_q;
@@ -157,6 +158,7 @@ module iir_core_props #(
   assign dut_lr_raddr_full = dut.lr_raddr_full;
   assign dut_newest_mem_q  = dut.newest_mem_q;
   assign dut_filled_mem_q  = dut.filled_mem_q;
+  assign dut_x_pending_q   = dut.x_pending_q;
 `endif
 
   // Shadow model: cycles since the accepted sample //
@@ -293,14 +295,18 @@ module iir_core_props #(
     busy_since_bounded: assert (since_q <= SinceWidth'(LatencyCycles));
     // overrun_o is the documented sticky flag.
     overrun_as_documented: assert (overrun_o == overrun_q);
-    // A sample that is not accepted leaves the history alone: only an accepted sample writes
-    // line 0 (the input history) and ages the lines (newest_q, filled_q).
+    // A sample that is not accepted leaves the history alone: only an accepted sample ages the
+    // lines (newest_q, filled_q), and line 0 (the input history) is written only in the cycle
+    // after an accepted sample (x[n] enters it then, from x_q).
     if (rst_ni && !accept) begin
-      history_line0_only_on_accept:
-        assert (!dut_lr_we || dut_lr_waddr[LrAddrWidth-1:AgeWidth] != '0);
       history_age_only_on_accept:
         assert (dut_newest_d == dut_newest_q && dut_filled_d == dut_filled_q);
     end
+    if (rst_ni && since_q != SinceWidth'(1)) begin
+      history_line0_only_after_accept:
+        assert (!dut_lr_we || dut_lr_waddr[LrAddrWidth-1:AgeWidth] != '0);
+    end
+    history_x_pending_after_accept: assert (dut_x_pending_q == (since_q == SinceWidth'(1)));
   end
 
   always_comb begin
