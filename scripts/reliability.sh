@@ -12,8 +12,8 @@
 # such an input in tests/fuzz/corpus/<harness>/ once it is fixed, so every build replays it.
 #
 # --tsan builds the tree with clang under ThreadSanitizer instead (build/tsan/; TSan cannot share a
-# process with ASan) and runs every test that starts a thread of the project (the list below, each
-# with the thread it exercises); any report fails it. Nothing is suppressed.
+# process with ASan) and runs a test of every thread the project starts (the list below, each with
+# the threads it exercises); any report fails it. Nothing is suppressed.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -50,7 +50,7 @@ tsan_tests=(
   "recording_batch_reader_test * host/recording: the read-ahead thread and the caller, strict and lenient, errors in a later batch"
   "run_output_csv_test * host/run: the writer thread behind the caller, a failed write reported across it"
   "run_command_test RunCommand.WithTwoThreadsTheFirstBadLineIsReportedAndTheOutputIsTheSame flange run: the reader and writer threads around the filter, stopped by bad lines"
-  "board_ftdi_stream_test * host/board_link sessions against the board thread (tb/board/pty_board.h) through the FTDI model: windows, losses, resets"
+  "board_ftdi_stream_test -BoardFtdiStream.WindowCarriesFourTimesTwelveWheelsAt100Hz* host/board_link sessions against the board thread (tb/board/pty_board.h) through the FTDI model: windows, losses, resets (not the two tests of the protocol model's throughput, a speed the instrumented build does not keep on a loaded machine; RepliesLateForTheTimeoutAreStrayNotFilteredTwice runs that model on the board thread)"
   "board_stream_test * flange stream through a pseudo-terminal to the board thread"
   "board_channels_stream_test * the multichannel stream through a pseudo-terminal to the board thread"
   "diagnose_test DiagnoseCommand.WritesJsonAndReportWithVerdictFirst:Diagnose.NullRecordingGivesNone flange diagnose's std::async work: replays, null replicas, library candidates, free shapes, inclusion shares"

@@ -272,11 +272,10 @@ TEST(DiagnoseSelftest, AShortPairIsNamedWithAPickGivenAFreeShape) {
   EXPECT_EQ(diagnosis.status, "explained");
   EXPECT_TRUE(score.all_found) << ::testing::PrintToString(score.claimed);
   EXPECT_EQ(score.spurious, 0);
-  EXPECT_TRUE(std::any_of(diagnosis.effects.begin(), diagnosis.effects.end(),
-                          [](const EffectFinding& f) {
-                            return f.evidence.find("given a free shape of its class") !=
-                                   std::string::npos;
-                          }));
+  EXPECT_TRUE(
+      std::any_of(diagnosis.effects.begin(), diagnosis.effects.end(), [](const EffectFinding& f) {
+        return f.evidence.find("given a free shape of its class") != std::string::npos;
+      }));
   for (const EffectFinding& f : diagnosis.effects) {
     EXPECT_GT(f.inclusion, 0.5) << f.name;
   }
