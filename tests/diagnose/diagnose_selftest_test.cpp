@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `flange diagnose --selftest`: the cases are drawn reproducibly with every kind present, the
-// outside-the-library effects really change the recording, the scoring counts what it says, and
-// the command line runs a small blind set against the aims (CI's small set; bench/ runs 50).
+// outside-the-library effects really change the recording, the scoring counts what it says, cases
+// on two threads give what each gives alone, and the command line runs a small blind set against
+// the aims (CI's small set; bench/ runs 50).
 #include "diagnose_selftest.h"
 
 #include <gtest/gtest.h>
