@@ -335,7 +335,9 @@ TEST(BoardFtdiStream, ABoardThatKeepsResettingStopsTheSession) {
   Pty pty;
   host::SerialPort port(pty.slave_name(), kBaud);
   PtyBoard board(pty, std::move(options));
-  host::BoardLink link(port, {kBaud, 100, 3, 16});
+  // As many retries as stream()'s link: with 3, a starved Verilated top (a sanitized build, or a
+  // busy machine) gave up on a sample before the resets were counted out.
+  host::BoardLink link(port, {kBaud, 100, 100, 16});
   host::StreamCounts counts;
   try {
     host::stream_channels(link, wheel_words(60, 9), nullptr, counts);

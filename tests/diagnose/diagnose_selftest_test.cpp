@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `flange diagnose --selftest`: the cases are drawn reproducibly with every kind present, the
-// outside-the-library effects really change the recording, the scoring counts what it says, and
-// the command line runs a small blind set against the aims (CI's small set; bench/ runs 50).
+// outside-the-library effects really change the recording, the scoring counts what it says, cases
+// on two threads give what each gives alone, and the command line runs a small blind set against
+// the aims (CI's small set; bench/ runs 50).
 #include "diagnose_selftest.h"
 
 #include <gtest/gtest.h>
@@ -223,6 +224,62 @@ TEST(DiagnoseSelftest, AWeakReadingLagWithinTheNoiseIsNamedInTheReasonsNotClaime
     return reason.find("thermal_lag would take") != std::string::npos &&
            reason.find("a fit of the noise's residue") != std::string::npos;
   })) << "reasons: " << ::testing::PrintToString(reasons);
+}
+
+// Two short cases on two threads (run_in_parallel), each a whole diagnosis with its own threads:
+// each gives what it gives run alone on one thread. The ThreadSanitizer build's test of the
+// self-test's threads (scripts/reliability.sh --tsan), small enough to finish there.
+TEST(DiagnoseSelftest, CasesOnTwoThreadsGiveWhatEachGivesAlone) {
+  SelftestOptions options;
+  options.cases = 2;
+  options.seed = 1;
+  options.duration_s = 600.0;
+  options.bootstrap_rounds = 20;
+  options.jobs = 2;
+  const std::vector<SelftestCaseResult> together = run_selftest(options);
+  ASSERT_EQ(together.size(), 2u);
+  for (int index = 1; index <= 2; ++index) {
+    SelftestOptions one = options;
+    one.only_case = index;
+    one.jobs = 1;
+    const std::vector<SelftestCaseResult> alone = run_selftest(one);
+    ASSERT_EQ(alone.size(), 1u);
+    const Diagnosis& a = alone.front().diagnosis;
+    const Diagnosis& t = together[static_cast<std::size_t>(index - 1)].diagnosis;
+    EXPECT_EQ(t.status, a.status) << index;
+    EXPECT_EQ(t.heldout_rms_after, a.heldout_rms_after) << index;
+    ASSERT_EQ(t.effects.size(), a.effects.size()) << index;
+    for (std::size_t e = 0; e < a.effects.size(); ++e) {
+      EXPECT_EQ(t.effects[e].name, a.effects[e].name) << index;
+      EXPECT_EQ(t.effects[e].params, a.effects[e].params) << index;
+      EXPECT_EQ(t.effects[e].inclusion, a.effects[e].inclusion) << index;
+    }
+  }
+}
+
+// A short pair (case 7 of seed 1: mains pickup and a channel skew) takes the diagnosis through
+// both passes at once, a library pick given a free shape of its class, and the final fit's
+// inclusion shares, each on threads of its own: both classes are named, nothing else, and the
+// pick so refined says so. The ThreadSanitizer build's test of those threads.
+TEST(DiagnoseSelftest, AShortPairIsNamedWithAPickGivenAFreeShape) {
+  const SelftestCaseSpec spec = draw_selftest_case(7, 1);
+  ASSERT_EQ(spec.kind, SelftestKind::kPair);
+  const SelftestRecordings rec = make_selftest_recordings(spec, 600.0);
+  DiagnoseOptions options;
+  options.bootstrap_rounds = 20;
+  options.seed = 8;  // as the self-test seeds case 7 of seed 1
+  const Diagnosis diagnosis = diagnose_in_detail(rec.calibration, rec.heldout, options).diagnosis;
+  const SelftestScore score = score_selftest_case(spec, diagnosis, rec.noise_std_v);
+  EXPECT_EQ(diagnosis.status, "explained");
+  EXPECT_TRUE(score.all_found) << ::testing::PrintToString(score.claimed);
+  EXPECT_EQ(score.spurious, 0);
+  EXPECT_TRUE(
+      std::any_of(diagnosis.effects.begin(), diagnosis.effects.end(), [](const EffectFinding& f) {
+        return f.evidence.find("given a free shape of its class") != std::string::npos;
+      }));
+  for (const EffectFinding& f : diagnosis.effects) {
+    EXPECT_GT(f.inclusion, 0.5) << f.name;
+  }
 }
 
 TEST(DiagnoseSelftestCommand, SmallBlindSetMeetsTheAims) {
