@@ -349,7 +349,8 @@ TEST(BoardFtdiStream, ABoardThatKeepsResettingStopsTheSession) {
 
 // Random traffic, one frame at a time (so the RTL's timing cannot matter): plain and windowed
 // sessions, samples on real and absent channels, repeats of recent frames, SEQs out of order,
-// damaged frames and garbage. The protocol model must send the same bytes as the Verilated top.
+// damaged frames and garbage, btnC inside a frame. The protocol model must send the same bytes as
+// the Verilated top.
 TEST(Basys3TopModel, AnswersEveryStreamAsTheRtl) {
   namespace frame = host::board;
   BoardBench rtl;
@@ -384,12 +385,23 @@ TEST(Basys3TopModel, AnswersEveryStreamAsTheRtl) {
       if (p >= 27 && p < 30)
         bytes.insert(bytes.begin(), static_cast<std::uint8_t>(byte_value(rng)));
     }
+    // btnC now and then, before a byte inside the frame (the board's frame window restarts).
+    const std::size_t reset_at = n % 61 == 30 ? static_cast<std::size_t>(n) % bytes.size() : ~0u;
     std::vector<std::uint8_t> want;
-    for (std::uint8_t b : bytes) {
-      const std::vector<std::uint8_t> r = model.take(b);
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+      if (i == reset_at) {
+        model.press_reset();
+        rtl.send({bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(i)});
+        rtl.drain();
+        rtl.press_reset();
+      }
+      const std::vector<std::uint8_t> r = model.take(bytes[i]);
       want.insert(want.end(), r.begin(), r.end());
     }
-    rtl.send(bytes);
+    rtl.send(reset_at < bytes.size()
+                 ? std::vector<std::uint8_t>(bytes.begin() + static_cast<std::ptrdiff_t>(reset_at),
+                                             bytes.end())
+                 : bytes);
     rtl.drain();
     std::vector<std::uint8_t> got;
     for (const TxByte& b : rtl.received()) got.push_back(b.value);
