@@ -74,6 +74,23 @@ void expect_exactly_the_model(const std::vector<host::ChannelWords>& in,
   }
 }
 
+// stream_channels, and when the session stops with an error, the board's trace (every byte each
+// way and every btnC, pty_board.h) on stdout before the error goes on: bench/link_stress.sh keeps
+// the output of a failed run, and the trace replays through the protocol model.
+std::vector<host::ChannelReplies> stream_traced(host::BoardLink& link, PtyBoard& board,
+                                                const std::vector<host::ChannelWords>& in,
+                                                host::ReplyChecker* checker,
+                                                host::StreamCounts& counts) {
+  try {
+    return host::stream_channels(link, in, checker, counts);
+  } catch (const std::exception&) {
+    board.stop();
+    std::printf("[trace] what the board took and sent until the session stopped:\n%s\n",
+                board.trace().c_str());
+    throw;
+  }
+}
+
 struct Session {
   host::StreamCounts counts;
   std::vector<host::ChannelReplies> out;
@@ -98,7 +115,7 @@ Session stream(PtyBoardOptions options, const std::vector<host::ChannelWords>& i
   host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
   Session s;
   const auto start = std::chrono::steady_clock::now();
-  s.out = host::stream_channels(link, in, &checker, s.counts);
+  s.out = stream_traced(link, board, in, &checker, s.counts);
   s.counts.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_FALSE(board.assertion_failed());
@@ -228,7 +245,7 @@ TEST(BoardFtdiStream, BoardResetsDuringTheSessionAreRecoveredByAReplay) {
   host::BoardLink link(port, {kBaud, 300, 8, 16});
   host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
   host::StreamCounts counts;
-  const std::vector<host::ChannelReplies> out = host::stream_channels(link, in, &checker, counts);
+  const std::vector<host::ChannelReplies> out = stream_traced(link, board, in, &checker, counts);
   EXPECT_EQ(board.resets(), 2);
   EXPECT_EQ(counts.board_resets, 2u);
   EXPECT_EQ(counts.samples, 720u);
@@ -264,7 +281,7 @@ TEST(BoardFtdiStream, RepliesHeldPastTheTimeoutAroundResetsAreRecoveredExactly) 
   host::BoardLink link(port, {kBaud, 100, 30, 16});
   host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
   host::StreamCounts counts;
-  const std::vector<host::ChannelReplies> out = host::stream_channels(link, in, &checker, counts);
+  const std::vector<host::ChannelReplies> out = stream_traced(link, board, in, &checker, counts);
   EXPECT_EQ(board.resets(), 2);
   EXPECT_EQ(counts.board_resets, 2u);
   EXPECT_EQ(counts.samples, 720u);
