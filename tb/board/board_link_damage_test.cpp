@@ -13,9 +13,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "board_bench.h"
@@ -194,6 +196,83 @@ TEST(BoardLinkDamage, EverySeqRecoversFromEveryDamage) {
   for (int s = 0; s < 256; ++s) seqs.push_back(static_cast<std::uint8_t>(s));
   // 264 samples: every SEQ once at least. One damage at a time, replies as they come.
   expect_none(sweep<ModelBoard>(seqs, 22, {.twice = false, .held = false}));
+}
+
+// A soak, not in CTest (docs/board.md, "Recovery under stress", has its command): many sessions
+// of 720 samples, each with random damage of its own rates (a byte lost, a bit flipped, btnC
+// before a byte), half of them with the replies held after each reset. From the environment:
+// FLANGE_SOAK_SESSIONS (200), FLANGE_SOAK_BOARD (model or rtl) and, for the RTL,
+// FLANGE_SOAK_CYCLES_PER_READ (RtlBoard::set_cycles_per_read: replies slower than the host, so
+// that timeouts fire while frames wait in the board's queue). No session may stall; a session
+// may end with more than kMostBoardResets resets, or take a wrong sample from a damaged request
+// whose CRC-8 passed (docs/board.md, "How the board finds frames"): those are counted.
+struct SoakCounts {
+  int exact = 0, wrong_sample = 0, too_many_resets = 0, stalled = 0;
+  std::uint64_t resent = 0, replayed = 0, false_frames = 0, resets = 0;
+};
+
+int environment(const char* name, int fallback) {
+  const char* value = std::getenv(name);
+  return value ? std::atoi(value) : fallback;
+}
+
+template <class Board>
+void soak_one(unsigned seed, const std::vector<host::ChannelWords>& in, SoakCounts& counts) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> rate(0, 99999), draw(0, 1 << 30);
+  const int lose = 100 + rate(rng) % 900, flip = 100 + rate(rng) % 2000;
+  const int reset = 6000 + rate(rng) % 30000;
+  auto hook = [&](std::span<const std::uint8_t>, std::size_t, std::uint8_t& byte) {
+    if (draw(rng) % lose == 0) return OnTheWire::kDrop;
+    if (draw(rng) % flip == 0) byte ^= static_cast<std::uint8_t>(1 << (draw(rng) % 8));
+    return draw(rng) % reset == 0 ? OnTheWire::kResetBefore : OnTheWire::kPass;
+  };
+  const model::CoreConfig config = model::load_core_config(kBoardFilterJson);
+  DirectStream<Board> stream(config, hook, seed % 2 == 1);
+  if constexpr (std::is_same_v<Board, RtlBoard>) {
+    stream.board().set_cycles_per_read(
+        static_cast<std::uint64_t>(environment("FLANGE_SOAK_CYCLES_PER_READ", 0)));
+  }
+  host::BoardLink link(stream, {921600, 1, 30, 16});
+  host::ReplyChecker checker(config);
+  host::StreamCounts got;
+  try {
+    host::stream_channels(link, in, &checker, got);
+    ++(got.mismatches == 0 ? counts.exact : counts.wrong_sample);
+  } catch (const std::exception& e) {
+    const bool resets = std::string(e.what()).find("was reset") != std::string::npos;
+    ++(resets ? counts.too_many_resets : counts.stalled);
+    if (!resets) ADD_FAILURE() << "seed " << seed << ": " << e.what();
+  }
+  counts.resent += got.resent;
+  counts.replayed += got.replayed;
+  counts.false_frames += got.false_frames;
+  counts.resets += static_cast<std::uint64_t>(stream.resets());
+}
+
+TEST(BoardLinkDamage, DISABLED_RandomDamageNeverStallsTheSession) {
+  const int sessions = environment("FLANGE_SOAK_SESSIONS", 200);
+  const char* board = std::getenv("FLANGE_SOAK_BOARD");
+  const bool rtl = board && std::string(board) == "rtl";
+  const std::vector<host::ChannelWords> in = words(60);
+  SoakCounts counts;
+  for (int k = 0; k < sessions; ++k) {
+    if (rtl) {
+      soak_one<RtlBoard>(static_cast<unsigned>(k), in, counts);
+    } else {
+      soak_one<ModelBoard>(static_cast<unsigned>(k), in, counts);
+    }
+  }
+  std::printf(
+      "[soak] %s, %d sessions: %d exact, %d with a wrong sample taken, %d stopped after too many "
+      "resets, %d stalled; %llu btnC, %llu false frames recovered, %llu requests resent, %llu "
+      "samples replayed\n",
+      rtl ? "Verilated top" : "protocol model", sessions, counts.exact, counts.wrong_sample,
+      counts.too_many_resets, counts.stalled, static_cast<unsigned long long>(counts.resets),
+      static_cast<unsigned long long>(counts.false_frames),
+      static_cast<unsigned long long>(counts.resent),
+      static_cast<unsigned long long>(counts.replayed));
+  EXPECT_EQ(counts.stalled, 0);
 }
 
 }  // namespace

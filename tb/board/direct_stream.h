@@ -59,16 +59,26 @@ class RtlBoard {
     bench_.press_reset();
   }
   std::vector<std::uint8_t> replies() {
-    bench_.drain();
+    if (cycles_per_read_ > 0) {
+      while (bench_.sending()) bench_.tick();
+      bench_.run(cycles_per_read_);
+    } else {
+      bench_.drain();
+    }
     std::vector<std::uint8_t> bytes;
     for (const TxByte& b : bench_.received()) bytes.push_back(b.value);
     bench_.received().clear();
     return bytes;
   }
   bool assertion_failed() const { return bench_.assertion_failed(); }
+  // Replies slower than the host: each read runs the top until it has taken every byte written,
+  // then this many cycles more (0: until it has answered everything), so that the host's timeout
+  // can fire while frames wait in the board's queue.
+  void set_cycles_per_read(std::uint64_t cycles) { cycles_per_read_ = cycles; }
 
  private:
   BoardBench bench_;
+  std::uint64_t cycles_per_read_ = 0;
 };
 
 template <class Board>
@@ -122,7 +132,7 @@ class DirectStream : public host::ByteStream {
   const std::string& device() const override { return name_; }
 
   int resets() const { return resets_; }
-  const Board& board() const { return board_; }
+  Board& board() { return board_; }
 
  private:
   Board board_;
