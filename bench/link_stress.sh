@@ -27,12 +27,13 @@ side_by_side="${5:-1}"
 out="$build/link_stress"
 
 # The tests: binary, then gtest name. The FTDI link's reset, loss and late-reply tests (every one
-# that recovers a session: a replay after a reset, with replies held past the timeout, after a
-# damaged request the board took; go-back-N after a loss; stray replies after an early timeout;
+# that recovers a session: a replay after a reset, with replies held past the timeout, with
+# resets and lost bytes at SEQs 0xA5 and 0x5A, after a damaged request the board took; go-back-N after a loss; stray replies after an early timeout;
 # the stop after too many resets) and the plain link's loss test.
 tests=(
   "board_ftdi_stream_test BoardFtdiStream.BoardResetsDuringTheSessionAreRecoveredByAReplay"
   "board_ftdi_stream_test BoardFtdiStream.RepliesHeldPastTheTimeoutAroundResetsAreRecoveredExactly"
+  "board_ftdi_stream_test BoardFtdiStream.ResetsAndLostBytesAtTheSyncLikeSeqsAreRecovered"
   "board_ftdi_stream_test BoardFtdiStream.ADamagedRequestTheBoardTakesForAnotherChannelIsRecovered"
   "board_ftdi_stream_test BoardFtdiStream.ADamagedRequestTheBoardFiltersOnAnotherChannelIsRecovered"
   "board_ftdi_stream_test BoardFtdiStream.LossCorruptionAndLostRepliesGiveEveryOutputOnce"

@@ -78,6 +78,9 @@ struct PtyBoardOptions {
   // btnC is pressed just before each host -> board byte with one of these indices reaches the
   // board.
   std::vector<std::uint64_t> reset_before_bytes;
+  // btnC is also pressed before a host -> board byte when this returns true, given the frame's
+  // worth of bytes that reached the board before it: a reset placed by content.
+  std::function<bool(std::span<const std::uint8_t> before, std::uint8_t byte)> reset_when;
   // The protocol model (basys3_top_model.h) instead of the Verilated top: as fast as the link
   // it is given, where the Verilated top is slower than a real 921600-baud wire.
   bool protocol_model = false;
@@ -95,7 +98,7 @@ class PtyBoard {
   using Mangle = PtyBoardOptions::Mangle;
   using Clock = FtdiLink::Clock;
   explicit PtyBoard(const Pty& pty, Mangle mangle = {})
-      : PtyBoard(pty.master(), PtyBoardOptions{std::move(mangle), {}, {}, {}, false}) {}
+      : PtyBoard(pty.master(), PtyBoardOptions{std::move(mangle), {}, {}, {}, {}, false}) {}
   PtyBoard(const Pty& pty, PtyBoardOptions options) : PtyBoard(pty.master(), std::move(options)) {}
   // `fd`: the board's end of the connection, non-blocking (a pty's master, a socket pair's end:
   // socket_stream.h).
@@ -219,7 +222,8 @@ class PtyBoard {
     for (std::uint8_t byte : bytes) {
       const bool hold = ftdi && options_.hold_replies.count() > 0;
       if (std::find(options_.reset_before_bytes.begin(), options_.reset_before_bytes.end(),
-                    fed_index_) != options_.reset_before_bytes.end()) {
+                    fed_index_) != options_.reset_before_bytes.end() ||
+          (options_.reset_when && options_.reset_when(last_fed_, byte))) {
         bench.drain();
         bench.press_reset();
         ++resets_;
