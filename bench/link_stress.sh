@@ -28,8 +28,9 @@ out="$build/link_stress"
 
 # The tests: binary, then gtest name. The FTDI link's reset, loss and late-reply tests (every one
 # that recovers a session: a replay after a reset, with replies held past the timeout, with
-# resets and lost bytes at SEQs 0xA5 and 0x5A, after a damaged request the board took; go-back-N after a loss; stray replies after an early timeout;
-# the stop after too many resets) and the plain link's loss test.
+# resets and lost bytes at SEQs 0xA5 and 0x5A, after a damaged request the board took; go-back-N
+# after a loss; stray replies after an early timeout; the stop after too many resets) and the
+# plain link's loss test.
 tests=(
   "board_ftdi_stream_test BoardFtdiStream.BoardResetsDuringTheSessionAreRecoveredByAReplay"
   "board_ftdi_stream_test BoardFtdiStream.RepliesHeldPastTheTimeoutAroundResetsAreRecoveredExactly"
