@@ -13,7 +13,8 @@
 # timeouts. Needs the BUILD_DIR test binaries of the tests it runs. Writes BUILD_DIR/link_stress/:
 # runs.csv (run,test,outcome,seconds: one row per test and run), the log of every failed run
 # (fail-<run>-<test>.log), summary.txt (per test and overall: runs, failures, min/median/max
-# seconds; the load average at the start and at the end) and figures.md, the same as a Markdown
+# seconds; the load average at the start and at the end, and the 1-minute one every 30 s between:
+# load.txt) and figures.md, the same as a Markdown
 # table under the command that made it, with each failed run's error line (docs/board.md links a
 # copy of it: docs/link_stress_figures.md). Exit status 0 when every run passed, 1 when one
 # failed, 2 when the binaries are missing.
@@ -66,9 +67,12 @@ for ((b = 0; b < busy; ++b)); do
 done
 
 mkdir -p "$out"
-rm -f "$out"/fail-*.log "$out"/runs-*.csv
+rm -f "$out"/fail-*.log "$out"/runs-*.csv "$out"/load.txt
 csv="$out/runs.csv"
 load_start=$(cut -d' ' -f1-3 /proc/loadavg)
+# The 1-minute load average every 30 s while the runs go.
+(while :; do cut -d' ' -f1 /proc/loadavg >>"$out/load.txt"; sleep 30; done) &
+loops+=("$!")
 command="bash bench/link_stress.sh $(basename "$build") $runs $busy '$pick' $side_by_side"
 
 # Runs first, first + side_by_side, ... each test in its own process; one CSV per worker.
@@ -118,7 +122,9 @@ summarise() {
         printf "%s: %d runs, %d failures, seconds min %.2f median %.2f max %.2f\n",
                label, n, f + 0, s[1], med, s[n] }'
 }
-load_line="busy loops: $busy; runs side by side: $side_by_side; load average (1, 5, 15 min) at the start: $load_start, at the end: $load_end"
+load_during=$(sort -g "$out/load.txt" | awk '{ s[++n] = $1 } END {
+  printf "min %s, median %s, max %s", s[1], s[int((n + 1) / 2)], s[n] }')
+load_line="busy loops: $busy; runs side by side: $side_by_side; load average (1, 5, 15 min) at the start: $load_start, at the end: $load_end; 1-minute load average every 30 s during the run: $load_during"
 {
   for t in "${tests[@]}"; do summarise "^${t#* }\$" "${t#* }"; done
   summarise "." "all tests ($runs runs of ${#tests[@]})"
