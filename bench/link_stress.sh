@@ -14,10 +14,9 @@
 # runs.csv (run,test,outcome,seconds: one row per test and run), the log of every failed run
 # (fail-<run>-<test>.log), summary.txt (per test and overall: runs, failures, min/median/max
 # seconds; the load average at the start and at the end, and the 1-minute one every 30 s between:
-# load.txt) and figures.md, the same as a Markdown
-# table under the command that made it, with each failed run's error line (docs/board.md links a
-# copy of it: docs/link_stress_figures.md). Exit status 0 when every run passed, 1 when one
-# failed, 2 when the binaries are missing.
+# load.txt) and figures.md, the same as a Markdown table under the command that made it, with
+# each failed run's error line (docs/board.md links a copy of it: docs/link_stress_figures.md).
+# Exit status 0 when every run passed, 1 when one failed, 2 when the binaries are missing.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build="$(realpath -m "${1:-$here/../build}")"
