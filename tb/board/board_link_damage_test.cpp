@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
-// The windowed link (host/board_link/board_link.h) to the board's protocol model
-// (basys3_top_model.h, byte for byte the RTL's) through model_stream.h, with one request damaged
-// on the way: a byte lost, a bit flipped, or btnC pressed just before the byte, at each of the six
-// places of the frame with a chosen SEQ, in a fresh session or in one resumed after a board reset,
-// alone or with the copy sent again damaged too. Placed by content, so every run is the same
-// whatever the machine's load. SEQ 0xA5 (SYNC) and 0x5A (CMD_SYNC) are those whose SEQ byte can
-// start a frame of the decoder's sliding window (docs/board.md, "How the board finds frames");
-// the sweep also covers every other SEQ. The session must end with every output once and equal
-// to the model's (docs/board.md, "Recovery under stress").
+// The windowed link (host/board_link/board_link.h) straight to the board (direct_stream.h: its
+// protocol model, byte for byte the RTL's, or the Verilated top at its pins), with one request
+// damaged on the way: a byte lost, a bit flipped, or btnC pressed just before the byte, at each
+// of the six places of the frame with a chosen SEQ, in a fresh session or in one resumed after a
+// board reset, alone or with the copy sent again damaged too, with the replies as they come or
+// held after each reset. Placed by content, so every run is the same whatever the machine's
+// load. SEQ 0xA5 (SYNC) and 0x5A (CMD_SYNC) are those whose SEQ byte can start a frame of the
+// decoder's sliding window (docs/board.md, "How the board finds frames"); the sweep also covers
+// every other SEQ. Each session must end with every output once and equal to the model's
+// (docs/board.md, "Recovery under stress"). A random-damage soak, not run by CTest, ends the file.
 // Reproduce: build/tb/board_link_damage_test
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -24,8 +25,8 @@
 #include "board_link.h"
 #include "channel_stream.h"
 #include "filter_json.h"
-#include "iir_core.h"
 #include "direct_stream.h"
+#include "iir_core.h"
 
 namespace flange::tb::board {
 namespace {
@@ -77,7 +78,7 @@ template <class Board>
 typename DirectStream<Board>::Hook place(const Damage& d, int& hits) {
   struct State {
     std::uint64_t frames = 0;
-    bool armed = false;     // the damage may hit (after the early reset's recovery, if asked)
+    bool armed = false;      // the damage may hit (after the early reset's recovery, if asked)
     bool in_target = false;  // the current frame is one to damage
   };
   return [d, &hits, s = State{}](std::span<const std::uint8_t> frame, std::size_t at,
@@ -120,6 +121,9 @@ std::string run(const Damage& d, const std::vector<host::ChannelWords>& in) {
     return describe(d) + ": " + e.what();
   }
   if (counts.mismatches != 0) return describe(d) + ": " + counts.first_mismatch;
+  if constexpr (std::is_same_v<Board, RtlBoard>) {
+    if (stream.board().assertion_failed()) return describe(d) + ": an RTL assertion failed";
+  }
   model::IirCore core(config);
   for (std::size_t c = 0; c < in.size(); ++c) {
     if (out[c].replies.size() != in[c].words.size()) {
