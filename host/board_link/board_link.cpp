@@ -171,9 +171,11 @@ void BoardLink::send(InFlight& request) {
 void BoardLink::pump() {
   InFlight& oldest = in_flight_.front();
   const auto deadline = oldest.sent + std::chrono::milliseconds(settings_.timeout_ms);
-  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-      deadline - std::chrono::steady_clock::now());
-  if (left.count() <= 0) {
+  const auto now = std::chrono::steady_clock::now();
+  // Rounded up: truncated, a timeout of 1 ms left 0 ms to wait after every send, and the link
+  // sent again without reading until its retries ran out.
+  const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - now);
+  if (now >= deadline) {
     if (oldest.attempts > settings_.retries) {
       throw std::runtime_error(fmt::format(
           "the board on {} does not answer: no reply to {} after {} attempt(s) of {} ms (is the "

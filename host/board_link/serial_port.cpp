@@ -74,9 +74,10 @@ void SerialPort::write_all(std::span<const std::uint8_t> bytes, std::chrono::mil
     if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
       throw system_error("cannot write to", device_);
     }
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) throw std::runtime_error("timeout writing to " + device_);
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= deadline) throw std::runtime_error("timeout writing to " + device_);
+    // Rounded up, as BoardLink's wait: truncated, a 1 ms timeout gave up at once.
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - now);
     pollfd pfd{fd_, POLLOUT, 0};
     ::poll(&pfd, 1, static_cast<int>(left.count()));
   }

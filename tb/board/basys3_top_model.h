@@ -7,7 +7,8 @@
 // byte. Every frame is answered before the next byte is taken, so the queue never overflows
 // (a host with at most 32 requests in flight never overflows the board's either) and LINK_ERROR
 // goes to the next new reply formed after the discard (on the board a reply formed later, when
-// frames wait in the queue). btnC and the switches are not modelled (sw[0] down: no bypass).
+// frames wait in the queue). btnC is press_reset() between two bytes (with nothing in the queue);
+// the switches are not modelled (sw[0] down: no bypass).
 #pragma once
 
 #include <array>
@@ -48,6 +49,10 @@ class Basys3TopModel {
     const auto bytes = frame::encode_reply(*reply);
     return {bytes.begin(), bytes.end()};
   }
+
+  // btnC: everything as at power-up (a plain session; the frame window, the stored replies, the
+  // filters and the pending link error all cleared).
+  void press_reset() { *this = Basys3TopModel(config_); }
 
  private:
   static constexpr int kStore = 32;  // QueueDepth of basys3_top

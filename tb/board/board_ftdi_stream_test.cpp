@@ -12,9 +12,11 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <memory>
 #include <cstdio>
 #include <optional>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,23 @@ void expect_exactly_the_model(const std::vector<host::ChannelWords>& in,
   }
 }
 
+// stream_channels, and when the session stops with an error, the board's trace (every byte each
+// way and every btnC, pty_board.h) on stdout before the error goes on: bench/link_stress.sh keeps
+// the output of a failed run, and the trace replays through the protocol model.
+std::vector<host::ChannelReplies> stream_traced(host::BoardLink& link, PtyBoard& board,
+                                                const std::vector<host::ChannelWords>& in,
+                                                host::ReplyChecker* checker,
+                                                host::StreamCounts& counts) {
+  try {
+    return host::stream_channels(link, in, checker, counts);
+  } catch (const std::exception&) {
+    board.stop();
+    std::printf("[trace] what the board took and sent until the session stopped:\n%s\n",
+                board.trace().c_str());
+    throw;
+  }
+}
+
 struct Session {
   host::StreamCounts counts;
   std::vector<host::ChannelReplies> out;
@@ -98,7 +117,7 @@ Session stream(PtyBoardOptions options, const std::vector<host::ChannelWords>& i
   host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
   Session s;
   const auto start = std::chrono::steady_clock::now();
-  s.out = host::stream_channels(link, in, &checker, s.counts);
+  s.out = stream_traced(link, board, in, &checker, s.counts);
   s.counts.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_FALSE(board.assertion_failed());
@@ -228,7 +247,7 @@ TEST(BoardFtdiStream, BoardResetsDuringTheSessionAreRecoveredByAReplay) {
   host::BoardLink link(port, {kBaud, 300, 8, 16});
   host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
   host::StreamCounts counts;
-  const std::vector<host::ChannelReplies> out = host::stream_channels(link, in, &checker, counts);
+  const std::vector<host::ChannelReplies> out = stream_traced(link, board, in, &checker, counts);
   EXPECT_EQ(board.resets(), 2);
   EXPECT_EQ(counts.board_resets, 2u);
   EXPECT_EQ(counts.samples, 720u);
@@ -264,7 +283,7 @@ TEST(BoardFtdiStream, RepliesHeldPastTheTimeoutAroundResetsAreRecoveredExactly) 
   host::BoardLink link(port, {kBaud, 100, 30, 16});
   host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
   host::StreamCounts counts;
-  const std::vector<host::ChannelReplies> out = host::stream_channels(link, in, &checker, counts);
+  const std::vector<host::ChannelReplies> out = stream_traced(link, board, in, &checker, counts);
   EXPECT_EQ(board.resets(), 2);
   EXPECT_EQ(counts.board_resets, 2u);
   EXPECT_EQ(counts.samples, 720u);
@@ -280,6 +299,50 @@ TEST(BoardFtdiStream, RepliesHeldPastTheTimeoutAroundResetsAreRecoveredExactly) 
       static_cast<unsigned long long>(counts.resent),
       static_cast<unsigned long long>(counts.stray_replies),
       static_cast<unsigned long long>(counts.replayed));
+  expect_exactly_the_model(in, out);
+}
+
+TEST(BoardFtdiStream, ResetsAndLostBytesAtTheSyncLikeSeqsAreRecovered) {
+  // SEQ 0x5A (CMD_SYNC) and 0xA5 (SYNC): a request's SEQ byte can start a frame of the board's
+  // window. Through the chip to the Verilated top, placed by content: btnC just after the SYNC of
+  // the first request with SEQ 0x5A (so the board's window starts at its SEQ byte), then after
+  // that of the first SEQ 0xA5 of the session resumed after it; in the session resumed after
+  // that, the CHANNEL byte of the first SEQ 0x5A and the first SEQ 0xA5 is lost (their windows
+  // slide over the SEQ byte). Every output once and the model's (docs/board.md, "Recovery under
+  // stress", has the sweep of every SEQ and place).
+  namespace f = host::board;
+  auto resets = std::make_shared<int>(0);
+  PtyBoardOptions options = ftdi(1);
+  options.reset_when = [resets](std::span<const std::uint8_t> before, std::uint8_t) {
+    const std::uint8_t seq = *resets == 0 ? 0x5A : 0xA5;
+    const bool now = *resets < 2 && before[4] == f::kSync && before[5] == seq;
+    if (now) ++*resets;
+    return now;
+  };
+  auto lost = std::make_shared<int>(0);
+  options.mangle = [resets, lost, last = std::array<std::uint8_t, 2>{}](
+                       std::uint64_t, std::uint8_t& byte) mutable {
+    const std::uint8_t seq = *lost == 0 ? 0x5A : 0xA5;
+    const bool drop = *resets == 2 && *lost < 2 && last[0] == f::kSync && last[1] == seq;
+    last = {last[1], byte};
+    if (drop) ++*lost;
+    return !drop;
+  };
+  const std::vector<host::ChannelWords> in = wheel_words(60, 12);
+  Pty pty;
+  host::SerialPort port(pty.slave_name(), kBaud);
+  PtyBoard board(pty, std::move(options));
+  host::BoardLink link(port, {kBaud, 300, 8, 16});  // the reset test's timeout
+  host::ReplyChecker checker(model::load_core_config(kBoardFilterJson));
+  host::StreamCounts counts;
+  const std::vector<host::ChannelReplies> out = stream_traced(link, board, in, &checker, counts);
+  board.stop();  // the hooks' counts are the board thread's
+  EXPECT_EQ(*resets, 2);
+  EXPECT_EQ(*lost, 2);
+  EXPECT_EQ(counts.board_resets, 2u);
+  EXPECT_EQ(counts.samples, 720u);
+  EXPECT_EQ(counts.mismatches, 0u) << counts.first_mismatch;
+  EXPECT_GT(counts.resent, 0u) << "the lost bytes cost a timeout each";
   expect_exactly_the_model(in, out);
 }
 
@@ -351,7 +414,8 @@ TEST(BoardFtdiStream, ABoardThatKeepsResettingStopsTheSession) {
 
 // Random traffic, one frame at a time (so the RTL's timing cannot matter): plain and windowed
 // sessions, samples on real and absent channels, repeats of recent frames, SEQs out of order,
-// damaged frames and garbage. The protocol model must send the same bytes as the Verilated top.
+// damaged frames and garbage, btnC inside a frame. The protocol model must send the same bytes as
+// the Verilated top.
 TEST(Basys3TopModel, AnswersEveryStreamAsTheRtl) {
   namespace frame = host::board;
   BoardBench rtl;
@@ -386,12 +450,23 @@ TEST(Basys3TopModel, AnswersEveryStreamAsTheRtl) {
       if (p >= 27 && p < 30)
         bytes.insert(bytes.begin(), static_cast<std::uint8_t>(byte_value(rng)));
     }
+    // btnC now and then, before a byte inside the frame (the board's frame window restarts).
+    const std::size_t reset_at = n % 61 == 30 ? static_cast<std::size_t>(n) % bytes.size() : ~0u;
     std::vector<std::uint8_t> want;
-    for (std::uint8_t b : bytes) {
-      const std::vector<std::uint8_t> r = model.take(b);
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+      if (i == reset_at) {
+        model.press_reset();
+        rtl.send({bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(i)});
+        rtl.drain();
+        rtl.press_reset();
+      }
+      const std::vector<std::uint8_t> r = model.take(bytes[i]);
       want.insert(want.end(), r.begin(), r.end());
     }
-    rtl.send(bytes);
+    rtl.send(reset_at < bytes.size()
+                 ? std::vector<std::uint8_t>(bytes.begin() + static_cast<std::ptrdiff_t>(reset_at),
+                                             bytes.end())
+                 : bytes);
     rtl.drain();
     std::vector<std::uint8_t> got;
     for (const TxByte& b : rtl.received()) got.push_back(b.value);

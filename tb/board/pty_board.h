@@ -7,6 +7,7 @@
 #pragma once
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <poll.h>
 #include <termios.h>
 #include <unistd.h>
@@ -77,6 +78,9 @@ struct PtyBoardOptions {
   // btnC is pressed just before each host -> board byte with one of these indices reaches the
   // board.
   std::vector<std::uint64_t> reset_before_bytes;
+  // btnC is also pressed before a host -> board byte when this returns true, given the frame's
+  // worth of bytes that reached the board before it: a reset placed by content.
+  std::function<bool(std::span<const std::uint8_t> before, std::uint8_t byte)> reset_when;
   // The protocol model (basys3_top_model.h) instead of the Verilated top: as fast as the link
   // it is given, where the Verilated top is slower than a real 921600-baud wire.
   bool protocol_model = false;
@@ -94,20 +98,39 @@ class PtyBoard {
   using Mangle = PtyBoardOptions::Mangle;
   using Clock = FtdiLink::Clock;
   explicit PtyBoard(const Pty& pty, Mangle mangle = {})
-      : PtyBoard(pty.master(), PtyBoardOptions{std::move(mangle), {}, {}, {}, false}) {}
+      : PtyBoard(pty.master(), PtyBoardOptions{std::move(mangle), {}, {}, {}, {}, false}) {}
   PtyBoard(const Pty& pty, PtyBoardOptions options) : PtyBoard(pty.master(), std::move(options)) {}
   // `fd`: the board's end of the connection, non-blocking (a pty's master, a socket pair's end:
   // socket_stream.h).
   PtyBoard(int fd, PtyBoardOptions options)
       : fd_(fd), options_(std::move(options)), thread_([this] { loop(); }) {}
-  ~PtyBoard() {
-    stop_ = true;
-    thread_.join();
-  }
+  ~PtyBoard() { stop(); }
   PtyBoard(const PtyBoard&) = delete;
   PtyBoard& operator=(const PtyBoard&) = delete;
   bool assertion_failed() const { return assertion_failed_; }
   int resets() const { return resets_; }
+  // Stops the board's thread (the destructor does it too); then trace() may be read.
+  void stop() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+  }
+  // Every byte the board took and sent and every btnC, with the time since the board started, a
+  // line per run of bytes one way (the Verilated top only): what a failed session is replayed
+  // from, through the protocol model, to find its cause. Empty until stop().
+  std::string trace() const {
+    if (thread_.joinable()) return {};
+    std::string out;
+    char kind = 0;
+    for (const TraceEvent& e : trace_) {
+      if (e.kind != kind || e.kind == 'R') {
+        out += fmt::format("{}{:.3f} ms {}", out.empty() ? "" : "\n", static_cast<double>(e.micros) / 1000.0,
+                           e.kind == 'R' ? "btnC" : e.kind == 'T' ? "to board:" : "from board:");
+        kind = e.kind;
+      }
+      if (e.kind != 'R') out += fmt::format(" {:02X}", e.byte);
+    }
+    return out;
+  }
 
  private:
   // The board runs while it has bytes to take or has sent one within this many bit times (its
@@ -141,6 +164,7 @@ class PtyBoard {
         quiet_cycles += kChunk;
       }
       std::vector<std::uint8_t> sent = mangled_reply(from_board(bench));
+      for (std::uint8_t byte : sent) record('F', byte);
       if (!sent.empty()) quiet_cycles = 0;
       if (ftdi) {
         ftdi->from_board(sent, Clock::now());
@@ -198,14 +222,17 @@ class PtyBoard {
     for (std::uint8_t byte : bytes) {
       const bool hold = ftdi && options_.hold_replies.count() > 0;
       if (std::find(options_.reset_before_bytes.begin(), options_.reset_before_bytes.end(),
-                    fed_index_) != options_.reset_before_bytes.end()) {
+                    fed_index_) != options_.reset_before_bytes.end() ||
+          (options_.reset_when && options_.reset_when(last_fed_, byte))) {
         bench.drain();
         bench.press_reset();
         ++resets_;
+        record('R', 0);
         if (hold) ftdi->hold_until(Clock::now() + options_.hold_replies);
         hold_armed_ = true;
       }
       bench.send({byte});
+      record('T', byte);
       ++fed_index_;
       std::copy(last_fed_.begin() + 1, last_fed_.end(), last_fed_.begin());
       last_fed_.back() = byte;
@@ -256,8 +283,21 @@ class PtyBoard {
     ::ppoll(&pfd, 1, &ts, nullptr);
   }
 
+  struct TraceEvent {
+    char kind;  // 'T': to the board, 'F': from it, 'R': btnC
+    std::uint8_t byte;
+    std::int64_t micros;
+  };
+  void record(char kind, std::uint8_t byte) {
+    const auto since = std::chrono::duration_cast<std::chrono::microseconds>(
+        Clock::now() - trace_start_);
+    trace_.push_back({kind, byte, since.count()});
+  }
+
   int fd_;
   PtyBoardOptions options_;
+  Clock::time_point trace_start_ = Clock::now();
+  std::vector<TraceEvent> trace_;  // written by the board's thread only
   std::uint64_t host_index_ = 0, fed_index_ = 0, board_index_ = 0;
   std::array<std::uint8_t, host::board::kRequestBytes> last_fed_{};  // the last frame's worth
   bool hold_armed_ = true;  // the next windowed session reset starts a hold
