@@ -60,3 +60,25 @@ if rate_widths:
           f"{sorted(rate_widths)[int(0.9 * len(rate_widths))]:.2f} %)" +
           (f", warning date +- {statistics.median(date_widths):.1f} days (median of "
            f"{len(date_widths)})" if date_widths else ""))
+# Why an interval holds more or less often than it says: each wheel's rate error over its
+# standard error, |T| = |rate - truth| / se, against the Student t the interval takes it for (its
+# quantiles in closed form at 2 degrees of freedom, which every history of up to about 20 weeks
+# has: q = (2p - 1) / sqrt(2 p (1 - p)) at p = (1 + level) / 2).
+by_dof = {}
+for check, estimate in zip(checks, estimates):
+    estimated = {(w["locomotive"], w["axle"], w["side"]): w for w in estimate["wheels"]}
+    for truth in check["wheels"]:
+        w = estimated[(truth["locomotive"], truth["axle"], truth["side"])]
+        if w["wear_rate_se"] and w["wear_rate_mm_per_1000km"] is not None:
+            error = abs(w["wear_rate_mm_per_1000km"] - truth["true_rate"]) / w["wear_rate_se"]
+            by_dof.setdefault(w["interval_dof"], []).append(error)
+levels = (0.5, 0.8, 0.9, 0.95)
+for dof, errors in sorted(by_dof.items()):
+    errors.sort()
+    found = " ".join(f"{errors[min(len(errors) - 1, int(level * len(errors)))]:.2f}"
+                     for level in levels)
+    line = f"|T| at {dof} degrees of freedom ({len(errors)} wheels), quantiles 50/80/90/95 %: {found}"
+    if dof == 2:
+        t2 = lambda p: (2 * p - 1) / (2 * p * (1 - p)) ** 0.5
+        line += " (Student t: " + " ".join(f"{t2((1 + level) / 2):.2f}" for level in levels) + ")"
+    print(line)
