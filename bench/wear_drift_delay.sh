@@ -5,22 +5,30 @@
 # its truth, a copy of the store cut after 7, 14, 21, 28 and 35 days from the drift's start (the
 # runs from the cut on deleted, as if the depot looked on that day), read by `flange wear`. Prints
 # the days at which each drift is first flagged and every healthy sensor flagged at any cut.
-#   bash bench/wear_drift_delay.sh [LOCOMOTIVES] [DAYS] [FLANGE]   (defaults: 5, 90, build/flange)
-# Run bench/wear_coverage.sh with the same LOCOMOTIVES and DAYS first.
+#   bash bench/wear_drift_delay.sh [LOCOMOTIVES] [DAYS] [FLANGE] [REALITY]
+#   (defaults: 5, 90, build/flange, fleet)
+# Run bench/wear_coverage.sh (REALITY fleet) or bench/wear_coverage_alt.sh (REALITY fleet-alt: the
+# stores the service path filled) with the same LOCOMOTIVES and DAYS first.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 locomotives="${1:-5}"
 days="${2:-90}"
 flange="${3:-$here/../build/flange}"
+reality="${4:-fleet}"
 out="$here/../build/wear_coverage"
-python3 - "$out" "${locomotives}x${days}" "$flange" <<'PY'
+case "$reality" in
+  fleet) prefix=seed; db=fleet.db; truth=fleet_truth.json ;;
+  fleet-alt) prefix=alt_seed; db=store.db; truth=depot/fleet_truth.json ;;
+  *) echo "REALITY: $reality is neither fleet nor fleet-alt" >&2; exit 2 ;;
+esac
+python3 - "$out" "${locomotives}x${days}" "$flange" "$prefix" "$db" "$truth" <<'PY'
 import datetime, glob, json, os, shutil, sqlite3, subprocess, sys
 
-out, shape, flange = sys.argv[1:]
+out, shape, flange, prefix, db_name, truth_name = sys.argv[1:]
 cuts = [7, 14, 21, 28, 35]
 rows, healthy_flags = [], 0
-for fleet in sorted(glob.glob(os.path.join(out, f"seed_*_{shape}"))):
-    truth = json.load(open(os.path.join(fleet, "fleet_truth.json")))
+for fleet in sorted(glob.glob(os.path.join(out, f"{prefix}_*_{shape}"))):
+    truth = json.load(open(os.path.join(fleet, truth_name)))
     last = datetime.date.fromisoformat(truth["first_day"]) + datetime.timedelta(truth["days"])
     drifting = {(d["locomotive"], d["axle"], d["side"]) for d in truth["drifting_sensors"]}
     for drift in truth["drifting_sensors"]:
@@ -34,9 +42,9 @@ for fleet in sorted(glob.glob(os.path.join(out, f"seed_*_{shape}"))):
             shutil.rmtree(work, ignore_errors=True)
             os.makedirs(work)
             for name in os.listdir(fleet):
-                if name.startswith("fleet.db"):
+                if name.startswith(db_name):
                     shutil.copy(os.path.join(fleet, name), work)
-            db = sqlite3.connect(os.path.join(work, "fleet.db"))
+            db = sqlite3.connect(os.path.join(work, db_name))
             later = "SELECT id FROM runs WHERE started_at >= ?"
             for table in ("wheel_runs", "run_trace", "alarm_events"):
                 db.execute(f"DELETE FROM {table} WHERE run_id IN ({later})", (cut.isoformat(),))
@@ -44,7 +52,7 @@ for fleet in sorted(glob.glob(os.path.join(out, f"seed_*_{shape}"))):
             db.execute("DELETE FROM maintenance_events WHERE at >= ?", (cut.isoformat(),))
             db.commit()
             db.close()
-            subprocess.run([flange, "wear", "--store", "sqlite:" + os.path.join(work, "fleet.db"),
+            subprocess.run([flange, "wear", "--store", "sqlite:" + os.path.join(work, db_name),
                             "--out", os.path.join(work, "wear")], check=True,
                            stdout=subprocess.DEVNULL)
             wear = json.load(open(os.path.join(work, "wear", "wear.json")))

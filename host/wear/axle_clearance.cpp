@@ -6,15 +6,10 @@
 #include <cstddef>
 #include <tuple>
 
+#include "robust_location.h"
+
 namespace flange::host {
 namespace {
-
-double median(std::vector<double> values) {
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  if (values.size() % 2 == 1) return *middle;
-  return (*middle + *std::max_element(values.begin(), middle)) / 2.0;
-}
 
 // Least-squares line y = a + k (x - x0); a flat temperature gives k = 0 and a = mean(y).
 std::pair<double, double> line_at(const std::vector<double>& x, const std::vector<double>& y,
@@ -35,6 +30,24 @@ std::pair<double, double> line_at(const std::vector<double>& x, const std::vecto
   return {mean_y + slope * (x0 - mean_x), slope};
 }
 
+// The median of the differences within kTangentSwingMm of a centre, from the mode on, until it
+// settles: the mode of one run can sit at one end of the swing (a swing spends most of its time
+// at its ends), and each step takes in more of the swing's other side while the window is wider
+// than the swing.
+double tangent_centre(const std::vector<double>& differences) {
+  double centre = half_sample_mode(differences);
+  for (int step = 0; step < 20; ++step) {
+    std::vector<double> tangent;
+    for (const double d : differences) {
+      if (std::abs(d - centre) <= kTangentSwingMm) tangent.push_back(d);
+    }
+    const double next = median(tangent);
+    if (std::abs(next - centre) < 1e-6) return next;
+    centre = next;
+  }
+  return centre;
+}
+
 }  // namespace
 
 std::optional<AxleClearance> axle_clearance(const WheelSamples& left, const WheelSamples& right,
@@ -50,18 +63,17 @@ std::optional<AxleClearance> axle_clearance(const WheelSamples& left, const Whee
     temps.push_back(t);
   }
   if (sums.size() < 2) return std::nullopt;
-  const double centre = median(differences);
-  std::vector<double> ref_sums, ref_differences, ref_temps;
+  const double centre = tangent_centre(differences);
+  std::vector<double> ref_sums, ref_temps;
   for (std::size_t i = 0; i < sums.size(); ++i) {
     if (std::abs(differences[i] - centre) > kCentredToleranceMm) continue;
     ref_sums.push_back(sums[i]);
-    ref_differences.push_back(differences[i]);
     ref_temps.push_back(temps[i]);
   }
   if (ref_sums.size() < 2) return std::nullopt;
   AxleClearance axle;
   std::tie(axle.sum_mm, axle.temp_slope_mm_per_c) = line_at(ref_temps, ref_sums, reference_temp_c);
-  axle.difference_mm = median(ref_differences);
+  axle.difference_mm = centre;
   axle.left_mm = (axle.sum_mm - axle.difference_mm) / 2.0;
   axle.right_mm = (axle.sum_mm + axle.difference_mm) / 2.0;
   double temp_sum = 0.0;

@@ -57,6 +57,31 @@ TEST(AxleClearance, TheMedianOnlyHoldsWhileTheCurveIsUnderHalfTheRun) {
   EXPECT_EQ(axle->samples, 600u);
 }
 
+// A day whose curves are mostly of one hand (30 % of the run shifted 0.4-1.2 mm to the right,
+// 10 % 0.6 mm to the left) with the wheelset swinging 0.12 mm about its centre on tangent: the
+// median of right - left over the run sits in the tangent's lower part, the mode in its middle.
+TEST(AxleClearance, UnevenCurvesDoNotMoveTheCentre) {
+  WheelSamples left, right;
+  for (int k = 0; k < 1200; ++k) {
+    const double place = static_cast<double>(k % 400) / 400.0;
+    const double shift = place < 0.3   ? -(0.4 + 0.8 * place / 0.3)
+                         : place < 0.4 ? 0.6
+                                       : 0.12 * std::sin(2.0 * 3.14159265358979 * k / 7.3);
+    left.clearance_mm.push_back(4.2 - shift);
+    right.clearance_mm.push_back(3.1 + shift);
+    left.temp_c.push_back(30.0);
+    right.temp_c.push_back(30.0);
+  }
+  std::vector<double> differences;
+  for (int k = 0; k < 1200; ++k) differences.push_back(right.clearance_mm[k] - left.clearance_mm[k]);
+  std::nth_element(differences.begin(), differences.begin() + 600, differences.end());
+  EXPECT_LT(differences[600] / 2.0, -1.1 / 2.0 - 0.04);  // the run's median: 0.04 mm off or more
+  const std::optional<AxleClearance> axle = axle_clearance(left, right);
+  ASSERT_TRUE(axle.has_value());
+  EXPECT_NEAR(axle->left_mm, 4.2, 0.005);
+  EXPECT_NEAR(axle->right_mm, 3.1, 0.005);
+}
+
 TEST(AxleClearance, NonFiniteSamplesAreLeftOutAndTooFewGiveNothing) {
   WheelSamples left{{NAN, 4.0}, {30.0, 30.0}};
   WheelSamples right{{3.0, NAN}, {30.0, 30.0}};

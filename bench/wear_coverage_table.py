@@ -1,0 +1,84 @@
+# SPDX-License-Identifier: MIT
+"""How often `flange wear`'s intervals hold the truth, pooled over fleets: the per-wheel checks of
+each fleet's truth_check.json (with its wear.json beside it) in one table by wheel kind, for the
+rate and the dates of the warning and critical limits at 95 % and 80 %; then the rate,
+reprofiling and drift checks summed over the fleets and the 95 % intervals' widths.
+    python3 bench/wear_coverage_table.py FLEET/wear/truth_check.json ...
+Used by bench/wear_coverage.sh and bench/wear_coverage_alt.sh."""
+import json
+import os
+import statistics
+import sys
+
+checks = [json.load(open(path)) for path in sys.argv[1:]]
+estimates = [json.load(open(os.path.join(os.path.dirname(path), "wear.json")))
+             for path in sys.argv[1:]]
+wheels = [w for c in checks for w in c["wheels"]]
+# The fleet scenario's kinds first, then any other reality's in the order met.
+kinds = ["healthy", "reprofiled", "drifting sensor"]
+kinds += [k for k in dict.fromkeys(w["kind"] for w in wheels) if k not in kinds] + ["all"]
+quantities = [("rate", "rate_coverage"), ("warning date", "warning_coverage"),
+              ("critical date", "critical_coverage")]
+print(f"\n{len(checks)} fleets, {len(wheels)} wheels\n")
+print("| wheels | interval of | checked | holds the truth at 95 % | at 80 % |")
+print("|---|---|---|---|---|")
+for kind in kinds:
+    chosen = [w for w in wheels if kind == "all" or w["kind"] == kind]
+    for name, field in quantities:
+        known = [w[field] for w in chosen if w[field] is not None]
+        if not known:
+            print(f"| {kind} | {name} | 0 | - | - |")
+            continue
+        cells = []
+        for level in ("95", "80"):
+            held = sum(1 for c in known if c[level])
+            cells.append(f"{held} ({100.0 * held / len(known):.1f} %)")
+        print(f"| {kind} | {name} | {len(known)} | {cells[0]} | {cells[1]} |")
+total = lambda key: sum(c[key] for c in checks)
+errors = [abs(w["relative_error"]) for w in wheels if w["relative_error"] is not None]
+print(f"\nrates within 10 % or inside the interval: {total('rates_ok')} of {len(wheels)} "
+      f"(largest error {100.0 * max(errors):.1f} %, median {100.0 * statistics.median(errors):.1f} "
+      f"%); reprofilings found: {total('reprofilings_found')} of {total('reprofilings')}; "
+      f"drifting sensors flagged: {total('drifting_flagged')} of {total('drifting')}; healthy "
+      f"sensors flagged: {total('healthy_flagged')}; fleets passing: "
+      f"{sum(c['passed'] for c in checks)} of {len(checks)}")
+# How wide the 95 % intervals are: half the rate's in % of the rate, half the warning date's in days.
+rate_widths, date_widths = [], []
+for estimate in estimates:
+    for w in estimate["wheels"]:
+        rate = w["wear_rate_mm_per_1000km"]
+        if rate is None or rate <= 0.0 or w["wear_rate_high"] is None:
+            continue
+        rate_widths.append(50.0 * (w["wear_rate_high"] - w["wear_rate_low"]) / rate)
+        warning = w["warning"]
+        if warning and not warning["reached"] and warning["days_low"] is not None \
+                and warning["days_high"] is not None:
+            date_widths.append((warning["days_high"] - warning["days_low"]) / 2.0)
+if rate_widths:
+    print(f"95 % intervals: rate +- {statistics.median(rate_widths):.2f} % (median of "
+          f"{len(rate_widths)} positive rates; 90th percentile "
+          f"{sorted(rate_widths)[int(0.9 * len(rate_widths))]:.2f} %)" +
+          (f", warning date +- {statistics.median(date_widths):.1f} days (median of "
+           f"{len(date_widths)})" if date_widths else ""))
+# Why an interval holds more or less often than it says: each wheel's rate error over its
+# standard error, |T| = |rate - truth| / se, against the Student t the interval takes it for (its
+# quantiles in closed form at 2 degrees of freedom, which every history of up to about 20 weeks
+# has: q = (2p - 1) / sqrt(2 p (1 - p)) at p = (1 + level) / 2).
+by_dof = {}
+for check, estimate in zip(checks, estimates):
+    estimated = {(w["locomotive"], w["axle"], w["side"]): w for w in estimate["wheels"]}
+    for truth in check["wheels"]:
+        w = estimated[(truth["locomotive"], truth["axle"], truth["side"])]
+        if w["wear_rate_se"] and w["wear_rate_mm_per_1000km"] is not None:
+            error = abs(w["wear_rate_mm_per_1000km"] - truth["true_rate"]) / w["wear_rate_se"]
+            by_dof.setdefault(w["interval_dof"], []).append(error)
+levels = (0.5, 0.8, 0.9, 0.95)
+for dof, errors in sorted(by_dof.items()):
+    errors.sort()
+    found = " ".join(f"{errors[min(len(errors) - 1, int(level * len(errors)))]:.2f}"
+                     for level in levels)
+    line = f"|T| at {dof} degrees of freedom ({len(errors)} wheels), quantiles 50/80/90/95 %: {found}"
+    if dof == 2:
+        t2 = lambda p: (2 * p - 1) / (2 * p * (1 - p)) ** 0.5
+        line += " (Student t: " + " ".join(f"{t2((1 + level) / 2):.2f}" for level in levels) + ")"
+    print(line)
