@@ -16,7 +16,7 @@ mutations=(
   "LatencyExact#measurement_df1#tb/formal/iir_core_props.sv#s/(NumSections - 1) \* SectionPitch + 4;  \/\/ L/(NumSections - 1) * SectionPitch + 5;  \/\/ L/#property: a wrong latency constant (L + 1)"
   "BusyOverrunAsDocumented#vehicle_sos#rtl/iir_core.sv#s/({NumChannels{sample_valid_i \& (state_q != StIdle)}} \&/({NumChannels{sample_valid_i \& (state_q == StIssue)}} \&/#RTL: a sample dropped while the core waits for its last write-back is not flagged"
   "BusyOverrunAsDocumentedFromPorts#vehicle_sos#rtl/iir_core.sv#s/({NumChannels{sample_valid_i \& (state_q != StIdle)}} \&/({NumChannels{sample_valid_i \& (state_q == StIssue)}} \&/#RTL: a sample dropped while the core waits for its last write-back is not flagged"
-  "BusyOverrunAsDocumented#measurement_sos#rtl/iir_core.sv#s/      StIdle: begin/      StIdle, StFinish: begin/#RTL: a sample offered while the core waits for its last write-back is taken"
+  "BusyOverrunAsDocumented#measurement_sos#rtl/iir_core.sv#s/      StIdle: begin/      StIdle, StFinish: begin/;s/assign en_accept = (state_q == StIdle)/assign en_accept = (state_q != StIssue)/#RTL: a sample offered while the core waits for its last write-back is taken"
   "BusyOverrunAsDocumented#measurement_df1#rtl/iir_core.sv#s/          x_pending_d = 1'b1;/          x_pending_d = 1'b0;/#RTL: x[n] never enters line 0 (the cycle after the EN writes nothing)"
   "ScheduleAsDocumented#measurement_sos#rtl/iir_core.sv#s/            state_d = StFinish;/            state_d = StIdle;/#RTL: the FSM skips StFinish (busy_o falls 3 cycles early)"
   "BtcWithinRom#measurement_sos#rtl/iir_core.sv#s/if (btc_q == BtcWidth'(RomDepth - 1)) begin/if (btc_q == BtcWidth'(RomDepth)) begin/#RTL: the BTC counts one term past the ROM"
