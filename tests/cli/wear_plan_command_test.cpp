@@ -6,6 +6,7 @@
 // at all), a truth file of another fleet.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -36,11 +37,12 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
-// One locomotive over 40 days from 2026-01-01 (seed 11), simulated once for every test here.
+// One locomotive over 40 days from 2026-01-01 (seed 11), simulated once for every test here, in a
+// folder of this process's own: CTest runs the tests of this file as processes side by side.
 class WearPlanCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fresh_test_dir("wear_plan_command");
+    dir_ = fresh_test_dir("wear_plan_command_" + std::to_string(::getpid()));
     store_ = "sqlite:" + (dir_ / "fleet.db").string();
     const std::vector<std::string> simulate{"simulate", "--scenario", "fleet", "--locomotives",
                                             "1",        "--days",     "40",    "--seed",
