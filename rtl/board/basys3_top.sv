@@ -582,7 +582,8 @@ module basys3_top #(
   logic [19:0] clearance_digits, digits;
   logic [3:0]  clearance_dp, dp;
   logic [HeartbeatBit:0] beat_q, beat_d;
-  logic [15:0]           shown_word, shown_word_q;  // the latest sample of the channel sw[15:12] choose
+  // The latest sample of the channel sw[15:12] choose, and that sample registered.
+  logic [15:0]           shown_word, shown_word_q;
   logic                  shown_ok;    // the core has that channel
   localparam logic [19:0] DASHES = {4{5'd17}};
 
