@@ -30,6 +30,7 @@
 #include "pty_board.h"
 #include "serial_port.h"
 #include "socket_stream.h"
+#include "wheel_words.h"
 
 namespace flange::tb::board {
 namespace {
@@ -44,22 +45,6 @@ constexpr double kWheelRateHz = 100.0;
 // and print the rate.
 constexpr double kLinkMargin = 4.0;
 constexpr double kNoMargin = 0.0;
-
-// `per_channel` noisy words on each of 12 channels, channel c at its own level.
-std::vector<host::ChannelWords> wheel_words(int per_channel, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> noise(-1500, 1500);
-  std::vector<host::ChannelWords> out;
-  for (int c = 0; c < kWheels; ++c) {
-    host::ChannelWords ch{c, {}};
-    const int level = (c % 2 ? 1 : -1) * (5000 + 2100 * c);
-    for (int n = 0; n < per_channel; ++n) {
-      ch.words.push_back(static_cast<std::int16_t>(level + noise(rng)));
-    }
-    out.push_back(std::move(ch));
-  }
-  return out;
-}
 
 // Exactly one output per sample, each equal to its channel's cycle model.
 void expect_exactly_the_model(const std::vector<host::ChannelWords>& in,
@@ -134,7 +119,7 @@ PtyBoardOptions ftdi(int latency_timer_ms, bool protocol_model = false) {
 
 void expect_twelve_wheels_fit(int latency_timer_ms, bool protocol_model, double margin) {
   const std::vector<host::ChannelWords> in =
-      wheel_words(protocol_model ? 300 : 100, 40 + latency_timer_ms);
+      wheel_words(kWheels, protocol_model ? 300 : 100, 40 + latency_timer_ms);
   const Session s =
       stream(ftdi(latency_timer_ms, protocol_model), in, host::kMaxWindow, 500, Wire::kSocket);
   EXPECT_EQ(s.counts.samples, 12u * in[0].words.size());
@@ -175,7 +160,7 @@ TEST(BoardFtdiStream, VerilatedTopAnswersTheWindowExactlyWithLatencyTimer1ms) {
 TEST(BoardFtdiStream, StopAndWaitIsHeldByTheLatencyTimer) {
   // One request at a time: each reply (7 bytes) waits in the chip for the 16 ms timer, so a
   // session cannot carry 12 wheels at 100 Hz at any baud rate.
-  const std::vector<host::ChannelWords> in = wheel_words(3, 5);
+  const std::vector<host::ChannelWords> in = wheel_words(kWheels, 3, 5);
   const Session s = stream(ftdi(16), in, 1, 500, Wire::kSocket);
   EXPECT_EQ(s.counts.mismatches, 0u) << s.counts.first_mismatch;
   expect_exactly_the_model(in, s.out);
@@ -197,7 +182,7 @@ TEST(BoardFtdiStream, LossCorruptionAndLostRepliesGiveEveryOutputOnce) {
     if (index % (host::board::kReplyBytes * 41) == 5) byte ^= 0x01;  // a damaged STATUS
     return true;
   };
-  const std::vector<host::ChannelWords> in = wheel_words(60, 7);
+  const std::vector<host::ChannelWords> in = wheel_words(kWheels, 60, 7);
   // A timeout of 300 ms: long enough for the Verilated top of an instrumented build, whose
   // go-back-N resends would otherwise outrun its answers.
   const Session s = stream(std::move(options), in, 16, 300);
@@ -214,7 +199,7 @@ TEST(BoardFtdiStream, RepliesLateForTheTimeoutAreStrayNotFilteredTwice) {
   // takes the first reply of each and counts the rest as stray. No sample is filtered twice. The
   // protocol model (byte for byte the RTL's: Basys3TopModel.AnswersEveryStreamAsTheRtl) answers at
   // once: the Verilated top in a sanitized build is slower than the resends of a 6 ms timeout.
-  const std::vector<host::ChannelWords> in = wheel_words(20, 8);
+  const std::vector<host::ChannelWords> in = wheel_words(kWheels, 20, 8);
   const Session s = stream(ftdi(16, true), in, 8, 6);
   EXPECT_EQ(s.counts.samples, 240u);
   EXPECT_EQ(s.counts.mismatches, 0u) << s.counts.first_mismatch;
@@ -235,7 +220,7 @@ TEST(BoardFtdiStream, BoardResetsDuringTheSessionAreRecoveredByAReplay) {
   options.mangle = [](std::uint64_t index, std::uint8_t&) {
     return index % (kFrame * 97) != kFrame * 40 + 2;  // a lost byte now and then
   };
-  const std::vector<host::ChannelWords> in = wheel_words(60, 9);
+  const std::vector<host::ChannelWords> in = wheel_words(kWheels, 60, 9);
   Pty pty;
   host::SerialPort port(pty.slave_name(), kBaud);
   PtyBoard board(pty, std::move(options));
@@ -274,7 +259,7 @@ TEST(BoardFtdiStream, RepliesHeldPastTheTimeoutAroundResetsAreRecoveredExactly) 
   constexpr std::uint64_t kFrame = host::board::kRequestBytes;
   options.reset_before_bytes = {kFrame * 300, kFrame * 900};
   options.hold_replies = std::chrono::milliseconds(250);
-  const std::vector<host::ChannelWords> in = wheel_words(60, 10);
+  const std::vector<host::ChannelWords> in = wheel_words(kWheels, 60, 10);
   Pty pty;
   host::SerialPort port(pty.slave_name(), kBaud);
   PtyBoard board(pty, std::move(options));
@@ -328,7 +313,7 @@ TEST(BoardFtdiStream, ResetsAndLostBytesAtTheSyncLikeSeqsAreRecovered) {
     if (drop) ++*lost;
     return !drop;
   };
-  const std::vector<host::ChannelWords> in = wheel_words(60, 12);
+  const std::vector<host::ChannelWords> in = wheel_words(kWheels, 60, 12);
   Pty pty;
   host::SerialPort port(pty.slave_name(), kBaud);
   PtyBoard board(pty, std::move(options));
@@ -352,7 +337,7 @@ TEST(BoardFtdiStream, ResetsAndLostBytesAtTheSyncLikeSeqsAreRecovered) {
 // CRC of that window depends on the SEQ alone, and is 0xA5 for SEQ 85 and 168). The board's
 // decoder, which checks the last six bytes after every byte, takes it for SEQ 85.
 void expect_a_false_frame_recovered(std::int16_t word) {
-  host::ChannelWords ch{0, wheel_words(100, 11)[0].words};
+  host::ChannelWords ch{0, wheel_words(kWheels, 100, 11)[0].words};
   ch.words[84] = word;  // SEQ 85: the session reset has SEQ 0
   const std::vector<host::ChannelWords> in{ch};
   PtyBoardOptions options = ftdi(1);
@@ -403,7 +388,7 @@ TEST(BoardFtdiStream, ABoardThatKeepsResettingStopsTheSession) {
   host::BoardLink link(port, {kBaud, 100, 100, 16});
   host::StreamCounts counts;
   try {
-    host::stream_channels(link, wheel_words(60, 9), nullptr, counts);
+    host::stream_channels(link, wheel_words(kWheels, 60, 9), nullptr, counts);
     FAIL() << "a board that keeps resetting was streamed to the end";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("was reset 9 times during the session"),

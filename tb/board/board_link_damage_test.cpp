@@ -27,6 +27,7 @@
 #include "filter_json.h"
 #include "direct_stream.h"
 #include "iir_core.h"
+#include "wheel_words.h"
 
 namespace flange::tb::board {
 namespace {
@@ -55,22 +56,6 @@ std::string describe(const Damage& d) {
   return fmt::format("SEQ 0x{:02X} byte {} {}{}{}{}", d.seq, d.at,
                      kHarm[static_cast<int>(d.harm)], d.after_reset ? ", after a reset" : "",
                      d.twice ? ", twice" : "", d.held ? ", replies held" : "");
-}
-
-// `per_channel` noisy words on each channel, channel c at its own level.
-std::vector<host::ChannelWords> words(int per_channel) {
-  std::mt19937 rng(46);
-  std::uniform_int_distribution<int> noise(-1500, 1500);
-  std::vector<host::ChannelWords> out;
-  for (int c = 0; c < kChannels; ++c) {
-    host::ChannelWords ch{c, {}};
-    const int level = (c % 2 ? 1 : -1) * (5000 + 2100 * c);
-    for (int n = 0; n < per_channel; ++n) {
-      ch.words.push_back(static_cast<std::int16_t>(level + noise(rng)));
-    }
-    out.push_back(std::move(ch));
-  }
-  return out;
 }
 
 // The hook that places `d` by content; `hits` counts the frames it damaged.
@@ -157,7 +142,7 @@ struct Contexts {
 template <class Board>
 std::vector<std::string> sweep(std::span<const std::uint8_t> seqs, int per_channel,
                                Contexts contexts = {}) {
-  const std::vector<host::ChannelWords> in = words(per_channel);
+  const std::vector<host::ChannelWords> in = wheel_words(kChannels, per_channel, 46);
   std::vector<std::string> failures;
   for (std::uint8_t seq : seqs) {
     for (std::size_t at = 0; at < host::board::kRequestBytes; ++at) {
@@ -258,7 +243,7 @@ TEST(BoardLinkDamage, DISABLED_RandomDamageNeverStallsTheSession) {
   const int sessions = environment("FLANGE_SOAK_SESSIONS", 200);
   const char* board = std::getenv("FLANGE_SOAK_BOARD");
   const bool rtl = board && std::string(board) == "rtl";
-  const std::vector<host::ChannelWords> in = words(60);
+  const std::vector<host::ChannelWords> in = wheel_words(kChannels, 60, 46);
   SoakCounts counts;
   for (int k = 0; k < sessions; ++k) {
     if (rtl) {
