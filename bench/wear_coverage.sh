@@ -15,6 +15,8 @@
 # clearance as it was worked out when stored: delete the folder after changing that.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+# shellcheck source=bench/wear_truth_check.sh
+source "$here/wear_truth_check.sh"
 seeds="${1:-9101 9102 9103 9104 9105}"
 locomotives="${2:-5}"
 days="${3:-90}"
@@ -30,16 +32,7 @@ for seed in $seeds; do
     "$flange" simulate --scenario fleet --locomotives "$locomotives" --days "$days" \
       --seed "$seed" --store "sqlite:$dir/fleet.db" > "$dir/simulate.log"
   fi
-  rm -rf "$dir/wear"
-  # Exit status 1 is a failed check against the truth: counted below, not fatal here.
-  status=0
-  "$flange" wear --store "sqlite:$dir/fleet.db" --out "$dir/wear" \
-    --truth "$dir/fleet_truth.json" > "$dir/wear.log" || status=$?
-  if [ "$status" -gt 1 ]; then
-    echo "flange wear failed on seed $seed (exit $status): $dir/wear.log" >&2
-    exit "$status"
-  fi
-  echo "seed $seed: $(grep '^verdict' "$dir/wear.log")"
+  wear_truth_check "$flange" "sqlite:$dir/fleet.db" "$dir/fleet_truth.json" "$dir" "$seed"
   checks+=("$dir/wear/truth_check.json")
 done
 python3 "$here/wear_coverage_table.py" "${checks[@]}"

@@ -13,6 +13,8 @@
 # is stored.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+# shellcheck source=bench/wear_truth_check.sh
+source "$here/wear_truth_check.sh"
 seeds="${1:-9201 9202 9203 9204 9205}"
 locomotives="${2:-5}"
 days="${3:-120}"
@@ -32,16 +34,7 @@ for seed in $seeds; do
     rm -rf "$dir/depot/days"  # the recordings: the store keeps what `flange wear` reads
     touch "$dir/stored"
   fi
-  rm -rf "$dir/wear"
-  # Exit status 1 is a failed check against the truth: counted in the table, not fatal here.
-  status=0
-  "$flange" wear --store "sqlite:$dir/store.db" --out "$dir/wear" \
-    --truth "$dir/depot/fleet_truth.json" > "$dir/wear.log" || status=$?
-  if [ "$status" -gt 1 ]; then
-    echo "flange wear failed on seed $seed (exit $status): $dir/wear.log" >&2
-    exit "$status"
-  fi
-  echo "seed $seed: $(grep '^verdict' "$dir/wear.log")"
+  wear_truth_check "$flange" "sqlite:$dir/store.db" "$dir/depot/fleet_truth.json" "$dir" "$seed"
   checks+=("$dir/wear/truth_check.json")
 done
 python3 "$here/wear_coverage_table.py" "${checks[@]}"
