@@ -33,13 +33,13 @@ std::string fmt_label(int index, const char* part) {
 }
 
 void score_in_library(const AltPairSpec& spec, const Diagnosis& diagnosis, AltScore& score) {
-  score.verdict_correct = diagnosis.status == "explained";
+  score.verdict_correct = diagnosis.status == Status::kExplained;
   score.top_correct = !score.claimed.empty() && holds_class(spec, score.claimed.front());
   score.all_found = std::all_of(spec.truth.begin(), spec.truth.end(), [&](const auto& e) {
     return std::find(score.claimed.begin(), score.claimed.end(), e.draw.class_name) !=
            score.claimed.end();
   });
-  score.nearest_correct = diagnosis.status == "unexplained" && !score.nearest.empty() &&
+  score.nearest_correct = diagnosis.status == Status::kUnexplained && !score.nearest.empty() &&
                           holds_class(spec, score.nearest);
   score.bias_type = std::all_of(spec.truth.begin(), spec.truth.end(), [](const auto& e) {
     return alt_reality::alt_class(e.draw.class_name).bias_type;
@@ -71,10 +71,10 @@ AltScore score_alt_pair(const AltPairSpec& spec, const Diagnosis& diagnosis,
                         const std::vector<EffectFinding>& partial) {
   AltScore score;
   // A partly explained verdict names its effects as found: they are claims too.
-  if (diagnosis.status == "explained" || diagnosis.status == "partly explained") {
+  if (diagnosis.status == Status::kExplained || diagnosis.status == Status::kPartlyExplained) {
     for (const EffectFinding& f : diagnosis.effects) score.claimed.push_back(class_of_finding(f));
   }
-  if (diagnosis.status == "unexplained") {
+  if (diagnosis.status == Status::kUnexplained) {
     const EffectFinding* nearest = diagnosis.nearest  ? &*diagnosis.nearest
                                    : !partial.empty() ? &partial.front()
                                                       : nullptr;
@@ -91,7 +91,7 @@ AltScore score_alt_pair(const AltPairSpec& spec, const Diagnosis& diagnosis,
     score_in_library(spec, diagnosis, score);
   } else {
     score.verdict_correct =
-        diagnosis.status == (spec.kind == AltPairKind::kNull ? "none" : "unexplained");
+        diagnosis.status == (spec.kind == AltPairKind::kNull ? Status::kNone : Status::kUnexplained);
   }
   const double before = diagnosis.heldout_rms_before, after = diagnosis.heldout_rms_after;
   if (before > 0.0) score.shrink_pct = 100.0 * (before - after) / before;

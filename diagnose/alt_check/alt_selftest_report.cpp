@@ -5,6 +5,7 @@
 
 #include "alt_truth.h"
 #include "claims_json.h"
+#include "verdict_reasons.h"
 #include "version.h"
 
 namespace flange::diagnose {
@@ -39,7 +40,7 @@ const char* yes_no(bool applies, bool value) {
 }
 
 std::string nearest_cell(const AltPairResult& r) {
-  if (r.diagnosis.status != "unexplained" || r.score.nearest.empty()) return "";
+  if (r.diagnosis.status != Status::kUnexplained || r.score.nearest.empty()) return "";
   return fmt::format("{} {:.0f}%{}", r.score.nearest, r.score.nearest_shrink_pct,
                      in_library(r) ? (r.score.nearest_correct ? " (yes)" : " (no)") : "");
 }
@@ -61,7 +62,7 @@ nlohmann::json findings_json(const std::vector<EffectFinding>& findings) {
 
 nlohmann::json pair_json(const AltPairResult& r) {
   nlohmann::json j = alt_reality::alt_truth_json(r.spec);
-  j["verdict"] = r.diagnosis.status;
+  j["verdict"] = status_text(r.diagnosis.status);
   j["claimed_classes"] = r.score.claimed;
   j["nearest_class"] = r.score.nearest;
   j["nearest_shrink_pct"] = r.score.nearest_shrink_pct;
@@ -105,7 +106,7 @@ std::string alt_terminal_table(const std::vector<AltPairResult>& results) {
     const bool lib = in_library(r);
     text += fmt::format(
         "{:>4}  {:<7}  {:<11}  {:<3}  {:<3}  {:>6.1f}%  {:>6.1f}%  {:>6.3f}  {:<34}  {:<30}  {}\n",
-        r.spec.index, alt_pair_kind_name(r.spec.kind), r.diagnosis.status,
+        r.spec.index, alt_pair_kind_name(r.spec.kind), status_text(r.diagnosis.status),
         yes_no(lib, r.score.top_correct), yes_no(lib, r.score.all_found), r.score.shrink_pct,
         r.score.excess_shrink_pct, r.spec.fit.noise_v, join(r.score.claimed), nearest_cell(r),
         describe_truth(r.spec));
@@ -167,7 +168,7 @@ std::string alt_selftest_markdown(const std::string& header,
     md +=
         fmt::format("| {} | {} | {} | {:.3f} | {} | {} | {} | {} | {} | {:.1f} | {:.1f} |\n",
                     r.spec.index, alt_pair_kind_name(r.spec.kind), describe_truth(r.spec),
-                    r.spec.fit.noise_v, r.diagnosis.status, join(r.score.claimed), nearest_cell(r),
+                    r.spec.fit.noise_v, status_text(r.diagnosis.status), join(r.score.claimed), nearest_cell(r),
                     yes_no(lib, r.score.top_correct), yes_no(lib, r.score.all_found),
                     r.score.shrink_pct, r.score.excess_shrink_pct);
   }

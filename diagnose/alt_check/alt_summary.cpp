@@ -18,11 +18,11 @@ void count_in_library(const AltPairResult& r, AltSummary& s, double& shrink_sum,
   s.top_correct += score.top_correct ? 1 : 0;
   s.all_found += score.all_found ? 1 : 0;
   s.spurious += score.spurious;
-  if (r.diagnosis.status == "partly explained") {
+  if (r.diagnosis.status == Status::kPartlyExplained) {
     ++s.partly_explained_in_library;
     s.partly_top_correct += score.top_correct ? 1 : 0;
   }
-  if (r.diagnosis.status == "unexplained") {
+  if (r.diagnosis.status == Status::kUnexplained) {
     ++s.unexplained_in_library;
     s.nearest_correct += score.nearest_correct ? 1 : 0;
   }
@@ -75,12 +75,12 @@ AltSummary summarise_alt_selftest(const std::vector<AltPairResult>& results) {
       case AltPairKind::kNull:
         ++s.null_pairs;
         s.null_claims += claimed ? 1 : 0;
-        s.null_none += r.diagnosis.status == "none" ? 1 : 0;
+        s.null_none += r.diagnosis.status == Status::kNone ? 1 : 0;
         break;
       case AltPairKind::kOutside:
         ++s.outside_pairs;
         s.outside_claims += claimed ? 1 : 0;
-        s.outside_unexplained += r.diagnosis.status == "unexplained" ? 1 : 0;
+        s.outside_unexplained += r.diagnosis.status == Status::kUnexplained ? 1 : 0;
         break;
     }
   }

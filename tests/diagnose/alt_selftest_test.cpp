@@ -20,6 +20,7 @@
 #include "flange_in_process.h"
 #include "test_files.h"
 #include "twin_file.h"
+#include "verdict_reasons.h"
 
 namespace flange::diagnose {
 namespace {
@@ -57,7 +58,7 @@ TEST(AltSelftest, ScoringCountsTopNearestAndTheGapAboveTheTrueNoise) {
   const AltPairSpec pair =
       spec_with(AltPairKind::kDouble, {"sensor_thermal_lag", "mount_vibration"}, 0.03);
   Diagnosis d;
-  d.status = "explained";
+  d.status = Status::kExplained;
   d.effects = {finding("thermal_lag", {{"tau_s", 500}}), finding("temp_gain_drift")};
   d.heldout_rms_before = 0.05;
   d.heldout_rms_after = 0.03;
@@ -70,7 +71,7 @@ TEST(AltSelftest, ScoringCountsTopNearestAndTheGapAboveTheTrueNoise) {
   EXPECT_NEAR(s.excess_shrink_pct, 100.0, 1e-9);  // what is left is the true noise
 
   Diagnosis unexplained = d;
-  unexplained.status = "unexplained";
+  unexplained.status = Status::kUnexplained;
   unexplained.effects.clear();
   const AltScore u = score_alt_pair(pair, unexplained, {finding("thermal_lag", {{"tau_s", -50}})});
   EXPECT_TRUE(u.claimed.empty());
@@ -86,7 +87,7 @@ TEST(AltSelftest, ScoringCountsTopNearestAndTheGapAboveTheTrueNoise) {
   EXPECT_EQ(w.nearest_shrink_pct, 35.0);
 
   Diagnosis none;
-  none.status = "none";
+  none.status = Status::kNone;
   const AltScore n = score_alt_pair(spec_with(AltPairKind::kNull, {}, 0.05), none, {});
   EXPECT_TRUE(n.verdict_correct);
   std::vector<AltPairResult> results(3);
@@ -175,7 +176,7 @@ AltPairResult development_pair(std::uint64_t seed, int pair) {
 // Pair `pair` of `seed` is explained by `effect` alone, the right class.
 void expect_explained_by_one_effect(std::uint64_t seed, int pair, const std::string& effect) {
   const AltPairResult r = development_pair(seed, pair);
-  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.status, Status::kExplained);
   ASSERT_EQ(r.diagnosis.effects.size(), 1u);
   EXPECT_EQ(r.diagnosis.effects[0].name, effect);
   EXPECT_TRUE(r.score.top_correct);
@@ -185,7 +186,7 @@ void expect_explained_by_one_effect(std::uint64_t seed, int pair, const std::str
 void expect_unclaimed_outside_pair(std::uint64_t seed, int pair) {
   const AltPairResult r = development_pair(seed, pair);
   ASSERT_EQ(r.spec.kind, AltPairKind::kOutside);
-  EXPECT_EQ(r.diagnosis.status, "unexplained");
+  EXPECT_EQ(r.diagnosis.status, Status::kUnexplained);
   EXPECT_TRUE(r.diagnosis.effects.empty());
 }
 
@@ -216,7 +217,7 @@ TEST(AltSelftest, OneClassOfAnotherShapeIsPreferredToTwoLibraryClasses) {
 TEST(AltSelftest, AClassBehindALateThermocoupleIsNamedWithTheLag) {
   for (const auto& [seed, pair] : {std::pair<std::uint64_t, int>{444, 7}, {445, 7}}) {
     const AltPairResult r = development_pair(seed, pair);
-    EXPECT_EQ(r.diagnosis.status, "explained") << seed << "/" << pair;
+    EXPECT_EQ(r.diagnosis.status, Status::kExplained) << seed << "/" << pair;
     EXPECT_TRUE(r.score.top_correct) << seed << "/" << pair;
     EXPECT_TRUE(r.score.all_found) << seed << "/" << pair;
     const auto lag = std::find_if(r.diagnosis.effects.begin(), r.diagnosis.effects.end(),
@@ -233,7 +234,7 @@ TEST(AltSelftest, AClassBehindALateThermocoupleIsNamedWithTheLag) {
 // first.
 TEST(AltSelftest, FewerClassesAreNamedWhereBothPassesLeaveTheNoise) {
   const AltPairResult r = development_pair(449, 11);
-  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.status, Status::kExplained);
   ASSERT_FALSE(r.diagnosis.effects.empty());
   EXPECT_EQ(r.diagnosis.effects[0].name, "temp_gain_drift");
   EXPECT_LE(r.diagnosis.effects.size(), 2u);
@@ -268,7 +269,7 @@ void expect_explained_where_the_calibration_reaches(std::uint64_t seed, int pair
                                                     const std::string& effect,
                                                     double left_over_noise) {
   const AltPairResult r = development_pair(seed, pair);
-  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.status, Status::kExplained);
   ASSERT_FALSE(r.diagnosis.effects.empty());
   EXPECT_EQ(r.diagnosis.effects[0].name, effect);
   EXPECT_TRUE(r.score.top_correct);
@@ -346,10 +347,10 @@ bool any_reason_holds(const DiagnosisResult& r, const std::string& phrase) {
 // takes each part's own out before the rest.
 TEST(AltSelftest, AWanderingGridHeldAsEachSessionsOwnLinesLeavesNone) {
   const Rediagnosis r = rediagnose_alt_pair(436, 36);
-  ASSERT_EQ(r.first.diagnosis.status, "explained");
+  ASSERT_EQ(r.first.diagnosis.status, Status::kExplained);
   ASSERT_EQ(r.first.improved_twin.findings.size(), 1u);
-  EXPECT_EQ(r.first.improved_twin.findings[0].held_as, "session's own lines");
-  EXPECT_EQ(r.second.diagnosis.status, "none");
+  EXPECT_EQ(r.first.improved_twin.findings[0].held_as, HeldAs::kSessionLines);
+  EXPECT_EQ(r.second.diagnosis.status, Status::kNone);
   EXPECT_TRUE(any_reason_holds(r.second, "whose lines are each session's own"));
   // The twin it hands back holds the lines still.
   const std::vector<sim::EffectSettings>& again = r.second.improved_twin.twin.effects;
@@ -363,11 +364,11 @@ TEST(AltSelftest, AWanderingGridHeldAsEachSessionsOwnLinesLeavesNone) {
 // names the grid (noise.rounding_lsb_v); against that twin the grid is not named again.
 TEST(AltSelftest, AConverterHeldInTheNoiseIsNotNamedAgain) {
   const Rediagnosis r = rediagnose_alt_pair(467, 6);
-  ASSERT_EQ(r.first.diagnosis.status, "explained");
+  ASSERT_EQ(r.first.diagnosis.status, Status::kExplained);
   ASSERT_EQ(r.first.improved_twin.findings.size(), 1u);
-  EXPECT_EQ(r.first.improved_twin.findings[0].held_as, "white noise");
+  EXPECT_EQ(r.first.improved_twin.findings[0].held_as, HeldAs::kWhiteNoise);
   EXPECT_GT(r.first.improved_twin.twin.noise.rounding_lsb_v, 0.3);
-  EXPECT_EQ(r.second.diagnosis.status, "none");
+  EXPECT_EQ(r.second.diagnosis.status, Status::kNone);
   EXPECT_EQ(r.second.improved_twin.twin.noise.rounding_lsb_v,
             r.first.improved_twin.twin.noise.rounding_lsb_v);
 }
@@ -377,16 +378,16 @@ TEST(AltSelftest, AConverterHeldInTheNoiseIsNotNamedAgain) {
 // the library's channel_skew with its drift, and against that twin the pair leaves "none".
 TEST(AltSelftest, ADriftingSkewIsHeldByItsLaw) {
   const Rediagnosis r = rediagnose_alt_pair(470, 2);
-  ASSERT_EQ(r.first.diagnosis.status, "explained");
+  ASSERT_EQ(r.first.diagnosis.status, Status::kExplained);
   ASSERT_EQ(r.first.improved_twin.findings.size(), 1u);
-  EXPECT_EQ(r.first.improved_twin.findings[0].held_as, "library effect and table");
+  EXPECT_EQ(r.first.improved_twin.findings[0].held_as, HeldAs::kLibraryEffectAndTable);
   const std::vector<sim::EffectSettings>& held = r.first.improved_twin.twin.effects;
   const auto skew = std::find_if(held.begin(), held.end(), [](const sim::EffectSettings& e) {
     return e.name == "channel_skew";
   });
   ASSERT_NE(skew, held.end());
   EXPECT_NE(skew->params.at("drift_s_per_h"), 0.0);
-  EXPECT_EQ(r.second.diagnosis.status, "none");
+  EXPECT_EQ(r.second.diagnosis.status, Status::kNone);
 }
 
 // Seed 468, pair 36: an ageing, explained within the calibration's ranges only (24.9-69.9 C; the
@@ -395,7 +396,7 @@ TEST(AltSelftest, ADriftingSkewIsHeldByItsLaw) {
 // while what lies beyond lies beyond the table's fits: "none", saying where the twin continues.
 TEST(AltSelftest, AGapExplainedWithinReachIsLeftOnlyBeyondTheTwinsFits) {
   const Rediagnosis r = rediagnose_alt_pair(468, 36);
-  ASSERT_EQ(r.first.diagnosis.status, "explained");
+  ASSERT_EQ(r.first.diagnosis.status, Status::kExplained);
   EXPECT_TRUE(any_reason_holds(r.first, "lie beyond them"));
   const std::vector<sim::EffectSettings>& held = r.first.improved_twin.twin.effects;
   ASSERT_FALSE(held.empty());
@@ -404,7 +405,7 @@ TEST(AltSelftest, AGapExplainedWithinReachIsLeftOnlyBeyondTheTwinsFits) {
     EXPECT_NEAR(effect.fitted_over->temperature_lo_c, 24.9, 0.05);
     EXPECT_NEAR(effect.fitted_over->temperature_hi_c, 69.9, 0.05);
   }
-  EXPECT_EQ(r.second.diagnosis.status, "none");
+  EXPECT_EQ(r.second.diagnosis.status, Status::kNone);
   EXPECT_TRUE(any_reason_holds(r.second, "beyond the ranges the twin's"));
   EXPECT_TRUE(r.second.diagnosis.effects.empty());
   // The rejected pick asks for no measurement.
@@ -422,13 +423,13 @@ TEST(AltSelftest, AGapExplainedWithinReachIsLeftOnlyBeyondTheTwinsFits) {
 TEST(AltSelftest, AnExplainedReadingLagBesideATemperatureClassIsHeldByItsTwin) {
   const Rediagnosis r = rediagnose_alt_pair(470, 27);
   for (const HeldFinding& finding : r.first.improved_twin.findings) {
-    EXPECT_NE(finding.held_as, "not held") << finding.name << ": " << finding.note;
+    EXPECT_NE(finding.held_as, HeldAs::kNotHeld) << finding.name << ": " << finding.note;
   }
-  if (r.first.diagnosis.status == "explained") {
-    EXPECT_EQ(r.second.diagnosis.status, "none");
+  if (r.first.diagnosis.status == Status::kExplained) {
+    EXPECT_EQ(r.second.diagnosis.status, Status::kNone);
   }
   // The library's lag leaves 1.13 times the noise: the verdict may not call it explained.
-  EXPECT_NE(r.first.diagnosis.status, "none");
+  EXPECT_NE(r.first.diagnosis.status, Status::kNone);
 }
 
 // Seed 447, pair 35: a log-time ageing, a ln(1 + age / 0.80 d), whose held-out session starts
@@ -438,7 +439,7 @@ TEST(AltSelftest, AnExplainedReadingLagBesideATemperatureClassIsHeldByItsTwin) {
 // chooses among them (one value fitted there).
 TEST(AltSelftest, ASettlingAgeingIsCarriedToALaterSessionByItsLevelThere) {
   const AltPairResult r = development_pair(447, 35);
-  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.status, Status::kExplained);
   ASSERT_EQ(r.diagnosis.effects.size(), 1u);
   EXPECT_EQ(r.diagnosis.effects[0].name, "ageing_drift");
   EXPECT_GT(r.diagnosis.effects[0].params.count("settling_tau_days"), 0u);
@@ -451,7 +452,7 @@ TEST(AltSelftest, ASettlingAgeingIsCarriedToALaterSessionByItsLevelThere) {
 // noise), so each session's constant joins the lines.
 TEST(AltSelftest, AMainsHarmonicOnZeroHertzIsAConstantOfEachSession) {
   const AltPairResult r = development_pair(448, 35);
-  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.status, Status::kExplained);
   ASSERT_EQ(r.diagnosis.effects.size(), 1u);
   EXPECT_EQ(r.diagnosis.effects[0].name, "mains_pickup");
   EXPECT_EQ(r.diagnosis.effects[0].params.at("dc_harmonic_hz"), 150.0);
@@ -473,7 +474,7 @@ TEST(AltSelftest, ADwellOnACodeBoundaryIsNotAMissOnACoarseGrid) {
 // the inputs the voltage was made at.
 TEST(AltSelftest, ARippleBehindALateVoltageChannelIsACurveOfTheClearanceItSaw) {
   const AltPairResult r = development_pair(450, 27);
-  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.status, Status::kExplained);
   EXPECT_TRUE(r.score.top_correct);
   EXPECT_TRUE(r.score.all_found);
 }
@@ -486,7 +487,7 @@ TEST(AltSelftest, AClearanceRippleRepeatsBeyondTheCalibrationsRange) {
   for (const auto& [seed, pair, period_mm] :
        {std::tuple<std::uint64_t, int, double>{453, 4, 2.528}, {454, 3, 2.667}}) {
     const AltPairResult r = development_pair(seed, pair);
-    ASSERT_EQ(r.diagnosis.status, "explained") << seed << "/" << pair;
+    ASSERT_EQ(r.diagnosis.status, Status::kExplained) << seed << "/" << pair;
     ASSERT_EQ(r.diagnosis.effects.size(), 1u) << seed << "/" << pair;
     EXPECT_EQ(r.diagnosis.effects[0].name, "nonlinearity") << seed << "/" << pair;
     EXPECT_NEAR(r.diagnosis.effects[0].params.at("ripple_period_mm"), period_mm, 0.03)
@@ -501,7 +502,7 @@ TEST(AltSelftest, AClearanceRippleRepeatsBeyondTheCalibrationsRange) {
 // variance is all there.
 TEST(AltSelftest, MotionAliasedNearZeroHertzIsCountedOverTheSession) {
   const AltPairResult r = development_pair(440, 1);
-  ASSERT_EQ(r.diagnosis.status, "explained");
+  ASSERT_EQ(r.diagnosis.status, Status::kExplained);
   ASSERT_FALSE(r.diagnosis.effects.empty());
   EXPECT_EQ(r.diagnosis.effects[0].name, "vibration");
   EXPECT_TRUE(r.score.top_correct);

@@ -17,6 +17,7 @@
 #include "diagnosis_detail.h"
 #include "recording_series.h"
 #include "test_files.h"
+#include "verdict_reasons.h"
 
 namespace flange::diagnose {
 namespace {
@@ -93,7 +94,7 @@ TEST(DiagnoseSelftest, ScoringCountsTopAllSpuriousAndExcessShrink) {
   spec.truth = {sim::make_effect_settings("temp_offset_drift", {}, "test"),
                 sim::make_effect_settings("vibration", {}, "test")};
   Diagnosis d;
-  d.status = "explained";
+  d.status = Status::kExplained;
   d.effects = {{"temp_offset_drift", {}, 0, 0, 0, 1, false, ""},
                {"channel_skew", {}, 0, 0, 0, 1, false, ""}};
   d.heldout_rms_before = 0.5;
@@ -108,7 +109,7 @@ TEST(DiagnoseSelftest, ScoringCountsTopAllSpuriousAndExcessShrink) {
 
   SelftestCaseSpec null_spec;
   null_spec.kind = SelftestKind::kNull;
-  d.status = "unexplained";  // partial findings are not claims
+  d.status = Status::kUnexplained;  // partial findings are not claims
   const SelftestScore n = score_selftest_case(null_spec, d, 0.3);
   EXPECT_TRUE(n.claimed.empty());
   EXPECT_FALSE(n.verdict_correct);
@@ -151,7 +152,7 @@ void run_gain_step_case(int seed, int case_index, SelftestCaseResult& result) {
 TEST(DiagnoseSelftest, AGainStepThatATemperatureCurveTakesIsNotClaimed) {
   SelftestCaseResult r;
   ASSERT_NO_FATAL_FAILURE(run_gain_step_case(4, 49, r));
-  EXPECT_EQ(r.diagnosis.status, "unexplained");
+  EXPECT_EQ(r.diagnosis.status, Status::kUnexplained);
   EXPECT_TRUE(r.diagnosis.effects.empty());
   EXPECT_LE(r.diagnosis.heldout_rms_after, 1.10 * r.diagnosis.noise_std_v);
   ASSERT_TRUE(r.diagnosis.nearest);
@@ -168,7 +169,7 @@ TEST(DiagnoseSelftest, AGainStepThatATemperatureCurveTakesIsNotClaimed) {
 TEST(DiagnoseSelftest, AStepAtTheSameTimeInBothSessionsIsNotTakenForAgeing) {
   SelftestCaseResult r;
   ASSERT_NO_FATAL_FAILURE(run_gain_step_case(8, 20, r));
-  EXPECT_EQ(r.diagnosis.status, "unexplained");
+  EXPECT_EQ(r.diagnosis.status, Status::kUnexplained);
   EXPECT_TRUE(r.diagnosis.effects.empty());
   ASSERT_TRUE(r.diagnosis.nearest);
   EXPECT_EQ(r.diagnosis.nearest->name, "temp_gain_drift");
@@ -179,7 +180,7 @@ void expect_explained_by_its_one_effect(int seed, int case_index, const std::str
   const SelftestCaseResult r = run_case(seed, case_index);
   ASSERT_EQ(r.spec.truth.size(), 1u);
   ASSERT_EQ(r.spec.truth.front().name, effect);
-  EXPECT_EQ(r.diagnosis.status, "explained");
+  EXPECT_EQ(r.diagnosis.status, Status::kExplained);
   ASSERT_EQ(r.diagnosis.effects.size(), 1u);
   EXPECT_EQ(r.diagnosis.effects.front().name, effect);
 }
@@ -211,14 +212,14 @@ TEST(DiagnoseSelftest, AWeakReadingLagWithinTheNoiseIsNamedInTheReasonsNotClaime
   const SelftestCaseResult r = run_case(15, 25);
   ASSERT_EQ(r.spec.truth.size(), 1u);
   ASSERT_EQ(r.spec.truth.front().name, "thermal_lag");
-  EXPECT_EQ(r.diagnosis.status, "none");
+  EXPECT_EQ(r.diagnosis.status, Status::kNone);
   EXPECT_TRUE(r.diagnosis.effects.empty());
   ASSERT_TRUE(r.recordings);
   DiagnoseOptions options;
   options.bootstrap_rounds = SelftestOptions{}.bootstrap_rounds;
   const DiagnosisResult again =
       diagnose_in_detail(r.recordings->calibration, r.recordings->heldout, options);
-  EXPECT_EQ(again.diagnosis.status, "none");
+  EXPECT_EQ(again.diagnosis.status, Status::kNone);
   const std::vector<std::string>& reasons = again.detail.reasons;
   EXPECT_TRUE(std::any_of(reasons.begin(), reasons.end(), [](const std::string& reason) {
     return reason.find("thermal_lag would take") != std::string::npos &&
@@ -270,7 +271,7 @@ TEST(DiagnoseSelftest, AShortPairIsNamedWithAPickGivenAFreeShape) {
   options.seed = 8;  // as the self-test seeds case 7 of seed 1
   const Diagnosis diagnosis = diagnose_in_detail(rec.calibration, rec.heldout, options).diagnosis;
   const SelftestScore score = score_selftest_case(spec, diagnosis, rec.noise_std_v);
-  EXPECT_EQ(diagnosis.status, "explained");
+  EXPECT_EQ(diagnosis.status, Status::kExplained);
   EXPECT_TRUE(score.all_found) << ::testing::PrintToString(score.claimed);
   EXPECT_EQ(score.spurious, 0);
   EXPECT_TRUE(

@@ -20,6 +20,7 @@
 #include "sensor_twin.h"
 #include "test_files.h"
 #include "twin_replay.h"
+#include "verdict_reasons.h"
 
 namespace flange::diagnose {
 namespace {
@@ -98,7 +99,7 @@ TEST_P(DiagnoseRecovers, TopEffectAndParameters) {
   DiagnoseOptions options;
   options.bootstrap_rounds = 40;
   const Diagnosis d = diagnose(calibration, heldout, options);
-  ASSERT_EQ(d.status, "explained") << "before " << d.heldout_rms_before << " after "
+  ASSERT_EQ(d.status, Status::kExplained) << "before " << d.heldout_rms_before << " after "
                                    << d.heldout_rms_after << " noise " << d.noise_std_v;
   ASSERT_FALSE(d.effects.empty());
   const EffectFinding& top = d.effects.front();
@@ -133,7 +134,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Diagnose, NullRecordingGivesNone) {
   const Diagnosis d = diagnose(twin_recording({}, 21, 0.0), twin_recording({}, 22, 70.0), {});
-  EXPECT_EQ(d.status, "none") << d.heldout_rms_before << " vs noise " << d.noise_std_v;
+  EXPECT_EQ(d.status, Status::kNone) << d.heldout_rms_before << " vs noise " << d.noise_std_v;
   EXPECT_TRUE(d.effects.empty());
   EXPECT_NEAR(d.noise_std_v, kNoiseV, 0.1 * kNoiseV);
 }
@@ -154,7 +155,7 @@ TEST(Diagnose, AgeingAcrossSessionsNeedsTheirStartTimes) {
   const DiagnosisResult blind = diagnose_in_detail(first, later, {});
   EXPECT_EQ(blind.diagnosis.clock, "unknown");
   EXPECT_FALSE(blind.diagnosis.heldout_starts_after_s.has_value());
-  EXPECT_NE(blind.diagnosis.status, "explained");
+  EXPECT_NE(blind.diagnosis.status, Status::kExplained);
   const auto says = [](const DiagnosisResult& r, const std::string& text) {
     return std::any_of(r.detail.reasons.begin(), r.detail.reasons.end(),
                        [&](const std::string& s) { return s.find(text) != std::string::npos; });
@@ -167,7 +168,7 @@ TEST(Diagnose, AgeingAcrossSessionsNeedsTheirStartTimes) {
   EXPECT_EQ(timed.diagnosis.clock, "start times");
   ASSERT_TRUE(timed.diagnosis.heldout_starts_after_s.has_value());
   EXPECT_DOUBLE_EQ(*timed.diagnosis.heldout_starts_after_s, 1.5 * 86400.0);
-  EXPECT_EQ(timed.diagnosis.status, "explained");
+  EXPECT_EQ(timed.diagnosis.status, Status::kExplained);
   ASSERT_FALSE(timed.diagnosis.effects.empty());
   EXPECT_EQ(timed.diagnosis.effects.front().name, "ageing_drift");
   EXPECT_GT(timed.diagnosis.effects.front().shrink_pct, 80.0);
@@ -196,7 +197,7 @@ TEST(Diagnose, AnOffsetOfAnotherShapeIsNamedByItsClassWithAFreeCurve) {
   };
   const Diagnosis d =
       diagnose(bent(twin_recording({}, 61, 0.0)), bent(twin_recording({}, 62, 70.0)), {});
-  EXPECT_EQ(d.status, "explained");
+  EXPECT_EQ(d.status, Status::kExplained);
   ASSERT_FALSE(d.effects.empty());
   const EffectFinding& top = d.effects.front();
   EXPECT_EQ(top.name, "temp_offset_drift");
@@ -211,7 +212,7 @@ TEST(Diagnose, AnOffsetOfAnotherShapeIsNamedByItsClassWithAFreeCurve) {
 TEST(Diagnose, GainStepOutsideTheLibraryIsUnexplained) {
   const Diagnosis d =
       diagnose(twin_recording({}, 31, 0.0, 1.08), twin_recording({}, 32, 70.0, 1.08), {});
-  EXPECT_EQ(d.status, "unexplained");
+  EXPECT_EQ(d.status, Status::kUnexplained);
   EXPECT_EQ(d.stage, "voltage");
   EXPECT_TRUE(d.effects.empty());
   // Still the effect it came nearest to, and how far that went.
@@ -227,7 +228,7 @@ TEST(Diagnose, AGapMostlyTakenByOneClassIsPartlyExplainedByIt) {
       "temp_offset_drift", {{"offset_v_per_c", 0.012}, {"reference_c", 20.0}}, "test")};
   const Diagnosis d =
       diagnose(twin_recording(drift, 33, 0.0, 1.01), twin_recording(drift, 34, 70.0, 1.01), {});
-  EXPECT_EQ(d.status, "partly explained");
+  EXPECT_EQ(d.status, Status::kPartlyExplained);
   ASSERT_FALSE(d.effects.empty());
   EXPECT_EQ(d.effects.front().name, "temp_offset_drift");
   EXPECT_GT(d.heldout_rms_after, 1.1 * d.noise_std_v);  // more than the noise is left
@@ -325,7 +326,7 @@ TEST(DiagnoseCommand, ACoarseGridIsEstimatedReportedAndTheNoiseSurvivesIt) {
 void expect_the_converter_alone(const Diagnosis& d) {
   std::string named;
   for (const EffectFinding& f : d.effects) named += f.name + ": " + f.evidence + "\n";
-  EXPECT_EQ(d.status, "explained") << named;
+  EXPECT_EQ(d.status, Status::kExplained) << named;
   ASSERT_EQ(d.effects.size(), 1u) << named;
   EXPECT_EQ(d.effects.front().name, "adc_quantization");
 }
@@ -415,7 +416,7 @@ TEST(Diagnose, AnAlarmTimingGapCountsOnlyWhenTheHeldOutPartShowsItToo) {
   EXPECT_FALSE(cal_only.significant) << cal_only.note;
   EXPECT_NE(cal_only.note.find("not counted"), std::string::npos) << cal_only.note;
   EXPECT_EQ(one.diagnosis.stage, "none");
-  EXPECT_EQ(one.diagnosis.status, "none");
+  EXPECT_EQ(one.diagnosis.status, Status::kNone);
 
   const DiagnosisResult both =
       diagnose_in_detail(late_warning_recording(81, 0.0), late_warning_recording(82, 70.0), {});
@@ -423,7 +424,7 @@ TEST(Diagnose, AnAlarmTimingGapCountsOnlyWhenTheHeldOutPartShowsItToo) {
   EXPECT_TRUE(shown_twice.significant) << shown_twice.note;
   EXPECT_NE(shown_twice.note.find("shows it too"), std::string::npos) << shown_twice.note;
   EXPECT_EQ(both.diagnosis.stage, "alarm_timing");
-  EXPECT_NE(both.diagnosis.status, "none");
+  EXPECT_NE(both.diagnosis.status, Status::kNone);
 }
 
 // A micrometer staircase: it climbs from 1.5 to 9.5 mm in steps of 1 mm (3 s a move, 20 s at

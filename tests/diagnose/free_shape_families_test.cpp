@@ -15,6 +15,7 @@
 #include "diagnosis.h"
 #include "diagnosis_detail.h"
 #include "polynomial_sensor_model.h"
+#include "verdict_reasons.h"
 
 namespace flange::diagnose {
 namespace {
@@ -132,7 +133,7 @@ class FreeShapeFamilies : public ::testing::TestWithParam<ShapeCase> {};
 TEST_P(FreeShapeFamilies, NamedByItsClassAndExplained) {
   const ShapeCase& c = GetParam();
   const Diagnosis d = diagnose_pair(c.effect, kNoiseV, 11, c.heldout_after_s);
-  EXPECT_EQ(d.status, "explained")
+  EXPECT_EQ(d.status, Status::kExplained)
       << d.heldout_rms_before << " -> " << d.heldout_rms_after << " V, noise " << d.noise_std_v;
   ASSERT_FALSE(d.effects.empty());
   const EffectFinding& top = d.effects.front();
@@ -353,7 +354,7 @@ TEST(MainsLines, AWeakHarmonicOnItsOwnAliasIsFoundBesideAStrongFundamental) {
                                                record(second, pickup(second, 1), kNoiseV, 92), {});
   std::string named;
   for (const EffectFinding& f : r.diagnosis.effects) named += f.name + ": " + f.evidence + "\n";
-  EXPECT_EQ(r.diagnosis.status, "explained") << named << stages_of(r);
+  EXPECT_EQ(r.diagnosis.status, Status::kExplained) << named << stages_of(r);
   ASSERT_FALSE(r.diagnosis.effects.empty()) << r.diagnosis.status;
   const EffectFinding& lines = r.diagnosis.effects.front();
   EXPECT_EQ(lines.name, "mains_pickup") << named;
@@ -372,7 +373,7 @@ TEST(MainsLines, AWeakHarmonicOnItsOwnAliasIsFoundBesideAStrongFundamental) {
 TEST(SessionsAndTime, AnUnknownHeldOutAgeIsPlacedWhereTheAgeingCurveFitsIt) {
   const Diagnosis d =
       diagnose_pair(aged([](double age) { return age > 600.0 ? 0.12 : 0.0; }), kNoiseV, 11);
-  EXPECT_EQ(d.status, "explained") << d.heldout_rms_before << " -> " << d.heldout_rms_after;
+  EXPECT_EQ(d.status, Status::kExplained) << d.heldout_rms_before << " -> " << d.heldout_rms_after;
   ASSERT_FALSE(d.effects.empty());
   const EffectFinding& ageing = d.effects.front();
   ASSERT_EQ(ageing.name, "ageing_drift") << ageing.evidence;
@@ -388,7 +389,7 @@ TEST(SessionsAndTime, AnUnknownHeldOutAgeIsPlacedWhereTheAgeingCurveFitsIt) {
 TEST(SessionsAndTime, AnAgeingStepIsHeldAtItsFullHeight) {
   const Diagnosis d =
       diagnose_pair(aged([](double age) { return age > 1000.0 ? 0.1 : 0.0; }), 0.006, 13, 86400.0);
-  EXPECT_EQ(d.status, "explained")
+  EXPECT_EQ(d.status, Status::kExplained)
       << d.heldout_rms_before << " -> " << d.heldout_rms_after << " V, noise " << d.noise_std_v;
   ASSERT_FALSE(d.effects.empty());
   EXPECT_EQ(d.effects.front().name, "ageing_drift") << d.effects.front().evidence;
@@ -417,7 +418,7 @@ TEST(Confounding, TimeAndTemperatureMovingTogetherAreReportedAsSuch) {
   // 0.036 V over the session: 1.7 V/day, within the library ageing's +-2 V/day.
   const DiagnosisResult r = diagnose_in_detail(record(first, offset(first), 0.005, 5),
                                                record(second, offset(second), 0.005, 6), {});
-  EXPECT_EQ(r.diagnosis.status, "explained");
+  EXPECT_EQ(r.diagnosis.status, Status::kExplained);
   const auto confounded =
       std::find_if(r.detail.reasons.begin(), r.detail.reasons.end(), [](const std::string& s) {
         return s.find("confounded on this protocol") != std::string::npos;
@@ -459,7 +460,7 @@ Effect narrow_resonance(double centre_hz, double width_hz) {
 TEST(LowAliasedMotion, ANarrowResonanceIsFoundAndExplainsTheGap) {
   // 12.2-12.4 Hz: aliased to 0.2-0.4 Hz at 6 Hz.
   const DiagnosisResult r = diagnose_pair_in_detail(narrow_resonance(12.3, 0.2), kNoiseV, 21);
-  EXPECT_EQ(r.diagnosis.status, "explained") << stages_of(r);
+  EXPECT_EQ(r.diagnosis.status, Status::kExplained) << stages_of(r);
   ASSERT_FALSE(r.diagnosis.effects.empty()) << stages_of(r);
   const EffectFinding& top = r.diagnosis.effects.front();
   EXPECT_EQ(top.name, "vibration");
@@ -474,7 +475,7 @@ TEST(LowAliasedMotion, AResonanceOnAMainsAliasIsMotionNotPickup) {
   std::string named;
   for (const EffectFinding& f : r.diagnosis.effects) named += f.name + ": " + f.evidence + "\n";
   for (const EffectFinding& f : r.detail.partial) named += "partial " + f.name + "\n";
-  EXPECT_EQ(r.diagnosis.status, "explained") << stages_of(r) << named;
+  EXPECT_EQ(r.diagnosis.status, Status::kExplained) << stages_of(r) << named;
   ASSERT_FALSE(r.diagnosis.effects.empty()) << stages_of(r);
   EXPECT_EQ(r.diagnosis.effects.front().name, "vibration") << named;
   for (const EffectFinding& f : r.diagnosis.effects) EXPECT_NE(f.name, "mains_pickup") << named;
@@ -494,7 +495,7 @@ TEST(Coverage, AHeldOutSessionThatMissesTheGapsCellIsSaidToMissIt) {
   const Truth hot = bench_truth(0.0, 600.0), mild = bench_truth(70.0, 150.0);
   const DiagnosisResult r = diagnose_in_detail(record(hot, hot_offset(hot), kNoiseV, 31),
                                                record(mild, hot_offset(mild), kNoiseV, 32), {});
-  EXPECT_NE(r.diagnosis.status, "none");
+  EXPECT_NE(r.diagnosis.status, Status::kNone);
   ASSERT_TRUE(r.detail.where_region.has_value());
   EXPECT_GT(r.detail.regions[*r.detail.where_region].temp_lo, 63.0);
   EXPECT_EQ(r.detail.how_far.region_samples, 0u);
@@ -523,7 +524,7 @@ TEST(Reach, ANonlinearityIsContinuedWhereTheHeldOutMicrometerTravelsFurther) {
   const DiagnosisResult r = diagnose_in_detail(
       record(stops_short, rising_when_close(stops_short), kNoiseV, 41),
       record(travels_further, rising_when_close(travels_further), kNoiseV, 42), {});
-  EXPECT_EQ(r.diagnosis.status, "explained") << ::testing::PrintToString(r.detail.reasons);
+  EXPECT_EQ(r.diagnosis.status, Status::kExplained) << ::testing::PrintToString(r.detail.reasons);
   ASSERT_FALSE(r.diagnosis.effects.empty());
   EXPECT_EQ(r.diagnosis.effects.front().name, "nonlinearity");
 }
@@ -543,7 +544,7 @@ TEST(Reach, ATemperatureCurveGoesOnWhereTheHeldOutSessionHeatsFurther) {
   const DiagnosisResult r =
       diagnose_in_detail(record(short_heating, quadratic_offset(short_heating), kNoiseV, 43),
                          record(long_heating, quadratic_offset(long_heating), kNoiseV, 44), {});
-  EXPECT_EQ(r.diagnosis.status, "explained") << ::testing::PrintToString(r.detail.reasons);
+  EXPECT_EQ(r.diagnosis.status, Status::kExplained) << ::testing::PrintToString(r.detail.reasons);
   ASSERT_FALSE(r.diagnosis.effects.empty());
   EXPECT_EQ(r.diagnosis.effects.front().name, "temp_offset_drift");
 }
@@ -557,7 +558,7 @@ TEST_P(NullPairs, GiveNone) {
     const DiagnosisResult r = diagnose_pair_in_detail(
         [](const Truth& truth, int) { return unchanged(truth); }, noise_v, seed);
     const Diagnosis& d = r.diagnosis;
-    EXPECT_EQ(d.status, "none") << "seed " << seed << ": " << d.heldout_rms_before << " V, noise "
+    EXPECT_EQ(d.status, Status::kNone) << "seed " << seed << ": " << d.heldout_rms_before << " V, noise "
                                 << d.noise_std_v << "; " << stages_of(r);
     EXPECT_NEAR(d.noise_std_v, noise_v, 0.1 * noise_v) << "seed " << seed;
   }

@@ -20,6 +20,7 @@
 #include "flange_in_process.h"
 #include "polynomial_sensor_model.h"
 #include "test_files.h"
+#include "verdict_reasons.h"
 
 namespace flange::diagnose {
 namespace {
@@ -109,7 +110,7 @@ TEST(Identifiability, ATemperatureLawIsUndeterminedAtRoomTemperature) {
   const DiagnosisResult r = diagnose_pair(room_temperature_session(1.02, 1, 1800.0),
                                           room_temperature_session(1.02, 2, 1800.0));
   const Diagnosis& d = r.diagnosis;
-  ASSERT_EQ(d.status, "explained");
+  ASSERT_EQ(d.status, Status::kExplained);
   ASSERT_FALSE(d.effects.empty());
   EXPECT_TRUE(std::any_of(d.degenerate.begin(), d.degenerate.end(), [](const std::string& s) {
     return s.find("temperature takes only 2 distinct values") != std::string::npos;

@@ -20,12 +20,14 @@
 #include "diagnose_selftest.h"
 #include "diagnosis_detail.h"
 #include "effect_classes.h"
+#include "improved_twin_reasons.h"
 #include "parallel_cases.h"
 #include "sensor_twin.h"
 #include "sim_error.h"
 #include "table_fit.h"
 #include "test_files.h"
 #include "twin_file.h"
+#include "verdict_reasons.h"
 
 namespace flange::diagnose {
 namespace {
@@ -118,12 +120,12 @@ Rediagnosis rediagnose(const SelftestCaseSpec& spec) {
   DiagnoseOptions options;
   options.bootstrap_rounds = 20;
   const DiagnosisResult first = diagnose_in_detail(rec.calibration, rec.heldout, options);
-  Rediagnosis out{spec.index, spec.truth.front().name, first.diagnosis.status, "", {}};
-  if (first.diagnosis.status != "explained") return out;
-  for (const HeldFinding& f : first.improved_twin.findings) out.held_as.push_back(f.held_as);
+  Rediagnosis out{spec.index, spec.truth.front().name, status_text(first.diagnosis.status), "", {}};
+  if (first.diagnosis.status != Status::kExplained) return out;
+  for (const HeldFinding& f : first.improved_twin.findings) out.held_as.push_back(reasons::held_as_text(f.held_as));
   // Through the twin file, as `flange diagnose --twin twin.json` reads it.
   options.twin = sim::twin_from_json(sim::twin_to_json(first.improved_twin.twin), "twin.json");
-  out.second = diagnose_in_detail(rec.calibration, rec.heldout, options).diagnosis.status;
+  out.second = status_text(diagnose_in_detail(rec.calibration, rec.heldout, options).diagnosis.status);
   return out;
 }
 

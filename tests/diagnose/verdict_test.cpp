@@ -11,6 +11,7 @@
 
 #include "protocol.h"
 #include "recording_series.h"
+#include "verdict_reasons.h"
 
 namespace flange::diagnose {
 namespace {
@@ -35,7 +36,7 @@ VerdictFigures figures(double before, double after) {
   return f;
 }
 
-std::string status(const VerdictFigures& f) { return status_of(decide(f)); }
+std::string status(const VerdictFigures& f) { return status_text(status_of(decide(f))); }
 
 TEST(Verdict, NoGapIsNone) {
   // No finding, the held-out gap at the noise, no stage: none.

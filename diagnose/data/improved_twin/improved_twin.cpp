@@ -11,6 +11,7 @@
 #include "criteria.h"
 #include "class_fits.h"
 #include "effect_classes.h"
+#include "improved_twin_reasons.h"
 #include "parts.h"
 #include "selection.h"
 #include "series_arithmetic.h"
@@ -178,40 +179,27 @@ HeldFinding held(const EffectFinding& finding, const Selection& selection, const
   const EffectClass& of = effect_class(finding.name);
   if (of.is_converter) {
     if (selection.quantisation_as_noise) {
-      return {finding.name, "white noise",
-              fmt::format("its codes are not reproduced by the converter on this grid, so the twin "
-                          "holds its rounding in the white noise level, and names the grid "
-                          "(noise.rounding_lsb_v = {:.4g} V) so that a diagnosis against it does "
-                          "not name the converter again",
-                          selection.quantised_on->lsb_v)};
+      return {finding.name, HeldAs::kWhiteNoise,
+              reasons::held_in_white_noise(selection.quantised_on->lsb_v)};
     }
-    std::string note = "the converter on the recorded grid, with its code boundaries";
-    if (finding.params.count("calibration_gain") != 0) {
-      note += "; the DAQ gain calibration it showed is in the table (the twin has no gain effect)";
-    }
-    return {finding.name, "converter", note};
+    return {finding.name, HeldAs::kConverter,
+            reasons::held_as_converter(finding.params.count("calibration_gain") != 0)};
   }
   if (of.is_mount_motion) {
-    return {finding.name, "mount motion",
-            fmt::format("vibration at the recognised {:.3g} mm RMS over the effect's default band "
-                        "(the signature gives its size, not its band or phases)",
-                        finding.params.at("rms_mm"))};
+    return {finding.name, HeldAs::kMountMotion,
+            reasons::held_as_mount_motion(finding.params.at("rms_mm"))};
   }
   const auto pick = std::find_if(selection.picks.begin(), selection.picks.end(),
                                  [&](const Pick& p) { return p.finding.name == finding.name; });
   const bool member =
       std::find(out.members.begin(), out.members.end(), finding.name) != out.members.end();
   if (of.lines_of_each_session) {
-    const std::string lines =
-        pick != selection.picks.end() && pick->modelled_index < 0 && member
-            ? fmt::format("one line of the lines' {:.3g} V RMS at the {:g} Hz mains",
-                          pick->chosen().free_shape->params.at("rms_v"),
-                          pick->chosen().free_shape->params.at("mains_hz"))
-            : "the library effect with its fitted parameters";
-    return {finding.name, "session's own lines",
-            lines + " for `flange simulate` to play; a diagnosis against this twin fits each "
-                    "session's own lines at the mains' aliases and takes them out, since their "
-                    "phase (and with a wandering grid their amplitude) is each session's own"};
+    const bool one_line = pick != selection.picks.end() && pick->modelled_index < 0 && member;
+    return {finding.name, HeldAs::kSessionLines,
+            one_line ? reasons::held_as_session_lines(
+                           true, pick->chosen().free_shape->params.at("rms_v"),
+                           pick->chosen().free_shape->params.at("mains_hz"))
+                     : reasons::held_as_session_lines(false, 0.0, 0.0)};
   }
   if (pick != selection.picks.end() && pick->modelled_index < 0) {
     const double misfit =
@@ -222,26 +210,15 @@ HeldFinding held(const EffectFinding& finding, const Selection& selection, const
     const double allowed =
         std::sqrt(criteria::kExplainedRatio * criteria::kExplainedRatio - 1.0) * noise_v;
     if (misfit > allowed) {
-      return {finding.name, "not held",
-              fmt::format("its free shape follows more than clearance, temperature and age: the "
-                          "table reproduces it only to {:.2g} V RMS, above the {:.2g} V the "
-                          "noise allows; the twin holds that approximation",
-                          misfit, allowed)};
+      return {finding.name, HeldAs::kNotHeld, reasons::not_held_in_table(misfit, allowed)};
     }
     if (member) {
-      return {finding.name, "library effect and table",
-              fmt::format("its free shape's summary as the library effect (a lag's mean delay, a "
-                          "skew's law), and what that leaves of the shape, with the other free "
-                          "shapes, in the tabulated effect (reproduced to {:.2g} V RMS on the worse "
-                          "part)",
-                          misfit)};
+      return {finding.name, HeldAs::kLibraryEffectAndTable,
+              reasons::held_as_member_and_table(misfit)};
     }
-    return {finding.name, "table",
-            fmt::format("its free shape, with the other free shapes, as the tabulated effect "
-                        "(reproduced to {:.2g} V RMS on the worse part)",
-                        misfit)};
+    return {finding.name, HeldAs::kTable, reasons::held_in_table(misfit)};
   }
-  return {finding.name, "library effect", "the library effect with its fitted parameters"};
+  return {finding.name, HeldAs::kLibraryEffect, reasons::held_as_library_effect()};
 }
 
 // The clearance and temperature ranges of the calibration part, within the twin file's valid
@@ -320,18 +297,11 @@ ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
       !converter_held && selection.quantisation_as_noise && selection.quantised_on
           ? std::min(selection.quantised_on->lsb_v, std::sqrt(12.0) * out.twin.noise.voltage_std_v)
           : 0.0;
-  out.summary = selected
-                    ? fmt::format(
-                          "the twin given, with the {} findings of the \"{}\" verdict and the "
-                          "white noise at {:.4g} V",
-                          diagnosis.effects.size(), diagnosis.status, out.twin.noise.voltage_std_v)
-                    : fmt::format(
-                          "the twin given, with the white noise at {:.4g} V; the \"{}\" "
-                          "verdict selects no effect to add",
-                          out.twin.noise.voltage_std_v, diagnosis.status);
+  out.summary = reasons::improved_twin_summary(diagnosis.effects.size(), diagnosis.status,
+                                               out.twin.noise.voltage_std_v);
   out.twin.notes = {"made by flange diagnose: " + out.summary};
   for (const HeldFinding& f : out.findings) {
-    if (f.held_as == "not held") out.twin.notes.push_back(f.name + " not held: " + f.note);
+    if (f.held_as == HeldAs::kNotHeld) out.twin.notes.push_back(reasons::not_held_note(f.name, f.note));
   }
   return out;
 }

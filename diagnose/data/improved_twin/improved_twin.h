@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "diagnosis.h"
+#include "findings.h"
 #include "sensor_twin.h"
 #include "white_noise.h"
 
@@ -22,9 +23,7 @@ struct Selection;
 // How the improved twin holds one finding.
 struct HeldFinding {
   std::string name;  // the finding's class
-  // "library effect", "library effect and table", "table", "converter", "white noise" (a grid
-  // whose codes are not replayed), "mount motion", "session's own lines" or "not held".
-  std::string held_as;
+  HeldAs held_as = HeldAs::kLibraryEffect;
   std::string note;  // one sentence: what the twin holds of it, or why it cannot
 };
 

@@ -59,7 +59,7 @@ void add_context_reasons(const Parts& parts, DiagnosisResult& result) {
 // neither confirm nor refute what lies there: the reason says so, and which data would.
 void add_coverage_reason(DiagnosisResult& result) {
   const DiagnosisDetail& detail = result.detail;
-  if (result.diagnosis.status == "none" || !detail.where_region ||
+  if (result.diagnosis.status == Status::kNone || !detail.where_region ||
       detail.how_far.region_samples >= criteria::kLeastSamplesPerCell) {
     return;
   }
@@ -179,7 +179,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   result.detail.heldout_gap_after_v = selection.current_error;
   add_coverage_reason(result);
   // What would tell the picks apart or determine them; a "none" names no finding to ask about.
-  if (result.diagnosis.status != "none") {
+  if (result.diagnosis.status != Status::kNone) {
     result.diagnosis.next_measurement = next_measurements(parts, selection);
   }
   set_confidences(result.diagnosis);

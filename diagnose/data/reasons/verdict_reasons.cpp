@@ -9,6 +9,26 @@
 #include "criteria.h"
 #include "effect_classes.h"
 
+namespace flange::diagnose {
+
+const char* status_text(Status status) {
+  switch (status) {
+    case Status::kExplained:
+      return "explained";
+    case Status::kPartlyExplained:
+      return "partly explained";
+    case Status::kUnexplained:
+      return "unexplained";
+    case Status::kNone:
+      break;
+  }
+  return "none";
+}
+
+std::ostream& operator<<(std::ostream& out, Status status) { return out << status_text(status); }
+
+}  // namespace flange::diagnose
+
 namespace flange::diagnose::reasons {
 namespace {
 

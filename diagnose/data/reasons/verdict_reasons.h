@@ -3,12 +3,22 @@
 #pragma once
 
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "diagnosis.h"
 #include "findings.h"
 #include "recording_series.h"
+
+namespace flange::diagnose {
+
+// diagnosis.json's word for a status: "explained", "partly explained", "unexplained", "none".
+const char* status_text(Status status);
+// The same word, for messages and test output.
+std::ostream& operator<<(std::ostream& out, Status status);
+
+}  // namespace flange::diagnose
 
 namespace flange::diagnose::reasons {
 

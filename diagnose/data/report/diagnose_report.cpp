@@ -12,6 +12,7 @@
 #include "gnuplot_runner.h"
 #include "improved_twin_report.h"
 #include "report_format.h"
+#include "verdict_reasons.h"
 
 namespace flange::diagnose {
 namespace {
@@ -271,7 +272,7 @@ nlohmann::ordered_json diagnosis_json(const DiagnosisResult& result, const std::
   j["real"] = real;
   j["heldout"] = heldout;
   j["verdict"] = {
-      {"status", g.status},
+      {"status", status_text(g.status)},
       {"scope", g.scope.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(g.scope)},
       {"effects", names},
       {"reasons", d.reasons}};
@@ -305,7 +306,7 @@ std::string diagnosis_summary(const DiagnosisResult& result) {
   const DiagnosisDetail& d = result.detail;
   std::ostringstream text;
   const std::string names = verdict_names(g.effects);
-  text << "verdict: " << g.status << (names.empty() ? "" : " by " + names)
+  text << "verdict: " << status_text(g.status) << (names.empty() ? "" : " by " + names)
        << (g.scope.empty() ? "" : ", " + g.scope) << "\n";
   for (const std::string& what : g.degenerate) text << "  data: " << what << "\n";
   text << fmt::format("  where: stage {}", g.stage);

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "improved_twin_reasons.h"
 #include "report_format.h"
 
 namespace flange::diagnose {
@@ -11,8 +12,8 @@ nlohmann::ordered_json improved_twin_json(const ImprovedTwin& twin) {
   nlohmann::ordered_json findings = nlohmann::ordered_json::array();
   nlohmann::ordered_json not_held = nlohmann::ordered_json::array();
   for (const HeldFinding& f : twin.findings) {
-    findings.push_back({{"name", f.name}, {"held_as", f.held_as}, {"note", f.note}});
-    if (f.held_as == "not held") not_held.push_back(f.name);
+    findings.push_back({{"name", f.name}, {"held_as", reasons::held_as_text(f.held_as)}, {"note", f.note}});
+    if (f.held_as == HeldAs::kNotHeld) not_held.push_back(f.name);
   }
   nlohmann::ordered_json effects = nlohmann::ordered_json::array();
   for (const sim::EffectSettings& e : twin.twin.effects) effects.push_back(e.name);
@@ -35,7 +36,7 @@ std::string improved_twin_html(const ImprovedTwin& twin) {
   html += "<table><tr><th>finding</th><th>held as</th><th>how</th></tr>\n";
   for (const HeldFinding& f : twin.findings) {
     html += fmt::format("<tr><td>{}</td><td>{}</td><td style='text-align:left'>{}</td></tr>\n",
-                        coeffs::html_escape(f.name), coeffs::html_escape(f.held_as),
+                        coeffs::html_escape(f.name), coeffs::html_escape(reasons::held_as_text(f.held_as)),
                         coeffs::html_escape(f.note));
   }
   return html + "</table>\n";

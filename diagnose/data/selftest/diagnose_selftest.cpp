@@ -174,7 +174,7 @@ SelftestScore score_selftest_case(const SelftestCaseSpec& spec, const Diagnosis&
                                   double noise_std_v) {
   SelftestScore score;
   // A partly explained verdict names its effects as found: they are claims too.
-  if (diagnosis.status == "explained" || diagnosis.status == "partly explained") {
+  if (diagnosis.status == Status::kExplained || diagnosis.status == Status::kPartlyExplained) {
     for (const EffectFinding& f : diagnosis.effects) score.claimed.push_back(f.name);
   }
   const auto is_true = [&](const std::string& name) {
@@ -188,7 +188,7 @@ SelftestScore score_selftest_case(const SelftestCaseSpec& spec, const Diagnosis&
   switch (spec.kind) {
     case SelftestKind::kSingle:
     case SelftestKind::kPair: {
-      score.verdict_correct = diagnosis.status == "explained";
+      score.verdict_correct = diagnosis.status == Status::kExplained;
       score.top_correct = !score.claimed.empty() && is_true(score.claimed.front());
       score.all_found = std::all_of(spec.truth.begin(), spec.truth.end(), [&](const auto& e) {
         return std::find(score.claimed.begin(), score.claimed.end(), e.name) != score.claimed.end();
@@ -198,10 +198,10 @@ SelftestScore score_selftest_case(const SelftestCaseSpec& spec, const Diagnosis&
       break;
     }
     case SelftestKind::kNull:
-      score.verdict_correct = diagnosis.status == "none";
+      score.verdict_correct = diagnosis.status == Status::kNone;
       break;
     case SelftestKind::kOutside:
-      score.verdict_correct = diagnosis.status == "unexplained";
+      score.verdict_correct = diagnosis.status == Status::kUnexplained;
       break;
   }
   const double before = diagnosis.heldout_rms_before;

@@ -9,6 +9,7 @@
 #include "bench_scenario.h"
 #include "claims_json.h"
 #include "recording_writer.h"
+#include "verdict_reasons.h"
 #include "version.h"
 
 namespace flange::diagnose {
@@ -57,7 +58,7 @@ nlohmann::json case_json(const SelftestCaseResult& r) {
       {"case", r.spec.index},
       {"kind", selftest_kind_name(r.spec.kind)},
       {"truth", truth},
-      {"verdict", r.diagnosis.status},
+      {"verdict", status_text(r.diagnosis.status)},
       {"claimed", r.score.claimed},
       {"verdict_correct", r.score.verdict_correct},
       {"heldout_rms_before", r.diagnosis.heldout_rms_before},
@@ -134,7 +135,7 @@ std::string selftest_terminal_table(const std::vector<SelftestCaseResult>& resul
   for (const SelftestCaseResult& r : results) {
     const bool lib = in_library(r.spec);
     text += fmt::format("{:>4}  {:<7}  {:<11}  {:<3}  {:<3}  {:>6.1f}%  {:>6.1f}%  {:<40}  {}\n",
-                        r.spec.index, selftest_kind_name(r.spec.kind), r.diagnosis.status,
+                        r.spec.index, selftest_kind_name(r.spec.kind), status_text(r.diagnosis.status),
                         yes_no(lib, r.score.top_correct), yes_no(lib, r.score.all_found),
                         r.score.shrink_pct, r.score.excess_shrink_pct, join(r.score.claimed),
                         describe_truth(r.spec));
@@ -152,7 +153,7 @@ std::string selftest_markdown(const std::string& header,
     const bool lib = in_library(r.spec);
     md +=
         fmt::format("| {} | {} | {} | {} | {} | {} | {} | {:.1f} | {:.1f} |\n", r.spec.index,
-                    selftest_kind_name(r.spec.kind), describe_truth(r.spec), r.diagnosis.status,
+                    selftest_kind_name(r.spec.kind), describe_truth(r.spec), status_text(r.diagnosis.status),
                     join(r.score.claimed), yes_no(lib, r.score.top_correct),
                     yes_no(lib, r.score.all_found), r.score.shrink_pct, r.score.excess_shrink_pct);
   }

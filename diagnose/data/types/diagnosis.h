@@ -53,11 +53,14 @@ struct EffectFinding {
   double confidence = 0.0;
 };
 
+// The verdict (verdict/verdict.h decides it; reasons::status_text gives its words):
+// explained (what the selected effects leave is within 10 % of the noise), partly explained
+// (they leave more, but take at least 90 % of the held-out gap above the noise), unexplained, or
+// none.
+enum class Status { kExplained, kPartlyExplained, kUnexplained, kNone };
+
 struct Diagnosis {
-  // "explained" (what the selected effects leave is within 10 % of the noise), "partly
-  // explained" (they leave more, but take at least 90 % of the held-out gap above the noise),
-  // "unexplained" or "none".
-  std::string status;
+  Status status = Status::kNone;
   // Where the status holds: "" over the whole held-out session; else a phrase such as "where the
   // calibration reaches (24.9-69.9 C, 2.46-9.46 mm)", when the gap beyond that was left open.
   std::string scope;

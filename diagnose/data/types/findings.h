@@ -59,6 +59,18 @@ struct HowFar {
   double within_calibration_rms_before = 0, within_calibration_rms_after = 0;
 };
 
+// How the improved twin holds a finding (improved_twin/; reasons::held_as_text gives its words).
+enum class HeldAs {
+  kLibraryEffect,          // the library effect with its fitted parameters
+  kLibraryEffectAndTable,  // a free shape's summary as the library effect, the rest in the table
+  kTable,                  // a free shape in the tabulated effect
+  kConverter,              // the converter on the recorded grid
+  kWhiteNoise,             // a grid whose codes are not replayed: its rounding in the noise
+  kMountMotion,            // vibration at the recognised size
+  kSessionLines,           // lines of each session (the mains)
+  kNotHeld,                // the table cannot reproduce it within what the noise allows
+};
+
 // What the held-out gap that is left is compared with (signatures/vibration.h,
 // verdict/verdict_noise.h), and why when it is not the white noise.
 struct VerdictNoise {

@@ -201,20 +201,20 @@ Decision decide(const VerdictFigures& f) {
   return f.gap_exists ? Decision::kUnexplained : Decision::kNone;
 }
 
-std::string status_of(Decision decision) {
+Status status_of(Decision decision) {
   switch (decision) {
     case Decision::kExplained:
     case Decision::kExplainedWithinReach:
-      return "explained";
+      return Status::kExplained;
     case Decision::kPartlyExplained:
-      return "partly explained";
+      return Status::kPartlyExplained;
     case Decision::kUnexplained:
-      return "unexplained";
+      return Status::kUnexplained;
     case Decision::kNone:
     case Decision::kNoneWithinTwinFits:
       break;
   }
-  return "none";
+  return Status::kNone;
 }
 
 VerdictOutcome verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
@@ -289,7 +289,7 @@ VerdictOutcome verdict(const Parts& parts, const Selection& selection, const Ver
       decision == Decision::kPartlyExplained) {
     diagnosis.effects = findings;
   }
-  if (diagnosis.status != "none") {
+  if (diagnosis.status != Status::kNone) {
     reasons.insert(reasons.end(), selection.confounded.begin(), selection.confounded.end());
     reasons.insert(reasons.end(), selection.dropped.begin(), selection.dropped.end());
   }

@@ -71,8 +71,8 @@ enum class Decision {
 //   do not reach further cannot say more.
 Decision decide(const VerdictFigures& f);
 
-// "explained", "partly explained", "unexplained" or "none".
-std::string status_of(Decision decision);
+// The status a decision reports (a scope says "within reach").
+Status status_of(Decision decision);
 
 // The verdict stage's value: the diagnosis with its status, scope, findings, nearest effect and
 // held-out figures, the held-out figures the report shows, the reasons and, for "unexplained",
