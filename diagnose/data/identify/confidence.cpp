@@ -13,10 +13,11 @@ double confidence_of(const EffectFinding& finding, bool first) {
   return base * std::clamp(finding.inclusion, 0.0, 1.0) / alike;
 }
 
-void set_confidences(Diagnosis& diagnosis) {
-  for (std::size_t k = 0; k < diagnosis.effects.size(); ++k) {
-    diagnosis.effects[k].confidence = confidence_of(diagnosis.effects[k], k == 0);
+std::vector<EffectFinding> with_confidences(std::vector<EffectFinding> effects) {
+  for (std::size_t k = 0; k < effects.size(); ++k) {
+    effects[k].confidence = confidence_of(effects[k], k == 0);
   }
+  return effects;
 }
 
 }  // namespace flange::diagnose

@@ -4,6 +4,8 @@
 // the data cannot tell from it.
 #pragma once
 
+#include <vector>
+
 #include "diagnosis.h"
 
 namespace flange::diagnose {
@@ -14,7 +16,7 @@ namespace flange::diagnose {
 // confirm the pick, and shared among the classes the data cannot tell apart (each as likely).
 double confidence_of(const EffectFinding& finding, bool first);
 
-// Every named effect's confidence.
-void set_confidences(Diagnosis& diagnosis);
+// `effects` (a verdict's, in its order) with their confidences.
+std::vector<EffectFinding> with_confidences(std::vector<EffectFinding> effects);
 
 }  // namespace flange::diagnose

@@ -124,7 +124,7 @@ double resolution_noise(const Selection& selection) {
   return std::max(selection.noise_v, criteria::kTieFloorShareOfGap * rms_of(selection.raw_ho_gap));
 }
 
-void resolve_parameters(const Parts& parts, Selection& selection) {
+Selection resolve_parameters(const Parts& parts, Selection selection) {
   const double noise_v = resolution_noise(selection);
   for (Pick& pick : selection.picks) {
     pick.finding.resolution.clear();
@@ -135,6 +135,7 @@ void resolve_parameters(const Parts& parts, Selection& selection) {
     }
   }
   resolve_library_picks(parts, selection, noise_v);
+  return selection;
 }
 
 }  // namespace flange::diagnose

@@ -42,7 +42,7 @@ double resolution_of(double sensitivity, double noise_v);
 // criteria::kTieFloorShareOfGap of the held-out gap's RMS before the picks.
 double resolution_noise(const Selection& selection);
 
-// Into every pick's finding: each fitted value's resolution, the undetermined ones and the
+// The selection with every pick's finding given each fitted value's resolution, the undetermined ones and the
 // bounds. A library pick's values are its class's searched parameters, their sensitivities the
 // replayed voltage's central differences on the calibration part, compensated by every library
 // pick's parameters at once; undetermined when the values the data cannot tell from the fitted
@@ -51,6 +51,6 @@ double resolution_noise(const Selection& selection);
 // undetermined when the resolution exceeds the largest value the curve takes; a value its family
 // searched on a bounded range (a ripple's period, a settling time) that ended on an edge of it is
 // a bound.
-void resolve_parameters(const Parts& parts, Selection& selection);
+Selection resolve_parameters(const Parts& parts, Selection selection);
 
 }  // namespace flange::diagnose

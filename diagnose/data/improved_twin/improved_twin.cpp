@@ -14,6 +14,7 @@
 #include "improved_twin_reasons.h"
 #include "parts.h"
 #include "selection.h"
+#include "signatures.h"
 #include "series_arithmetic.h"
 #include "sim_error.h"
 #include "table_fit.h"
@@ -174,13 +175,14 @@ void add_table(const Parts& parts, const Selection& selection, ImprovedTwin& out
   out.table_misfit_rms_v = fit.misfit_rms_v;
 }
 
-HeldFinding held(const EffectFinding& finding, const Selection& selection, const ImprovedTwin& out,
+HeldFinding held(const EffectFinding& finding, const Selection& selection,
+                 const Signatures& signatures, const ImprovedTwin& out,
                  double noise_v) {
   const EffectClass& of = effect_class(finding.name);
   if (of.is_converter) {
-    if (selection.quantisation_as_noise) {
+    if (signatures.quantisation_as_noise) {
       return {finding.name, HeldAs::kWhiteNoise,
-              reasons::held_in_white_noise(selection.quantised_on->lsb_v)};
+              reasons::held_in_white_noise(signatures.quantised_on->lsb_v)};
     }
     return {finding.name, HeldAs::kConverter,
             reasons::held_as_converter(finding.params.count("calibration_gain") != 0)};
@@ -264,7 +266,7 @@ void mark_fitted_ranges(const RecordingSeries& calibration, const sim::TwinConfi
 }  // namespace
 
 ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
-                           const Diagnosis& diagnosis, const WhiteNoise& white,
+                           const Signatures& signatures, const Diagnosis& diagnosis, const WhiteNoise& white,
                            const sim::TwinConfig& given) {
   ImprovedTwin out;
   out.twin = given;
@@ -280,12 +282,12 @@ ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
       }
     }
     add_table(parts, selection, out);
-    if (selection.vibration) {
+    if (signatures.vibration) {
       out.twin.effects.push_back(sim::make_effect_settings(
-          motion_class(), {{"rms_mm", selection.vibration->params.at("rms_mm")}}, "improved twin"));
+          motion_class(), {{"rms_mm", signatures.vibration->params.at("rms_mm")}}, "improved twin"));
     }
     for (const EffectFinding& finding : diagnosis.effects) {
-      out.findings.push_back(held(finding, selection, out, diagnosis.noise_std_v));
+      out.findings.push_back(held(finding, selection, signatures, out, diagnosis.noise_std_v));
     }
     mark_fitted_ranges(parts.calibration, given, out.twin);
   }
@@ -294,8 +296,8 @@ ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
   out.twin.noise.voltage_std_v = converter_held ? white.analog_std_v : white.effective_std_v;
   // A grid whose codes the twin does not replay: the white noise holds its rounding.
   out.twin.noise.rounding_lsb_v =
-      !converter_held && selection.quantisation_as_noise && selection.quantised_on
-          ? std::min(selection.quantised_on->lsb_v, std::sqrt(12.0) * out.twin.noise.voltage_std_v)
+      !converter_held && signatures.quantisation_as_noise && signatures.quantised_on
+          ? std::min(signatures.quantised_on->lsb_v, std::sqrt(12.0) * out.twin.noise.voltage_std_v)
           : 0.0;
   out.summary = reasons::improved_twin_summary(diagnosis.effects.size(), diagnosis.status,
                                                out.twin.noise.voltage_std_v);

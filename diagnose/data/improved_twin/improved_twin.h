@@ -19,6 +19,7 @@ namespace flange::diagnose {
 
 struct Parts;
 struct Selection;
+struct Signatures;
 
 // How the improved twin holds one finding.
 struct HeldFinding {
@@ -40,9 +41,10 @@ struct ImprovedTwin {
 };
 
 // The improved twin of `diagnosis` (its status and findings), from the twin it started from
-// (`given`), the parts, the selection's final state and the white noise the diagnosis reports.
+// (`given`), the parts, the selection's final state, the signatures recognised on it and the white
+// noise the diagnosis reports.
 ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
-                           const Diagnosis& diagnosis, const WhiteNoise& white,
+                           const Signatures& signatures, const Diagnosis& diagnosis, const WhiteNoise& white,
                            const sim::TwinConfig& given);
 
 }  // namespace flange::diagnose

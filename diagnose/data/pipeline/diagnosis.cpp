@@ -153,18 +153,22 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   measure_inclusion(parts, selection);
   drop_unneeded_picks(parts, selection);
   measure_picks_in_final_fit(parts, selection);
-  resolve_parameters(parts, selection);
+  selection = resolve_parameters(parts, std::move(selection));
   const TwinNoise reported_noise = noise_after_selection(noise, selection);
   if (selection.reestimated_noise) so_far.noise_std_v = selection.noise_v;
-  // Signatures: the noise-type classes.
-  recognise_quantisation(parts, reported_noise.white_noise, options.twin.noise.rounding_lsb_v,
-                         selection);
-  const VerdictNoise verdict_noise = with_converter_grid(selection, reported_noise.white_noise,
-                                                         recognise_vibration(parts, selection));
-  if (twin_holds_motion) selection.vibration.reset();
+  // Signatures: the noise-type classes; a converter that reproduces the codes joins the model.
+  QuantisationSignature converter = recognise_quantisation(
+      parts, reported_noise.white_noise, options.twin.noise.rounding_lsb_v, selection);
+  if (converter.replay) selection = with_converter_replayed(std::move(selection), *converter.replay);
+  MotionSignature motion = recognise_vibration(parts, selection);
+  const Signatures signatures{std::move(converter.finding), std::move(converter.grid),
+                              converter.as_noise,
+                              twin_holds_motion ? std::nullopt : std::move(motion.finding)};
+  const VerdictNoise verdict_noise =
+      with_converter_grid(signatures, reported_noise.white_noise, std::move(motion.noise));
   // Verdict and reasons, assembled with the stages' values.
-  VerdictOutcome outcome =
-      verdict(parts, selection, verdict_noise, options.twin.effects, where, std::move(so_far));
+  VerdictOutcome outcome = verdict(parts, selection, signatures, verdict_noise,
+                                   options.twin.effects, where, std::move(so_far));
   DiagnosisResult result;
   result.diagnosis = std::move(outcome.diagnosis);
   static_cast<TwinNoise&>(result.detail) = reported_noise;
@@ -182,9 +186,9 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   if (result.diagnosis.status != Status::kNone) {
     result.diagnosis.next_measurement = next_measurements(parts, selection);
   }
-  set_confidences(result.diagnosis);
+  result.diagnosis.effects = with_confidences(std::move(result.diagnosis.effects));
   // The improved twin: the one given, with what the diagnosis found.
-  result.improved_twin = improved_twin(parts, selection, result.diagnosis,
+  result.improved_twin = improved_twin(parts, selection, signatures, result.diagnosis,
                                        reported_noise.white_noise, given.twin);
   return result;
 }

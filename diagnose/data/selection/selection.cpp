@@ -9,22 +9,12 @@
 
 namespace flange::diagnose {
 
-std::vector<EffectFinding> findings_of(const Selection& selection) {
-  std::vector<EffectFinding> findings;
-  for (const Pick& pick : selection.picks) findings.push_back(pick.finding);
-  if (selection.quantisation) {
-    // Each pick takes sqrt(before^2 - after^2) of the held-out gap's RMS; the converter's size is
-    // what its rounding puts in the gap, which the grid itself shows whether or not the twin's
-    // converter reproduces the codes.
-    const double rounding_rms = selection.quantised_on->lsb_v / std::sqrt(12.0);
-    const auto smaller =
-        std::find_if(findings.begin(), findings.end(), [&](const EffectFinding& f) {
-          return rms_above_noise(f.heldout_rms_before, f.heldout_rms_after) < rounding_rms;
-        });
-    findings.insert(smaller, *selection.quantisation);
-  }
-  if (selection.vibration) findings.push_back(*selection.vibration);
-  return findings;
+Selection with_converter_replayed(Selection selection, const ConverterReplay& replay) {
+  selection.current_error = replay.current_error;
+  selection.modelled.push_back(replay.converter);
+  for (double& v : selection.cal_free_v) v -= replay.offset_v;
+  for (double& v : selection.ho_free_v) v -= replay.offset_v;
+  return selection;
 }
 
 std::vector<double> cal_target(const Parts& parts, const Selection& selection) {

@@ -70,17 +70,19 @@ struct Selection {
   bool shapes_refined = false;  // whether a library pick was given a free shape after the rounds
   std::vector<std::string> confounded;  // one sentence per pick another class explained as well
   std::vector<std::string> dropped;     // one sentence per pick the backward steps took out
-  // The noise-type classes, recognised from their signatures after the picks.
-  std::optional<EffectFinding> quantisation;
-  std::optional<AdcGrid> quantised_on;  // the converter grid, once recognised
-  bool quantisation_as_noise = false;   // its codes not reproduced: taken as noise
-  std::optional<EffectFinding> vibration;
 };
 
-// Every finding in the order the report lists them: the picks in the order the rounds took them,
-// the converter before the first pick that takes less of the held-out gap's RMS than its rounding
-// puts in it (LSB / sqrt(12)), mount motion last.
-std::vector<EffectFinding> findings_of(const Selection& selection);
+// The converter replayed on the recorded grid (signatures/quantisation.h): what it leaves of the
+// held-out gap, its effect, and the offset of code boundaries placed before the picks, which the
+// converter now carries instead of the free voltages.
+struct ConverterReplay {
+  std::vector<double> current_error;
+  sim::EffectSettings converter;
+  double offset_v = 0.0;
+};
+
+// The selection with the converter added to its model.
+Selection with_converter_replayed(Selection selection, const ConverterReplay& replay);
 
 // The recorded voltage less what the free-shape picks add: what the replayed effects must meet.
 std::vector<double> cal_target(const Parts& parts, const Selection& selection);

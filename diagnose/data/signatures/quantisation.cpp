@@ -45,22 +45,23 @@ void add_placement(const Selection& selection, sim::EffectSettings& converter,
 
 }  // namespace
 
-void recognise_quantisation(const Parts& parts, const WhiteNoise& white,
-                            double held_rounding_lsb_v, Selection& selection) {
-  if (!parts.grid) return;
+QuantisationSignature recognise_quantisation(const Parts& parts, const WhiteNoise& white,
+                                             double held_rounding_lsb_v,
+                                             const Selection& selection) {
+  QuantisationSignature out;
+  if (!parts.grid) return out;
   const AdcGrid& grid = *parts.grid;
+  out.grid = grid;
   // A twin that holds a converter replays its codes already: the grid sets the noise the verdict
   // compares with, and is not a finding again.
   if (std::any_of(selection.modelled.begin(), selection.modelled.end(),
                   [](const sim::EffectSettings& e) { return effect_class(e.name).is_converter; })) {
-    selection.quantised_on = grid;
-    return;
+    return out;
   }
   // A twin whose noise holds this grid's rounding (its codes were not reproduced): the same.
   if (std::abs(held_rounding_lsb_v - grid.lsb_v) <= criteria::kSameGridShare * grid.lsb_v) {
-    selection.quantised_on = grid;
-    selection.quantisation_as_noise = true;
-    return;
+    out.as_noise = true;
+    return out;
   }
   EffectFinding finding = grid_finding(grid);
   sim::EffectSettings converter = grid.as_effect();
@@ -77,21 +78,19 @@ void recognise_quantisation(const Parts& parts, const WhiteNoise& white,
   with.push_back(converter);
   std::vector<double> replayed = minus(target, parts.ho_replay.voltage(with));
   const double null_rms = quantised_null_rms(white.analog_std_v, grid.lsb_v);
+  double left_v = rms_of(selection.current_error);
   if (rms_of(replayed) <= criteria::kExplainedRatio * null_rms) {
-    selection.current_error = std::move(replayed);
-    selection.modelled = with;
-    for (double& v : selection.cal_free_v) v -= offset_v;
-    for (double& v : selection.ho_free_v) v -= offset_v;
+    left_v = rms_of(replayed);
+    out.replay = ConverterReplay{std::move(replayed), converter, offset_v};
   } else {
-    selection.quantisation_as_noise = true;
+    out.as_noise = true;
     finding.evidence += evidence::quantisation_as_noise(rms_of(replayed), null_rms, grid.lsb_v);
   }
-  finding.heldout_rms_after =
-      selection.converter ? rms_of(selection.ho_gap) : rms_of(selection.current_error);
+  finding.heldout_rms_after = selection.converter ? rms_of(selection.ho_gap) : left_v;
   finding.shrink_pct = 100.0 * (finding.heldout_rms_before - finding.heldout_rms_after) /
                        std::max(finding.heldout_rms_before, 1e-30);
-  selection.quantisation = finding;
-  selection.quantised_on = grid;
+  out.finding = std::move(finding);
+  return out;
 }
 
 }  // namespace flange::diagnose

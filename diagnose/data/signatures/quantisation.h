@@ -6,20 +6,33 @@
 // quantisation is taken as noise of LSB / sqrt(12), which the effective white noise already holds.
 #pragma once
 
+#include <optional>
+
 #include "parts.h"
 #include "selection.h"
+#include "signatures.h"
 #include "white_noise.h"
 
 namespace flange::diagnose {
 
-// Sets selection.quantisation (with its own shrink: with the boundaries placed first, what placing
-// them took off the held-out gap; else what the converter's replay takes) and quantised_on; when
-// the twin's converter reproduces the codes, it joins `modelled` and replaces the placement's
-// offset. A twin that holds the converter, or whose noise holds the rounding of this grid
+// The converter as recognised on the selection's final state.
+struct QuantisationSignature {
+  // The finding (with its own shrink: with the boundaries placed first, what placing them took
+  // off the held-out gap; else what the converter's replay takes), the grid and whether it is
+  // taken as noise: Signatures' quantisation, quantised_on and quantisation_as_noise.
+  std::optional<EffectFinding> finding;
+  std::optional<AdcGrid> grid;
+  bool as_noise = false;
+  // When the twin's converter reproduces the codes: it joins the model and replaces the
+  // placement's offset (with_converter_replayed).
+  std::optional<ConverterReplay> replay;
+};
+
+// A twin that holds the converter, or whose noise holds the rounding of this grid
 // (`held_rounding_lsb_v`, sim::NoiseSettings::rounding_lsb_v, within criteria::kSameGridShare of
-// its LSB), sets only quantised_on (and, for the latter, quantisation_as_noise): the grid is no
-// finding again.
-void recognise_quantisation(const Parts& parts, const WhiteNoise& white,
-                            double held_rounding_lsb_v, Selection& selection);
+// its LSB), gives only the grid (and, for the latter, as_noise): the grid is no finding again.
+QuantisationSignature recognise_quantisation(const Parts& parts, const WhiteNoise& white,
+                                             double held_rounding_lsb_v,
+                                             const Selection& selection);
 
 }  // namespace flange::diagnose

@@ -44,7 +44,7 @@ double motion_mean_square_over_part(const std::vector<double>& left,
   return fit.fitted && fit.slope > 0.0 && noise_beside ? fit.slope : 0.0;
 }
 
-VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
+MotionSignature recognise_vibration(const Parts& parts, const Selection& selection) {
   const std::vector<double>& current_error = selection.current_error;
   const std::vector<double> cal_after =
       minus(cal_target(parts, selection), parts.cal_replay.voltage(selection.modelled));
@@ -53,7 +53,7 @@ VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
   const VibrationSignature ho_vibration = vibration_signature(
       current_error, parts.ho_replay.sensitivity_v_per_mm(), parts.heldout.clearance_mm);
   const double sigma = selection.noise_v;
-  if (!cal_vibration.present || !ho_vibration.present) return {sigma, ""};
+  if (!cal_vibration.present || !ho_vibration.present) return {std::nullopt, {sigma, ""}};
   // The mean squared difference over the pairs the signature took (at rest, where it rests).
   const std::vector<bool> rest = pairs_at_rest(parts.heldout.clearance_mm);
   double sum = 0.0;
@@ -90,9 +90,8 @@ VerdictNoise recognise_vibration(const Parts& parts, Selection& selection) {
       vibration_inclusion(current_error, parts.ho_replay, parts.heldout, selection.resamples);
   finding.evidence =
       evidence::mount_motion(cal_vibration.slope_t, ho_vibration.slope_t, ho_vibration.rms_mm);
-  selection.vibration = finding;
-  if (verdict_noise <= sigma) return {sigma, ""};
-  return {verdict_noise, reasons::motion_in_the_noise(verdict_noise, sigma)};
+  if (verdict_noise <= sigma) return {std::move(finding), {sigma, ""}};
+  return {std::move(finding), {verdict_noise, reasons::motion_in_the_noise(verdict_noise, sigma)}};
 }
 
 }  // namespace flange::diagnose

@@ -2,6 +2,7 @@
 // Mount motion, recognised from its signature in both parts (vibration_signature.h).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "block_resamples.h"
@@ -27,9 +28,14 @@ double motion_mean_square_over_part(const std::vector<double>& left,
                                     const std::vector<double>& sensitivity_v_per_mm, double sigma,
                                     double white_allowed);
 
-// Sets selection.vibration when both parts show the signature. Returns the noise the verdict
-// compares what is left with: the white voltage noise, or, with mount motion found, that plus the
-// motion's share, whose variance follows the sensitivity and so escapes the median-based estimate.
-VerdictNoise recognise_vibration(const Parts& parts, Selection& selection);
+// Mount motion as recognised on the selection's final state: its finding when both parts show the
+// signature (Signatures::vibration), and the noise the verdict compares what is left with: the
+// white voltage noise, or, with mount motion found, that plus the motion's share, whose variance
+// follows the sensitivity and so escapes the median-based estimate.
+struct MotionSignature {
+  std::optional<EffectFinding> finding;
+  VerdictNoise noise;
+};
+MotionSignature recognise_vibration(const Parts& parts, const Selection& selection);
 
 }  // namespace flange::diagnose

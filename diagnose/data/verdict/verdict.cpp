@@ -20,10 +20,10 @@ namespace {
 // noise does not spread evenly over the code boundaries: a signal that dwells on a boundary for a
 // window flips between two codes at random, half the time off the twin's one code, whatever the
 // noise.
-double window_allowance(const Selection& selection, double verdict_noise) {
+double window_allowance(const Signatures& signatures, double verdict_noise) {
   const double allowance = criteria::kLocalExplainedRatio * verdict_noise;
-  if (!selection.quantised_on || selection.quantisation_as_noise) return allowance;
-  return std::max(allowance, selection.quantised_on->lsb_v / std::numbers::sqrt2);
+  if (!signatures.quantised_on || signatures.quantisation_as_noise) return allowance;
+  return std::max(allowance, signatures.quantised_on->lsb_v / std::numbers::sqrt2);
 }
 
 bool left_within_noise_overall(const VerdictFigures& f) {
@@ -93,23 +93,24 @@ bool left_within_reach(const VerdictFigures& f) {
 }
 
 // What the picks leave against what the noise allows, as a sentence.
-std::string what_is_left(const Selection& selection, double verdict_noise,
-                         const HeldoutWindow& worst) {
+std::string what_is_left(const Selection& selection, const Signatures& signatures,
+                         double verdict_noise, const HeldoutWindow& worst) {
   return reasons::what_is_left(rms_of(selection.current_error),
                                criteria::kExplainedRatio * verdict_noise, worst.rms_v, worst.from_s,
-                               worst.to_s, window_allowance(selection, verdict_noise));
+                               worst.to_s, window_allowance(signatures, verdict_noise));
 }
 
 // The library effect an "unexplained" verdict came nearest to: the first it selected, or, when
 // none was significant, the candidate that lowered the held-out gap most; with how far it went.
 std::optional<EffectFinding> nearest_effect(const Selection& selection,
+                                            const Signatures& signatures,
                                             const std::vector<EffectFinding>& findings,
                                             double verdict_noise, const HeldoutWindow& worst) {
   const bool picked = !findings.empty();
   if (!picked && !selection.nearest_unpicked) return std::nullopt;
   EffectFinding nearest = picked ? findings.front() : *selection.nearest_unpicked;
   nearest.evidence = reasons::nearest(picked, nearest, findings.size() > 1,
-                                      what_is_left(selection, verdict_noise, worst));
+                                      what_is_left(selection, signatures, verdict_noise, worst));
   return nearest;
 }
 
@@ -136,6 +137,7 @@ reasons::BeyondReach beyond_reach(const RecordingSeries& heldout, const Calibrat
 
 // The verdict's figures, with the held-out figures the report shows filled into `how`.
 VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
+                               const Signatures& signatures,
                                const std::vector<EffectFinding>& findings,
                                const Diagnosis& diagnosis, const CalibrationReach& reach,
                                double verdict_noise, const Location& detail,
@@ -150,7 +152,7 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
   f.rms_before = diagnosis.heldout_rms_before;
   f.rms_after = diagnosis.heldout_rms_after;
   how.worst_window = worst_window(parts.heldout, reach, selection.current_error);
-  f.window_allowance_v = window_allowance(selection, verdict_noise);
+  f.window_allowance_v = window_allowance(signatures, verdict_noise);
   // A held-out gap within what an explanation may leave, over the session (against the larger of
   // sigma and the verdict's noise: with a converter or mount motion the twin holds, what the
   // noise leaves is the verdict's noise) and in every window, is no gap: the same gap left after
@@ -217,17 +219,18 @@ Status status_of(Decision decision) {
   return Status::kNone;
 }
 
-VerdictOutcome verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
+VerdictOutcome verdict(const Parts& parts, const Selection& selection,
+                       const Signatures& signatures, const VerdictNoise& noise,
                        const std::vector<sim::EffectSettings>& twin_effects, const Location& where,
                        Diagnosis so_far) {
   VerdictOutcome result{std::move(so_far), {}, {}, {}};
   Diagnosis& diagnosis = result.diagnosis;
-  const std::vector<EffectFinding> findings = findings_of(selection);
+  const std::vector<EffectFinding> findings = findings_of(selection, signatures);
   diagnosis.heldout_rms_before = rms_of(selection.raw_ho_gap);
   diagnosis.heldout_rms_after = rms_of(selection.current_error);
   const CalibrationReach reach = calibration_reach(parts.calibration, parts.heldout);
   HowFar& how = result.how_far;
-  const VerdictFigures f = verdict_figures(parts, selection, findings, diagnosis, reach,
+  const VerdictFigures f = verdict_figures(parts, selection, signatures, findings, diagnosis, reach,
                                            noise.rms_v, where, twin_effects, how);
   const Decision decision = decide(f);
   diagnosis.status = status_of(decision);
@@ -254,11 +257,12 @@ VerdictOutcome verdict(const Parts& parts, const Selection& selection, const Ver
       break;
     case Decision::kPartlyExplained:
       reasons.push_back(reasons::partly_explained(
-          partly_share(f), what_is_left(selection, noise.rms_v, how.worst_window)));
+          partly_share(f), what_is_left(selection, signatures, noise.rms_v, how.worst_window)));
       break;
     case Decision::kUnexplained:
       result.partial = findings;
-      diagnosis.nearest = nearest_effect(selection, findings, noise.rms_v, how.worst_window);
+      diagnosis.nearest =
+          nearest_effect(selection, signatures, findings, noise.rms_v, how.worst_window);
       reasons.push_back(reasons::unexplained(f.any_findings));
       if (left_within_reach(f)) {
         reasons.push_back(reasons::gap_beyond_reach(left));

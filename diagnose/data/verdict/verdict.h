@@ -12,6 +12,7 @@
 #include "locate.h"
 #include "parts.h"
 #include "selection.h"
+#include "signatures.h"
 #include "verdict_noise.h"
 
 namespace flange::diagnose {
@@ -87,7 +88,8 @@ struct VerdictOutcome {
 // The status and the reasons for it, for the diagnosis so far (`so_far`: its stage, clock and
 // degenerate data) and the gap located at `where`; `twin_effects` are the effects of the twin the
 // recordings are compared with (their fitted ranges, where they carry them).
-VerdictOutcome verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
+VerdictOutcome verdict(const Parts& parts, const Selection& selection,
+                       const Signatures& signatures, const VerdictNoise& noise,
                        const std::vector<sim::EffectSettings>& twin_effects, const Location& where,
                        Diagnosis so_far);
 

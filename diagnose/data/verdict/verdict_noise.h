@@ -5,7 +5,7 @@
 #include <string>
 
 #include "findings.h"
-#include "selection.h"
+#include "signatures.h"
 #include "white_noise.h"
 
 namespace flange::diagnose {
@@ -14,7 +14,7 @@ namespace flange::diagnose {
 // once quantised on that grid (quantised_noise.h): less than the white noise when the noise is
 // below the LSB, sqrt(sigma^2 + LSB^2 / 6) when it is far above. With the quantisation taken as
 // noise, the white noise already holds its LSB^2 / 12.
-VerdictNoise with_converter_grid(const Selection& selection, const WhiteNoise& white,
+VerdictNoise with_converter_grid(const Signatures& signatures, const WhiteNoise& white,
                                  VerdictNoise noise);
 
 }  // namespace flange::diagnose
