@@ -135,21 +135,25 @@ struct BlindSessions {
 void diagnose_blind(const BlindSessions& sessions, int index, const SelftestOptions& options,
                     BlindOutcome& outcome);
 
-// A reality: what it alone knows of its cases.
+// A reality: what it alone knows of its cases. `Spec` is a case's truth as the reality draws it,
+// `Sessions` the two sessions as the reality makes them (kept for a single case, --case).
 template <class Spec, class Sessions>
 class BlindReality {
  public:
   virtual ~BlindReality() = default;
   // Case `index` (1-based) of options.seed: its truth, drawn from the case's own stream.
   virtual Spec draw(int index, const SelftestOptions& options) const = 0;
+  // Its two sessions, made with that truth (options.duration_s: the length or a cap).
   virtual Sessions record(const Spec& spec, const SelftestOptions& options) const = 0;
+  // ... as the diagnosis reads them: recordings only, nothing of the truth.
   virtual BlindSessions as_recordings(const Spec& spec, const Sessions& sessions) const = 0;
+  // The diagnosis of the case against its truth (score_blind with the reality's names).
   virtual BlindScore score(const Spec& spec, const BlindOutcome& outcome,
                            const Sessions& sessions) const = 0;
-  // The row of a case run (without its outcome).
+  // What the report shows of the case (BlindRow::outcome left unset).
   virtual BlindRow row(const Spec& spec) const = 0;
   virtual BlindAims aims() const = 0;
-  // The classes of the table by class (none: no such table).
+  // The classes of the table by class, in its order (none: no such table).
   virtual std::vector<std::string> class_names() const = 0;
 };
 

@@ -42,13 +42,12 @@ std::string percent(int part, int whole) {
 
 const BlindScore& score_of(const BlindRow& row) { return row.outcome->score; }
 
-// The cells both tables share: index, kind, verdict, named, nearest, top, all, truth, noise.
+// The cells the two tables share.
 Column index_column(const BlindStyle& style) {
   return {style.noun, 4, true, [](const BlindRow& r) { return std::to_string(r.index); }};
 }
-Column kind_column() {
-  return {"kind", 7, false, [](const BlindRow& r) { return r.kind_name; }};
-}
+Column kind_column() { return {"kind", 7, false, &BlindRow::kind_name}; }
+Column truth_column(const std::string& title) { return {title, 0, false, &BlindRow::truth_text}; }
 Column verdict_column() {
   return {"verdict", 11, false, [](const BlindRow& r) { return r.outcome->diagnosis.status; }};
 }
@@ -57,14 +56,9 @@ Column named_column(const BlindStyle& style) {
           [](const BlindRow& r) { return join(score_of(r).claimed); }};
 }
 Column nearest_column() { return {"nearest (unexplained)", 30, false, nearest_cell}; }
-Column top_column() {
-  return {"top", 3, false, [](const BlindRow& r) { return yes_no(r, score_of(r).top_correct); }};
-}
-Column all_column() {
-  return {"all", 3, false, [](const BlindRow& r) { return yes_no(r, score_of(r).all_found); }};
-}
-Column truth_column(const std::string& title) {
-  return {title, 0, false, [](const BlindRow& r) { return r.truth_text; }};
+// "yes" or "no" for an in-library case, else empty.
+Column yes_no_column(const std::string& title, bool BlindScore::*member) {
+  return {title, 3, false, [member](const BlindRow& r) { return yes_no(r, score_of(r).*member); }};
 }
 Column noise_column(const std::string& title) {
   return {title, 6, true, [](const BlindRow& r) { return fmt::format("{:.3f}", r.noise_v); }};
@@ -81,8 +75,8 @@ std::vector<Column> terminal_columns(const BlindStyle& style) {
   std::vector<Column> columns = {index_column(style),
                                  kind_column(),
                                  verdict_column(),
-                                 top_column(),
-                                 all_column(),
+                                 yes_no_column("top", &BlindScore::top_correct),
+                                 yes_no_column("all", &BlindScore::all_found),
                                  shrink_column("shrink", &BlindScore::shrink_pct, "%"),
                                  shrink_column("excess", &BlindScore::excess_shrink_pct, "%")};
   if (style.shows_noise) columns.push_back(noise_column("noise"));
@@ -99,8 +93,8 @@ std::vector<Column> markdown_columns(const BlindStyle& style) {
   columns.push_back(verdict_column());
   columns.push_back(named_column(style));
   if (style.shows_nearest) columns.push_back(nearest_column());
-  columns.push_back(top_column());
-  columns.push_back(all_column());
+  columns.push_back(yes_no_column("top", &BlindScore::top_correct));
+  columns.push_back(yes_no_column("all", &BlindScore::all_found));
   columns.push_back(shrink_column("shrink %", &BlindScore::shrink_pct, ""));
   columns.push_back(shrink_column("above-noise shrink %", &BlindScore::excess_shrink_pct, ""));
   return columns;
