@@ -40,6 +40,7 @@ BlindStyle alt_selftest_style(const SelftestOptions& options) {
   style.noun = "pair";
   style.command = "flange diagnose --selftest --reality alt";
   style.item = "class";
+  style.items = "classes";
   style.top_label = "right top class";
   style.named_title = "classes named";
   style.named_width = 34;

@@ -228,8 +228,9 @@ std::vector<std::string> blind_summary_lines(const BlindStyle& style, const Blin
       fmt::format("{}: {}/{} in-library {}s ({}); aim >= {} %: {}", style.top_label, s.top_correct,
                   s.in_library, noun, percent(s.top_correct, s.in_library), style.aims.top_pct,
                   s.top_aim_met ? "met" : "MISSED"),
-      fmt::format("all true {}s named: {}/{} ({}); {}s named that were not there: {}", item,
-                  s.all_found, s.in_library, percent(s.all_found, s.in_library), item, s.spurious)};
+      fmt::format("all true {} named: {}/{} ({}); {} named that were not there: {}", style.items,
+                  s.all_found, s.in_library, percent(s.all_found, s.in_library), style.items,
+                  s.spurious)};
   if (style.shows_nearest) {
     lines.push_back(
         fmt::format("partly explained in-library {}s: {}; of them the first {} named "

@@ -17,6 +17,7 @@ struct BlindStyle {
   std::string noun;       // "case" or "pair": the index column, the JSON list and its counts
   std::string command;    // "flange diagnose --selftest ..." (generated_by, with --case or --cases)
   std::string item;       // "effect" or "class": what a claim names
+  std::string items;      // its plural
   std::string top_label;  // the summary's first line: "correct top effect", ...
   std::string named_title;     // the column of the effects named
   int named_width = 40;        // its width in the terminal

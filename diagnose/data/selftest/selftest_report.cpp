@@ -49,6 +49,7 @@ BlindStyle selftest_style(double duration_s) {
   style.noun = "case";
   style.command = "flange diagnose --selftest";
   style.item = "effect";
+  style.items = "effects";
   style.top_label = "correct top effect";
   style.named_title = "named";
   style.named_width = 40;
