@@ -25,11 +25,15 @@ namespace {
 void write_alt_files(const SelftestCommandOptions& options, const std::string& header,
                      const std::vector<diagnose::AltPairResult>& results,
                      const diagnose::AltSummary& summary, std::ostream& out) {
+  const diagnose::BlindStyle style = diagnose::alt_selftest_style(options.run);
+  const std::vector<diagnose::BlindRow> rows =
+      diagnose::blind_rows(diagnose::alt_reality_for_check(), results);
   const fs::path dir(*options.out);
   fs::create_directories(dir);
   const diagnose::AltPairResult& first = results.front();
-  if (first.pair) {
-    const std::vector<fs::path> paths = alt_reality::write_alt_pair(dir, first.spec, *first.pair);
+  if (first.sessions) {
+    const std::vector<fs::path> paths =
+        alt_reality::write_alt_pair(dir, first.spec, *first.sessions);
     for (const fs::path& path : paths) out << "  wrote " << path.string() << "\n";
     // The diagnosis the self-test ran, as a user runs it on the files (with the start times the
     // self-test gave it).
@@ -41,9 +45,9 @@ void write_alt_files(const SelftestCommandOptions& options, const std::string& h
         format_utc_time(diagnose::alt_session_start_utc_s(first.spec.heldout)));
   }
   std::ofstream json(dir / "selftest.json", std::ios::binary);
-  json << diagnose::alt_selftest_json(options.run, results, summary).dump(2) << "\n";
+  json << diagnose::blind_json(options.run, style, rows, summary).dump(2) << "\n";
   std::ofstream md(dir / "selftest.md", std::ios::binary);
-  md << diagnose::alt_selftest_markdown(header, results, summary);
+  md << diagnose::blind_markdown(header, style, rows, summary);
   json.close();
   md.close();
   if (!json || !md) throw std::runtime_error(dir.string() + ": cannot write");
@@ -67,10 +71,9 @@ int run_alt_selftest_command(const SelftestCommandOptions& options, std::ostream
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const diagnose::AltSummary summary = diagnose::summarise_alt_selftest(results);
   const std::string header = diagnose::alt_selftest_header(summary, options.run);
-  out << header << "\n"
-      << diagnose::alt_terminal_table(results) << "\n"
-      << diagnose::alt_class_table(summary) << "\n";
-  for (const std::string& line : diagnose::alt_summary_lines(summary)) out << line << "\n";
+  out << diagnose::blind_terminal_report(
+      header, diagnose::alt_selftest_style(options.run),
+      diagnose::blind_rows(diagnose::alt_reality_for_check(), results), summary);
   out << fmt::format("seed {}: aims {} ({:.0f} s)\n", options.run.seed,
                      summary.aims_met() ? "met" : "MISSED", seconds);
   if (options.out) {

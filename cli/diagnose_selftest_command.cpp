@@ -23,20 +23,22 @@ namespace {
 // selftest.json, selftest.md and, for one case, its two sessions; throws std::runtime_error.
 void write_selftest_files(const SelftestCommandOptions& options, const std::string& header,
                           const std::vector<diagnose::SelftestCaseResult>& results,
-                          const diagnose::SelftestSummary& summary, double duration_s,
-                          std::ostream& out) {
+                          const diagnose::SelftestSummary& summary,
+                          const diagnose::BlindStyle& style, std::ostream& out) {
   const fs::path dir(*options.out);
   fs::create_directories(dir);
-  if (results.front().recordings) {
+  if (results.front().sessions) {
     for (const fs::path& path : diagnose::write_selftest_recordings(dir, options.run.only_case,
-                                                                    *results.front().recordings)) {
+                                                                    *results.front().sessions)) {
       out << "  wrote " << path.string() << "\n";
     }
   }
   std::ofstream json(dir / "selftest.json", std::ios::binary);
-  json << diagnose::selftest_json(options.run, results, summary, duration_s).dump(2) << "\n";
+  const std::vector<diagnose::BlindRow> rows =
+      diagnose::blind_rows(diagnose::twin_reality(), results);
+  json << diagnose::blind_json(options.run, style, rows, summary).dump(2) << "\n";
   std::ofstream md(dir / "selftest.md", std::ios::binary);
-  md << diagnose::selftest_markdown(header, results, summary);
+  md << diagnose::blind_markdown(header, style, rows, summary);
   json.close();
   md.close();
   if (!json || !md) throw std::runtime_error(dir.string() + ": cannot write");
@@ -91,12 +93,13 @@ int run_selftest_command(const SelftestCommandOptions& options, std::ostream& ou
       options.run.duration_s > 0 ? options.run.duration_s : sim::BenchProtocol{}.duration_s;
 
   const std::string header = diagnose::selftest_header(summary, options.run.seed, duration);
-  out << header << "\n" << diagnose::selftest_terminal_table(results);
-  for (const std::string& line : diagnose::selftest_summary_lines(summary)) out << line << "\n";
+  const diagnose::BlindStyle style = diagnose::selftest_style(duration);
+  out << diagnose::blind_terminal_report(
+      header, style, diagnose::blind_rows(diagnose::twin_reality(), results), summary);
   out << fmt::format("aims {} ({:.0f} s)\n", summary.aims_met() ? "met" : "MISSED", seconds);
   if (options.out) {
     try {
-      write_selftest_files(options, header, results, summary, duration, out);
+      write_selftest_files(options, header, results, summary, style, out);
     } catch (const std::runtime_error& error) {
       err << "flange diagnose --selftest: " << error.what() << "\n";
       return kExitFailure;

@@ -4,14 +4,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 
 #include "alt_classes.h"
-#include "diagnosis_detail.h"
+#include "alt_truth.h"
 #include "finding_class.h"
-#include "parallel_cases.h"
-#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {
@@ -19,32 +15,85 @@ namespace {
 using alt_reality::AltPairKind;
 using alt_reality::AltPairSpec;
 
-bool in_library(const AltPairSpec& spec) {
-  return spec.kind == AltPairKind::kSingle || spec.kind == AltPairKind::kDouble;
+BlindKind blind_kind(AltPairKind kind) {
+  switch (kind) {
+    case AltPairKind::kSingle:
+      return BlindKind::kSingle;
+    case AltPairKind::kDouble:
+      return BlindKind::kPair;
+    case AltPairKind::kNull:
+      return BlindKind::kNull;
+    case AltPairKind::kOutside:
+      return BlindKind::kOutside;
+  }
+  return BlindKind::kNull;
 }
 
-bool holds_class(const AltPairSpec& spec, const std::string& name) {
-  return std::any_of(spec.truth.begin(), spec.truth.end(),
-                     [&](const auto& e) { return e.draw.class_name == name; });
+// Scored above the held-out session's true noise.
+BlindTruth truth_of(const AltPairSpec& spec) {
+  BlindTruth truth;
+  truth.kind = blind_kind(spec.kind);
+  for (const alt_reality::TruthEffect& e : spec.truth) truth.classes.push_back(e.draw.class_name);
+  truth.bias_type = in_library(truth.kind) &&
+                    std::all_of(spec.truth.begin(), spec.truth.end(), [](const auto& e) {
+                      return alt_reality::alt_class(e.draw.class_name).bias_type;
+                    });
+  truth.noise_std_v = spec.heldout.noise_v;
+  return truth;
+}
+
+std::string describe_truth(const AltPairSpec& spec) {
+  if (spec.truth.empty()) return "(nothing)";
+  std::string text;
+  for (const alt_reality::TruthEffect& e : spec.truth) {
+    text += fmt::format("{}{}/{} ({:.1f}x noise)", text.empty() ? "" : " + ", e.draw.class_name,
+                        e.draw.shape, e.rms_v / spec.fit.noise_v);
+  }
+  return text;
 }
 
 std::string fmt_label(int index, const char* part) {
   return fmt::format("alt pair {} ({})", index, part);
 }
 
-void score_in_library(const AltPairSpec& spec, const Diagnosis& diagnosis, AltScore& score) {
-  score.verdict_correct = diagnosis.status == Status::kExplained;
-  score.top_correct = !score.claimed.empty() && holds_class(spec, score.claimed.front());
-  score.all_found = std::all_of(spec.truth.begin(), spec.truth.end(), [&](const auto& e) {
-    return std::find(score.claimed.begin(), score.claimed.end(), e.draw.class_name) !=
-           score.claimed.end();
-  });
-  score.nearest_correct = diagnosis.status == Status::kUnexplained && !score.nearest.empty() &&
-                          holds_class(spec, score.nearest);
-  score.bias_type = std::all_of(spec.truth.begin(), spec.truth.end(), [](const auto& e) {
-    return alt_reality::alt_class(e.draw.class_name).bias_type;
-  });
-}
+class AltReality : public BlindReality<AltPairSpec, alt_reality::AltPair> {
+ public:
+  AltPairSpec draw(int index, const SelftestOptions& options) const override {
+    return alt_reality::draw_alt_pair(index, options.seed, options.duration_s);
+  }
+  alt_reality::AltPair record(const AltPairSpec& spec, const SelftestOptions&) const override {
+    return alt_reality::render_alt_pair(spec);
+  }
+  // Blind: the two recordings and their start times only, as `flange diagnose --real A
+  // --holdout B --real-start S --holdout-start S` reads them.
+  BlindSessions as_recordings(const AltPairSpec& spec,
+                              const alt_reality::AltPair& pair) const override {
+    return {alt_series(pair.fit, spec.fit, fmt_label(spec.index, "fit")),
+            alt_series(pair.heldout, spec.heldout, fmt_label(spec.index, "held-out"))};
+  }
+  BlindScore score(const AltPairSpec& spec, const BlindOutcome& outcome,
+                   const alt_reality::AltPair&) const override {
+    return score_alt_pair(spec, outcome.diagnosis, outcome.partial);
+  }
+  BlindRow row(const AltPairSpec& spec) const override {
+    BlindRow row;
+    row.index = spec.index;
+    row.truth = truth_of(spec);
+    row.kind_name = alt_pair_kind_name(spec.kind);
+    row.truth_text = describe_truth(spec);
+    row.noise_v = spec.fit.noise_v;
+    row.truth_json = alt_reality::alt_truth_json(spec);
+    return row;
+  }
+  // The aims: >= 95 % right top class, >= 80 % mean shrink of the above-noise gap for
+  // bias-type classes, no effect claimed on null or outside pairs, "none" on >= 99 % of nulls.
+  BlindAims aims() const override { return {95, 80.0, true, 99}; }
+  std::vector<std::string> class_names() const override {
+    std::vector<std::string> names;
+    for (const alt_reality::AltClass& c : alt_reality::alt_classes()) names.push_back(c.name);
+    return names;
+  }
+};
 
 }  // namespace
 
@@ -69,64 +118,20 @@ double alt_session_start_utc_s(const alt_reality::SessionPlan& plan) {
 
 AltScore score_alt_pair(const AltPairSpec& spec, const Diagnosis& diagnosis,
                         const std::vector<EffectFinding>& partial) {
-  AltScore score;
-  // A partly explained verdict names its effects as found: they are claims too.
-  if (diagnosis.status == Status::kExplained || diagnosis.status == Status::kPartlyExplained) {
-    for (const EffectFinding& f : diagnosis.effects) score.claimed.push_back(class_of_finding(f));
-  }
-  if (diagnosis.status == Status::kUnexplained) {
-    const EffectFinding* nearest = diagnosis.nearest  ? &*diagnosis.nearest
-                                   : !partial.empty() ? &partial.front()
-                                                      : nullptr;
-    if (nearest != nullptr) {
-      score.nearest = class_of_finding(*nearest);
-      score.nearest_shrink_pct = nearest->shrink_pct;
-    }
-  }
-  for (const std::string& c : score.claimed) {
-    score.claim_right.push_back(holds_class(spec, c));
-    score.spurious += holds_class(spec, c) ? 0 : 1;
-  }
-  if (in_library(spec)) {
-    score_in_library(spec, diagnosis, score);
-  } else {
-    score.verdict_correct =
-        diagnosis.status == (spec.kind == AltPairKind::kNull ? Status::kNone : Status::kUnexplained);
-  }
-  const double before = diagnosis.heldout_rms_before, after = diagnosis.heldout_rms_after;
-  if (before > 0.0) score.shrink_pct = 100.0 * (before - after) / before;
-  const double sigma = spec.heldout.noise_v;
-  const double excess_before = rms_above_noise(before, sigma);
-  if (excess_before > 0.0) {
-    score.excess_shrink_pct = 100.0 * (1.0 - rms_above_noise(after, sigma) / excess_before);
-  }
-  return score;
+  return score_blind(truth_of(spec), diagnosis, partial, class_of_finding);
+}
+
+const BlindReality<AltPairSpec, alt_reality::AltPair>& alt_reality_for_check() {
+  static const AltReality reality;
+  return reality;
+}
+
+AltSummary summarise_alt_selftest(const std::vector<AltPairResult>& results) {
+  return summarise_blind(alt_reality_for_check(), results);
 }
 
 std::vector<AltPairResult> run_alt_selftest(const SelftestOptions& options) {
-  const int count = options.only_case > 0 ? 1 : options.cases;
-  std::vector<AltPairResult> results(static_cast<std::size_t>(count));
-  run_in_parallel(count, options.jobs, [&](int i) {
-    const auto start = std::chrono::steady_clock::now();
-    AltPairResult& r = results[static_cast<std::size_t>(i)];
-    const int index = options.only_case > 0 ? options.only_case : i + 1;
-    r.spec = alt_reality::draw_alt_pair(index, options.seed, options.duration_s);
-    alt_reality::AltPair pair = alt_reality::render_alt_pair(r.spec);
-    // Blind: the two recordings and their start times only, as `flange diagnose --real A
-    // --holdout B --real-start S --holdout-start S` reads them.
-    DiagnoseOptions diagnose_options;
-    diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
-    diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
-    DiagnosisResult detailed = diagnose_in_detail(
-        alt_series(pair.fit, r.spec.fit, fmt_label(index, "fit")),
-        alt_series(pair.heldout, r.spec.heldout, fmt_label(index, "held-out")), diagnose_options);
-    r.diagnosis = std::move(detailed.diagnosis);
-    r.partial = std::move(detailed.detail.partial);
-    r.score = score_alt_pair(r.spec, r.diagnosis, r.partial);
-    if (options.only_case > 0) r.pair = std::move(pair);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  });
-  return results;
+  return run_blind_check(alt_reality_for_check(), options);
 }
 
 }  // namespace flange::diagnose

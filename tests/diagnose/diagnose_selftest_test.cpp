@@ -17,7 +17,6 @@
 #include "diagnosis_detail.h"
 #include "recording_series.h"
 #include "test_files.h"
-#include "verdict_reasons.h"
 
 namespace flange::diagnose {
 namespace {
@@ -122,7 +121,7 @@ TEST(DiagnoseSelftest, ScoringCountsTopAllSpuriousAndExcessShrink) {
   EXPECT_EQ(summary.in_library, 1);
   EXPECT_EQ(summary.top_correct, 1);
   EXPECT_EQ(summary.null_claims, 0);
-  EXPECT_EQ(summary.null_correct, 0);
+  EXPECT_EQ(summary.null_none, 0);
   EXPECT_TRUE(summary.top_aim_met);
 }
 
@@ -214,11 +213,11 @@ TEST(DiagnoseSelftest, AWeakReadingLagWithinTheNoiseIsNamedInTheReasonsNotClaime
   ASSERT_EQ(r.spec.truth.front().name, "thermal_lag");
   EXPECT_EQ(r.diagnosis.status, Status::kNone);
   EXPECT_TRUE(r.diagnosis.effects.empty());
-  ASSERT_TRUE(r.recordings);
+  ASSERT_TRUE(r.sessions);
   DiagnoseOptions options;
   options.bootstrap_rounds = SelftestOptions{}.bootstrap_rounds;
   const DiagnosisResult again =
-      diagnose_in_detail(r.recordings->calibration, r.recordings->heldout, options);
+      diagnose_in_detail(r.sessions->calibration, r.sessions->heldout, options);
   EXPECT_EQ(again.diagnosis.status, Status::kNone);
   const std::vector<std::string>& reasons = again.detail.reasons;
   EXPECT_TRUE(std::any_of(reasons.begin(), reasons.end(), [](const std::string& reason) {

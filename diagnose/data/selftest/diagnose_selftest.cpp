@@ -4,17 +4,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <random>
 
 #include "bench_scenario.h"
-#include "diagnosis_detail.h"
 #include "effect_classes.h"
-#include "parallel_cases.h"
 #include "selftest_draw.h"
 #include "sensor_twin.h"
-#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {
@@ -99,6 +95,83 @@ RecordingSeries bench_session(const SelftestCaseSpec& spec, const sim::BenchProt
   return series;
 }
 
+BlindTruth truth_of(const SelftestCaseSpec& spec, double noise_std_v) {
+  BlindTruth truth;
+  truth.kind = spec.kind;
+  for (const sim::EffectSettings& e : spec.truth) truth.classes.push_back(e.name);
+  truth.bias_type = std::all_of(spec.truth.begin(), spec.truth.end(),
+                                [](const auto& e) { return removable(e.name); });
+  truth.noise_std_v = noise_std_v;
+  return truth;
+}
+
+std::string name_of(const EffectFinding& finding) { return finding.name; }
+
+std::string describe_truth(const SelftestCaseSpec& spec) {
+  if (spec.kind == SelftestKind::kNull) return "(nothing)";
+  if (spec.kind == SelftestKind::kOutside) return spec.outside.describe();
+  std::string text;
+  for (const sim::EffectSettings& e : spec.truth) {
+    std::string params;
+    for (const auto& [key, value] : e.params) {
+      params += fmt::format("{}{}={:.3g}", params.empty() ? "" : ", ", key, value);
+    }
+    text += fmt::format("{}{}({})", text.empty() ? "" : " + ", e.name, params);
+  }
+  return text;
+}
+
+nlohmann::json truth_json(const SelftestCaseSpec& spec) {
+  nlohmann::json truth = nlohmann::json::array();
+  for (const sim::EffectSettings& e : spec.truth) {
+    truth.push_back({{"name", e.name}, {"params", e.params}});
+  }
+  nlohmann::json j = {
+      {"case", spec.index}, {"kind", selftest_kind_name(spec.kind)}, {"truth", truth}};
+  if (spec.kind == SelftestKind::kOutside) {
+    j["outside"] = {{"name", spec.outside.name},
+                    {"value", spec.outside.value},
+                    {"at_fraction", spec.outside.at_fraction}};
+  }
+  return j;
+}
+
+double twin_noise_std_v() { return sim::TwinConfig{}.noise.voltage_std_v; }
+
+class TwinReality : public BlindReality<SelftestCaseSpec, SelftestRecordings> {
+ public:
+  SelftestCaseSpec draw(int index, const SelftestOptions& options) const override {
+    return draw_selftest_case(index, options.seed);
+  }
+  SelftestRecordings record(const SelftestCaseSpec& spec,
+                            const SelftestOptions& options) const override {
+    return make_selftest_recordings(spec, options.duration_s);
+  }
+  BlindSessions as_recordings(const SelftestCaseSpec&,
+                              const SelftestRecordings& recordings) const override {
+    return {recordings.calibration, recordings.heldout};
+  }
+  BlindScore score(const SelftestCaseSpec& spec, const BlindOutcome& outcome,
+                   const SelftestRecordings& recordings) const override {
+    return score_blind(truth_of(spec, recordings.noise_std_v), outcome.diagnosis, outcome.partial,
+                       name_of);
+  }
+  BlindRow row(const SelftestCaseSpec& spec) const override {
+    BlindRow row;
+    row.index = spec.index;
+    row.truth = truth_of(spec, twin_noise_std_v());
+    row.kind_name = selftest_kind_name(spec.kind);
+    row.truth_text = describe_truth(spec);
+    row.noise_v = row.truth.noise_std_v;
+    row.truth_json = truth_json(spec);
+    return row;
+  }
+  // The aims: >= 90 % correct top effect, >= 70 % mean held-out shrink (of the gap
+  // above the noise) for bias-type effects, no effect claimed on a null case.
+  BlindAims aims() const override { return {90, 70.0, false, 0}; }
+  std::vector<std::string> class_names() const override { return {}; }
+};
+
 }  // namespace
 
 const char* selftest_kind_name(SelftestKind kind) {
@@ -166,115 +239,26 @@ SelftestRecordings make_selftest_recordings(const SelftestCaseSpec& spec, double
   recordings.heldout = bench_session(spec, second, duration, spec.noise_seed + 1);
   recordings.calibration.path = fmt::format("selftest case {} (calibration)", spec.index);
   recordings.heldout.path = fmt::format("selftest case {} (held-out)", spec.index);
-  recordings.noise_std_v = sim::TwinConfig{}.noise.voltage_std_v;
+  recordings.noise_std_v = twin_noise_std_v();
   return recordings;
 }
 
 SelftestScore score_selftest_case(const SelftestCaseSpec& spec, const Diagnosis& diagnosis,
                                   double noise_std_v) {
-  SelftestScore score;
-  // A partly explained verdict names its effects as found: they are claims too.
-  if (diagnosis.status == Status::kExplained || diagnosis.status == Status::kPartlyExplained) {
-    for (const EffectFinding& f : diagnosis.effects) score.claimed.push_back(f.name);
-  }
-  const auto is_true = [&](const std::string& name) {
-    return std::any_of(spec.truth.begin(), spec.truth.end(),
-                       [&](const sim::EffectSettings& e) { return e.name == name; });
-  };
-  for (const std::string& name : score.claimed) {
-    score.claim_right.push_back(is_true(name));
-    score.spurious += is_true(name) ? 0 : 1;
-  }
-  switch (spec.kind) {
-    case SelftestKind::kSingle:
-    case SelftestKind::kPair: {
-      score.verdict_correct = diagnosis.status == Status::kExplained;
-      score.top_correct = !score.claimed.empty() && is_true(score.claimed.front());
-      score.all_found = std::all_of(spec.truth.begin(), spec.truth.end(), [&](const auto& e) {
-        return std::find(score.claimed.begin(), score.claimed.end(), e.name) != score.claimed.end();
-      });
-      score.bias_type = std::all_of(spec.truth.begin(), spec.truth.end(),
-                                    [](const auto& e) { return removable(e.name); });
-      break;
-    }
-    case SelftestKind::kNull:
-      score.verdict_correct = diagnosis.status == Status::kNone;
-      break;
-    case SelftestKind::kOutside:
-      score.verdict_correct = diagnosis.status == Status::kUnexplained;
-      break;
-  }
-  const double before = diagnosis.heldout_rms_before;
-  const double after = diagnosis.heldout_rms_after;
-  if (before > 0.0) score.shrink_pct = 100.0 * (before - after) / before;
-  const double excess_before = rms_above_noise(before, noise_std_v);
-  if (excess_before > 0.0) {
-    score.excess_shrink_pct = 100.0 * (1.0 - rms_above_noise(after, noise_std_v) / excess_before);
-  }
-  return score;
+  return score_blind(truth_of(spec, noise_std_v), diagnosis, {}, name_of);
+}
+
+const BlindReality<SelftestCaseSpec, SelftestRecordings>& twin_reality() {
+  static const TwinReality reality;
+  return reality;
 }
 
 SelftestSummary summarise_selftest(const std::vector<SelftestCaseResult>& results) {
-  SelftestSummary s;
-  s.cases = static_cast<int>(results.size());
-  double shrink_sum = 0.0, excess_sum = 0.0;
-  for (const SelftestCaseResult& r : results) {
-    const SelftestScore& score = r.score;
-    switch (r.spec.kind) {
-      case SelftestKind::kSingle:
-      case SelftestKind::kPair:
-        ++s.in_library;
-        s.top_correct += score.top_correct ? 1 : 0;
-        s.all_found += score.all_found ? 1 : 0;
-        s.spurious += score.spurious;
-        if (score.bias_type) {
-          ++s.bias_type;
-          shrink_sum += score.shrink_pct;
-          excess_sum += score.excess_shrink_pct;
-        }
-        break;
-      case SelftestKind::kNull:
-        ++s.null_cases;
-        s.null_claims += score.claimed.empty() ? 0 : 1;
-        s.null_correct += score.verdict_correct ? 1 : 0;
-        break;
-      case SelftestKind::kOutside:
-        ++s.outside_cases;
-        s.outside_claims += score.claimed.empty() ? 0 : 1;
-        s.outside_correct += score.verdict_correct ? 1 : 0;
-        break;
-    }
-  }
-  if (s.bias_type > 0) {
-    s.mean_shrink_pct = shrink_sum / s.bias_type;
-    s.mean_excess_shrink_pct = excess_sum / s.bias_type;
-  }
-  s.top_aim_met = s.in_library == 0 || 10 * s.top_correct >= 9 * s.in_library;
-  s.shrink_aim_met = s.bias_type == 0 || s.mean_excess_shrink_pct >= 70.0;
-  s.null_aim_met = s.null_claims == 0;
-  return s;
+  return summarise_blind(twin_reality(), results);
 }
 
 std::vector<SelftestCaseResult> run_selftest(const SelftestOptions& options) {
-  const int count = options.only_case > 0 ? 1 : options.cases;
-  std::vector<SelftestCaseResult> results(static_cast<std::size_t>(count));
-  run_in_parallel(count, options.jobs, [&](int i) {
-    const auto start = std::chrono::steady_clock::now();
-    SelftestCaseResult& r = results[static_cast<std::size_t>(i)];
-    const int index = options.only_case > 0 ? options.only_case : i + 1;
-    r.spec = draw_selftest_case(index, options.seed);
-    SelftestRecordings rec = make_selftest_recordings(r.spec, options.duration_s);
-    DiagnoseOptions diagnose_options;  // blind: the default twin, noise estimated
-    diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
-    diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
-    DiagnosisResult detailed = diagnose_in_detail(rec.calibration, rec.heldout, diagnose_options);
-    r.diagnosis = std::move(detailed.diagnosis);
-    r.partial = std::move(detailed.detail.partial);
-    r.score = score_selftest_case(r.spec, r.diagnosis, rec.noise_std_v);
-    if (options.only_case > 0) r.recordings = std::move(rec);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  });
-  return results;
+  return run_blind_check(twin_reality(), options);
 }
 
 }  // namespace flange::diagnose

@@ -8,16 +8,16 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "blind_check.h"
 #include "diagnosis.h"
 #include "effect_catalogue.h"
 
 namespace flange::diagnose {
 
-enum class SelftestKind { kSingle, kPair, kNull, kOutside };
+using SelftestKind = BlindKind;
 const char* selftest_kind_name(SelftestKind kind);
 
 // An effect the twin's library does not have, applied by the case generator itself.
@@ -48,51 +48,21 @@ struct SelftestRecordings {
 // `duration_s` <= 0: the bench protocol's own duration (6600 s).
 SelftestRecordings make_selftest_recordings(const SelftestCaseSpec& spec, double duration_s);
 
-struct SelftestScore {
-  std::vector<std::string> claimed;  // effects the verdict names (explained, fully or partly)
-  std::vector<bool> claim_right;     // for each claim, whether its effect is in the truth
-  bool verdict_correct = false;      // in-library: explained; null: none; outside: unexplained
-  bool top_correct = false;          // in-library: the first named effect is a true one
-  bool all_found = false;            // in-library: every true effect is named
-  int spurious = 0;                  // named effects that are not true ones
-  bool bias_type = false;            // every true effect is removable (all but vibration, ADC)
-  double shrink_pct = 0.0;           // held-out gap RMS, before -> after the named effects
-  double excess_shrink_pct = 0.0;    // the part of the held-out gap RMS above the noise
-};
+// A case's diagnosis against its truth; `noise_std_v`: the twin's true white noise.
+using SelftestScore = BlindScore;
 SelftestScore score_selftest_case(const SelftestCaseSpec& spec, const Diagnosis& diagnosis,
                                   double noise_std_v);
 
-struct SelftestCaseResult {
-  SelftestCaseSpec spec;
-  Diagnosis diagnosis;
-  std::vector<EffectFinding> partial;  // unexplained: what the candidates did get
-  SelftestScore score;
-  double seconds = 0.0;                          // recording plus diagnosis
-  std::optional<SelftestRecordings> recordings;  // kept when a single case runs (--case)
-};
+// The twin's reality for the harness (blind_check.h).
+const BlindReality<SelftestCaseSpec, SelftestRecordings>& twin_reality();
 
-struct SelftestSummary {
-  int cases = 0;
-  int in_library = 0, top_correct = 0, all_found = 0, spurious = 0;
-  int bias_type = 0;
-  double mean_shrink_pct = 0.0, mean_excess_shrink_pct = 0.0;  // over bias-type cases
-  int null_cases = 0, null_claims = 0, null_correct = 0;
-  int outside_cases = 0, outside_claims = 0, outside_correct = 0;
-  // Aims of the issue: >= 90 % correct top effect, >= 70 % mean held-out shrink (of the gap
-  // above the noise) for bias-type effects, no effect claimed on a null case.
-  bool top_aim_met = false, shrink_aim_met = false, null_aim_met = false;
-  bool aims_met() const { return top_aim_met && shrink_aim_met && null_aim_met; }
-};
+// A case run, its recordings kept (sessions) when a single case runs (--case).
+using SelftestCaseResult = BlindResult<SelftestCaseSpec, SelftestRecordings>;
+// The counts against the twin's aims (>= 90 % correct top effect, >= 70 % mean held-out shrink
+// of the gap above the noise for bias-type effects, no effect claimed on a null case).
+using SelftestSummary = BlindSummary;
 SelftestSummary summarise_selftest(const std::vector<SelftestCaseResult>& results);
 
-struct SelftestOptions {
-  int cases = 10;
-  int only_case = 0;  // > 0: run just this case of the seed (to look into one row of a table)
-  std::uint64_t seed = 1;
-  double duration_s = 0.0;     // <= 0: the protocol's own
-  int bootstrap_rounds = 100;  // passed to diagnose()
-  int jobs = 0;                // worker threads; 0: the machine's cores
-};
 // Runs every case (in parallel over `jobs` threads); results in case order.
 std::vector<SelftestCaseResult> run_selftest(const SelftestOptions& options);
 

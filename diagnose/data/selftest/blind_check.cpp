@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: MIT
+#include "blind_check.h"
+
+#include <algorithm>
+
+#include "diagnosis_detail.h"
+#include "series_statistics.h"
+
+namespace flange::diagnose {
+namespace {
+
+bool holds(const BlindTruth& truth, const std::string& name) {
+  return std::find(truth.classes.begin(), truth.classes.end(), name) != truth.classes.end();
+}
+
+void score_in_library(const BlindTruth& truth, const Diagnosis& diagnosis, BlindScore& score) {
+  score.verdict_correct = diagnosis.status == Status::kExplained;
+  score.top_correct = !score.claimed.empty() && holds(truth, score.claimed.front());
+  score.all_found = std::all_of(truth.classes.begin(), truth.classes.end(), [&](const auto& c) {
+    return std::find(score.claimed.begin(), score.claimed.end(), c) != score.claimed.end();
+  });
+  score.nearest_correct =
+      diagnosis.status == Status::kUnexplained && !score.nearest.empty() && holds(truth, score.nearest);
+  score.bias_type = truth.bias_type;
+}
+
+void count_in_library(const BlindRow& row, BlindSummary& s, double& shrink_sum,
+                      double& excess_sum) {
+  const BlindScore& score = row.outcome->score;
+  const Status status = row.outcome->diagnosis.status;
+  ++s.in_library;
+  s.top_correct += score.top_correct ? 1 : 0;
+  s.all_found += score.all_found ? 1 : 0;
+  s.spurious += score.spurious;
+  if (status == Status::kPartlyExplained) {
+    ++s.partly_explained_in_library;
+    s.partly_top_correct += score.top_correct ? 1 : 0;
+  }
+  if (status == Status::kUnexplained) {
+    ++s.unexplained_in_library;
+    s.nearest_correct += score.nearest_correct ? 1 : 0;
+  }
+  if (score.bias_type) {
+    ++s.bias_type;
+    shrink_sum += score.shrink_pct;
+    excess_sum += score.excess_shrink_pct;
+  }
+}
+
+void count_outside_library(const BlindRow& row, BlindSummary& s) {
+  const BlindScore& score = row.outcome->score;
+  const int claimed = score.claimed.empty() ? 0 : 1;
+  const int correct = score.verdict_correct ? 1 : 0;
+  if (row.truth.kind == BlindKind::kNull) {
+    ++s.null_cases;
+    s.null_claims += claimed;
+    s.null_none += correct;
+  } else {
+    ++s.outside_cases;
+    s.outside_claims += claimed;
+    s.outside_unexplained += correct;
+  }
+}
+
+std::vector<BlindClassRow> class_rows(const std::vector<BlindRow>& rows,
+                                      const std::vector<std::string>& class_names) {
+  std::vector<BlindClassRow> table;
+  for (const std::string& name : class_names) {
+    BlindClassRow line;
+    line.name = name;
+    double excess_sum = 0.0;
+    for (const BlindRow& row : rows) {
+      if (!in_library(row.truth.kind) || !holds(row.truth, name)) continue;
+      const BlindScore& score = row.outcome->score;
+      ++line.pairs;
+      line.top_correct += score.top_correct ? 1 : 0;
+      const auto& named = score.claimed;
+      line.named += std::find(named.begin(), named.end(), name) != named.end() ? 1 : 0;
+      if (score.bias_type) {
+        ++line.bias_pairs;
+        excess_sum += score.excess_shrink_pct;
+      }
+    }
+    if (line.bias_pairs > 0) line.mean_excess_shrink_pct = excess_sum / line.bias_pairs;
+    table.push_back(line);
+  }
+  return table;
+}
+
+}  // namespace
+
+bool in_library(BlindKind kind) { return kind == BlindKind::kSingle || kind == BlindKind::kPair; }
+
+BlindScore score_blind(const BlindTruth& truth, const Diagnosis& diagnosis,
+                       const std::vector<EffectFinding>& partial, const ClassOfFinding& class_of) {
+  BlindScore score;
+  // A partly explained verdict names its effects as found: they are claims too.
+  if (diagnosis.status == Status::kExplained || diagnosis.status == Status::kPartlyExplained) {
+    for (const EffectFinding& f : diagnosis.effects) score.claimed.push_back(class_of(f));
+  }
+  if (diagnosis.status == Status::kUnexplained) {
+    const EffectFinding* nearest = diagnosis.nearest  ? &*diagnosis.nearest
+                                   : !partial.empty() ? &partial.front()
+                                                      : nullptr;
+    if (nearest != nullptr) {
+      score.nearest = class_of(*nearest);
+      score.nearest_shrink_pct = nearest->shrink_pct;
+    }
+  }
+  for (const std::string& c : score.claimed) {
+    score.claim_right.push_back(holds(truth, c));
+    score.spurious += holds(truth, c) ? 0 : 1;
+  }
+  if (in_library(truth.kind)) {
+    score_in_library(truth, diagnosis, score);
+  } else {
+    score.verdict_correct =
+        diagnosis.status == (truth.kind == BlindKind::kNull ? Status::kNone : Status::kUnexplained);
+  }
+  const double before = diagnosis.heldout_rms_before, after = diagnosis.heldout_rms_after;
+  if (before > 0.0) score.shrink_pct = 100.0 * (before - after) / before;
+  const double excess_before = rms_above_noise(before, truth.noise_std_v);
+  if (excess_before > 0.0) {
+    score.excess_shrink_pct =
+        100.0 * (1.0 - rms_above_noise(after, truth.noise_std_v) / excess_before);
+  }
+  return score;
+}
+
+BlindSummary summarise_blind(const std::vector<BlindRow>& rows, const BlindAims& aims,
+                             const std::vector<std::string>& class_names) {
+  BlindSummary s;
+  s.cases = static_cast<int>(rows.size());
+  double shrink_sum = 0.0, excess_sum = 0.0;
+  for (const BlindRow& row : rows) {
+    if (in_library(row.truth.kind)) {
+      count_in_library(row, s, shrink_sum, excess_sum);
+    } else {
+      count_outside_library(row, s);
+    }
+  }
+  if (s.bias_type > 0) {
+    s.mean_shrink_pct = shrink_sum / s.bias_type;
+    s.mean_excess_shrink_pct = excess_sum / s.bias_type;
+  }
+  s.classes = class_rows(rows, class_names);
+  s.top_aim_met = s.in_library == 0 || 100 * s.top_correct >= aims.top_pct * s.in_library;
+  s.shrink_aim_met = s.bias_type == 0 || s.mean_excess_shrink_pct >= aims.excess_shrink_pct;
+  s.claims_aim_met = s.null_claims == 0 && (!aims.no_claim_outside || s.outside_claims == 0);
+  s.none_aim_met =
+      aims.none_pct == 0 || s.null_cases == 0 || 100 * s.null_none >= aims.none_pct * s.null_cases;
+  return s;
+}
+
+void diagnose_blind(const BlindSessions& sessions, int index, const SelftestOptions& options,
+                    BlindOutcome& outcome) {
+  DiagnoseOptions diagnose_options;  // blind: the default twin, noise estimated
+  diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
+  diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
+  DiagnosisResult detailed = diagnose_in_detail(sessions.fit, sessions.heldout, diagnose_options);
+  outcome.diagnosis = std::move(detailed.diagnosis);
+  outcome.partial = std::move(detailed.detail.partial);
+}
+
+}  // namespace flange::diagnose
