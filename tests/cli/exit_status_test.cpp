@@ -119,7 +119,7 @@ TEST_F(ExitStatus, Design) {
               "flange design: ", "use --structure sos or more coefficient bits");
   expect_exit(
       {"design", "--fs", "6", "--order", "4", "--fc", "1", "--no-plot", "--out", unwritable("set")},
-      1, "flange design: ");
+      1, "flange design: ", "a_file");
 }
 
 TEST_F(ExitStatus, Cosim) {
@@ -219,7 +219,7 @@ TEST_F(ExitStatus, DiagnoseData) {
   ASSERT_EQ(run_flange_captured(simulate).status, 0) << command_text(simulate);
   expect_exit({"diagnose", "--real", path("bench.csv"), "--holdout-fraction", "0.3", "--out",
                unwritable("d")},
-              1, "flange diagnose: ");
+              1, "flange diagnose: ", "a_file");
 }
 
 TEST_F(ExitStatus, DiagnoseSelftests) {
@@ -227,12 +227,12 @@ TEST_F(ExitStatus, DiagnoseSelftests) {
   expect_exit({"diagnose", "--selftest", "--cases", "0"}, 2, "flange diagnose: ", "--cases");
   expect_exit({"diagnose", "--selftest", "--cases", "1", "--duration", "600", "--jobs", "1",
                "--out", unwritable("selftest")},
-              1, "flange diagnose --selftest: ");
+              1, "flange diagnose --selftest: ", "a_file");
   expect_exit({"diagnose", "--selftest", "--reality", "alt", "--pairs", "0"}, 2,
-              "flange diagnose: ", "--pairs");
+              "flange diagnose: ", "not in range 1 to 1000");
   expect_exit({"diagnose", "--selftest", "--reality", "alt", "--pairs", "1", "--duration", "600",
                "--jobs", "1", "--out", unwritable("alt_selftest")},
-              1, "flange diagnose --selftest --reality alt: ");
+              1, "flange diagnose --selftest --reality alt: ", "a_file");
 }
 
 TEST_F(ExitStatus, DiagnoseHardware) {
@@ -240,7 +240,7 @@ TEST_F(ExitStatus, DiagnoseHardware) {
               "flange diagnose --hw: ", "missing.json");
   expect_exit({"diagnose", "--hw", "--thesis-eq-4-20", "--coeffs",
                source("coeffs/vehicle_sos/filter.json"), "--out", unwritable("hw")},
-              1, "flange diagnose --hw: ");
+              1, "flange diagnose --hw: ", "a_file");
 }
 
 TEST_F(ExitStatus, Demo) {
