@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <ostream>
+#include <stdexcept>
 
 #include "bench_store.h"
 #include "calibration.h"
@@ -101,8 +102,7 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options) {
 }
 
 int run_calibrate_command(const CalibrateOptions& options,
-                          const std::vector<std::string>& command_line, std::ostream& out,
-                          std::ostream& err) {
+                          const std::vector<std::string>& command_line, std::ostream& out) {
   // A model that cannot be written is found out before the database grows or the fit runs.
   const std::filesystem::path out_path(options.out);
   const std::filesystem::path folder =
@@ -112,51 +112,36 @@ int run_calibrate_command(const CalibrateOptions& options,
       (!std::filesystem::exists(out_path) ||
        (!std::filesystem::is_directory(out_path) && ::access(out_path.c_str(), W_OK) == 0));
   if (!writable) {
-    err << "flange calibrate: --out " << options.out
-        << ": cannot write (the folder must exist and be writable)\n";
-    return kExitFailure;
+    throw std::runtime_error("--out " + options.out +
+                             ": cannot write (the folder must exist and be writable)");
   }
-  try {
-    if (options.data.empty() && !options.store) {
-      throw InputError("--data DB.csv or --store URL is required");
-    }
-    if (options.append && !options.data.empty()) {
-      const std::size_t added = host::append_to_database(options.data, *options.append);
-      out << fmt::format("appended {} rows from {} to {}\n", added, *options.append, options.data);
-    }
-    std::unique_ptr<host::Store> store;
-    std::vector<std::int64_t> session_ids;
-    const Calibration calibration = options.store
-                                        ? calibrate_from_store(options, store, session_ids, out)
-                                        : calibrate_database(options.data, options.regression);
-    print_calibration(calibration, out);
-    const auto json = calibration_json(calibration, runtime::generated_by(command_line));
-    std::ofstream file(options.out, std::ios::binary);
-    file << json.dump(1) << "\n";
-    file.close();
-    if (!file) {
-      err << "flange calibrate: --out " << options.out << ": cannot write\n";
-      return kExitFailure;
-    }
-    out << "  wrote " << options.out << "\n";
-    if (store) {
-      const std::int64_t id =
-          store->record_calibration({format_utc_time(now_utc_s()), options.sensor, json.dump(1),
-                                     calibration.rows - calibration.rows_without_reference,
-                                     calibration.fit.stats.rmse_mm, session_ids});
-      out << fmt::format("  kept in {} as calibration {}\n", store->name(), id);
-    }
-    return kExitOk;
-  } catch (const InputError& error) {
-    err << "flange calibrate: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const host::StoreUrlError& error) {
-    err << "flange calibrate: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const host::StoreError& error) {
-    err << "flange calibrate: " << error.what() << "\n";
-    return kExitFailure;
+  if (options.data.empty() && !options.store) {
+    throw InputError("--data DB.csv or --store URL is required");
   }
+  if (options.append && !options.data.empty()) {
+    const std::size_t added = host::append_to_database(options.data, *options.append);
+    out << fmt::format("appended {} rows from {} to {}\n", added, *options.append, options.data);
+  }
+  std::unique_ptr<host::Store> store;
+  std::vector<std::int64_t> session_ids;
+  const Calibration calibration = options.store
+                                      ? calibrate_from_store(options, store, session_ids, out)
+                                      : calibrate_database(options.data, options.regression);
+  print_calibration(calibration, out);
+  const auto json = calibration_json(calibration, runtime::generated_by(command_line));
+  std::ofstream file(options.out, std::ios::binary);
+  file << json.dump(1) << "\n";
+  file.close();
+  if (!file) throw std::runtime_error("--out " + options.out + ": cannot write");
+  out << "  wrote " << options.out << "\n";
+  if (store) {
+    const std::int64_t id =
+        store->record_calibration({format_utc_time(now_utc_s()), options.sensor, json.dump(1),
+                                   calibration.rows - calibration.rows_without_reference,
+                                   calibration.fit.stats.rmse_mm, session_ids});
+    out << fmt::format("  kept in {} as calibration {}\n", store->name(), id);
+  }
+  return kExitOk;
 }
 
 }  // namespace flange::cli

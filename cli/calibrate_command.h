@@ -23,8 +23,9 @@ struct CalibrateOptions {
 };
 
 CLI::App* add_calibrate_command(CLI::App& app, CalibrateOptions& options);
+// Returns 0; throws host::InputError or host::StoreUrlError for a bad input (2), and
+// host::StoreError or std::runtime_error when the store or --out cannot be written (1).
 int run_calibrate_command(const CalibrateOptions& options,
-                          const std::vector<std::string>& command_line, std::ostream& out,
-                          std::ostream& err);
+                          const std::vector<std::string>& command_line, std::ostream& out);
 
 }  // namespace flange::cli

@@ -12,6 +12,7 @@
 #include "design_command.h"
 #include "diagnose_command.h"
 #include "diagnose_selftest_command.h"
+#include "exit_status.h"
 #include "hw_diagnose_command.h"
 #include "input_notes.h"
 #include "maintenance_command.h"
@@ -90,20 +91,34 @@ struct Subcommands {
     diagnose->get_option("--hw")->excludes("--selftest");
   }
 
-  // Runs the parsed subcommand; its exit status.
+  // Runs the parsed subcommand; its exit status. It reports a failure by throwing, and
+  // report_exit (exit_status.h) turns what it throws into the status and the line on `err`.
   int run_parsed(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    if (design->parsed()) return run_design_command(design_options, args, out, err);
-    if (calibrate->parsed()) return run_calibrate_command(calibrate_options, args, out, err);
-    if (run->parsed()) return run_run_command(run_options, args, out, err);
+    if (design->parsed()) return run_design_command(design_options, args, out);
+    if (calibrate->parsed()) return run_calibrate_command(calibrate_options, args, out);
+    if (run->parsed()) return run_run_command(run_options, args, out);
     if (demo->parsed()) return run_demo_command(demo_options, out, err);
-    if (simulate->parsed()) return run_simulate_command(simulate_options, args, out, err);
+    if (simulate->parsed()) return run_simulate_command(simulate_options, args, out);
     if (cosim->parsed()) return run_cosim_command(cosim_options, out, err);
     if (synth->parsed()) return run_synth_command(synth_options, out, err);
     if (stream->parsed()) return run_stream_command(stream_options, out, err);
     if (diagnose->parsed()) return run_diagnose_layer(out, err);
     if (wear->parsed()) return run_wear_command(wear_options, args, out, err);
-    if (maintenance->parsed()) return run_maintenance_command(maintenance_options, out, err);
+    if (maintenance->parsed()) return run_maintenance_command(maintenance_options, out);
     return kExitBadArgument;
+  }
+
+  // The name the parsed subcommand's errors start with: "flange design", and for the layers of
+  // diagnose "flange diagnose --hw", "flange diagnose --selftest [--reality alt]".
+  std::string command_name(const CLI::App& app) const {
+    std::string name = "flange";
+    for (const CLI::App* sub : app.get_subcommands()) name += " " + sub->get_name();
+    if (diagnose->parsed() && hw_diagnose_options.hw) return name + " --hw";
+    if (diagnose->parsed() && selftest_options.selftest) {
+      return name +
+             (selftest_options.reality == "alt" ? " --selftest --reality alt" : " --selftest");
+    }
+    return name;
   }
 
   // --hw, --selftest or the data layer.
@@ -119,9 +134,9 @@ struct Subcommands {
       selftest_options.run.seed = diagnose_options.seed;
       selftest_options.run.bootstrap_rounds = diagnose_options.bootstrap_rounds;
       if (!diagnose_options.out.empty()) selftest_options.out = diagnose_options.out;
-      return run_selftest_command(selftest_options, out, err);
+      return run_selftest_command(selftest_options, out);
     }
-    return run_diagnose_command(diagnose_options, out, err);
+    return run_diagnose_command(diagnose_options, out);
   }
 };
 
@@ -132,12 +147,8 @@ std::optional<int> parse_command_line(CLI::App& app, const std::vector<std::stri
   for (const std::string& arg : args) argv.push_back(arg.c_str());
   try {
     app.parse(static_cast<int>(argv.size()), argv.data());
-  } catch (const CLI::CallForHelp& help) {
-    return app.exit(help, out, err);
-  } catch (const CLI::CallForAllHelp& help) {
-    return app.exit(help, out, err);
-  } catch (const CLI::CallForVersion& version) {
-    return app.exit(version, out, err);
+  } catch (const CLI::Success& help_or_version) {  // --help, --help-all, --version: status 0
+    return app.exit(help_or_version, out, err);
   } catch (const CLI::ParseError& error) {
     std::string where = "flange";
     const CLI::App* parsed = &app;
@@ -169,9 +180,8 @@ int run_flange(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (const std::optional<int> status = parse_command_line(app, args, out, err)) return *status;
   try {
     return subcommands.run_parsed(args, out, err);
-  } catch (const std::exception& error) {
-    err << "flange: " << error.what() << "\n";
-    return kExitFailure;
+  } catch (const std::exception& error) {  // the one handler: exit_status.h's table
+    return report_exit(subcommands.command_name(app), error, err);
   }
 }
 

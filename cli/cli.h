@@ -8,14 +8,10 @@
 #include <string_view>
 #include <vector>
 
+#include "exit_status.h"
 #include "version_command.h"
 
 namespace flange::cli {
-
-// Exit statuses shared by every subcommand (README, "Exit status").
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailure = 1;      // a check failed or a file could not be read/written
-inline constexpr int kExitBadArgument = 2;  // an argument or input value is out of range
 
 // Runs `flange <args...>` and returns its exit status. `commit` is the git commit `flange
 // --version` names: main.cpp passes the one recorded at build time.

@@ -46,32 +46,23 @@ CLI::App* add_cosim_command(CLI::App& app, CosimCommandOptions& options) {
 
 int run_cosim_command(const CosimCommandOptions& options, std::ostream& out, std::ostream& err) {
   const tb::CosimOptions& run = options.run;
-  // Bad input fails here, before anything is built.
+  // Bad input fails here, before anything is built: model::FilterJsonError for the set's
+  // filter.json, std::invalid_argument for the stimulus and the files beside it (status 2).
   const fs::path set_dir = fs::absolute(run.coeffs).parent_path();
   const fs::path package = set_dir / "iir_coeffs_pkg.sv";
   const fs::path rom = set_dir / "coeffs.mem";
-  try {
-    const model::CoreConfig config = model::load_core_config(run.coeffs);
-    const model::FloatDesign design = model::load_float_design(run.coeffs);
-    tb::cosim_samples(run, config, design);
-    for (const fs::path& f : {package, rom}) {
-      if (!fs::is_regular_file(f)) {
-        throw std::invalid_argument(fmt::format("{}: missing (it must sit beside {})", f.string(),
-                                                run.coeffs.filename().string()));
-      }
+  const model::CoreConfig config = model::load_core_config(run.coeffs);
+  const model::FloatDesign design = model::load_float_design(run.coeffs);
+  tb::cosim_samples(run, config, design);
+  for (const fs::path& f : {package, rom}) {
+    if (!fs::is_regular_file(f)) {
+      throw std::invalid_argument(fmt::format("{}: missing (it must sit beside {})", f.string(),
+                                              run.coeffs.filename().string()));
     }
-  } catch (const std::exception& e) {
-    err << "flange cosim: " << e.what() << "\n";
-    return kExitBadArgument;
   }
 
-  fs::path runner;
-  try {
-    runner = tb::ensure_verilated_runner(run.coeffs, err);
-  } catch (const std::runtime_error& e) {
-    err << "flange cosim: " << e.what() << "\n";
-    return kExitFailure;
-  }
+  // A runner that cannot be built is a failure (std::runtime_error, status 1).
+  const fs::path runner = tb::ensure_verilated_runner(run.coeffs, err);
   const fs::path dir = runner.parent_path().parent_path();
   std::vector<std::string> args = {runner.string(),
                                    "--coeffs",
@@ -93,10 +84,7 @@ int run_cosim_command(const CosimCommandOptions& options, std::ostream& out, std
   out << tb::read_whole_file(run_out);
   fs::remove(run_out);
   fs::remove(run_err);
-  if (status == 127) {
-    err << "flange cosim: cannot start " << runner.string() << "\n";
-    return kExitFailure;
-  }
+  if (status == 127) throw std::runtime_error("cannot start " + runner.string());
   return status;
 }
 

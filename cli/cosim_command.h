@@ -19,7 +19,8 @@ CLI::App* add_cosim_command(CLI::App& app, CosimCommandOptions& options);
 // The RTL is Verilated per coefficient set (its package differs), so the first run for a set
 // builds a runner with Verilator (about 15 s) into a cache folder keyed by the content of the RTL,
 // the set's package and ROM image and the runner's sources (tb/runner/verilated_runner.h says
-// where). Returns 0, 1 (mismatch, or the build failed) or 2 (bad input).
+// where). Returns the runner's status (0, or 1 after the first mismatch); throws for bad input
+// (2) and for a runner that cannot be built or started (1).
 int run_cosim_command(const CosimCommandOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace flange::cli

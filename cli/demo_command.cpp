@@ -164,6 +164,7 @@ void compare_with_thesis_chain(Demo& demo, const std::string& run_text) {
         "  (eq. 4.15 as printed has a DC gain of {:.4f}, not 1: {:+.3f} mm of bias at 6 mm)\n",
         thesis.dc_gain, (thesis.dc_gain - 1.0) * 6.0);
   } catch (const InputError& error) {
+    // Recovers: a failed step is counted (the demo exits 1 at the end) and the demo goes on.
     demo.must(1, std::string("the thesis chain: ") + error.what());
   }
 }
@@ -217,6 +218,7 @@ bool show_lateral_mode_aliasing(Demo& demo, const std::string& measurement) {
         alias.fast_gain_at_mode_db, alias.mode_hz, alias.fast_rms_mm,
         alias.slow_rms_mm / alias.fast_rms_mm);
   } catch (const std::exception& error) {
+    // Recovers: a failed step is counted (the demo exits 1 at the end) and the demo goes on.
     demo.must(1, std::string("the aliasing analysis: ") + error.what());
   }
 

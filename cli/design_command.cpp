@@ -20,7 +20,6 @@ using coeffs::BadArgument;
 using coeffs::DesignRecord;
 using coeffs::DesignRejected;
 using coeffs::DesignRequest;
-using coeffs::kExitRejected;
 using coeffs::Structure;
 
 CLI::App* add_design_command(CLI::App& app, DesignOptions& options) {
@@ -109,45 +108,34 @@ DesignRecord design_record(const DesignOptions& options, const DesignRequest& re
 }  // namespace
 
 int run_design_command(const DesignOptions& options, const std::vector<std::string>& command_line,
-                       std::ostream& out, std::ostream& err) {
-  try {
-    DesignRequest request = options.request;
-    request.structure = options.structure == "df1" ? Structure::kDf1 : Structure::kSos;
-    if (!std::isfinite(request.limits.spec_tolerance_db) || request.limits.spec_tolerance_db < 0) {
-      throw BadArgument("--spec-tolerance-db: must be a finite number >= 0");
-    }
-    if (!std::isfinite(request.limits.max_passband_deviation_db) ||
-        request.limits.max_passband_deviation_db <= 0) {
-      throw BadArgument("--max-passband-deviation-db: must be a finite number > 0");
-    }
-    if (!std::isfinite(request.limits.max_dc_error_db) || request.limits.max_dc_error_db <= 0) {
-      throw BadArgument("--max-dc-error-db: must be a finite number > 0");
-    }
-    if (options.channels < 1 || options.channels > coeffs::kMaxChannels) {
-      throw BadArgument(fmt::format("--channels: {} is outside 1 to {}", options.channels,
-                                    coeffs::kMaxChannels));
-    }
-    DesignRecord record =
-        design_record(options, request, runtime::generated_by(command_without_out(command_line)));
-    out << design_report(record);
-    if (!record.analysis.rejection.empty()) {
-      err << "flange design: " << record.analysis.rejection << "\n";
-      return kExitRejected;
-    }
-    if (options.out_dir) {
-      write_design(record, *options.out_dir, !options.no_plot);
-      out << "  wrote " << options.out_dir->string() << "/{" << coeffs::kFilterJsonFile << ", "
-          << coeffs::kRomImageFile << ", " << coeffs::kPackageFile << (options.no_plot ? "" : ", ")
-          << (options.no_plot ? "" : coeffs::kPlotFile) << "}\n";
-    }
-    return 0;
-  } catch (const BadArgument& error) {
-    err << "flange design: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const DesignRejected& error) {
-    err << "flange design: " << error.what() << "\n";
-    return kExitRejected;
+                       std::ostream& out) {
+  DesignRequest request = options.request;
+  request.structure = options.structure == "df1" ? Structure::kDf1 : Structure::kSos;
+  if (!std::isfinite(request.limits.spec_tolerance_db) || request.limits.spec_tolerance_db < 0) {
+    throw BadArgument("--spec-tolerance-db: must be a finite number >= 0");
   }
+  if (!std::isfinite(request.limits.max_passband_deviation_db) ||
+      request.limits.max_passband_deviation_db <= 0) {
+    throw BadArgument("--max-passband-deviation-db: must be a finite number > 0");
+  }
+  if (!std::isfinite(request.limits.max_dc_error_db) || request.limits.max_dc_error_db <= 0) {
+    throw BadArgument("--max-dc-error-db: must be a finite number > 0");
+  }
+  if (options.channels < 1 || options.channels > coeffs::kMaxChannels) {
+    throw BadArgument(
+        fmt::format("--channels: {} is outside 1 to {}", options.channels, coeffs::kMaxChannels));
+  }
+  DesignRecord record =
+      design_record(options, request, runtime::generated_by(command_without_out(command_line)));
+  out << design_report(record);
+  if (!record.analysis.rejection.empty()) throw DesignRejected(record.analysis.rejection);
+  if (options.out_dir) {
+    write_design(record, *options.out_dir, !options.no_plot);
+    out << "  wrote " << options.out_dir->string() << "/{" << coeffs::kFilterJsonFile << ", "
+        << coeffs::kRomImageFile << ", " << coeffs::kPackageFile << (options.no_plot ? "" : ", ")
+        << (options.no_plot ? "" : coeffs::kPlotFile) << "}\n";
+  }
+  return kExitOk;
 }
 
 }  // namespace flange::cli

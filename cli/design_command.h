@@ -27,9 +27,10 @@ struct DesignOptions {
 CLI::App* add_design_command(CLI::App& app, DesignOptions& options);
 
 // Runs a parsed design command. `command_line` is how the command was given, recorded in every
-// generated file without its --out. Returns the exit status (0, 2 bad argument, 3 rejected).
+// generated file without its --out. Returns 0; throws coeffs::BadArgument for a bad argument (2)
+// and coeffs::DesignRejected for a design that would not work in hardware (3).
 int run_design_command(const DesignOptions& options, const std::vector<std::string>& command_line,
-                       std::ostream& out, std::ostream& err);
+                       std::ostream& out);
 
 // "flange design ..." with any --out argument left out, so that a set regenerated elsewhere is
 // byte-identical.

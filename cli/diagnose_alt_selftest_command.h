@@ -11,8 +11,8 @@
 
 namespace flange::cli {
 
-// 0 when every aim is met, 1 when one is missed or a file cannot be written, 2 on a bad argument.
-int run_alt_selftest_command(const SelftestCommandOptions& options, std::ostream& out,
-                             std::ostream& err);
+// 0 when every aim is met, 1 when one is missed; throws std::runtime_error when a file cannot be
+// written (1) and host::InputError on a bad argument (2).
+int run_alt_selftest_command(const SelftestCommandOptions& options, std::ostream& out);
 
 }  // namespace flange::cli

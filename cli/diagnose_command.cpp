@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <ostream>
+#include <stdexcept>
 
 #include "cli.h"
 #include "diagnose_report.h"
@@ -47,72 +48,55 @@ CLI::App* add_diagnose_command(CLI::App& app, DiagnoseCommandOptions& options) {
   return cmd;
 }
 
-int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& out,
-                         std::ostream& err) {
-  try {
-    if (options.real.empty())
-      throw host::InputError(
-          "--real: a recording is required (or --hw --coeffs DIR/filter.json for the float design "
-          "against the RTL)");
-    if (options.out.empty()) throw host::InputError("--out: an output folder is required");
-    if (!options.holdout && !options.holdout_fraction) {
-      throw host::InputError("give --holdout B.csv or --holdout-fraction F (0.05 to 0.5)");
-    }
-    diagnose::DiagnoseOptions diagnose_options;
-    if (options.twin) diagnose_options.twin = sim::load_twin(*options.twin);
-    diagnose_options.seed = options.seed;
-    diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
-
-    if (options.real_start.has_value() != options.holdout_start.has_value()) {
-      throw host::InputError("--real-start and --holdout-start go together: give both or neither");
-    }
-    diagnose::RecordingSeries real = diagnose::read_recording_series(options.real);
-    if (options.real_start) real.start_utc_s = parse_utc_time(*options.real_start, "--real-start");
-    diagnose::HoldoutSplit split;
-    if (options.holdout) {
-      split.calibration = real;
-      split.heldout = diagnose::read_recording_series(*options.holdout);
-      if (options.holdout_start) {
-        split.heldout.start_utc_s = parse_utc_time(*options.holdout_start, "--holdout-start");
-      }
-      split.heldout_name = *options.holdout;
-      diagnose::check_separate_sessions(split.calibration, split.heldout);
-    } else {
-      split = diagnose::split_holdout(real, *options.holdout_fraction);
-    }
-    const diagnose::DiagnosisResult result =
-        diagnose::diagnose_in_detail(split.calibration, split.heldout, diagnose_options);
-
-    std::filesystem::create_directories(options.out);
-    const std::filesystem::path json_path = std::filesystem::path(options.out) / "diagnosis.json";
-    std::ofstream json(json_path, std::ios::binary);
-    json << diagnose::diagnosis_json(result, options.real, split.heldout_name).dump(2) << "\n";
-    json.close();
-    if (!json) {
-      err << "flange diagnose: " << json_path.string() << ": cannot write\n";
-      return kExitFailure;
-    }
-    const std::filesystem::path twin_path =
-        std::filesystem::path(options.out) / diagnose::kImprovedTwinFile;
-    try {
-      sim::save_twin(result.improved_twin.twin, twin_path);
-    } catch (const std::runtime_error& error) {
-      err << "flange diagnose: " << error.what() << "\n";
-      return kExitFailure;
-    }
-    diagnose::write_diagnosis_report(options.out, result, options.real);
-    out << diagnose::diagnosis_summary(result);
-    out << "  wrote " << json_path.string() << ", "
-        << (std::filesystem::path(options.out) / "report.html").string() << " and "
-        << twin_path.string() << "\n";
-    return kExitOk;
-  } catch (const host::InputError& error) {
-    err << "flange diagnose: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const sim::BadArgument& error) {
-    err << "flange diagnose: " << error.what() << "\n";
-    return kExitBadArgument;
+int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& out) {
+  if (options.real.empty())
+    throw host::InputError(
+        "--real: a recording is required (or --hw --coeffs DIR/filter.json for the float design "
+        "against the RTL)");
+  if (options.out.empty()) throw host::InputError("--out: an output folder is required");
+  if (!options.holdout && !options.holdout_fraction) {
+    throw host::InputError("give --holdout B.csv or --holdout-fraction F (0.05 to 0.5)");
   }
+  diagnose::DiagnoseOptions diagnose_options;
+  if (options.twin) diagnose_options.twin = sim::load_twin(*options.twin);
+  diagnose_options.seed = options.seed;
+  diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
+
+  if (options.real_start.has_value() != options.holdout_start.has_value()) {
+    throw host::InputError("--real-start and --holdout-start go together: give both or neither");
+  }
+  diagnose::RecordingSeries real = diagnose::read_recording_series(options.real);
+  if (options.real_start) real.start_utc_s = parse_utc_time(*options.real_start, "--real-start");
+  diagnose::HoldoutSplit split;
+  if (options.holdout) {
+    split.calibration = real;
+    split.heldout = diagnose::read_recording_series(*options.holdout);
+    if (options.holdout_start) {
+      split.heldout.start_utc_s = parse_utc_time(*options.holdout_start, "--holdout-start");
+    }
+    split.heldout_name = *options.holdout;
+    diagnose::check_separate_sessions(split.calibration, split.heldout);
+  } else {
+    split = diagnose::split_holdout(real, *options.holdout_fraction);
+  }
+  const diagnose::DiagnosisResult result =
+      diagnose::diagnose_in_detail(split.calibration, split.heldout, diagnose_options);
+
+  std::filesystem::create_directories(options.out);
+  const std::filesystem::path json_path = std::filesystem::path(options.out) / "diagnosis.json";
+  std::ofstream json(json_path, std::ios::binary);
+  json << diagnose::diagnosis_json(result, options.real, split.heldout_name).dump(2) << "\n";
+  json.close();
+  if (!json) throw std::runtime_error(json_path.string() + ": cannot write");
+  const std::filesystem::path twin_path =
+      std::filesystem::path(options.out) / diagnose::kImprovedTwinFile;
+  sim::save_twin(result.improved_twin.twin, twin_path);
+  diagnose::write_diagnosis_report(options.out, result, options.real);
+  out << diagnose::diagnosis_summary(result);
+  out << "  wrote " << json_path.string() << ", "
+      << (std::filesystem::path(options.out) / "report.html").string() << " and "
+      << twin_path.string() << "\n";
+  return kExitOk;
 }
 
 }  // namespace flange::cli

@@ -26,7 +26,8 @@ struct DiagnoseCommandOptions {
 
 CLI::App* add_diagnose_command(CLI::App& app, DiagnoseCommandOptions& options);
 
-int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& out,
-                         std::ostream& err);
+// Returns 0; throws host::InputError or sim::BadArgument for a bad recording, option or twin
+// file (2) and std::runtime_error for an output that cannot be written (1).
+int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& out);
 
 }  // namespace flange::cli

@@ -26,9 +26,8 @@ struct SelftestCommandOptions {
 // are the data layer's).
 void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options);
 
-// 0 when every aim is met, 1 when one is missed (the summary says which) or a file cannot be
-// written, 2 on a bad argument.
-int run_selftest_command(const SelftestCommandOptions& options, std::ostream& out,
-                         std::ostream& err);
+// 0 when every aim is met, 1 when one is missed (the summary says which); throws
+// std::runtime_error when a file cannot be written (1) and host::InputError on a bad argument (2).
+int run_selftest_command(const SelftestCommandOptions& options, std::ostream& out);
 
 }  // namespace flange::cli

@@ -13,10 +13,9 @@
 
 namespace flange::cli {
 
-// Returns 0, 1 (a file cannot be written) or 2 (a bad argument: one line naming the option and
-// its valid range).
+// Returns 0; throws std::runtime_error when a file cannot be written (1) and
+// std::invalid_argument for a bad argument (2: one line naming the option and its valid range).
 int run_fleet_alt_simulation(const SimulateOptions& options,
-                             const std::vector<std::string>& command_line, std::ostream& out,
-                             std::ostream& err);
+                             const std::vector<std::string>& command_line, std::ostream& out);
 
 }  // namespace flange::cli

@@ -253,7 +253,8 @@ Fleet set_up_fleet(const SimulateOptions& options) {
   if (!options.store) {
     throw BadArgument("--store is required with --scenario fleet: sqlite:PATH or postgresql://...");
   }
-  const host::StoreUrl url = host::parse_store_url(*options.store);
+  host::StoreUrl url;
+  naming_option("--store", [&] { url = host::parse_store_url(*options.store); });
   Fleet fleet;
   fleet.truth = sim::plan_fleet(settings);
   fleet.twin = sim::twin_with_effects(options.twin, std::nullopt, options.effects);
@@ -285,52 +286,36 @@ void print_truth(const Fleet& fleet, int runs, int reprofiled_wheels, const fs::
 }  // namespace
 
 int run_fleet_simulation(const SimulateOptions& options,
-                         const std::vector<std::string>& command_line, std::ostream& out,
-                         std::ostream& err) {
-  try {
-    Fleet fleet = set_up_fleet(options);
-    const sim::FleetSettings& settings = fleet.truth.settings;
-    out << fmt::format(
-        "simulate: fleet scenario, {} locomotives x {} days from {}, seed {}; each running day "
-        "{} s of 12 wheels at {} Hz\n",
-        settings.locomotives, settings.days, sim::iso_date(settings.start_day), settings.seed,
-        fleet.recording.duration_s, fleet.recording.fs_hz);
-    if (options.save_twin) sim::save_twin(fleet.twin, *options.save_twin);
-    register_fleet(fleet);
-    calibrate_depot(fleet, settings.seed);
-    std::vector<double> odometer_km(fleet.truth.locomotives.size(), 0.0);
-    int runs = 0, reprofiled = 0;
-    for (int day = 0; day < settings.days; ++day) {
-      for (int l = 0; l < settings.locomotives; ++l) {
-        const double km = fleet.truth.locomotives[static_cast<std::size_t>(l)]
-                              .day_km[static_cast<std::size_t>(day)];
-        reprofiled += record_reprofilings(fleet, l, day, odometer_km[static_cast<std::size_t>(l)]);
-        if (km > 0.0) {
-          run_day(fleet, l, day, odometer_km[static_cast<std::size_t>(l)]);
-          ++runs;
-        }
-        odometer_km[static_cast<std::size_t>(l)] += km;
+                         const std::vector<std::string>& command_line, std::ostream& out) {
+  Fleet fleet = set_up_fleet(options);
+  const sim::FleetSettings& settings = fleet.truth.settings;
+  out << fmt::format(
+      "simulate: fleet scenario, {} locomotives x {} days from {}, seed {}; each running day "
+      "{} s of 12 wheels at {} Hz\n",
+      settings.locomotives, settings.days, sim::iso_date(settings.start_day), settings.seed,
+      fleet.recording.duration_s, fleet.recording.fs_hz);
+  if (options.save_twin) sim::save_twin(fleet.twin, *options.save_twin);
+  register_fleet(fleet);
+  calibrate_depot(fleet, settings.seed);
+  std::vector<double> odometer_km(fleet.truth.locomotives.size(), 0.0);
+  int runs = 0, reprofiled = 0;
+  for (int day = 0; day < settings.days; ++day) {
+    for (int l = 0; l < settings.locomotives; ++l) {
+      const double km = fleet.truth.locomotives[static_cast<std::size_t>(l)]
+                            .day_km[static_cast<std::size_t>(day)];
+      reprofiled += record_reprofilings(fleet, l, day, odometer_km[static_cast<std::size_t>(l)]);
+      if (km > 0.0) {
+        run_day(fleet, l, day, odometer_km[static_cast<std::size_t>(l)]);
+        ++runs;
       }
+      odometer_km[static_cast<std::size_t>(l)] += km;
     }
-    const fs::path truth = fleet.dir / "fleet_truth.json";
-    sim::write_fleet_truth(truth, fleet.truth, fleet.recording,
-                           runtime::generated_by(command_line));
-    fs::remove_all(fleet.days_dir);
-    print_truth(fleet, runs, reprofiled, truth, out);
-    return kExitOk;
-  } catch (const BadArgument& error) {
-    err << "flange simulate: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const host::StoreUrlError& error) {
-    err << "flange simulate: --store: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const host::InputError& error) {
-    err << "flange simulate: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const std::exception& error) {
-    err << "flange simulate: " << error.what() << "\n";
-    return kExitFailure;
   }
+  const fs::path truth = fleet.dir / "fleet_truth.json";
+  sim::write_fleet_truth(truth, fleet.truth, fleet.recording, runtime::generated_by(command_line));
+  fs::remove_all(fleet.days_dir);
+  print_truth(fleet, runs, reprofiled, truth, out);
+  return kExitOk;
 }
 
 }  // namespace flange::cli

@@ -14,10 +14,9 @@
 
 namespace flange::cli {
 
-// Returns 0, 1 (the store or a file cannot be written) or 2 (a bad argument: one line naming
-// the option and its valid range).
+// Returns 0; throws when the store or a file cannot be written (1) and for a bad argument (2:
+// one line naming the option and its valid range; a store URL's with --store before it).
 int run_fleet_simulation(const SimulateOptions& options,
-                         const std::vector<std::string>& command_line, std::ostream& out,
-                         std::ostream& err);
+                         const std::vector<std::string>& command_line, std::ostream& out);
 
 }  // namespace flange::cli

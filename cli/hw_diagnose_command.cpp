@@ -42,38 +42,17 @@ void add_hw_diagnose_shared_options(CLI::App& diagnose, HwDiagnoseOptions& optio
 }
 
 int run_hw_diagnosis(const HwDiagnoseOptions& options, std::ostream& out, std::ostream& err) {
-  const std::string who = "flange diagnose --hw";
   const diagnose::HwRequest& request = options.request;
-  diagnose::HwInputs in;
-  diagnose::HwDiagnosis d;
-  try {
-    in = diagnose::load_hw_inputs(request);
-    d = request.printed() ? diagnose::diagnose_printed(request, in)
-                          : diagnose::diagnose_rtl(request, in, err);
-  } catch (const host::InputError& e) {
-    err << who << ": " << e.what() << "\n";
-    return kExitBadArgument;
-  } catch (const std::invalid_argument& e) {
-    err << who << ": " << e.what() << "\n";
-    return kExitBadArgument;
-  } catch (const std::exception& e) {
-    err << who << ": " << e.what() << "\n";
-    return kExitFailure;
-  }
+  const diagnose::HwInputs in = diagnose::load_hw_inputs(request);
+  diagnose::HwDiagnosis d = request.printed() ? diagnose::diagnose_printed(request, in)
+                                              : diagnose::diagnose_rtl(request, in, err);
   d.coeffs = request.coeffs.string();
   d.stimulus = request.stimulus;
   d.seed = request.seed;
   d.sample_width = in.config.sample_width;
   d.requested_samples = request.samples;
   diagnose::print_hw_diagnosis(d, out);
-  if (options.out) {
-    try {
-      diagnose::write_hw_diagnosis(d, *options.out);
-    } catch (const std::exception& e) {
-      err << who << ": " << e.what() << "\n";
-      return kExitFailure;
-    }
-  }
+  if (options.out) diagnose::write_hw_diagnosis(d, *options.out);
   if (request.printed()) return kExitOk;
   return d.explained() ? kExitOk : kExitFailure;
 }

@@ -30,8 +30,9 @@ void add_hw_diagnose_shared_options(CLI::App& diagnose, HwDiagnoseOptions& optio
 
 // Prints the step table and one final line on `out`. Returns 0 when the gap is explained (zero
 // after the last step; staged model = bit-accurate model = RTL word for word) or, in printed mode,
-// when the diagnosis is made (unstable or not); 1 when the RTL disagrees or cannot be built, or a
-// file cannot be written; 2 on bad input (one line on `err` naming the option or file and field).
+// when the diagnosis is made (unstable or not); 1 when the RTL disagrees. Throws when the RTL
+// cannot be built or a file cannot be written (1) and on bad input (2: host::InputError or
+// std::invalid_argument, one line naming the option or file and field).
 int run_hw_diagnosis(const HwDiagnoseOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace flange::cli

@@ -88,39 +88,27 @@ CLI::App* add_maintenance_command(CLI::App& app, MaintenanceOptions& options) {
   return cmd;
 }
 
-int run_maintenance_command(const MaintenanceOptions& options, std::ostream& out,
-                            std::ostream& err) {
-  try {
-    const std::vector<host::WheelKey> wheels = event_wheels(options);
-    const std::string at = format_utc_time(parse_utc_time(options.at, "--at"));
-    const std::unique_ptr<host::Store> store = host::open_store(options.store);
-    for (const host::WheelKey& wheel : wheels) {
-      host::MaintenanceRecord event;
-      event.wheel = wheel;
-      event.at = at;
-      event.odometer_km = options.odometer_km.value_or(0.0);
-      event.kind = options.kind;
-      event.note = options.kind == "wheelset_moved"
-                       ? wheelset_moved_note(*options.from_axle, options.note)
-                       : options.note;
-      store->record_maintenance(event);
-      if (options.kind == "sensor_replaced" && !options.sensor.empty()) {
-        store->upsert_sensor({options.sensor, "", wheel, at});
-      }
+int run_maintenance_command(const MaintenanceOptions& options, std::ostream& out) {
+  const std::vector<host::WheelKey> wheels = event_wheels(options);
+  const std::string at = format_utc_time(parse_utc_time(options.at, "--at"));
+  const std::unique_ptr<host::Store> store = host::open_store(options.store);
+  for (const host::WheelKey& wheel : wheels) {
+    host::MaintenanceRecord event;
+    event.wheel = wheel;
+    event.at = at;
+    event.odometer_km = options.odometer_km.value_or(0.0);
+    event.kind = options.kind;
+    event.note = options.kind == "wheelset_moved"
+                     ? wheelset_moved_note(*options.from_axle, options.note)
+                     : options.note;
+    store->record_maintenance(event);
+    if (options.kind == "sensor_replaced" && !options.sensor.empty()) {
+      store->upsert_sensor({options.sensor, "", wheel, at});
     }
-    out << fmt::format("maintenance: {} of {} at {} recorded on {} wheel(s) in {}\n", options.kind,
-                       options.locomotive, at, wheels.size(), store->name());
-    return kExitOk;
-  } catch (const InputError& error) {
-    err << "flange maintenance: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const host::StoreUrlError& error) {
-    err << "flange maintenance: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const host::StoreError& error) {
-    err << "flange maintenance: " << error.what() << "\n";
-    return kExitFailure;
   }
+  out << fmt::format("maintenance: {} of {} at {} recorded on {} wheel(s) in {}\n", options.kind,
+                     options.locomotive, at, wheels.size(), store->name());
+  return kExitOk;
 }
 
 }  // namespace flange::cli

@@ -34,9 +34,9 @@ struct MaintenanceOptions {
 
 CLI::App* add_maintenance_command(CLI::App& app, MaintenanceOptions& options);
 
-// Returns 0, 1 (the store cannot be written) or 2 (a bad argument: one line naming it).
-int run_maintenance_command(const MaintenanceOptions& options, std::ostream& out,
-                            std::ostream& err);
+// Returns 0; throws host::StoreError when the store cannot be written (1) and host::InputError
+// or host::StoreUrlError for a bad argument (2: one line naming it).
+int run_maintenance_command(const MaintenanceOptions& options, std::ostream& out);
 
 // The note a wheelset_moved event carries, "from axle N ...", and the axle read back from it
 // (nullopt for any other note).

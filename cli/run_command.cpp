@@ -156,23 +156,12 @@ CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options) {
 }
 
 int run_run_command(const RunCommandOptions& options, const std::vector<std::string>& command_line,
-                    std::ostream& out, std::ostream& err) {
-  try {
-    if (options.manifest) return run_manifest(options, command_line, out);
-    if (options.run.input.empty()) {
-      throw host::InputError("--input REC.csv or --manifest locomotive.json is required");
-    }
-    return run_recording(options, out);
-  } catch (const host::InputError& error) {
-    err << "flange run: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const host::StoreUrlError& error) {
-    err << "flange run: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const host::StoreError& error) {
-    err << "flange run: " << error.what() << "\n";
-    return kExitFailure;
+                    std::ostream& out) {
+  if (options.manifest) return run_manifest(options, command_line, out);
+  if (options.run.input.empty()) {
+    throw host::InputError("--input REC.csv or --manifest locomotive.json is required");
   }
+  return run_recording(options, out);
 }
 
 }  // namespace flange::cli

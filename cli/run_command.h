@@ -22,11 +22,11 @@ struct RunCommandOptions {
 
 CLI::App* add_run_command(CLI::App& app, RunCommandOptions& options);
 
-// Returns 0, 1 (a file could not be written, the RTL disagreed with the model, or the store
-// cannot be opened or written) or 2 (bad input or a malformed store URL: one line names the
-// file, line or field and the valid range). `command_line` is
-// recorded in a manifest run's summary.json.
+// Returns 0 or 1 (the RTL disagreed with the model); throws for a file that cannot be written
+// or a store that cannot be opened or written (1), and host::InputError or host::StoreUrlError
+// for bad input or a malformed store URL (2: one line names the file, line or field and the
+// valid range). `command_line` is recorded in a manifest run's summary.json.
 int run_run_command(const RunCommandOptions& options, const std::vector<std::string>& command_line,
-                    std::ostream& out, std::ostream& err);
+                    std::ostream& out);
 
 }  // namespace flange::cli

@@ -239,7 +239,7 @@ void print_header(const SimulateOptions& options, const SimulationPlan& plan, st
 
 // One recording, as every scenario has always written it.
 int simulate_recording(const SimulateOptions& options, const SimulationPlan& plan,
-                       std::ostream& out, std::ostream& err) {
+                       std::ostream& out) {
   std::unique_ptr<Scenario> scenario;
   if (plan.bench) {
     scenario = std::make_unique<BenchScenario>(plan.protocol, plan.fs_hz, plan.duration_s);
@@ -248,16 +248,10 @@ int simulate_recording(const SimulateOptions& options, const SimulationPlan& pla
   }
   SensorTwin twin(plan.config, plan.seed);
   std::ofstream csv(plan.out, std::ios::binary);
-  if (!csv) {
-    err << "flange simulate: " << plan.out.string() << ": cannot write the recording\n";
-    return kExitFailure;
-  }
+  if (!csv) throw std::runtime_error(plan.out.string() + ": cannot write the recording");
   const SimulationSummary summary = run_simulation(*scenario, twin, csv);
   csv.close();
-  if (!csv) {
-    err << "flange simulate: " << plan.out.string() << ": writing the recording failed\n";
-    return kExitFailure;
-  }
+  if (!csv) throw std::runtime_error(plan.out.string() + ": writing the recording failed");
   print_header(options, plan, summary.samples, out);
   out << fmt::format(
       "  reference clearance {:.3f} to {:.3f} mm, thermocouple {:.1f} to {:.1f} degC\n",
@@ -315,14 +309,12 @@ void print_wheels(const Locomotive& locomotive, const std::vector<SimulationSumm
 // Every wheel of the locomotive, each through its own twin, into DIR/channel_XX.csv, and
 // DIR/locomotive.json naming them.
 int simulate_locomotive(const SimulateOptions& options, const SimulationPlan& plan,
-                        const std::vector<std::string>& command_line, std::ostream& out,
-                        std::ostream& err) {
+                        const std::vector<std::string>& command_line, std::ostream& out) {
   const std::filesystem::path& dir = plan.out;
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   if (error || !std::filesystem::is_directory(dir)) {
-    err << "flange simulate: --out " << dir.string() << ": cannot create the folder\n";
-    return kExitFailure;
+    throw std::runtime_error("--out " + dir.string() + ": cannot create the folder");
   }
   Locomotive locomotive(plan.loco, *options.wheels, plan.fs_hz, plan.duration_s);
   std::vector<SensorTwin> twins;
@@ -332,9 +324,8 @@ int simulate_locomotive(const SimulateOptions& options, const SimulationPlan& pl
     twins.emplace_back(plan.config, sim::wheel_seed(plan.seed, c));
     files.emplace_back(dir / host::channel_file_name(c), std::ios::binary);
     if (!files.back()) {
-      err << "flange simulate: " << (dir / host::channel_file_name(c)).string()
-          << ": cannot write the recording\n";
-      return kExitFailure;
+      throw std::runtime_error((dir / host::channel_file_name(c)).string() +
+                               ": cannot write the recording");
     }
   }
   streams.reserve(files.size());
@@ -345,9 +336,8 @@ int simulate_locomotive(const SimulateOptions& options, const SimulationPlan& pl
     std::ofstream& file = files[static_cast<std::size_t>(c)];
     file.close();
     if (!file) {
-      err << "flange simulate: " << (dir / host::channel_file_name(c)).string()
-          << ": writing the recording failed\n";
-      return kExitFailure;
+      throw std::runtime_error((dir / host::channel_file_name(c)).string() +
+                               ": writing the recording failed");
     }
   }
   write_manifest(dir, locomotive.wheels(), command_line);
@@ -364,29 +354,13 @@ int simulate_locomotive(const SimulateOptions& options, const SimulationPlan& pl
 }  // namespace
 
 int run_simulate_command(const SimulateOptions& options,
-                         const std::vector<std::string>& command_line, std::ostream& out,
-                         std::ostream& err) {
-  try {
-    if (options.scenario == "fleet") return run_fleet_simulation(options, command_line, out, err);
-    if (options.scenario == "fleet-alt") {
-      return run_fleet_alt_simulation(options, command_line, out, err);
-    }
-    const SimulationPlan plan = plan_simulation(options);
-    if (options.save_twin) save_twin(plan.config, *options.save_twin);
-    if (options.wheels.value_or(1) > 1) {
-      return simulate_locomotive(options, plan, command_line, out, err);
-    }
-    return simulate_recording(options, plan, out, err);
-  } catch (const BadArgument& error) {
-    err << "flange simulate: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const std::ios_base::failure& error) {
-    err << "flange simulate: " << error.what() << "\n";
-    return kExitFailure;
-  } catch (const std::runtime_error& error) {
-    err << "flange simulate: " << error.what() << "\n";
-    return kExitFailure;
-  }
+                         const std::vector<std::string>& command_line, std::ostream& out) {
+  if (options.scenario == "fleet") return run_fleet_simulation(options, command_line, out);
+  if (options.scenario == "fleet-alt") return run_fleet_alt_simulation(options, command_line, out);
+  const SimulationPlan plan = plan_simulation(options);
+  if (options.save_twin) save_twin(plan.config, *options.save_twin);
+  if (options.wheels.value_or(1) > 1) return simulate_locomotive(options, plan, command_line, out);
+  return simulate_recording(options, plan, out);
 }
 
 }  // namespace flange::cli

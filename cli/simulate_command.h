@@ -36,11 +36,10 @@ struct SimulateOptions {
 // Registers the subcommand on `app`; the returned pointer tells whether it was chosen.
 CLI::App* add_simulate_command(CLI::App& app, SimulateOptions& options);
 
-// Runs a parsed simulate command. Returns 0, 1 (a file could not be written) or 2 (a bad
-// argument, effect or twin file; one line names it and its valid range). `command_line` goes
-// into a locomotive's manifest as the command that made it.
+// Runs a parsed simulate command. Returns 0; throws when a file cannot be written (1) and
+// sim::BadArgument for a bad argument, effect or twin file (2; one line names it and its valid
+// range). `command_line` goes into a locomotive's manifest as the command that made it.
 int run_simulate_command(const SimulateOptions& options,
-                         const std::vector<std::string>& command_line, std::ostream& out,
-                         std::ostream& err);
+                         const std::vector<std::string>& command_line, std::ostream& out);
 
 }  // namespace flange::cli

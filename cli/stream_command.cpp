@@ -7,11 +7,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "board_link.h"
 #include "cli.h"
 #include "input_error.h"
 #include "locomotive_manifest.h"
 #include "locomotive_run.h"
-#include "board_link.h"
 #include "serial_port.h"
 
 namespace flange::cli {
@@ -84,27 +84,19 @@ host::ChannelStreamSettings manifest_settings(const StreamOptions& options) {
 }  // namespace
 
 int run_stream_command(const StreamOptions& options, std::ostream& out, std::ostream& err) {
-  try {
-    if (options.manifest.empty() && options.single.input.empty()) {
-      throw host::InputError("give --input (one recording) or --manifest (a locomotive)");
-    }
-    StreamOptions said = options;
-    said.single.on_port_setup = [&err](const std::string& line) {
-      err << "flange stream: " << line << "\n";
-    };
-    const host::StreamCounts counts =
-        said.manifest.empty() ? host::stream_recording(said.single)
-                              : host::stream_channel_recordings(manifest_settings(said));
-    out << host::stream_summary_line(counts) << "\n";
-    if (counts.checked && counts.mismatches > 0) return kExitFailure;
-    return kExitOk;
-  } catch (const host::InputError& error) {
-    err << "flange stream: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const std::runtime_error& error) {
-    err << "flange stream: " << error.what() << "\n";
-    return kExitFailure;
+  if (options.manifest.empty() && options.single.input.empty()) {
+    throw host::InputError("give --input (one recording) or --manifest (a locomotive)");
   }
+  StreamOptions said = options;
+  said.single.on_port_setup = [&err](const std::string& line) {
+    err << "flange stream: " << line << "\n";
+  };
+  const host::StreamCounts counts = said.manifest.empty()
+                                        ? host::stream_recording(said.single)
+                                        : host::stream_channel_recordings(manifest_settings(said));
+  out << host::stream_summary_line(counts) << "\n";
+  if (counts.checked && counts.mismatches > 0) return kExitFailure;
+  return kExitOk;
 }
 
 }  // namespace flange::cli

@@ -20,8 +20,9 @@ struct StreamOptions {
 
 CLI::App* add_stream_command(CLI::App& app, StreamOptions& options);
 
-// Returns 0; 1 when the board does not answer or the port fails (one line naming the port), or a
-// reply differs from the model; 2 for bad input (file, line, column).
+// Returns 0, or 1 when a reply differs from the model. Throws when the board does not answer or
+// the port fails (1, one line naming the port) and host::InputError for bad input (2: file,
+// line, column).
 int run_stream_command(const StreamOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace flange::cli

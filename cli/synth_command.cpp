@@ -75,38 +75,25 @@ int run_synth_command(const SynthOptions& options, std::ostream& out, std::ostre
   settings.command = command_line(options);
   settings.max_core_lut_percent = options.max_core_lut_percent;
   settings.min_slack_percent = options.min_slack_percent;
+  // The Vivado reports first: a bad one (tb::VivadoReportError, status 2) fails in a second, not
+  // after minutes of Yosys. A missing report, data folder or a failed Yosys run is status 1, a
+  // missing coefficient set (std::invalid_argument) 2.
+  if (!options.vivado_report.empty()) {
+    settings.vivado = tb::read_vivado_report(options.vivado_report);
+  }
+  tb::SynthesisRequest request;
+  request.yosys = options.yosys;
+  request.data_dir = runtime::data_dir().root;
+  std::vector<fs::path> sets;
+  for (const std::string& set : options.coeffs) {
+    sets.push_back(tb::find_coeff_set(request.data_dir, set));
+  }
   std::vector<tb::SynthesisResult> results;
-  try {
-    // The Vivado reports first: a bad one fails in a second, not after minutes of Yosys.
-    if (!options.vivado_report.empty())
-      settings.vivado = tb::read_vivado_report(options.vivado_report);
-    tb::SynthesisRequest request;
-    request.yosys = options.yosys;
-    request.data_dir = runtime::data_dir().root;
-    std::vector<fs::path> sets;
-    for (const std::string& set : options.coeffs)
-      sets.push_back(tb::find_coeff_set(request.data_dir, set));
-    for (const fs::path& set : sets) {
-      request.coeff_set = set;
-      results.push_back(tb::synthesise(request));
-      settings.allowance = request.allowance;
-      out << "synth: " << tb::synthesis_summary_line(results.back()) << "\n";
-    }
-  } catch (const runtime::DataDirNotFound& missing) {
-    err << "flange synth: " << missing.what() << "\n";
-    return kExitFailure;
-  } catch (const tb::VivadoReportMissing& missing) {
-    err << "flange synth: " << missing.what() << "\n";
-    return kExitFailure;
-  } catch (const tb::VivadoReportError& bad) {
-    err << "flange synth: " << bad.what() << "\n";
-    return kExitBadArgument;
-  } catch (const std::invalid_argument& missing) {
-    err << "flange synth: " << missing.what() << "\n";
-    return kExitBadArgument;
-  } catch (const tb::SynthesisFailed& failed) {
-    err << "flange synth: " << failed.what() << "\n";
-    return kExitFailure;
+  for (const fs::path& set : sets) {
+    request.coeff_set = set;
+    results.push_back(tb::synthesise(request));
+    settings.allowance = request.allowance;
+    out << "synth: " << tb::synthesis_summary_line(results.back()) << "\n";
   }
   for (const tb::SynthesisResult& r : results) {
     settings.failures +=
@@ -116,12 +103,10 @@ int run_synth_command(const SynthOptions& options, std::ostream& out, std::ostre
   const fs::path json_path = options.json.empty() ? fs::path(options.out).replace_extension(".json")
                                                   : fs::path(options.json);
   if (!write_file(options.out, tb::synthesis_report_markdown(results, settings))) {
-    err << "flange synth: cannot write " << options.out << "\n";
-    return kExitFailure;
+    throw std::runtime_error("cannot write " + options.out);
   }
   if (!write_file(json_path, tb::synthesis_report_json(results, settings))) {
-    err << "flange synth: cannot write " << json_path.string() << "\n";
-    return kExitFailure;
+    throw std::runtime_error("cannot write " + json_path.string());
   }
   out << "synth: report " << options.out << ", " << json_path.string() << "\n";
   if (!settings.failures.empty()) {

@@ -29,9 +29,9 @@ struct SynthOptions {
 
 CLI::App* add_synth_command(CLI::App& app, SynthOptions& options);
 
-// Returns 0, 1 (Yosys failed, a check failed, or a Vivado report is missing; the reports are
-// written all the same when Yosys ran) or 2 (a coefficient set is missing, or a Vivado report
-// does not parse: one line names file, line and field).
+// Returns 0 or 1 (a check failed; the reports are written all the same when Yosys ran). Throws
+// when Yosys failed or a Vivado report or the data folder is missing (1), and when a coefficient
+// set is missing or a Vivado report does not parse (2: one line names file, line and field).
 int run_synth_command(const SynthOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace flange::cli

@@ -17,6 +17,7 @@ std::string version_text(std::string_view commit) {
     const runtime::DataDir data = runtime::data_dir();
     text << "data: " << data.root.string() << " (" << runtime::origin_name(data.origin) << ")\n";
   } catch (const runtime::DataDirNotFound& missing) {
+    // Recovers: --version reports what it finds, and a missing data folder is one of its answers.
     text << "data: not found (" << missing.what() << ")\n";
   }
   text << "verilator: " << runtime::tool_version({tb::verilator_program(), "--version"}) << "\n"

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 #include <ostream>
+#include <stdexcept>
 
 #include "axle_clearance.h"
 #include "calibration.h"
@@ -76,19 +77,26 @@ host::SensitivityAt store_sensitivity(host::Store& store, const std::filesystem:
 
 // `flange wear` reads a store: a SQLite file that is not there is an error, not a new store.
 std::unique_ptr<host::Store> open_existing_store(const std::string& url) {
-  const host::StoreUrl parsed = host::parse_store_url(url);
+  host::StoreUrl parsed;
+  naming_option("--store", [&] { parsed = host::parse_store_url(url); });
   if (parsed.backend == host::StoreBackend::kSqlite && !std::filesystem::exists(parsed.target)) {
     throw host::StoreError("store " + parsed.shown + ": no such file");
   }
   return host::open_store(url);
 }
 
+// The --truth file; a file that is not one is named with the option ("--truth: FILE: ...").
+sim::FleetTruth read_truth(const std::filesystem::path& path) {
+  sim::FleetTruth truth;
+  naming_option("--truth", [&] { truth = sim::read_fleet_truth(path); });
+  return truth;
+}
+
 // Everything that can refuse the inputs, before anything is written: the truth file's fleet
 // and the plan's risk and date against the store's runs.
 void check_inputs(const WearOptions& options, const std::vector<WheelHistory>& histories) {
   if (options.truth) {
-    check_truth_matches_runs(sim::read_fleet_truth(*options.truth), histories,
-                             options.truth->string());
+    check_truth_matches_runs(read_truth(*options.truth), histories, options.truth->string());
   }
   if (options.plan) {
     const auto [day, at] = host::last_run(histories);
@@ -112,7 +120,7 @@ std::string write_plan(const WearOptions& options, const host::FleetWear& wear, 
 // --truth: the comparison printed and written beside the outputs; false when it fails.
 bool compare_with_truth(const WearOptions& options, const host::FleetWear& wear,
                         std::ostream& out) {
-  const TruthCheck check = check_against_truth(wear, sim::read_fleet_truth(*options.truth));
+  const TruthCheck check = check_against_truth(wear, read_truth(*options.truth));
   const std::string text = truth_check_text(check);
   out << "\nagainst the truth in " << options.truth->string() << ":\n" << text;
   write_truth_check_json(options.out / "truth_check.json", check);
@@ -164,49 +172,34 @@ CLI::App* add_wear_command(CLI::App& app, WearOptions& options) {
 
 int run_wear_command(const WearOptions& options, const std::vector<std::string>& command_line,
                      std::ostream& out, std::ostream& err) {
-  try {
-    host::validate(options.thresholds);
-    if (options.plan && options.before.empty()) {
-      throw host::InputError(
-          "--before is required with --plan: a date YYYY-MM-DD after the "
-          "last run");
-    }
-    const std::unique_ptr<host::Store> store = open_existing_store(options.store);
-    const std::vector<WheelHistory> histories = read_histories(*store);
-    if (histories.empty()) {
-      err << "flange wear: " << store->name() << ": no run with a wheel's wear estimate\n";
-      return kExitFailure;
-    }
-    check_inputs(options, histories);
-    // With the plan's CSV on stdout, the rest of what is said goes to stderr.
-    std::ostream& said = options.plan && options.plan_csv == "-" ? err : out;
-    std::filesystem::create_directories(options.out);
-    const host::FleetWear wear = host::estimate_fleet_wear(
-        histories, options.thresholds, store_sensitivity(*store, options.out, said));
-    const std::string generated_by = runtime::generated_by(command_line);
-    host::write_wear_json(options.out / "wear.json", wear, generated_by);
-    host::write_wear_csv(options.out / "wear.csv", wear);
-    const std::string plan_section = options.plan ? write_plan(options, wear, out) : "";
-    host::write_wear_report(options.out, wear, generated_by, plan_section);
-    said << fmt::format("wear: {} wheels from {}, by days to the warning clearance ({} mm)\n",
-                        wear.wheels.size(), store->name(), wear.warning_clearance_mm);
-    said << host::fleet_wear_text(wear);
-    const bool truth_ok = !options.truth || compare_with_truth(options, wear, said);
-    said << "  wrote " << (options.out / "index.html").string() << ", wear.json and wear.csv\n";
-    return truth_ok ? kExitOk : kExitFailure;
-  } catch (const host::StoreUrlError& error) {
-    err << "flange wear: --store: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const host::InputError& error) {
-    err << "flange wear: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const sim::BadArgument& error) {
-    err << "flange wear: --truth: " << error.what() << "\n";
-    return kExitBadArgument;
-  } catch (const std::exception& error) {
-    err << "flange wear: " << error.what() << "\n";
-    return kExitFailure;
+  host::validate(options.thresholds);
+  if (options.plan && options.before.empty()) {
+    throw host::InputError(
+        "--before is required with --plan: a date YYYY-MM-DD after the "
+        "last run");
   }
+  const std::unique_ptr<host::Store> store = open_existing_store(options.store);
+  const std::vector<WheelHistory> histories = read_histories(*store);
+  if (histories.empty()) {
+    throw std::runtime_error(store->name() + ": no run with a wheel's wear estimate");
+  }
+  check_inputs(options, histories);
+  // With the plan's CSV on stdout, the rest of what is said goes to stderr.
+  std::ostream& said = options.plan && options.plan_csv == "-" ? err : out;
+  std::filesystem::create_directories(options.out);
+  const host::FleetWear wear = host::estimate_fleet_wear(
+      histories, options.thresholds, store_sensitivity(*store, options.out, said));
+  const std::string generated_by = runtime::generated_by(command_line);
+  host::write_wear_json(options.out / "wear.json", wear, generated_by);
+  host::write_wear_csv(options.out / "wear.csv", wear);
+  const std::string plan_section = options.plan ? write_plan(options, wear, out) : "";
+  host::write_wear_report(options.out, wear, generated_by, plan_section);
+  said << fmt::format("wear: {} wheels from {}, by days to the warning clearance ({} mm)\n",
+                      wear.wheels.size(), store->name(), wear.warning_clearance_mm);
+  said << host::fleet_wear_text(wear);
+  const bool truth_ok = !options.truth || compare_with_truth(options, wear, said);
+  said << "  wrote " << (options.out / "index.html").string() << ", wear.json and wear.csv\n";
+  return truth_ok ? kExitOk : kExitFailure;
 }
 
 }  // namespace flange::cli

@@ -29,10 +29,11 @@ struct WearOptions {
 
 CLI::App* add_wear_command(CLI::App& app, WearOptions& options);
 
-// Returns 0; 1 when the store cannot be read, does not exist or holds no run, an output cannot be
-// written, or the comparison with --truth fails; 2 for a bad argument (one line naming it and
-// its valid range: a --risk outside (0, 1), a --before not after the last run, a --truth file
-// of another fleet). Nothing is written when it returns 2, or 1 before the estimate.
+// Returns 0, or 1 when the comparison with --truth fails. Throws when the store cannot be read,
+// does not exist or holds no run, or an output cannot be written (1), and for a bad argument (2:
+// one line naming it and its valid range: a --risk outside (0, 1), a --before not after the last
+// run, a --truth file of another fleet). Nothing is written when it exits 2, or 1 before the
+// estimate.
 int run_wear_command(const WearOptions& options, const std::vector<std::string>& command_line,
                      std::ostream& out, std::ostream& err);
 
