@@ -109,6 +109,9 @@ record() {
   [[ "$jobs" =~ ^[1-9][0-9]?$ ]] ||
     { echo "diagnose_record.sh: --jobs $jobs: a whole number from 1 to 99" >&2; exit 2; }
   [ -x "$flange" ] || { echo "diagnose_record.sh: $flange is not an executable" >&2; exit 2; }
+  # The entries' arguments are split on blanks: a path with one would be split too.
+  [[ ! "$(realpath -m "$out")" =~ [[:space:]] ]] ||
+    { echo "diagnose_record.sh: --out $out: a path without blanks" >&2; exit 2; }
   [ ! -e "$out" ] || [ -z "$(ls -A "$out")" ] ||
     { echo "diagnose_record.sh: $out is not empty (a record goes into a new folder)" >&2; exit 2; }
   local here

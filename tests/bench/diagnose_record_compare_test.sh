@@ -85,5 +85,8 @@ expect 2 "an unknown subcommand" bash "$script" contrast "$work/a" "$work/b"
 expect 2 "record into a folder that is not empty" \
   bash "$script" record --flange /bin/true --out "$work/a"
 
+expect 2 "record into a path with a blank" \
+  bash "$script" record --flange /bin/true --out "$work/with blank"
+
 [ "$failures" = 0 ] || { echo "$failures check(s) failed"; exit 1; }
 echo "diagnose_record compare: every check passed"
