@@ -11,6 +11,7 @@
 #include "diagnosis_detail.h"
 #include "finding_class.h"
 #include "parallel_cases.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {

@@ -11,7 +11,7 @@
 #include <random>
 
 #include "quantised_noise.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "white_noise.h"
 
 namespace flange::diagnose {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {

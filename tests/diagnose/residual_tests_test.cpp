@@ -8,7 +8,7 @@
 // the same count everywhere. The statistical bounds are set from the theory quoted beside each
 // one, with a margin of 3 to 5 standard deviations, not from the counts these seeds happen to
 // give: the checks are meant to fail when the estimator is wrong, not when the seeds change.
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 #include <gtest/gtest.h>
 

@@ -24,7 +24,7 @@
 #include "forward.h"
 #include "library_candidates.h"
 #include "parts.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "scoring.h"
 #include "selection.h"
 #include "sensor_twin.h"
@@ -304,8 +304,7 @@ struct BenchPair {
               TwinReplay(cal, sim::TwinConfig{}.nominal),
               TwinReplay(ho, sim::TwinConfig{}.nominal),
               false,
-              std::nullopt,
-              std::make_shared<LibraryRounds>()} {}
+              std::nullopt} {}
   BenchPair(const BenchPair&) = delete;
   BenchPair& operator=(const BenchPair&) = delete;
   RecordingSeries cal, ho;
@@ -438,7 +437,7 @@ double offset_of(const std::string& name) {
 // left them, so that select_bias_effects weighs them without fitting: round r's candidates are
 // every bias class not yet taken, each with its catalogue defaults; the four of four_offsets()
 // take their offset off what the picks leave, the others take nothing. Round r takes the r-th.
-void keep_rounds(const Parts& parts, const std::vector<double>& ho_gap) {
+void keep_rounds(const Parts& parts, LibraryRounds& rounds, const std::vector<double>& ho_gap) {
   std::vector<std::string> names = bias_classes_in_catalogue_order();
   std::vector<sim::EffectSettings> modelled;
   std::vector<double> left = ho_gap;
@@ -452,7 +451,7 @@ void keep_rounds(const Parts& parts, const std::vector<double>& ho_gap) {
       c.with.push_back(c.fit.settings);
       candidates.push_back(std::move(c));
     }
-    parts.library_rounds->keep(
+    rounds.keep(
         {names, modelled, 0, parts.calibration.voltage_v, parts.heldout.voltage_v}, candidates);
     modelled.push_back(sim::make_effect_settings(taken, {}, "selection_rules_test"));
     for (double& v : left) v -= offset * kSigma;
@@ -480,11 +479,11 @@ TEST(SelectionRules, AtMostThreePicks) {
   const std::vector<double> nominal_ho = parts.ho_replay.voltage({});
   for (std::size_t i = 0; i < n; ++i) selection.ho_gap[i] -= nominal_ho[i];
   selection.raw_ho_gap = selection.ho_gap;
-  keep_rounds(parts, selection.ho_gap);
+  LibraryRounds rounds;
+  keep_rounds(parts, rounds, selection.ho_gap);
   DiagnoseOptions options;
   options.estimate_noise = false;
-  DiagnosisResult result;
-  select_bias_effects(parts, options, selection, result);
+  select_bias_effects(parts, rounds, options, std::nullopt, selection);
   ASSERT_EQ(selection.picks.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_EQ(selection.picks[k].finding.name, four_offsets()[k].first);
@@ -495,7 +494,7 @@ TEST(SelectionRules, AtMostThreePicks) {
   std::vector<std::string> untaken = bias_classes_in_catalogue_order();
   for (std::size_t k = 0; k < 3; ++k) std::erase(untaken, four_offsets()[k].first);
   const std::vector<Candidate> fourth =
-      library_candidates(parts, {untaken, selection.modelled, 0, cal.voltage_v, ho.voltage_v});
+      library_candidates(parts, rounds, {untaken, selection.modelled, 0, cal.voltage_v, ho.voltage_v});
   const Choice next = best_candidate(fourth, round_score(selection), false);
   EXPECT_EQ(fourth[next.best].fit.settings.name, "thermal_lag");
   EXPECT_TRUE(significant(next, criteria::kLeastGainOfAPick * kVar));

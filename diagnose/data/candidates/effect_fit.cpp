@@ -9,9 +9,10 @@
 #include <numbers>
 #include <utility>
 
+#include "class_fits.h"
 #include "effect_classes.h"
 #include "recording_series.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {
@@ -451,7 +452,7 @@ EffectFit fit_ageing(const std::string& name, const TwinReplay& replay,
 EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
                      const std::vector<double>& real_v,
                      const std::vector<sim::EffectSettings>& modelled) {
-  return effect_class(name).fit(name, replay, real_v, modelled);
+  return class_fit(name).fit(name, replay, real_v, modelled);
 }
 
 }  // namespace flange::diagnose

@@ -3,7 +3,7 @@
 
 #include <future>
 
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 
 namespace flange::diagnose {

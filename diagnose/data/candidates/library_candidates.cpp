@@ -3,7 +3,7 @@
 
 #include <future>
 
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 
 namespace flange::diagnose {
@@ -48,10 +48,11 @@ void backfit(std::vector<sim::EffectSettings>& modelled, std::size_t first,
 }
 
 
-std::vector<Candidate> library_candidates(const Parts& parts, LibraryRounds::Key round) {
-  if (auto weighed = parts.library_rounds->find(round)) return std::move(*weighed);
+std::vector<Candidate> library_candidates(const Parts& parts, LibraryRounds& rounds,
+                                          LibraryRounds::Key round) {
+  if (auto weighed = rounds.find(round)) return std::move(*weighed);
   std::vector<Candidate> candidates = fit_library_candidates(parts, round);
-  parts.library_rounds->keep(std::move(round), candidates);
+  rounds.keep(std::move(round), candidates);
   return candidates;
 }
 

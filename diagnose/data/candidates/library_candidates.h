@@ -57,9 +57,10 @@ void backfit(std::vector<sim::EffectSettings>& modelled, std::size_t first,
 
 // The library's candidates of a round (`round`: their names, the effects modelled and the
 // targets), each fitted on the calibration part, refitted with the picks before it and scored on
-// the held-out part, in the order of round.names. Found in parts.library_rounds when the other
+// the held-out part, in the order of round.names. Found in `rounds` when the other
 // pass weighed the same round; else fitted (each in its own thread: the replays are read-only;
 // the results are taken in order, so the outcome does not depend on the threads) and kept there.
-std::vector<Candidate> library_candidates(const Parts& parts, LibraryRounds::Key round);
+std::vector<Candidate> library_candidates(const Parts& parts, LibraryRounds& rounds,
+                                          LibraryRounds::Key round);
 
 }  // namespace flange::diagnose

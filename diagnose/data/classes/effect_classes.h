@@ -11,12 +11,8 @@
 
 #include "channel_skew_law.h"
 #include "effect_catalogue.h"
-#include "free_shape_fit.h"
 
 namespace flange::diagnose {
-
-class TwinReplay;
-struct EffectFit;
 
 // How the diagnosis finds a class in the data.
 enum class Identification {
@@ -46,11 +42,6 @@ struct ChannelDelay {
 
 class SelftestDraw;
 
-// Fits a bias class on top of the effects modelled (effect_fit.h).
-using LibraryFitter = EffectFit (*)(const std::string& name, const TwinReplay& replay,
-                                    const std::vector<double>& real_v,
-                                    const std::vector<sim::EffectSettings>& modelled);
-
 struct EffectClass {
   std::string name;  // its effect in the twin's library (sim::effect_catalogue)
   Identification identification = Identification::kByBias;
@@ -58,10 +49,9 @@ struct EffectClass {
   // session's own), with this phrase added to a pick's evidence.
   bool reported_as_noise = false;
   std::string pick_note{};
-  // The library fit: its free parameters with their ranges, and the fitter (a search over them,
-  // or a class's own closed form).
+  // The library fit's free parameters with their ranges (its fitter, and its free-shape families,
+  // are in candidates/class_fits.h).
   std::vector<SearchRange> search{};
-  LibraryFitter fit = nullptr;
   // Solved by least squares inside every other class's fit (profiled out) rather than held
   // there: a class linear in its values that trades against others along a narrow valley.
   bool profiled_in_other_fits = false;
@@ -86,14 +76,6 @@ struct EffectClass {
   bool lines_of_each_session = false;
   // The channel delays a setting of this class makes.
   ChannelDelay (*channel_delay)(const sim::EffectSettings&) = nullptr;
-  // The shape-free families that stand for it (free_shape_fit.h), in the order they are scored,
-  // each with how to make it (candidates/free_shapes/family_makers.h).
-  std::vector<FreeShapeFamily> families{};
-  // A free shape's library member where its summary's keys are not the effect's parameters (a
-  // skew's law: the effect's skew_s is its value at the session's start, the summary's the
-  // mid-session one): the parameters, or nothing where the shape does what the effect cannot.
-  // Unset: the summary's keys (improved_twin/improved_twin.cpp, library_member).
-  std::optional<sim::ParamValues> (*member_of_shape)(const FreeShapeFit& shape) = nullptr;
   // The blind self-test's draw of its parameters: each range's low end moves a bench recording's
   // voltage by about the thesis's repeatability (docs/diagnose.md, "How it is checked").
   sim::ParamValues (*selftest_draw)(SelftestDraw& draw) = nullptr;
@@ -108,9 +90,6 @@ const EffectClass& effect_class(const std::string& name);
 // The classes fitted by their bias, in the twin's catalogue order (the order library candidates
 // are fitted and weighed in).
 std::vector<std::string> bias_classes_in_catalogue_order();
-
-// Every free-shape family of every class, in scoring order.
-std::vector<FreeShapeFamily> all_free_shape_families();
 
 // The delays `effect` makes (zero for classes without any).
 ChannelDelay channel_delay_of(const sim::EffectSettings& effect);

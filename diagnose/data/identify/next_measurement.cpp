@@ -10,7 +10,7 @@
 #include "effect_classes.h"
 #include "hypothetical_session.h"
 #include "parameter_resolution.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 
 namespace flange::diagnose {

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "degenerate_data.h"
-#include "diagnosis_detail.h"
 #include "parts.h"
 #include "selection.h"
 

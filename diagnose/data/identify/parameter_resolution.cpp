@@ -10,7 +10,7 @@
 #include "compensated_sensitivity.h"
 #include "criteria.h"
 #include "effect_classes.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 
 namespace flange::diagnose {

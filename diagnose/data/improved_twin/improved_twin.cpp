@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "criteria.h"
-#include "diagnosis_detail.h"
+#include "class_fits.h"
 #include "effect_classes.h"
 #include "parts.h"
 #include "selection.h"
@@ -70,14 +70,14 @@ bool shapes_follow_age(const Selection& selection) {
 }
 
 // A free shape whose summary gives every parameter of its class's library effect (a lag's mean
-// delay), or whose class says which member it is (a skew's law, EffectClass::member_of_shape):
+// delay), or whose class says which member it is (a skew's law, ClassFit::member_of_shape):
 // that library member, or nothing when the shape lies beyond what the effect does.
 std::optional<sim::EffectSettings> library_member(const Pick& pick) {
   const FreeShapeFit& shape = *pick.chosen().free_shape;
   const sim::EffectSpec& spec =
       sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(pick.finding.name))];
   sim::ParamValues values;
-  if (const auto member_of = effect_class(pick.finding.name).member_of_shape) {
+  if (const auto member_of = class_fit(pick.finding.name).member_of_shape) {
     const std::optional<sim::ParamValues> member = member_of(shape);
     if (!member) return std::nullopt;
     values = *member;
@@ -287,10 +287,10 @@ void mark_fitted_ranges(const RecordingSeries& calibration, const sim::TwinConfi
 }  // namespace
 
 ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
-                           const DiagnosisResult& result, const sim::TwinConfig& given) {
+                           const Diagnosis& diagnosis, const WhiteNoise& white,
+                           const sim::TwinConfig& given) {
   ImprovedTwin out;
   out.twin = given;
-  const Diagnosis& diagnosis = result.diagnosis;
   const bool selected = !diagnosis.effects.empty();
   if (selected) {
     // The selection's effects, and those of the twin given that the diagnosis does not replay
@@ -308,13 +308,12 @@ ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
           motion_class(), {{"rms_mm", selection.vibration->params.at("rms_mm")}}, "improved twin"));
     }
     for (const EffectFinding& finding : diagnosis.effects) {
-      out.findings.push_back(held(finding, selection, out, result.diagnosis.noise_std_v));
+      out.findings.push_back(held(finding, selection, out, diagnosis.noise_std_v));
     }
     mark_fitted_ranges(parts.calibration, given, out.twin);
   }
   const bool converter_held =
       std::any_of(out.twin.effects.begin(), out.twin.effects.end(), is_converter);
-  const WhiteNoise& white = result.detail.white_noise;
   out.twin.noise.voltage_std_v = converter_held ? white.analog_std_v : white.effective_std_v;
   // A grid whose codes the twin does not replay: the white noise holds its rounding.
   out.twin.noise.rounding_lsb_v =

@@ -10,13 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "diagnosis.h"
 #include "sensor_twin.h"
+#include "white_noise.h"
 
 namespace flange::diagnose {
 
 struct Parts;
 struct Selection;
-struct DiagnosisResult;
 
 // How the improved twin holds one finding.
 struct HeldFinding {
@@ -39,9 +40,10 @@ struct ImprovedTwin {
   std::string summary;  // one sentence: what was added to the twin, or why nothing was
 };
 
-// The improved twin of a diagnosis whose status and findings are in `result`, from the twin it
-// started from (`given`), the parts and the selection's final state.
+// The improved twin of `diagnosis` (its status and findings), from the twin it started from
+// (`given`), the parts, the selection's final state and the white noise the diagnosis reports.
 ImprovedTwin improved_twin(const Parts& parts, const Selection& selection,
-                           const DiagnosisResult& result, const sim::TwinConfig& given);
+                           const Diagnosis& diagnosis, const WhiteNoise& white,
+                           const sim::TwinConfig& given);
 
 }  // namespace flange::diagnose

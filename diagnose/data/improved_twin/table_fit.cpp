@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {

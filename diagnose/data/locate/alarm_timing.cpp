@@ -80,14 +80,16 @@ AlarmTiming heldout_alarm_timing(const RecordingSeries& heldout, const std::vect
 
 }  // namespace
 
-void confirm_alarm_timing_on_heldout(const RecordingSeries& heldout,
-                                     const std::vector<double>& ho_sim_v,
-                                     const DiagnoseOptions& options, DiagnosisDetail& detail,
-                                     const NullReplica& replica_of) {
-  for (StageGap& stage : detail.stages) {
+std::vector<StageGap> confirm_alarm_timing_on_heldout(const RecordingSeries& heldout,
+                                                      const std::vector<double>& ho_sim_v,
+                                                      const DiagnoseOptions& options,
+                                                      const WhiteNoise& white, double fs_hz,
+                                                      std::vector<StageGap> stages,
+                                                      const NullReplica& replica_of) {
+  for (StageGap& stage : stages) {
     if (stage.name != "alarm_timing" || !stage.significant) continue;
     const AlarmTiming held_out = heldout_alarm_timing(
-        heldout, ho_sim_v, detail.white_noise, options.twin.nominal, detail.fs_hz, options.seed,
+        heldout, ho_sim_v, white, options.twin.nominal, fs_hz, options.seed,
         replica_of);
     if (held_out.exceeds()) {
       stage.note += fmt::format("; the held-out part shows it too ({:.3g} s against {:.3g} s)",
@@ -102,6 +104,7 @@ void confirm_alarm_timing_on_heldout(const RecordingSeries& heldout,
           criteria::kNullReplicas + 1);
     }
   }
+  return stages;
 }
 
 }  // namespace flange::diagnose

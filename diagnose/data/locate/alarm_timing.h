@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "diagnosis.h"
-#include "diagnosis_detail.h"
+#include "findings.h"
 #include "null_replicas.h"
 #include "thresholds.h"
 #include "white_noise.h"
@@ -48,9 +48,12 @@ AlarmTiming alarm_timing(const RecordingSeries& real, const std::vector<double>&
 // The alarm-timing stage counts only when the held-out part shows it too: a stage that the
 // calibration part alone exceeds is kept, not significant, with the held-out figures in its note.
 // Its floor's replicas are drawn by `replica_of` when set (null_replicas.h).
-void confirm_alarm_timing_on_heldout(const RecordingSeries& heldout,
-                                     const std::vector<double>& ho_sim_v,
-                                     const DiagnoseOptions& options, DiagnosisDetail& detail,
-                                     const NullReplica& replica_of = {});
+// Returns `stages` with the alarm-timing stage confirmed or not.
+std::vector<StageGap> confirm_alarm_timing_on_heldout(const RecordingSeries& heldout,
+                                                      const std::vector<double>& ho_sim_v,
+                                                      const DiagnoseOptions& options,
+                                                      const WhiteNoise& white, double fs_hz,
+                                                      std::vector<StageGap> stages,
+                                                      const NullReplica& replica_of = {});
 
 }  // namespace flange::diagnose

@@ -91,14 +91,16 @@ std::optional<std::pair<double, double>> gap_band(const Spectrum& psd, double no
   return std::make_pair(psd.frequency_hz[lo], psd.frequency_hz[hi]);
 }
 
-void locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double fs_hz,
-            const DiagnoseOptions& options, DiagnosisDetail& detail,
-            const NullReplica& replica_of) {
-  const double sigma = detail.noise_std_v;
+Location locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double fs_hz,
+                const DiagnoseOptions& options, const TwinNoise& noise,
+                const NullReplica& replica_of) {
+  const double sigma = noise.noise_std_v;
+  Location detail;
+  detail.fs_hz = fs_hz;
   const std::vector<double> gap = minus(cal.voltage_v, sim_v);
   detail.t_s = cal.t_s;
   detail.gap_v = gap;
-  detail.stages = stage_gaps(cal, sim_v, detail.white_noise, options.twin.nominal, fs_hz,
+  detail.stages = stage_gaps(cal, sim_v, noise.white_noise, options.twin.nominal, fs_hz,
                              options.seed, replica_of);
   detail.regions =
       region_cells(cal, gap, region_grid_for(cal), options.bootstrap_rounds, options.seed);
@@ -121,6 +123,7 @@ void locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double
   detail.vs_temperature = independence_test(gap, cal.temp_c, lags);
   detail.vs_temperature_rate = independence_test(gap, temp_rate, lags);
   detail.vs_clearance = independence_test(gap, cal.clearance_mm, lags);
+  return detail;
 }
 
 }  // namespace flange::diagnose

@@ -4,23 +4,41 @@
 // and the residual tests (docs/diagnose.md, "Locate").
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "diagnosis.h"
-#include "diagnosis_detail.h"
+#include "findings.h"
+#include "twin_noise.h"
 #include "null_replicas.h"
 #include "recording_series.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 
-// Fills detail's stages, regions, where_region, gap_psd, noise_psd, band_hz, coherences,
-// segments and residual tests for the calibration part `cal` against the twin's `sim_v`, at the
-// noise detail.noise_std_v, the stages' floors drawn by `replica_of` when set (null_replicas.h).
-void locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double fs_hz,
-            const DiagnoseOptions& options, DiagnosisDetail& detail,
-            const NullReplica& replica_of = {});
+// The locate stage's value: where the gap lies on the calibration part.
+struct Location {
+  double fs_hz = 0.0;
+  std::vector<StageGap> stages;
+  std::vector<RegionCell> regions;
+  std::optional<std::size_t> where_region;  // index into regions
+  std::optional<std::pair<double, double>> band_hz;
+  std::vector<InputCoherence> coherences;
+  std::vector<TimeSegment> segments;
+  CorrelationTest whiteness, vs_temperature, vs_clearance, vs_temperature_rate;
+  Spectrum gap_psd;                // of the calibration voltage gap
+  double noise_psd = 0.0;          // white-noise level for comparison, V^2/Hz
+  std::vector<double> t_s, gap_v;  // the calibration voltage gap over time
+};
+
+// Where the gap of the calibration part `cal` against the twin's `sim_v` lies: its stages,
+// regions, band, coherences, segments and residual tests at the twin's noise `noise`, the stages'
+// floors drawn by `replica_of` when set (null_replicas.h).
+Location locate(const RecordingSeries& cal, const std::vector<double>& sim_v, double fs_hz,
+                const DiagnoseOptions& options, const TwinNoise& noise,
+                const NullReplica& replica_of = {});
 
 // The band: from the bin of largest excess over `noise_psd`, widened while the PSD stays above
 // criteria::kBandPsdRatio times it; none when the peak is not that high. DC is left out (each

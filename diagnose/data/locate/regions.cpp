@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "block_resamples.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 
 namespace flange::diagnose {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "diagnosis_detail.h"
+#include "findings.h"
 #include "recording_series.h"
 
 namespace flange::diagnose {

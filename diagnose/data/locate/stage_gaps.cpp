@@ -8,7 +8,7 @@
 #include "gaussian_source.h"
 #include "measurement_chain.h"
 #include "null_replicas.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 
 namespace flange::diagnose {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "diagnosis_detail.h"
+#include "findings.h"
 #include "null_replicas.h"
 #include "polynomial_sensor_model.h"
 #include "recording_series.h"

@@ -7,7 +7,7 @@
 
 #include "criteria.h"
 #include "effect_classes.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 
 namespace flange::diagnose {

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "quantised_noise.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "diagnosis.h"
-#include "diagnosis_detail.h"
+#include "findings.h"
 #include "recording_series.h"
 
 namespace flange::diagnose::reasons {

@@ -3,7 +3,6 @@
 
 #include <future>
 
-#include "library_candidates.h"
 #include "shared_grid.h"
 
 namespace flange::diagnose {
@@ -19,8 +18,7 @@ Parts replay_parts(const RecordingSeries& calibration, const RecordingSeries& he
                TwinReplay(calibration, options.twin.nominal),
                ho_replay.get(),
                heldout_age_unknown,
-               grid.get(),
-               std::make_shared<LibraryRounds>()};
+               grid.get()};
 }
 
 }  // namespace flange::diagnose

@@ -3,7 +3,6 @@
 // what every stage after the replay shares.
 #pragma once
 
-#include <memory>
 #include <optional>
 
 #include "adc_grid.h"
@@ -13,8 +12,6 @@
 
 namespace flange::diagnose {
 
-class LibraryRounds;
-
 struct Parts {
   const RecordingSeries& calibration;
   const RecordingSeries& heldout;
@@ -22,7 +19,6 @@ struct Parts {
   TwinReplay ho_replay;
   bool heldout_age_unknown;     // the sessions' clocks are unknown (SessionClock "unknown")
   std::optional<AdcGrid> grid;  // the converter grid both parts lie on (shared_grid), if one
-  std::shared_ptr<LibraryRounds> library_rounds;  // the library candidates both passes weigh
 
   RecordedPart cal() const { return {calibration, cal_replay}; }
   RecordedPart ho() const { return {heldout, ho_replay}; }

@@ -8,7 +8,7 @@
 #include "criteria.h"
 #include "evidence.h"
 #include "final_fit.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 

@@ -10,7 +10,7 @@
 #include "evidence.h"
 #include "free_shape_candidates.h"
 #include "library_candidates.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 #include "white_noise.h"
 
@@ -44,17 +44,14 @@ void note_confounding(const std::vector<Candidate>& candidates, const Choice& ch
 
 // A deterministic effect in the gap (a mains tone, a lag on the clearance steps) inflates the
 // difference-based noise estimate; estimate it again from what the picks leave, kept if lower.
-void reestimate_noise(const Parts& parts, Selection& selection, DiagnosisResult& result) {
-  DiagnosisDetail& detail = result.detail;
+void reestimate_noise(const Parts& parts, const std::optional<AdcGrid>& cal_grid,
+                      Selection& selection) {
   WhiteNoise left = estimate_white_noise(
-      cal_target(parts, selection), parts.cal_replay.voltage(selection.modelled), detail.adc_grid);
+      cal_target(parts, selection), parts.cal_replay.voltage(selection.modelled), cal_grid);
   if (left.effective_std_v < selection.noise_v) {
     left.source = "re-estimated on the calibration gap the selected effects leave: " + left.source;
     selection.noise_v = std::max(left.effective_std_v, 1e-9);
-    detail.white_noise = left;
-    detail.noise_std_v = selection.noise_v;
-    detail.noise_source = left.source;
-    result.diagnosis.noise_std_v = selection.noise_v;
+    selection.reestimated_noise = std::move(left);
   }
 }
 
@@ -91,7 +88,8 @@ double least_gain_of_next_pick(const Selection& selection) {
              : criteria::kLeastGainOfAPick * selection.noise_v * selection.noise_v;
 }
 
-std::vector<Candidate> round_candidates(const Parts& parts, const Selection& selection) {
+std::vector<Candidate> round_candidates(const Parts& parts, LibraryRounds& rounds,
+                                        const Selection& selection) {
   const std::vector<sim::EffectSettings>& modelled = selection.modelled;
   const std::vector<double> cal_v = cal_target(parts, selection);
   std::vector<std::string> names;
@@ -99,7 +97,7 @@ std::vector<Candidate> round_candidates(const Parts& parts, const Selection& sel
     if (!class_taken(name, selection)) names.push_back(name);
   }
   std::vector<Candidate> candidates = library_candidates(
-      parts, {names, modelled, selection.first_selected, cal_v, ho_target(parts, selection)});
+      parts, rounds, {names, modelled, selection.first_selected, cal_v, ho_target(parts, selection)});
   if (!selection.free_shapes) return candidates;
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
   std::vector<FreeShapeFamily> families;
@@ -154,14 +152,14 @@ void take_pick(std::vector<Candidate> candidates, const Choice& choice, Selectio
   refresh_library_params(selection);
 }
 
-void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Selection& selection,
-                         DiagnosisResult& result) {
+void select_bias_effects(const Parts& parts, LibraryRounds& rounds, const DiagnoseOptions& options,
+                         const std::optional<AdcGrid>& cal_grid, Selection& selection) {
   selection.current_error = selection.ho_gap;
   selection.resamples =
       BlockResamples(parts.heldout.size(), options.bootstrap_rounds, options.seed);
   selection.first_selected = selection.modelled.size();
   for (int round = 0; round < criteria::kMostPicks; ++round) {
-    std::vector<Candidate> candidates = round_candidates(parts, selection);
+    std::vector<Candidate> candidates = round_candidates(parts, rounds, selection);
     if (candidates.empty()) break;
     const RoundScore score = round_score(selection);
     if (selection.picks.empty() && !selection.noise_type_before_picks) {  // else unused
@@ -181,7 +179,7 @@ void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Sel
     note_confounding(candidates, choice, alike, selection);
     take_pick(std::move(candidates), choice, selection);
     selection.picks.back().finding.indistinguishable_from = std::move(alike);
-    if (options.estimate_noise) reestimate_noise(parts, selection, result);
+    if (options.estimate_noise) reestimate_noise(parts, cal_grid, selection);
   }
 }
 

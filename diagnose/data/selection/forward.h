@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "candidate.h"
-#include "diagnosis_detail.h"
+#include "library_candidates.h"
 #include "parts.h"
 #include "scoring.h"
 #include "selection.h"
@@ -17,7 +17,8 @@ namespace flange::diagnose {
 // fitted on top of `modelled` (library_candidates), in catalogue order; then, in the free-shape
 // pass, the free shapes of the classes not yet modelled (the families the class table lists,
 // in its order, where they are weighed on these parts).
-std::vector<Candidate> round_candidates(const Parts& parts, const Selection& selection);
+std::vector<Candidate> round_candidates(const Parts& parts, LibraryRounds& rounds,
+                                        const Selection& selection);
 
 // The classes other than the choice's whose candidates gain within criteria::kConfoundingMargin
 // of sigma^2 of the choice's gain, each once, in candidate order (what note_confounding names).
@@ -47,8 +48,10 @@ void take_pick(std::vector<Candidate> candidates, const Choice& choice, Selectio
 // Greedy selection of bias-type effects: at most criteria::kMostPicks, stopping at the first round
 // whose best candidate is not significant; with options.estimate_noise, the noise is estimated
 // again after each pick from what the picks leave (kept if lower: a deterministic effect in the
-// gap, a mains tone or a lag on the steps, inflates the difference-based estimate).
-void select_bias_effects(const Parts& parts, const DiagnoseOptions& options, Selection& selection,
-                         DiagnosisResult& result);
+// gap, a mains tone or a lag on the steps, inflates the difference-based estimate), on the
+// calibration part's converter grid `cal_grid`. The library rounds are found in, or kept in,
+// `rounds` (library_candidates).
+void select_bias_effects(const Parts& parts, LibraryRounds& rounds, const DiagnoseOptions& options,
+                         const std::optional<AdcGrid>& cal_grid, Selection& selection);
 
 }  // namespace flange::diagnose

@@ -11,7 +11,7 @@
 #include "evidence.h"
 #include "free_shape_candidates.h"
 #include "library_candidates.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 #include "twin_replay.h"
 

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "criteria.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 
 namespace flange::diagnose {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "series_arithmetic.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 

@@ -16,6 +16,7 @@
 #include "converter_boundaries.h"
 #include "diagnosis.h"
 #include "parts.h"
+#include "white_noise.h"
 
 namespace flange::diagnose {
 
@@ -48,6 +49,9 @@ struct Selection {
   // The twin's white noise the next round is scored against, V (>= 1e-9): the estimate, lowered
   // when the picks leave a gap whose noise estimate is lower (each Step keeps its round's).
   double noise_v = 0.0;
+  // The white noise re-estimated on what the picks leave, when that was lower than the noise
+  // stage's: then noise_v is its level, and the diagnosis reports it as the twin's noise.
+  std::optional<WhiteNoise> reestimated_noise;
   BlockResamples resamples;  // of the held-out part
   std::vector<Pick> picks;   // in selection order
   // The converter's code boundaries (and a DAQ gain), when placed before the picks; what they add

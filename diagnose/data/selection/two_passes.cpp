@@ -7,7 +7,7 @@
 #include "criteria.h"
 #include "forward.h"
 #include "refinement.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {
@@ -44,38 +44,27 @@ bool free_pass_wins(const Selection& library, const Selection& free, bool severa
 }
 
 Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& options,
-                               const Selection& start, DiagnosisResult& result) {
+                               const std::optional<AdcGrid>& cal_grid, const Selection& start) {
+  // The library candidates of a round the free pass weighs as the library pass did.
+  LibraryRounds rounds;
   Selection library = start;
-  DiagnosisResult library_result = result;
-  select_bias_effects(parts, options, library, library_result);
+  select_bias_effects(parts, rounds, options, cal_grid, library);
   const bool several_classes = library.picks.size() > 1;
   const auto explained_by_one_class = [&](const Selection& selection) {
     return rms_of(selection.current_error) <= criteria::kExplainedRatio * selection.noise_v &&
            !several_classes;
   };
-  if (explained_by_one_class(library)) {
-    result = std::move(library_result);
-    return with_shapes_where_they_gain(parts, std::move(library));
-  }
+  if (explained_by_one_class(library)) return with_shapes_where_they_gain(parts, std::move(library));
   // The refinement and the free pass do not depend on each other: they run at once, and the
   // refined selection is taken alone when it explains with one class (the free pass then unused).
   std::future<Selection> refining =
       std::async(std::launch::async, with_shapes_where_they_gain, std::cref(parts), library);
   Selection free = start;
   free.free_shapes = true;
-  DiagnosisResult free_result = result;
-  select_bias_effects(parts, options, free, free_result);
+  select_bias_effects(parts, rounds, options, cal_grid, free);
   library = refining.get();
-  if (explained_by_one_class(library)) {
-    result = std::move(library_result);
-    return library;
-  }
-  if (free_pass_wins(library, free, several_classes)) {
-    result = std::move(free_result);
-    return free;
-  }
-  result = std::move(library_result);
-  return library;
+  if (explained_by_one_class(library)) return library;
+  return free_pass_wins(library, free, several_classes) ? free : library;
 }
 
 }  // namespace flange::diagnose

@@ -6,7 +6,9 @@
 // library explains exactly (an offset curve of T takes the hysteresis of a thermal lag).
 #pragma once
 
-#include "diagnosis_detail.h"
+#include <optional>
+
+#include "adc_grid.h"
 #include "parts.h"
 #include "selection.h"
 
@@ -16,7 +18,9 @@ namespace flange::diagnose {
 // its test (tests/diagnose/selection_rules_test.cpp).
 bool free_pass_wins(const Selection& library, const Selection& free, bool several_classes);
 
+// The pass taken, with the white noise it re-estimated (Selection::reestimated_noise) on the
+// calibration part's converter grid `cal_grid`.
 Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& options,
-                               const Selection& start, DiagnosisResult& result);
+                               const std::optional<AdcGrid>& cal_grid, const Selection& start);
 
 }  // namespace flange::diagnose

@@ -14,6 +14,7 @@
 #include "parallel_cases.h"
 #include "selftest_draw.h"
 #include "sensor_twin.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {

@@ -8,7 +8,7 @@
 #include "effect_classes.h"
 #include "evidence.h"
 #include "quantised_noise.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 
 namespace flange::diagnose {

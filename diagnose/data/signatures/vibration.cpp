@@ -7,7 +7,7 @@
 #include "criteria.h"
 #include "effect_classes.h"
 #include "evidence.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 #include "verdict_reasons.h"
 #include "vibration_signature.h"

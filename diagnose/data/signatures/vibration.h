@@ -7,7 +7,7 @@
 #include "block_resamples.h"
 #include "parts.h"
 #include "selection.h"
-#include "verdict_noise.h"
+#include "findings.h"
 
 namespace flange::diagnose {
 

@@ -4,18 +4,17 @@
 #include "locate.h"
 #include "regions.h"
 #include "series_arithmetic.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 
-void measure_how_far(const RecordingSeries& heldout, const Selection& selection,
-                     DiagnosisResult& result) {
-  DiagnosisDetail& detail = result.detail;
+HowFar measure_how_far(const RecordingSeries& heldout, const Selection& selection,
+                       const Location& detail, HowFar from_verdict) {
   const std::vector<double>& ho_gap = selection.raw_ho_gap;
   const std::vector<double>& current_error = selection.current_error;
-  HowFar& how = detail.how_far;
-  how.rms_before = result.diagnosis.heldout_rms_before;
-  how.rms_after = result.diagnosis.heldout_rms_after;
+  HowFar how = std::move(from_verdict);
+  how.rms_before = rms_of(ho_gap);
+  how.rms_after = rms_of(current_error);
   how.max_before = max_abs_of(ho_gap);
   how.max_after = max_abs_of(current_error);
   if (detail.where_region) {
@@ -30,9 +29,7 @@ void measure_how_far(const RecordingSeries& heldout, const Selection& selection,
     how.band_rms_before = band_rms(welch_psd(ho_gap, detail.fs_hz, segment), *detail.band_hz);
     how.band_rms_after = band_rms(welch_psd(current_error, detail.fs_hz, segment), *detail.band_hz);
   }
-  detail.heldout_t_s = heldout.t_s;
-  detail.heldout_gap_before_v = ho_gap;
-  detail.heldout_gap_after_v = current_error;
+  return how;
 }
 
 // When the held-out part barely enters the cell where the calibration gap stands out most, it can

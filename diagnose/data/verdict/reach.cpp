@@ -5,6 +5,7 @@
 
 #include "criteria.h"
 #include "series_arithmetic.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 

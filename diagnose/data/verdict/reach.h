@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "diagnosis_detail.h"
+#include "findings.h"
 #include "recording_series.h"
 
 namespace flange::diagnose {

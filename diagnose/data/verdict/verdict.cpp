@@ -8,7 +8,7 @@
 #include "effect_classes.h"
 #include "reach.h"
 #include "regions.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 #include "verdict_reasons.h"
 
@@ -48,7 +48,7 @@ bool picks_fit_a_residue(const VerdictFigures& f) {
 
 // Whether the held-out part enters the cell where the calibration gap stands out most with
 // enough samples to confirm or refute what lies there.
-bool heldout_covers_where(const RecordingSeries& heldout, const DiagnosisDetail& detail) {
+bool heldout_covers_where(const RecordingSeries& heldout, const Location& detail) {
   if (!detail.where_region) return true;
   return samples_in(heldout, detail.regions[*detail.where_region]).size() >=
          criteria::kLeastSamplesPerCell;
@@ -138,7 +138,7 @@ reasons::BeyondReach beyond_reach(const RecordingSeries& heldout, const Calibrat
 VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
                                const std::vector<EffectFinding>& findings,
                                const Diagnosis& diagnosis, const CalibrationReach& reach,
-                               double verdict_noise, const DiagnosisDetail& detail,
+                               double verdict_noise, const Location& detail,
                                const std::vector<sim::EffectSettings>& twin_effects, HowFar& how) {
   const double sigma = selection.noise_v;
   const bool has_noise_type = std::any_of(findings.begin(), findings.end(), [](const auto& f) {
@@ -217,19 +217,21 @@ std::string status_of(Decision decision) {
   return "none";
 }
 
-void verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
-             const std::vector<sim::EffectSettings>& twin_effects, DiagnosisResult& result) {
+VerdictOutcome verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
+                       const std::vector<sim::EffectSettings>& twin_effects, const Location& where,
+                       Diagnosis so_far) {
+  VerdictOutcome result{std::move(so_far), {}, {}, {}};
   Diagnosis& diagnosis = result.diagnosis;
   const std::vector<EffectFinding> findings = findings_of(selection);
   diagnosis.heldout_rms_before = rms_of(selection.raw_ho_gap);
   diagnosis.heldout_rms_after = rms_of(selection.current_error);
   const CalibrationReach reach = calibration_reach(parts.calibration, parts.heldout);
-  HowFar& how = result.detail.how_far;
+  HowFar& how = result.how_far;
   const VerdictFigures f = verdict_figures(parts, selection, findings, diagnosis, reach,
-                                           noise.rms_v, result.detail, twin_effects, how);
+                                           noise.rms_v, where, twin_effects, how);
   const Decision decision = decide(f);
   diagnosis.status = status_of(decision);
-  auto& reasons = result.detail.reasons;
+  auto& reasons = result.reasons;
   reasons.push_back(reasons::heldout_summary(f.rms_before, f.rms_after, selection.noise_v));
   if (!noise.why.empty()) reasons.push_back(noise.why);
   if (f.any_findings && left_within_noise_overall(f) && !left_within_noise_locally(f)) {
@@ -255,7 +257,7 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
           partly_share(f), what_is_left(selection, noise.rms_v, how.worst_window)));
       break;
     case Decision::kUnexplained:
-      result.detail.partial = findings;
+      result.partial = findings;
       diagnosis.nearest = nearest_effect(selection, findings, noise.rms_v, how.worst_window);
       reasons.push_back(reasons::unexplained(f.any_findings));
       if (left_within_reach(f)) {
@@ -292,6 +294,7 @@ void verdict(const Parts& parts, const Selection& selection, const VerdictNoise&
     reasons.insert(reasons.end(), selection.dropped.begin(), selection.dropped.end());
   }
   if (diagnosis.stage.empty()) diagnosis.stage = "none";
+  return result;
 }
 
 }  // namespace flange::diagnose

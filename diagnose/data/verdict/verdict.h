@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "diagnosis_detail.h"
+#include "diagnosis.h"
+#include "findings.h"
+#include "locate.h"
 #include "parts.h"
 #include "selection.h"
 #include "verdict_noise.h"
@@ -72,9 +74,21 @@ Decision decide(const VerdictFigures& f);
 // "explained", "partly explained", "unexplained" or "none".
 std::string status_of(Decision decision);
 
-// The status and the reasons for it, into `result`; `twin_effects` are the effects of the twin
-// the recordings are compared with (their fitted ranges, where they carry them).
-void verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
-             const std::vector<sim::EffectSettings>& twin_effects, DiagnosisResult& result);
+// The verdict stage's value: the diagnosis with its status, scope, findings, nearest effect and
+// held-out figures, the held-out figures the report shows, the reasons and, for "unexplained",
+// what the candidates did get.
+struct VerdictOutcome {
+  Diagnosis diagnosis;
+  HowFar how_far;
+  std::vector<std::string> reasons;
+  std::vector<EffectFinding> partial;
+};
+
+// The status and the reasons for it, for the diagnosis so far (`so_far`: its stage, clock and
+// degenerate data) and the gap located at `where`; `twin_effects` are the effects of the twin the
+// recordings are compared with (their fitted ranges, where they carry them).
+VerdictOutcome verdict(const Parts& parts, const Selection& selection, const VerdictNoise& noise,
+                       const std::vector<sim::EffectSettings>& twin_effects, const Location& where,
+                       Diagnosis so_far);
 
 }  // namespace flange::diagnose

@@ -4,15 +4,11 @@
 
 #include <string>
 
+#include "findings.h"
 #include "selection.h"
 #include "white_noise.h"
 
 namespace flange::diagnose {
-
-struct VerdictNoise {
-  double rms_v = 0.0;
-  std::string why;
-};
 
 // With the converter's grid modelled, what is left is compared with what the noisy twin leaves
 // once quantised on that grid (quantised_noise.h): less than the white noise when the noise is

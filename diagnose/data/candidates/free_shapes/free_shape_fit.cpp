@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "class_fits.h"
 #include "effect_classes.h"
 #include "family.h"
 

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "grid_search.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose::free_shapes {
 namespace {

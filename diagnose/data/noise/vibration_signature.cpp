@@ -7,7 +7,7 @@
 
 #include "criteria.h"
 #include "recording_series.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {

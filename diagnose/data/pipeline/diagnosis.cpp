@@ -69,9 +69,20 @@ void add_coverage_reason(DiagnosisResult& result) {
 
 // A gap without noise, or of a constant voltage, has no band or change points to find: the PSD of
 // a constant leaks from its 0 Hz bin and binary segmentation splits rounding.
-void forget_structure(DiagnosisDetail& detail) {
+void forget_structure(Location& detail) {
   detail.band_hz.reset();
   detail.segments.clear();
+}
+
+// The noise stage's value, or the white noise the selection re-estimated on what its picks leave
+// (Selection::reestimated_noise), which the diagnosis then reports.
+TwinNoise noise_after_selection(const TwinNoise& stage, const Selection& selection) {
+  if (!selection.reestimated_noise) return stage;
+  TwinNoise after = stage;
+  after.white_noise = *selection.reestimated_noise;
+  after.noise_std_v = selection.noise_v;
+  after.noise_source = selection.reestimated_noise->source;
+  return after;
 }
 
 // Mount motion is each session's own random motion: a twin that holds it is replayed without it
@@ -102,10 +113,6 @@ DiagnosisResult diagnose_without_session_lines(const SessionLines& lines,
 
 }  // namespace
 
-double rms_above_noise(double rms, double noise) {
-  return std::sqrt(std::max(0.0, rms * rms - noise * noise));
-}
-
 DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
                                    const RecordingSeries& heldout, const DiagnoseOptions& given) {
   const DiagnoseOptions options = without_mount_motion(given);
@@ -113,50 +120,63 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   // Input: the parts' shared rate and how their clocks relate.
   const double fs_hz = shared_sample_rate_hz(calibration, heldout);
   sim::check_twin_config(options.twin);
-  DiagnosisResult result;
-  result.detail.fs_hz = fs_hz;
   const SessionClock clock = session_clock(calibration, heldout);
   if (const std::optional<SessionLines> lines = take_out_session_lines(
           calibration, heldout, given, clock.age_offset_s, clock.heldout_age_unknown())) {
     return diagnose_without_session_lines(*lines, given);
   }
-  result.diagnosis.clock = clock.kind;
-  if (!clock.heldout_age_unknown()) result.diagnosis.heldout_starts_after_s = clock.age_offset_s;
+  Diagnosis so_far;
+  so_far.clock = clock.kind;
+  if (!clock.heldout_age_unknown()) so_far.heldout_starts_after_s = clock.age_offset_s;
   // Replay: the twin as given on both parts, and the converter grid they share.
   const Parts parts =
       replay_parts(calibration, heldout, options, clock.age_offset_s, clock.heldout_age_unknown());
   const std::vector<double> cal_base = parts.cal_replay.voltage(options.twin.effects);
   // Noise and locate: the white noise, and where the gap lies on the calibration part.
-  estimate_noise(calibration, cal_base, options, result.detail);
-  const double noise_v = std::max(result.detail.noise_std_v, 1e-9);
-  result.diagnosis.noise_std_v = noise_v;
-  const DegenerateData degenerate = degenerate_data(calibration, result.detail.noise_std_v);
-  result.diagnosis.degenerate = degenerate.sentences;
-  locate(calibration, cal_base, fs_hz, options, result.detail,
-         null_replica(parts.cal_replay, given, result.detail.white_noise));
-  if (degenerate.nothing_to_locate()) forget_structure(result.detail);
+  const TwinNoise noise = estimate_noise(calibration, cal_base, options);
+  const double noise_v = std::max(noise.noise_std_v, 1e-9);
+  so_far.noise_std_v = noise_v;
+  const DegenerateData degenerate = degenerate_data(calibration, noise.noise_std_v);
+  so_far.degenerate = degenerate.sentences;
+  Location where = locate(calibration, cal_base, fs_hz, options, noise,
+                          null_replica(parts.cal_replay, given, noise.white_noise));
+  if (degenerate.nothing_to_locate()) forget_structure(where);
   const std::vector<double> ho_base = parts.ho_replay.voltage(options.twin.effects);
-  confirm_alarm_timing_on_heldout(heldout, ho_base, options, result.detail,
-                                  null_replica(parts.ho_replay, given, result.detail.white_noise));
-  result.diagnosis.stage = first_significant_stage(result.detail.stages);
+  where.stages = confirm_alarm_timing_on_heldout(
+      heldout, ho_base, options, noise.white_noise, fs_hz, std::move(where.stages),
+      null_replica(parts.ho_replay, given, noise.white_noise));
+  so_far.stage = first_significant_stage(where.stages);
   // Selection: candidates scored on held-out data, forward, refined, backward.
   Selection selection = select_in_two_passes(
-      parts, options, starting_selection(parts, options.twin.effects, cal_base, ho_base, noise_v),
-      result);
+      parts, options, noise.adc_grid,
+      starting_selection(parts, options.twin.effects, cal_base, ho_base, noise_v));
   measure_inclusion(parts, selection);
   drop_unneeded_picks(parts, selection);
   measure_picks_in_final_fit(parts, selection);
   resolve_parameters(parts, selection);
+  const TwinNoise reported_noise = noise_after_selection(noise, selection);
+  if (selection.reestimated_noise) so_far.noise_std_v = selection.noise_v;
   // Signatures: the noise-type classes.
-  recognise_quantisation(parts, result.detail.white_noise, options.twin.noise.rounding_lsb_v,
+  recognise_quantisation(parts, reported_noise.white_noise, options.twin.noise.rounding_lsb_v,
                          selection);
-  const VerdictNoise verdict_noise = with_converter_grid(selection, result.detail.white_noise,
+  const VerdictNoise verdict_noise = with_converter_grid(selection, reported_noise.white_noise,
                                                          recognise_vibration(parts, selection));
   if (twin_holds_motion) selection.vibration.reset();
-  // Verdict and reasons.
-  verdict(parts, selection, verdict_noise, options.twin.effects, result);
+  // Verdict and reasons, assembled with the stages' values.
+  VerdictOutcome outcome =
+      verdict(parts, selection, verdict_noise, options.twin.effects, where, std::move(so_far));
+  DiagnosisResult result;
+  result.diagnosis = std::move(outcome.diagnosis);
+  static_cast<TwinNoise&>(result.detail) = reported_noise;
+  static_cast<Location&>(result.detail) = std::move(where);
+  result.detail.partial = std::move(outcome.partial);
+  result.detail.reasons = std::move(outcome.reasons);
   add_context_reasons(parts, result);
-  measure_how_far(heldout, selection, result);
+  result.detail.how_far =
+      measure_how_far(heldout, selection, result.detail, std::move(outcome.how_far));
+  result.detail.heldout_t_s = heldout.t_s;
+  result.detail.heldout_gap_before_v = selection.raw_ho_gap;
+  result.detail.heldout_gap_after_v = selection.current_error;
   add_coverage_reason(result);
   // What would tell the picks apart or determine them; a "none" names no finding to ask about.
   if (result.diagnosis.status != "none") {
@@ -164,7 +184,8 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   }
   set_confidences(result.diagnosis);
   // The improved twin: the one given, with what the diagnosis found.
-  result.improved_twin = improved_twin(parts, selection, result, given.twin);
+  result.improved_twin = improved_twin(parts, selection, result.diagnosis,
+                                       reported_noise.white_noise, given.twin);
   return result;
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "residual_tests.h"
+#include "series_statistics.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -56,6 +56,10 @@ double max_abs_of(const std::vector<double>& x) {
   double m = 0.0;
   for (double v : x) m = std::max(m, std::abs(v));
   return m;
+}
+
+double rms_above_noise(double rms, double noise) {
+  return std::sqrt(std::max(0.0, rms * rms - noise * noise));
 }
 
 double white_noise_std(const std::vector<double>& x, std::size_t lag) {

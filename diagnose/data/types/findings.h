@@ -1,19 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Everything behind a Diagnosis that diagnosis.json and the report show: the gap at each stage,
-// where it lies (operating region, frequency band, time segments), the residual tests, and the
-// held-out traces before and after the selected effects.
+// What the stages find and hand on, below every stage: the gap at each stage of the chain, the
+// operating-region cells, the coherences and time segments where the gap lies (locate), and how
+// far the picks shrink the held-out gap (verdict).
 #pragma once
 
-#include <optional>
+#include <cstddef>
 #include <string>
-#include <vector>
-
-#include "adc_grid.h"
-#include "diagnosis.h"
-#include "improved_twin.h"
-#include "residual_tests.h"
-#include "sample_rate.h"
-#include "white_noise.h"
 
 namespace flange::diagnose {
 
@@ -67,37 +59,11 @@ struct HowFar {
   double within_calibration_rms_before = 0, within_calibration_rms_after = 0;
 };
 
-struct DiagnosisDetail {
-  double fs_hz = 0.0;
-  double noise_std_v = 0.0;  // the twin's white voltage noise, estimated or given
-  std::string noise_source;  // how it was obtained
-  WhiteNoise white_noise;    // the same, with the analog part and the grid it was estimated on
-  std::optional<AdcGrid> adc_grid;  // the calibration part's converter grid, if it has one
-  std::vector<StageGap> stages;
-  std::vector<RegionCell> regions;
-  std::optional<std::size_t> where_region;  // index into regions
-  std::optional<std::pair<double, double>> band_hz;
-  std::vector<InputCoherence> coherences;
-  std::vector<TimeSegment> segments;
-  CorrelationTest whiteness, vs_temperature, vs_clearance, vs_temperature_rate;
-  Spectrum gap_psd;                // of the calibration voltage gap
-  double noise_psd = 0.0;          // white-noise level for comparison, V^2/Hz
-  std::vector<double> t_s, gap_v;  // the calibration voltage gap over time
-  // Held-out traces.
-  std::vector<double> heldout_t_s, heldout_gap_before_v, heldout_gap_after_v;
-  HowFar how_far;
-  std::vector<EffectFinding> partial;  // unexplained: what the candidates did get
-  std::vector<std::string> reasons;    // why the verdict, one sentence each
+// What the held-out gap that is left is compared with (signatures/vibration.h,
+// verdict/verdict_noise.h), and why when it is not the white noise.
+struct VerdictNoise {
+  double rms_v = 0.0;
+  std::string why;
 };
-
-struct DiagnosisResult {
-  Diagnosis diagnosis;
-  DiagnosisDetail detail;
-  ImprovedTwin improved_twin;  // the twin with the findings added (twin.json)
-};
-
-// diagnose() with the detail kept.
-DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
-                                   const RecordingSeries& heldout, const DiagnoseOptions& options);
 
 }  // namespace flange::diagnose

@@ -7,9 +7,10 @@
 #include <cmath>
 #include <vector>
 
+#include "class_fits.h"
 #include "effect_classes.h"
 #include "free_shape_fit.h"
-#include "residual_tests.h"
+#include "series_statistics.h"
 #include "series_arithmetic.h"
 #include "twin_replay.h"
 
@@ -44,7 +45,7 @@ std::optional<SessionLines> take_out_session_lines(const RecordingSeries& calibr
   const TwinReplay ho_replay(heldout, options.twin.nominal, age_offset_s);
   std::vector<std::string> sentences;
   for (const std::string& name : held) {
-    for (const FreeShapeFamily& family : effect_class(name).families) {
+    for (const FreeShapeFamily& family : class_fit(name).families) {
       const std::vector<double> cal_gap =
           minus(out.calibration.voltage_v, cal_replay.voltage(effects));
       const std::vector<double> ho_gap = minus(out.heldout.voltage_v, ho_replay.voltage(effects));

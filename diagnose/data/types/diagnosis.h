@@ -85,9 +85,6 @@ struct Diagnosis {
   std::vector<std::string> next_measurement;
 };
 
-// The part of a gap's RMS above white noise of RMS `noise`: sqrt(rms^2 - noise^2), 0 below it.
-double rms_above_noise(double rms, double noise);
-
 // Fits on `calibration`, scores on `heldout`; both must share a sample rate and carry the
 // reference clearance. Throws InputError (input_error.h) on mismatched or too-short data.
 Diagnosis diagnose(const RecordingSeries& calibration, const RecordingSeries& heldout,

@@ -13,6 +13,9 @@ double mean_of(const std::vector<double>& x);
 double rms_of(const std::vector<double>& x);
 double max_abs_of(const std::vector<double>& x);
 
+// The part of a gap's RMS above white noise of RMS `noise`: sqrt(rms^2 - noise^2), 0 below it.
+double rms_above_noise(double rms, double noise);
+
 // y = intercept + slope x by least squares, with the t statistic of the slope. `fitted` is false
 // (and the rest 0) for fewer than 3 points or an x that does not vary.
 struct LineFit {

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#include "class_fits.h"
+
+#include "effect_classes.h"
+#include "effect_fit.h"
+#include "family_makers.h"
+
+namespace flange::diagnose {
+namespace {
+
+namespace fs = free_shapes;
+
+// A periodic curve of the clearance is not weighed on a converter grid: the grid's quantisation
+// error repeats with every LSB of voltage, which the sensor's sensitivity makes a ripple of about
+// LSB / (dV/dd) in the clearance.
+std::vector<FreeShapeFamily> nonlinearity_families() {
+  return {{"nonlinearity", "V", fs::make_voltage_curve},
+          {"nonlinearity", "d", fs::make_clearance_curve},
+          {"nonlinearity", "d, periodic", fs::make_clearance_ripple,
+           /*weighed_on_a_converter_grid=*/false}};
+}
+
+// The law the free shape found, as the effect's drift; the free shape's voltage is sampled late
+// or early, the effect's makes the temperature late where the skew turns positive, so only a law
+// that keeps the voltage late all session is the effect.
+std::optional<sim::ParamValues> skew_member(const FreeShapeFit& shape) {
+  const auto& p = shape.params;
+  if (p.count("skew_s_most") == 0 || p.at("skew_s_most") > 0.0) return std::nullopt;
+  return sim::ParamValues{{"skew_s", p.at("skew_s_at_start")},
+                          {"drift_s_per_h", p.at("drift_s_per_h")},
+                          {"drift_change_s_per_h2", p.at("drift_change_s_per_h2")}};
+}
+
+const std::vector<ClassFit>& class_fits() {
+  static const std::vector<ClassFit> fits = {
+      {"temp_gain_drift", fit_by_search,
+       {{"temp_gain_drift", "(V - v_min) T", fs::make_temperature_gain_curve},
+        {"temp_gain_drift", "(V - pivot) T", fs::make_pivot_gain}}},
+      {"temp_offset_drift", fit_by_search,
+       {{"temp_offset_drift", "T", fs::make_temperature_offset_curve}}},
+      {"nonlinearity", fit_by_search, nonlinearity_families()},
+      {"range_compression", fit_by_search,
+       {{"range_compression", "top of V, T", fs::make_compression_surface},
+        {"range_compression", "V over a moving knee", fs::make_moving_knee}}},
+      {"thermal_lag", fit_by_search, {{"thermal_lag", "lagged T", fs::make_lag}}},
+      {"channel_skew", fit_by_search, {{"channel_skew", "t", fs::make_skew}}, skew_member},
+      {"ageing_drift", fit_ageing,
+       {{"ageing_drift", "age, continuing", fs::make_continuing_ageing},
+        {"ageing_drift", "age, settled", fs::make_settled_age_curve}}},
+      {"mains_pickup", fit_mains, {{"mains_pickup", "aliased lines", fs::make_mains_lines}}},
+  };
+  return fits;
+}
+
+}  // namespace
+
+const ClassFit& class_fit(const std::string& name) {
+  for (const ClassFit& f : class_fits()) {
+    if (f.name == name) return f;
+  }
+  static const ClassFit none{};
+  return none;
+}
+
+std::vector<std::string> classes_with_fits() {
+  std::vector<std::string> names;
+  for (const ClassFit& f : class_fits()) names.push_back(f.name);
+  return names;
+}
+
+std::vector<FreeShapeFamily> all_free_shape_families() {
+  std::vector<FreeShapeFamily> families;
+  for (const EffectClass& c : effect_classes()) {
+    const std::vector<FreeShapeFamily>& of = class_fit(c.name).families;
+    families.insert(families.end(), of.begin(), of.end());
+  }
+  return families;
+}
+
+}  // namespace flange::diagnose
