@@ -14,8 +14,8 @@
 #                   library pick, held in twin.json as the library effect
 #   holdout_frac    one session of an ageing, its last quarter held out (--holdout-fraction 0.25:
 #                   one clock)
-#   start_times     the ageing of docs/diagnose.md's "Workflow" across two sessions a day and a
-#                   half apart, with --real-start and --holdout-start
+#   start_times     an ageing across two sessions a day and a half apart (docs/diagnose_figures.md,
+#                   "Ageing across two sessions"), with --real-start and --holdout-start
 #   clocks_unknown  the same pair without start times (the free ageing places the held-out session)
 #   free_shape      a 6 Hz pair with a voltage gain step half-way (outside the library: the free
 #                   pass runs every family; free shapes picked, undetermined values, classes the

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // What `flange diagnose --selftest` shows of a blind check (diagnose_selftest.h): the terminal
 // table, the summary against the aims, selftest.json and selftest.md (the table as
-// docs/diagnose.md records it), and a single case's two sessions as recordings.
+// docs/diagnose_figures.md records it), and a single case's two sessions as recordings.
 #pragma once
 
 #include <cstdint>
