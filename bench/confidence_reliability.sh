@@ -5,7 +5,10 @@
 # right in each bin and among all claims at or above the bin's low end.
 #   bash bench/confidence_reliability.sh alt|twin SEED... [-- FLANGE]   (FLANGE: build/flange)
 # alt: 40 pairs per seed of the alternative reality; twin: 50 cases per seed of the twin's own.
-# Leaves each seed's selftest.json in build/confidence_reliability/<reality><seed>/.
+# Leaves each seed's selftest.json in build/confidence_reliability/<reality><seed>/, and writes the
+# table, under the command that made it, into docs/diagnose_figures.md (FIGURES=FILE writes it into
+# FILE instead, FIGURES=none nowhere): between the lines "<!-- begin: COMMAND -->" and
+# "<!-- end: COMMAND -->", replacing that command's earlier table, or at the end of the file.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 reality="${1:?alt or twin}"
@@ -18,6 +21,8 @@ while [ $# -gt 0 ]; do
   shift
 done
 [ "${#seeds[@]}" -gt 0 ] || { echo "confidence_reliability: give at least one seed" >&2; exit 2; }
+figures="${FIGURES:-$here/../docs/diagnose_figures.md}"
+command="bash bench/confidence_reliability.sh $reality ${seeds[*]}"
 out="$here/../build/confidence_reliability"
 mkdir -p "$out"
 files=()
@@ -31,7 +36,9 @@ for seed in "${seeds[@]}"; do
   fi
   files+=("$dir/selftest.json")
 done
-python3 - "${files[@]}" <<'PY'
+table="$(mktemp)"
+trap 'rm -f "$table"' EXIT
+python3 - "${files[@]}" <<'PY' | tee "$table"
 import json, sys
 claims = []
 for path in sys.argv[1:]:
@@ -39,6 +46,7 @@ for path in sys.argv[1:]:
     for item in data.get("pairs", data.get("cases", [])):
         claims += [(c["confidence"], c["right"]) for c in item.get("claims", [])]
 print(f"{len(claims)} claims from {len(sys.argv) - 1} seed(s)")
+print()
 print("| confidence | claims | right | share right | claims at or above | right among them |")
 print("|---|---|---|---|---|---|")
 ok = True
@@ -55,6 +63,23 @@ for c, _ in claims:
     above = [r for d, r in claims if d >= c]
     if sum(above) / len(above) < c:
         ok = False
+print()
 print("reliability: claims with confidence >= p are right at least p of the time:",
       "holds" if ok else "does not hold")
+PY
+[ "$figures" = none ] && exit 0
+python3 - "$figures" "$command" "$table" <<'PY'
+import os, sys
+path, command, table = sys.argv[1], sys.argv[2], open(sys.argv[3]).read()
+begin, end = f"<!-- begin: {command} -->", f"<!-- end: {command} -->"
+block = f"{begin}\n\n    {command}\n\n{table.rstrip()}\n\n{end}\n"
+text = open(path).read() if os.path.exists(path) else ""
+if begin in text and end in text:
+    head, rest = text.split(begin, 1)
+    tail = rest.split(end, 1)[1].lstrip("\n")
+    text = head + block + ("\n" + tail if tail else "")
+else:
+    text = text.rstrip("\n") + ("\n\n" if text else "") + block
+open(path, "w").write(text)
+print(f"confidence_reliability: the table is in {path}, under '{command}'")
 PY

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // What `flange diagnose --selftest` shows of the twin's blind check (diagnose_selftest.h) beyond
-// the harness's report (blind_report.h): its header line, its words and columns, and a single
-// case's two sessions as recordings.
+// the harness's report (blind_report.h): its header line, its words and columns (the table as
+// docs/diagnose_figures.md records it), and a single case's two sessions as recordings.
 #pragma once
 
 #include <cstdint>
