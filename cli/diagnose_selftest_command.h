@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `flange diagnose --selftest --cases N --seed S`: the blind check of the data layer
-// (diagnose/data/diagnose_selftest.h). Prints one row per case and the summary against the aims;
+// (diagnose/data/selftest/diagnose_selftest.h). Prints one row per case and the summary against the aims;
 // with --out writes DIR/selftest.json and DIR/selftest.md (as docs/diagnose_figures.md records
 // it). `--reality alt [--pairs N]` runs it on the alternative reality instead
 // (diagnose/alt_check/, diagnose_alt_selftest_command.h).

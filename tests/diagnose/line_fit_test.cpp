@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// line_fit (residual_tests.h), the least-squares line the vibration signature and the mains
+// line_fit (series_statistics.h), the least-squares line the vibration signature and the mains
 // family's motion check both stand on.
 #include <gtest/gtest.h>
 

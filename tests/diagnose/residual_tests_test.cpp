@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The residual tests of residual_tests.h (white_noise_std, autocorrelation, cross_correlation,
+// The residual tests of series_statistics.h (white_noise_std, autocorrelation, cross_correlation,
 // whiteness_test, independence_test, welch_psd, coherence, spectrum_segment,
 // mean_change_points), each on a small synthetic series whose answer is known in advance.
 //

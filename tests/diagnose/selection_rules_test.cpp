@@ -433,7 +433,7 @@ double offset_of(const std::string& name) {
   return 0.0;
 }
 
-// Every round's library candidates, kept in parts.library_rounds as the other pass would have
+// Every round's library candidates, kept in `rounds` as the other pass would have
 // left them, so that select_bias_effects weighs them without fitting: round r's candidates are
 // every bias class not yet taken, each with its catalogue defaults; the four of four_offsets()
 // take their offset off what the picks leave, the others take nothing. Round r takes the r-th.

@@ -30,7 +30,7 @@ EffectFit fit_effect(const std::string& name, const TwinReplay& replay,
                      const std::vector<double>& real_v,
                      const std::vector<sim::EffectSettings>& modelled);
 
-// The class table's fitters (EffectClass::fit). fit_by_search: a coarse lattice over the class's
+// The classes' fitters (candidates/class_fits.h, ClassFit::fit). fit_by_search: a coarse lattice over the class's
 // search ranges, then Nelder-Mead from its best point. fit_mains: the same with the mains
 // standard (50 or 60 Hz) chosen among those whose fundamental does not alias to 0 Hz (infinite
 // RMS when neither is left). fit_ageing: the ageing drift is linear in time, gap = r (a0 + t /

@@ -63,16 +63,16 @@ struct EffectClass {
   // A function of the clearance alone: on a protocol that reaches each clearance from one side
   // only it cannot be told from a hysteresis (outside the library).
   bool function_of_clearance_alone = false;
-  // The converter: its grid is found from the recorded codes (noise/adc_grid.h), and its code
+  // The converter: its grid is found from the recorded codes (input/adc_grid.h), and its code
   // boundaries may be placed before the picks (noise/converter_boundaries.h).
   bool is_converter = false;
   // Mount motion: found from how the gap's variance follows the sensitivity
-  // (signatures/vibration_signature.h).
+  // (noise/vibration_signature.h).
   bool is_mount_motion = false;
   // Lines each session has of its own (the mains: its phase at a session's start, and with a
   // wandering grid its amplitude window by window). A twin that holds the class is not replayed
   // with it: a diagnosis against that twin takes each part's own lines, fitted by the class's
-  // free shape, out of its recording (replay/session_lines.h).
+  // free shape, out of its recording (candidates/session_lines.h).
   bool lines_of_each_session = false;
   // The channel delays a setting of this class makes.
   ChannelDelay (*channel_delay)(const sim::EffectSettings&) = nullptr;

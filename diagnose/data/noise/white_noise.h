@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The white noise the diagnosis compares every gap with, estimated from the data. Without a
 // converter grid (or with one much finer than the noise) it is the median-based estimate of
-// residual_tests.h at lag 2. On a coarse grid (an LSB above an eighth of that estimate) the
+// series_statistics.h at lag 2. On a coarse grid (an LSB above an eighth of that estimate) the
 // median collapses or sits on the lattice of code steps, so the analog noise comes from the
 // grid-aware fit of quantised_noise.h, and the noise of the gap against the unquantised twin
 // adds the quantisation error: sqrt(analog^2 + LSB^2 / 12).

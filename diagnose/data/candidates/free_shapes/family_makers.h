@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// How to make each free-shape family for a calibration part: what the class table's entries
-// (classes/effect_classes.cpp, FreeShapeFamily::make) name. Each is defined beside its family.
+// How to make each free-shape family for a calibration part: what the classes' entries
+// (candidates/class_fits.cpp, FreeShapeFamily::make) name. Each is defined beside its family.
 #pragma once
 
 #include <memory>

@@ -29,7 +29,7 @@
 //                      settled (any curve of age over the calibration session, held after it)
 // Curves of one variable are piecewise linear between knots spread evenly over the calibration
 // part's range (held constant beyond it). Each family is one file of this folder (family.h says
-// what a family does); the class table (classes/effect_classes.cpp) says which family stands for
+// what a family does); the classes' fits (candidates/class_fits.cpp) say which family stands for
 // which class and how to make it (family_makers.h).
 #pragma once
 
