@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -12,6 +11,7 @@
 #include "input_error.h"
 #include "limit_forecast.h"
 #include "report_format.h"
+#include "wear_line_fit.h"
 
 namespace flange::host {
 namespace {
@@ -27,11 +27,6 @@ double day_of_plan_date(const std::string& text) {
   }
   throw InputError(fmt::format("--before: '{}' is not a date: YYYY-MM-DD, after the last run",
                                printable_excerpt(text)));
-}
-
-// The one-sided Student t quantile at `p` with the fit's degrees of freedom (at least 1).
-double student_t_quantile(double p, int dof) {
-  return boost::math::quantile(boost::math::students_t(std::max(1, dof)), p);
 }
 
 // The wheel's plan entry from the forecast at its rate at risk; nothing without a forecast.
@@ -104,7 +99,7 @@ std::pair<double, std::string> last_run(const std::vector<WheelHistory>& histori
 double rate_at_risk(const WheelWear& wheel, double risk) {
   // The stated interval's own degrees of freedom (the block jackknife's, fleet_wear.h).
   const int dof = wheel.rate_dof > 0 ? wheel.rate_dof : (wheel.fit ? wheel.fit->dof : 1);
-  const double t = student_t_quantile(1.0 - risk, dof);
+  const double t = t_one_sided(1.0 - risk, dof);
   const double t_stated = t95(dof);
   // The half of the stated interval on the side the quantile lies (they differ when the
   // interval is not symmetric about the rate).

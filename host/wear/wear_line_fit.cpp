@@ -102,4 +102,8 @@ double t_quantile(double level, int dof) {
   return boost::math::quantile(boost::math::complement(distribution, (1.0 - level) / 2.0));
 }
 
+double t_one_sided(double p, int dof) {
+  return boost::math::quantile(boost::math::students_t(std::max(1, dof)), p);
+}
+
 }  // namespace flange::host

@@ -61,4 +61,8 @@ double t95(int dof);
 // The same for a two-sided interval at `level` (0 < level < 1).
 double t_quantile(double level, int dof);
 
+// The one-sided Student t quantile at probability `p` with `dof` degrees of freedom (at least 1):
+// the value a t variable stays below with probability p.
+double t_one_sided(double p, int dof);
+
 }  // namespace flange::host
