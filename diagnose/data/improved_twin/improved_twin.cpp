@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "improved_twin.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -198,10 +196,10 @@ HeldFinding held(const EffectFinding& finding, const Selection& selection,
   if (of.lines_of_each_session) {
     const bool one_line = pick != selection.picks.end() && pick->modelled_index < 0 && member;
     return {finding.name, HeldAs::kSessionLines,
-            one_line ? reasons::held_as_session_lines(
-                           true, pick->chosen().free_shape->params.at("rms_v"),
+            one_line ? reasons::held_as_one_session_line(
+                           pick->chosen().free_shape->params.at("rms_v"),
                            pick->chosen().free_shape->params.at("mains_hz"))
-                     : reasons::held_as_session_lines(false, 0.0, 0.0)};
+                     : reasons::held_as_session_lines_effect()};
   }
   if (pick != selection.picks.end() && pick->modelled_index < 0) {
     const double misfit =

@@ -6,6 +6,16 @@
 #include "verdict_reasons.h"
 
 namespace flange::diagnose::reasons {
+namespace {
+
+// What a twin holding lines of each session does with them.
+std::string played_from_each_session() {
+  return " for `flange simulate` to play; a diagnosis against this twin fits each session's own "
+         "lines at the mains' aliases and takes them out, since their phase (and with a wandering "
+         "grid their amplitude) is each session's own";
+}
+
+}  // namespace
 
 const char* held_as_text(HeldAs held) {
   switch (held) {
@@ -52,15 +62,14 @@ std::string held_as_mount_motion(double rms_mm) {
       rms_mm);
 }
 
-std::string held_as_session_lines(bool one_line, double rms_v, double mains_hz) {
-  const std::string lines =
-      one_line ? fmt::format("one line of the lines' {:.3g} V RMS at the {:g} Hz mains", rms_v,
-                             mains_hz)
-               : held_as_library_effect();
-  return lines +
-         " for `flange simulate` to play; a diagnosis against this twin fits each session's own "
-         "lines at the mains' aliases and takes them out, since their phase (and with a wandering "
-         "grid their amplitude) is each session's own";
+std::string held_as_one_session_line(double rms_v, double mains_hz) {
+  return fmt::format("one line of the lines' {:.3g} V RMS at the {:g} Hz mains", rms_v,
+                     mains_hz) +
+         played_from_each_session();
+}
+
+std::string held_as_session_lines_effect() {
+  return held_as_library_effect() + played_from_each_session();
 }
 
 std::string not_held_in_table(double misfit_v, double allowed_v) {

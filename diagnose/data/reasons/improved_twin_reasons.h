@@ -20,9 +20,10 @@ const char* held_as_text(HeldAs held);
 std::string held_in_white_noise(double lsb_v);
 std::string held_as_converter(bool with_daq_gain);
 std::string held_as_mount_motion(double rms_mm);
-// `one_line`: a free shape of the lines, held as one line of `rms_v` at `mains_hz`; else the
-// library effect.
-std::string held_as_session_lines(bool one_line, double rms_v, double mains_hz);
+// Lines of each session: a free shape of the lines held as one line of `rms_v` at `mains_hz`, or
+// the library effect.
+std::string held_as_one_session_line(double rms_v, double mains_hz);
+std::string held_as_session_lines_effect();
 std::string not_held_in_table(double misfit_v, double allowed_v);
 std::string held_as_member_and_table(double misfit_v);
 std::string held_in_table(double misfit_v);
