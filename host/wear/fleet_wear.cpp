@@ -11,6 +11,7 @@
 
 #include "block_jackknife.h"
 #include "daily_distance.h"
+#include "locomotive_common_mode.h"
 #include "negative_rate.h"
 #include "reprofiling_search.h"
 
@@ -181,30 +182,75 @@ WheelWear wheel_with_runs(const WheelHistory& history, std::vector<WearObservati
   return wheel;
 }
 
-// Both wheels of an axle: shared segments, the drift check, then each wheel's own line.
-void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistory& right,
-                   const SensitivityAt& sensitivity) {
+// Both wheels of an axle on the runs both have, with their shared segments.
+struct AxlePair {
+  WheelWear left, right;
+  std::vector<double> yl, yr;  // the clearances
+  std::vector<std::int64_t> run_id;
+};
+
+AxlePair segmented_axle(const FleetWear& fleet, const WheelHistory& left,
+                        const WheelHistory& right) {
   AxleRuns axle = align_runs(left, right);
-  WheelWear l = wheel_with_runs(left, std::move(axle.left));
-  WheelWear r = wheel_with_runs(right, std::move(axle.right));
-  const std::vector<double> yl = clearances(l.runs), yr = clearances(r.runs);
+  AxlePair pair{wheel_with_runs(left, std::move(axle.left)),
+                wheel_with_runs(right, std::move(axle.right)), {}, {}, {}};
+  pair.yl = clearances(pair.left.runs);
+  pair.yr = clearances(pair.right.runs);
+  for (const WearObservation& run : pair.left.runs) pair.run_id.push_back(run.run_id);
   std::vector<MaintenanceMark> marks = left.maintenance;
   marks.insert(marks.end(), right.maintenance.begin(), right.maintenance.end());
-  const std::set<std::size_t> changes = recorded_changes(l.runs, marks);
-  const std::vector<std::size_t> found =
-      unexplained(find_reprofilings(yl, yr, fleet.thresholds.max_step_mm), changes);
-  const auto recorded = recorded_boundaries(l.runs, marks);
-  segment_runs(l, found, recorded, changes);
-  segment_runs(r, found, recorded, changes);
-  std::vector<double> difference;
-  for (std::size_t k = 0; k < yl.size(); ++k) difference.push_back(yr[k] - yl[k]);
-  std::optional<DriftFinding> drift;
-  try {
-    drift = find_sensor_drift(series_of(l, difference), series_of(l, yl, sensitivity),
-                              series_of(r, yr, sensitivity));
-  } catch (const std::invalid_argument&) {
-    drift.reset();  // too few runs to tell a drift from wear
+  const std::set<std::size_t> changes = recorded_changes(pair.left.runs, marks);
+  const std::vector<std::size_t> found = unexplained(
+      find_reprofilings(pair.yl, pair.yr, fleet.thresholds.max_step_mm), changes);
+  const auto recorded = recorded_boundaries(pair.left.runs, marks);
+  segment_runs(pair.left, found, recorded, changes);
+  segment_runs(pair.right, found, recorded, changes);
+  return pair;
+}
+
+AxleSeries sum_and_difference(const AxlePair& pair) {
+  std::vector<double> sum, difference;
+  for (std::size_t k = 0; k < pair.yl.size(); ++k) {
+    sum.push_back(pair.yl[k] + pair.yr[k]);
+    difference.push_back(pair.yr[k] - pair.yl[k]);
   }
+  return {pair.run_id, series_of(pair.left, sum), series_of(pair.left, difference)};
+}
+
+// The shared part of one wheel's own series: left = (sum - difference) / 2, right = (sum +
+// difference) / 2, run by run where both are known.
+std::map<std::int64_t, double> side_common_mode(const CommonMode& common, bool left) {
+  std::map<std::int64_t, double> side;
+  for (const auto& [run, sum] : common.sum_mm) {
+    const auto difference = common.difference_mm.find(run);
+    if (difference == common.difference_mm.end()) continue;
+    side[run] = (sum + (left ? -1.0 : 1.0) * difference->second) / 2.0;
+  }
+  return side;
+}
+
+// The drift candidates of an axle, on what is left once the locomotive's shared part is taken
+// away (locomotive_common_mode.h); none when the runs are too few to tell a drift from wear.
+DriftCandidates axle_drift_candidates(const AxlePair& pair, const CommonMode& common,
+                                      const SensitivityAt& sensitivity) {
+  const AxleSeries both = sum_and_difference(pair);
+  try {
+    return drift_candidates(
+        without_common_mode(both.difference, pair.run_id, common.difference_mm),
+        without_common_mode(series_of(pair.left, pair.yl, sensitivity), pair.run_id,
+                            side_common_mode(common, true)),
+        without_common_mode(series_of(pair.right, pair.yr, sensitivity), pair.run_id,
+                            side_common_mode(common, false)));
+  } catch (const std::invalid_argument&) {
+    return {};
+  }
+}
+
+// The axle's sensor fault (if any), then each wheel's own line.
+void estimate_axle(FleetWear& fleet, AxlePair pair, const std::optional<DriftFinding>& drift,
+                   const SensitivityAt& sensitivity) {
+  WheelWear& l = pair.left;
+  WheelWear& r = pair.right;
   WheelWear& faulty = drift && drift->left ? l : r;
   if (drift) {
     faulty.sensor_fault = drift;
@@ -216,6 +262,31 @@ void estimate_axle(FleetWear& fleet, const WheelHistory& left, const WheelHistor
   mark_negative_rate(r);
   fleet.wheels.push_back(std::move(l));
   fleet.wheels.push_back(std::move(r));
+}
+
+// Every axle of one locomotive: each pair segmented, what the axles share, each axle's drift
+// candidates, the size a drift must reach on this locomotive (sensor_drift.h), then each axle.
+void estimate_locomotive(FleetWear& fleet, const std::vector<const WheelHistory*>& lefts,
+                         const std::vector<const WheelHistory*>& rights,
+                         const SensitivityAt& sensitivity) {
+  std::vector<AxlePair> pairs;
+  std::vector<AxleSeries> series;
+  for (std::size_t a = 0; a < lefts.size(); ++a) {
+    pairs.push_back(segmented_axle(fleet, *lefts[a], *rights[a]));
+    series.push_back(sum_and_difference(pairs.back()));
+  }
+  const CommonMode common = locomotive_common_mode(series);
+  std::vector<DriftCandidates> candidates;
+  std::vector<double> sizes;
+  for (const AxlePair& pair : pairs) {
+    candidates.push_back(axle_drift_candidates(pair, common, sensitivity));
+    sizes.push_back(drift_like_size(candidates.back()));
+  }
+  const double min_size = drift_size_to_flag(sizes);
+  for (std::size_t a = 0; a < pairs.size(); ++a) {
+    estimate_axle(fleet, std::move(pairs[a]), flagged_drift(candidates[a], min_size),
+                  sensitivity);
+  }
 }
 
 // A wheel without a partner: its own jumps back, no drift check (nothing to compare with).
@@ -255,12 +326,18 @@ FleetWear estimate_fleet_wear(const std::vector<WheelHistory>& histories,
     auto& pair = axles[{history.wheel.locomotive, history.wheel.axle}];
     (history.wheel.side == "left" ? pair.first : pair.second) = &history;
   }
+  std::map<std::string, std::pair<std::vector<const WheelHistory*>,
+                                  std::vector<const WheelHistory*>>> locomotives;
   for (const auto& [key, pair] : axles) {
     if (pair.first != nullptr && pair.second != nullptr) {
-      estimate_axle(fleet, *pair.first, *pair.second, sensitivity);
+      locomotives[key.first].first.push_back(pair.first);
+      locomotives[key.first].second.push_back(pair.second);
     } else {
       estimate_lone_wheel(fleet, pair.first != nullptr ? *pair.first : *pair.second);
     }
+  }
+  for (const auto& [locomotive, sides] : locomotives) {
+    estimate_locomotive(fleet, sides.first, sides.second, sensitivity);
   }
   std::stable_sort(fleet.wheels.begin(), fleet.wheels.end(),
                    [](const WheelWear& a, const WheelWear& b) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "sensor_drift.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -22,7 +23,7 @@ std::optional<Candidate> best_candidate(const WearSeries& difference, const Wear
   for (const bool is_left : {true, false}) {
     WearSeries series = difference;
     series.drift_scale = (is_left ? left : right).drift_scale;
-    for (std::size_t k = 0; k + kMinRunsAfterOnset < n; ++k) {
+    for (std::size_t k = kMinRunsBeforeOnset; k + kMinRunsAfterOnset < n; ++k) {
       try {
         WearLineFit fit = fit_wear_line(series, difference.day[k], kDriftDegree);
         if (!best || fit.rss < best->fit.rss) best = Candidate{is_left, difference.day[k], fit};
@@ -32,6 +33,19 @@ std::optional<Candidate> best_candidate(const WearSeries& difference, const Wear
     }
   }
   return best;
+}
+
+// How much wider the drift's standard error is than the run-to-run scatter says, when the
+// residuals are correlated from run to run (a seasonal leftover, a spell of faster wear): with
+// lag-1 autocorrelation rho of an AR(1) error, a trend's variance grows by (1 + rho) / (1 - rho).
+double correlation_widening(const std::vector<double>& residuals) {
+  double lagged = 0.0, squares = 0.0;
+  for (std::size_t k = 0; k < residuals.size(); ++k) {
+    squares += residuals[k] * residuals[k];
+    if (k > 0) lagged += residuals[k] * residuals[k - 1];
+  }
+  const double rho = squares > 0.0 ? std::clamp(lagged / squares, 0.0, 0.99) : 0.0;
+  return std::sqrt((1.0 + rho) / (1.0 - rho));
 }
 
 double last_scale(const WearSeries& series) {
@@ -45,15 +59,16 @@ double own_drift_t(const WearSeries& series, double onset_day) {
   return drift.se > 0.0 ? drift.mm / drift.se : 0.0;
 }
 
-// The flagged drift in one combination of the two wheels (their difference or their sum).
-std::optional<DriftFinding> drift_in(const WearSeries& difference, const WearSeries& left_series,
-                                     const WearSeries& right_series) {
+// The best drift-like fit in one combination of the two wheels (their difference or their
+// sum), whatever its size.
+std::optional<DriftFinding> best_drift_in(const WearSeries& difference,
+                                          const WearSeries& left_series,
+                                          const WearSeries& right_series) {
   const std::optional<Candidate> best = best_candidate(difference, left_series, right_series);
   if (!best) return std::nullopt;
   const WearSeries& fitted_side = best->left ? left_series : right_series;
   const DriftValue drift = drift_at(best->fit, difference.day.back(), last_scale(fitted_side));
-  const double t = drift.se > 0.0 ? drift.mm / drift.se : 0.0;
-  if (std::abs(t) < kDriftTStatistic || std::abs(drift.mm) < kMinDriftMm) return std::nullopt;
+  const double se = drift.se * correlation_widening(best->fit.residuals);
   DriftFinding finding;
   // The faulty sensor: the one whose own series carries the drift more strongly (the other's
   // own series has only what the two share).
@@ -61,12 +76,17 @@ std::optional<DriftFinding> drift_in(const WearSeries& difference, const WearSer
                  std::abs(own_drift_t(right_series, best->onset_day));
   const WearSeries& own = finding.left ? left_series : right_series;
   finding.onset_day = best->onset_day;
-  finding.difference_t = t;
+  finding.difference_t = se > 0.0 ? drift.mm / se : 0.0;
   finding.size_mm = std::abs(drift.mm);
-  const DriftValue own_drift =
-      drift_at(fit_wear_line(own, best->onset_day, kDriftDegree), own.day.back(), last_scale(own));
+  const DriftValue own_drift = drift_at(fit_wear_line(own, best->onset_day, kDriftDegree),
+                                        own.day.back(), last_scale(own));
   finding.rate_mm_per_day = own_drift.mm / (own.day.back() - best->onset_day);
   return finding;
+}
+
+bool flagged(const std::optional<DriftFinding>& finding, double min_size_mm) {
+  return finding && std::abs(finding->difference_t) >= kDriftTStatistic &&
+         finding->size_mm >= min_size_mm;
 }
 
 // One sensor's drift moves the sum and the difference by as much; what both wheels share (a
@@ -85,21 +105,51 @@ bool shows_in_difference(const DriftFinding& in_sum, const WearSeries& differenc
 
 }  // namespace
 
+DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries& left_series,
+                                 const WearSeries& right_series) {
+  WearSeries sum = difference;
+  for (std::size_t k = 0; k < sum.y.size(); ++k) sum.y[k] = left_series.y[k] + right_series.y[k];
+  DriftCandidates candidates;
+  candidates.in_difference = best_drift_in(difference, left_series, right_series);
+  candidates.in_sum = best_drift_in(sum, left_series, right_series);
+  if (candidates.in_sum) candidates.in_sum->in_sum = true;
+  if (candidates.in_sum &&
+      !shows_in_difference(*candidates.in_sum, difference, left_series, right_series)) {
+    candidates.in_sum.reset();
+  }
+  return candidates;
+}
+
+double drift_like_size(const DriftCandidates& candidates) {
+  double size = 0.0;
+  for (const auto& finding : {candidates.in_difference, candidates.in_sum}) {
+    if (finding) size = std::max(size, finding->size_mm);
+  }
+  return size;
+}
+
+double drift_size_to_flag(std::vector<double> sizes) {
+  if (sizes.empty()) return kMinDriftMm;
+  std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2),
+                   sizes.end());
+  return std::max(kMinDriftMm, kDriftSizeOverTypical * sizes[sizes.size() / 2]);
+}
+
+std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, double min_size_mm) {
+  const bool in_difference = flagged(candidates.in_difference, min_size_mm);
+  const bool in_sum = flagged(candidates.in_sum, min_size_mm);
+  if (in_sum && (!in_difference || std::abs(candidates.in_sum->difference_t) >
+                                       std::abs(candidates.in_difference->difference_t))) {
+    return candidates.in_sum;
+  }
+  if (in_difference) return candidates.in_difference;
+  return std::nullopt;
+}
+
 std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
                                               const WearSeries& left_series,
                                               const WearSeries& right_series) {
-  WearSeries sum = difference;
-  for (std::size_t k = 0; k < sum.y.size(); ++k) sum.y[k] = left_series.y[k] + right_series.y[k];
-  std::optional<DriftFinding> found = drift_in(difference, left_series, right_series);
-  std::optional<DriftFinding> in_sum = drift_in(sum, left_series, right_series);
-  if (in_sum && !shows_in_difference(*in_sum, difference, left_series, right_series)) {
-    in_sum.reset();
-  }
-  if (in_sum) in_sum->in_sum = true;
-  if (!found || (in_sum && std::abs(in_sum->difference_t) > std::abs(found->difference_t))) {
-    return in_sum;
-  }
-  return found;
+  return flagged_drift(drift_candidates(difference, left_series, right_series), kMinDriftMm);
 }
 
 }  // namespace flange::host

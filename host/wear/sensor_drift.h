@@ -20,6 +20,14 @@
 // whose drift has the larger t. A drift found in the sum must have moved the difference (fitted
 // with the same onset and slope) by at least half as much: a change both wheels share (a small
 // lathe pass the data did not show as a jump) moves the sum alone.
+//
+// What a drift is judged against. The series come with what every axle of the locomotive shares
+// taken away (locomotive_common_mode.h). What is left still wanders slowly in a real fleet (a
+// flange's wear speeding up as it thins, a wheel's own reaction to a route), and a drift search
+// fits such a wander as well as a drift: the drift's standard error is widened for residuals
+// correlated from run to run (an AR(1) error's (1 + rho) / (1 - rho)), and a drift must reach
+// kDriftSizeOverTypical times the size the same search finds on a typical axle of its
+// locomotive, where no sensor drifts.
 #pragma once
 
 #include <optional>
@@ -31,15 +39,22 @@ namespace flange::host {
 
 // Terms of the drift in the time since the onset: linear and square (see above).
 inline constexpr int kDriftDegree = 2;
-// A drift is flagged when its value by the last run over its standard error reaches this. The onset
+// A drift is flagged when its value by the last run over its (widened) standard error reaches this. The onset
 // search tries every run day, and a fleet has hundreds of sensors: a bound far in the normal tail
 // keeps false flags below one in a fleet when the residuals are near normal.
 inline constexpr double kDriftTStatistic = 6.0;
 // ... and when it has moved the difference by at least this much (mm) by the last run: the
 // smallest change that shifts an alarm decision (twice the alarms' default 0.1 mm hysteresis).
 inline constexpr double kMinDriftMm = 0.2;
-// An onset leaves at least this many runs after it, so that a drift is a trend, not one point.
+// ... and at least this many times the median drift-like size of its locomotive's axles: what
+// the axles show alike (a wiggle of the wear that a drift search takes for a drift) is the
+// locomotive's normal, and one sensor's drift is one axle of several standing out from it.
+inline constexpr double kDriftSizeOverTypical = 2.0;
+// An onset leaves at least this many runs after it, so that a drift is a trend, not one point,
 inline constexpr std::size_t kMinRunsAfterOnset = 5;
+// ... and has at least this many before it, so that a drift is a change: one from the first
+// runs is the wheel's own rate as far as the data can tell.
+inline constexpr std::size_t kMinRunsBeforeOnset = 5;
 
 struct DriftFinding {
   bool left = true;              // the faulty sensor's side
@@ -51,9 +66,31 @@ struct DriftFinding {
   bool in_sum = false;           // found in the axle's sum (else in its difference)
 };
 
+// The best drift-like fit of each combination of the two wheels, before any threshold: its t
+// and size say how far it stands out. A sum's fit is kept only when the difference moved with
+// it (see above).
+struct DriftCandidates {
+  std::optional<DriftFinding> in_difference, in_sum;
+};
+
+// `difference`, `left_series` and `right_series` share km, day and segments (as below).
+DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries& left_series,
+                                 const WearSeries& right_series);
+
+// The larger size of the two candidates (0 without any).
+double drift_like_size(const DriftCandidates& candidates);
+
+// The size a drift must reach among axles whose drift-like sizes are `sizes` (one per axle of
+// a locomotive): at least kMinDriftMm, and kDriftSizeOverTypical times their median.
+double drift_size_to_flag(std::vector<double> sizes);
+
+// The candidate flagged as a sensor fault: its t at least kDriftTStatistic and its size at
+// least `min_size_mm`; of two, the one with the larger t.
+std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, double min_size_mm);
+
 // `difference`, `left_series` and `right_series` share km, day and segments (their y: right -
 // left, left, right); the side series carry their sensor's slope as drift_scale. Nothing when
-// no series, side and onset give a flagged drift.
+// no series, side and onset give a flagged drift of kMinDriftMm or more.
 std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
                                               const WearSeries& left_series,
                                               const WearSeries& right_series);

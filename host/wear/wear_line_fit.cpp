@@ -23,32 +23,45 @@ std::vector<std::vector<double>> rows_of(const Eigen::MatrixXd& matrix) {
 }  // namespace
 
 WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day,
-                          int drift_degree) {
+                          int drift_degree, WearLaw law) {
   const auto n = static_cast<Eigen::Index>(series.y.size());
   const int segments = series.segment.empty()
                            ? 1
                            : *std::max_element(series.segment.begin(), series.segment.end()) + 1;
-  const Eigen::Index params = segments + 1 + (drift_onset_day ? drift_degree : 0);
+  const bool bending = law == WearLaw::kBending;
+  const Eigen::Index first_drift = segments + 1 + (bending ? 1 : 0);
+  const Eigen::Index params = first_drift + (drift_onset_day ? drift_degree : 0);
   if (n <= params) throw std::invalid_argument("fit_wear_line: too few points for the model");
   WearLineFit fit;
   fit.km0 = series.km.front();
   Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, params);
   Eigen::VectorXd y(n);
+  std::vector<double> segment_start_km(static_cast<std::size_t>(segments), fit.km0);
+  for (std::size_t i = series.y.size(); i-- > 0;) {
+    segment_start_km[static_cast<std::size_t>(series.segment[i])] = series.km[i];
+  }
   for (Eigen::Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     x(k, series.segment[i]) = 1.0;
     x(k, segments) = series.km[i] - fit.km0;
+    if (bending) {
+      const double along =
+          (series.km[i] - segment_start_km[static_cast<std::size_t>(series.segment[i])]) / 1000.0;
+      x(k, segments + 1) = along * along;
+    }
     const double since_onset =
         drift_onset_day ? std::max(0.0, series.day[i] - *drift_onset_day) : 0.0;
     const double scale = series.drift_scale.empty() ? 1.0 : series.drift_scale[i];
     for (int power = 1; drift_onset_day && power <= drift_degree; ++power) {
-      x(k, segments + power) = scale * std::pow(since_onset, power);
+      x(k, first_drift + power - 1) = scale * std::pow(since_onset, power);
     }
     y(k) = series.y[i];
   }
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(x);
   const Eigen::VectorXd beta = qr.solve(y);
-  fit.rss = (y - x * beta).squaredNorm();
+  const Eigen::VectorXd residuals = y - x * beta;
+  fit.residuals.assign(residuals.data(), residuals.data() + n);
+  fit.rss = residuals.squaredNorm();
   fit.dof = static_cast<int>(n - params);
   fit.residual_sd = std::sqrt(fit.rss / fit.dof);
   // (X^T X)^-1 from the same QR, never from the normal equations: P R^-1 R^-T P^T.
@@ -62,9 +75,11 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
   for (int s = 0; s < segments; ++s) fit.intercepts_mm.push_back(beta(s));
   fit.rate_mm_per_km = beta(segments);
   fit.rate_se = std::sqrt(cov(segments, segments));
+  if (bending) fit.curvature_mm = beta(segments + 1);
   fit.drift_onset_day = drift_onset_day;
+  fit.drift_index = static_cast<std::size_t>(first_drift);
   for (int power = 1; drift_onset_day && power <= drift_degree; ++power) {
-    fit.drift_coefficients.push_back(beta(segments + power));
+    fit.drift_coefficients.push_back(beta(first_drift + power - 1));
   }
   fit.covariance = rows_of(cov);
   return fit;
@@ -78,7 +93,7 @@ double wear_line_at(const WearLineFit& fit, int segment, double km) {
 DriftValue drift_at(const WearLineFit& fit, double day, double scale) {
   if (!fit.drift_onset_day || day <= *fit.drift_onset_day) return {};
   const double since = day - *fit.drift_onset_day;
-  const std::size_t first = fit.intercepts_mm.size() + 1;  // after the intercepts and the rate
+  const std::size_t first = fit.drift_index;
   std::vector<double> gradient;
   DriftValue value;
   for (std::size_t p = 0; p < fit.drift_coefficients.size(); ++p) {
