@@ -284,8 +284,7 @@ void estimate_locomotive(FleetWear& fleet, const std::vector<const WheelHistory*
   }
   const double min_size = drift_size_to_flag(sizes);
   for (std::size_t a = 0; a < pairs.size(); ++a) {
-    estimate_axle(fleet, std::move(pairs[a]), flagged_drift(candidates[a], min_size),
-                  sensitivity);
+    estimate_axle(fleet, std::move(pairs[a]), flagged_drift(candidates[a], min_size), sensitivity);
   }
 }
 

@@ -129,10 +129,11 @@ double drift_like_size(const DriftCandidates& candidates) {
 }
 
 double drift_size_to_flag(std::vector<double> sizes) {
-  if (sizes.empty()) return kMinDriftMm;
-  std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2),
-                   sizes.end());
-  return std::max(kMinDriftMm, kDriftSizeOverTypical * sizes[sizes.size() / 2]);
+  if (sizes.size() < kMinAxlesForTypical) return kMinDriftMm;
+  // The size half the axles reach (the upper median of an even count).
+  const auto half = sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2);
+  std::nth_element(sizes.begin(), half, sizes.end());
+  return std::max(kMinDriftMm, kDriftSizeOverTypical * *half);
 }
 
 std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, double min_size_mm) {

@@ -27,7 +27,7 @@
 // fits such a wander as well as a drift: the drift's standard error is widened for residuals
 // correlated from run to run (an AR(1) error's (1 + rho) / (1 - rho)), and a drift must reach
 // kDriftSizeOverTypical times the size the same search finds on a typical axle of its
-// locomotive, where no sensor drifts.
+// locomotive.
 #pragma once
 
 #include <optional>
@@ -46,10 +46,13 @@ inline constexpr double kDriftTStatistic = 6.0;
 // ... and when it has moved the difference by at least this much (mm) by the last run: the
 // smallest change that shifts an alarm decision (twice the alarms' default 0.1 mm hysteresis).
 inline constexpr double kMinDriftMm = 0.2;
-// ... and at least this many times the median drift-like size of its locomotive's axles: what
-// the axles show alike (a wiggle of the wear that a drift search takes for a drift) is the
+// ... and at least this many times the drift-like size half its locomotive's axles reach:
+// what the axles show alike (a wiggle of the wear that a drift search takes for a drift) is the
 // locomotive's normal, and one sensor's drift is one axle of several standing out from it.
 inline constexpr double kDriftSizeOverTypical = 2.0;
+// That size is taken over at least this many axles: with three, one drifting sensor's axle
+// cannot move it past the other two.
+inline constexpr std::size_t kMinAxlesForTypical = 3;
 // An onset leaves at least this many runs after it, so that a drift is a trend, not one point,
 inline constexpr std::size_t kMinRunsAfterOnset = 5;
 // ... and has at least this many before it, so that a drift is a change: one from the first
@@ -80,8 +83,9 @@ DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries&
 // The larger size of the two candidates (0 without any).
 double drift_like_size(const DriftCandidates& candidates);
 
-// The size a drift must reach among axles whose drift-like sizes are `sizes` (one per axle of
-// a locomotive): at least kMinDriftMm, and kDriftSizeOverTypical times their median.
+// The size a drift must reach on a locomotive whose axles have the drift-like sizes `sizes`:
+// at least kMinDriftMm, and kDriftSizeOverTypical times the size half of them reach when there
+// are at least kMinAxlesForTypical (only kMinDriftMm on fewer).
 double drift_size_to_flag(std::vector<double> sizes);
 
 // The candidate flagged as a sensor fault: its t at least kDriftTStatistic and its size at
