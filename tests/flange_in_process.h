@@ -16,6 +16,13 @@ struct FlangeOutcome {
   std::string out, err;
 };
 
+// The command line as a user would type it, for failure messages.
+inline std::string command_text(const std::vector<std::string>& args) {
+  std::string text = "flange";
+  for (const std::string& arg : args) text += " " + arg;
+  return text;
+}
+
 inline FlangeOutcome run_flange_captured(const std::vector<std::string>& args) {
   std::ostringstream out, err;
   const int status = cli::run_flange(args, out, err);

@@ -9,12 +9,14 @@
 #include <vector>
 
 #include "cli.h"
+#include "flange_in_process.h"
 #include "test_files.h"
 
 namespace flange::cli {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::command_text;
 using testing::fresh_test_dir;
 using testing::write_file;
 
@@ -71,12 +73,6 @@ int flange(const std::vector<std::string>& args, std::string& err) {
   const int status = run_flange(args, out, err_stream);
   err = err_stream.str();
   return status;
-}
-
-std::string command_text(const std::vector<std::string>& args) {
-  std::string text = "flange";
-  for (const std::string& a : args) text += " " + a;
-  return text;
 }
 
 // `flange design`: ranges, numbers, channel lists and poles the format cannot hold.

@@ -27,6 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::FlangeOutcome;
 using testing::fresh_test_dir;
+using testing::command_text;
 using testing::run_flange_captured;
 using testing::write_file;
 
@@ -60,12 +61,6 @@ TEST(ExitStatusTable, AnOptionNamedBeforeTheMessageKeepsTheStatus) {
     EXPECT_EQ(exit_status_of(error), kExitFailure);
   }
   EXPECT_NO_THROW(naming_option("--store", [] {}));
-}
-
-std::string command_text(const std::vector<std::string>& args) {
-  std::string text = "flange";
-  for (const std::string& arg : args) text += " " + arg;
-  return text;
 }
 
 // Inputs every case may name, in a folder of this process's own (CTest runs the tests of this

@@ -28,17 +28,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::FlangeOutcome;
+using testing::command_text;
 using testing::run_flange_captured;
 using testing::StoreBackendUnderTest;
 
 const std::string kMeasurement =
     std::string(FLANGE_SOURCE_DIR) + "/coeffs/measurement_sos/filter.json";
-
-std::string command_text(const std::vector<std::string>& args) {
-  std::string text = "flange";
-  for (const std::string& a : args) text += " " + a;
-  return text;
-}
 
 void flange_ok(const std::vector<std::string>& args) {
   const FlangeOutcome outcome = run_flange_captured(args);

@@ -17,13 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::FlangeOutcome;
 using testing::fresh_test_dir;
+using testing::command_text;
 using testing::run_flange_captured;
-
-std::string command_text(const std::vector<std::string>& args) {
-  std::string text = "flange";
-  for (const std::string& a : args) text += " " + a;
-  return text;
-}
 
 // Two locomotives over 45 days, seed 11: 24 wheels, reprofilings and a drifting sensor.
 TEST(FleetWearCommand, ASmallFleetMatchesItsTruth) {

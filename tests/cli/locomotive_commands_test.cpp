@@ -20,17 +20,12 @@ namespace {
 namespace fs = std::filesystem;
 using testing::FlangeOutcome;
 using testing::fresh_test_dir;
+using testing::command_text;
 using testing::run_flange_captured;
 
 std::string read(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string command_text(const std::vector<std::string>& args) {
-  std::string text = "flange";
-  for (const std::string& a : args) text += " " + a;
-  return text;
 }
 
 // Runs flange and expects exit status 0; its stdout.

@@ -22,13 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::FlangeOutcome;
 using testing::fresh_test_dir;
+using testing::command_text;
 using testing::run_flange_captured;
-
-std::string command_text(const std::vector<std::string>& args) {
-  std::string text = "flange";
-  for (const std::string& a : args) text += " " + a;
-  return text;
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
