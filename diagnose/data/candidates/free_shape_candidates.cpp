@@ -20,9 +20,10 @@ Candidate free_shape_candidate(const FreeShapeFamily& family, const FreeShapeRou
 
 std::vector<Candidate> free_shape_candidates(const std::vector<FreeShapeFamily>& families,
                                              const FreeShapeRound& round) {
-  return parallel_map<Candidate>(families.size(), [&](std::size_t i) {
+  auto out = parallel_map<Candidate>(families.size(), [&](std::size_t i) {
     return free_shape_candidate(families[i], round);
   });
+  return out;
 }
 
 }  // namespace flange::diagnose
