@@ -20,10 +20,9 @@ Candidate free_shape_candidate(const FreeShapeFamily& family, const FreeShapeRou
 
 std::vector<Candidate> free_shape_candidates(const std::vector<FreeShapeFamily>& families,
                                              const FreeShapeRound& round) {
-  auto out = parallel_map<Candidate>(families.size(), [&](std::size_t i) {
+  return parallel_map<Candidate>(families.size(), [&](std::size_t i) {
     return free_shape_candidate(families[i], round);
   });
-  return out;
 }
 
 }  // namespace flange::diagnose

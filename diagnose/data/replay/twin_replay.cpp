@@ -247,6 +247,13 @@ std::shared_ptr<const TwinReplay::CoilSamples> TwinReplay::coil_samples(
 
 std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& effects,
                                         std::uint64_t seed) const {
+  std::vector<double> out;
+  voltage_into(effects, seed, out);
+  return out;
+}
+
+void TwinReplay::voltage_into(const std::vector<sim::EffectSettings>& effects, std::uint64_t seed,
+                              std::vector<double>& out) const {
   // The sensor's age at this series' t_s = 0, for the effects fitted on another session.
   std::vector<sim::EffectSettings> aged = effects;
   for (sim::EffectSettings& effect : aged) {
@@ -281,7 +288,7 @@ std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& 
     }
   };
 
-  std::vector<double> out(series_.size());
+  out.resize(series_.size());
   for (std::size_t i = 0; i < series_.size(); ++i) {
     sim::ChainSample sample;
     if (coil) {
@@ -299,7 +306,6 @@ std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& 
     apply(ChainStage::kAcquisition, sample);
     out[i] = sample.voltage_v;
   }
-  return out;
 }
 
 }  // namespace flange::diagnose
