@@ -6,7 +6,7 @@
 #   lag    a thermal lag of 300 s, at 6 Hz and at 100 Hz (explained: the library pass ends it)
 #   step   the lag pair with the voltage x 1.04 from half-way in both sessions (a gain step
 #          outside the library: the free-shape pass runs every family, the slowest path)
-#   mains  100 Hz, mains pickup (the twin's defaults: 50 Hz with harmonics)
+#   mains  100 Hz, mains pickup of 0.1 V at 60 Hz (its line and harmonics alias to 40 and 20 Hz)
 #   two    100 Hz, the lag and a gain drifting with temperature (two library picks)
 # With a second binary (the one before a change) each pair is diagnosed by both, one after the
 # other, so that both meet the same load; the last column says whether their diagnosis.json
@@ -66,7 +66,7 @@ for fs in 6 100; do
   for seed in 31 32; do gain_step "$work/lag_${fs}_$seed.csv" "$work/step_${fs}_$seed.csv"; done
   pairs="lag step"
   if [ "$fs" = 100 ]; then
-    simulate mains "$fs" mains_pickup
+    simulate mains "$fs" mains_pickup:mains_hz=60,amplitude_v=0.1
     simulate two "$fs" "$lag" temp_gain_drift
     pairs="lag step mains two"
   fi
