@@ -21,7 +21,7 @@
 #include "diagnosis_detail.h"
 #include "effect_classes.h"
 #include "improved_twin_reasons.h"
-#include "parallel_cases.h"
+#include "parallel_work.h"
 #include "sensor_twin.h"
 #include "sim_error.h"
 #include "table_fit.h"

@@ -247,15 +247,14 @@ class GapRms {
   }
 
   double operator()(const std::vector<double>& unit) const {
-    std::vector<double> gap;
+    std::vector<double>& gap = gap_;  // one buffer for every step of the search
     if (!mains_tail_.empty()) {
-      gap = gap_with_mains_tail(settings_at(unit));
+      gap_with_mains_tail(settings_at(unit), gap);
     } else {
       std::vector<sim::EffectSettings> effects = profile_ageing_ ? held_ : modelled_;
       effects.push_back(settings_at(unit));
-      const std::vector<double> sim_v = replay_.voltage(effects);
-      gap.resize(sim_v.size());
-      for (std::size_t i = 0; i < sim_v.size(); ++i) gap[i] = real_v_[i] - sim_v[i];
+      replay_.voltage_into(effects, 0, gap);
+      for (std::size_t i = 0; i < gap.size(); ++i) gap[i] = real_v_[i] - gap[i];
     }
     if (profile_ageing_) remove_ageing_line(gap, replay_.times());
     double sum = 0.0;
@@ -293,9 +292,9 @@ class GapRms {
     }
   }
 
-  std::vector<double> gap_with_mains_tail(const sim::EffectSettings& mains) const {
+  void gap_with_mains_tail(const sim::EffectSettings& mains, std::vector<double>& gap) const {
     const double phase_rad = mains.params.at("phase_deg") * std::numbers::pi / 180.0;
-    std::vector<double> gap(real_v_.size());
+    gap.resize(real_v_.size());
     for (std::size_t i = 0; i < gap.size(); ++i) gap[i] = real_v_[i] - mains_base_v_[i];
     double amplitude_v = mains.params.at("amplitude_v");
     for (std::size_t k = 0; k < mains_tail_.size(); ++k) {
@@ -307,7 +306,6 @@ class GapRms {
       }
       amplitude_v *= mains.params.at("harmonic_ratio");
     }
-    return gap;
   }
 
   struct MainsTone {
@@ -324,6 +322,8 @@ class GapRms {
   const std::vector<sim::EffectSettings>& modelled_;
   std::vector<sim::EffectSettings> held_;  // modelled_ but an ageing drift
   bool profile_ageing_ = false;
+  // The gap at the point being evaluated: a search runs on one thread, one step at a time.
+  mutable std::vector<double> gap_;
 };
 
 // The best point of a lattice of `points` per dimension over the unit cube.

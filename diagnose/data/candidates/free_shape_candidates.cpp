@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "free_shape_candidates.h"
 
-#include <future>
-
+#include "parallel_work.h"
 #include "series_statistics.h"
 #include "series_arithmetic.h"
 
@@ -21,14 +20,9 @@ Candidate free_shape_candidate(const FreeShapeFamily& family, const FreeShapeRou
 
 std::vector<Candidate> free_shape_candidates(const std::vector<FreeShapeFamily>& families,
                                              const FreeShapeRound& round) {
-  std::vector<std::future<Candidate>> pending;
-  for (const FreeShapeFamily& family : families) {
-    pending.push_back(std::async(std::launch::async,
-                                 [&round, family] { return free_shape_candidate(family, round); }));
-  }
-  std::vector<Candidate> candidates;
-  for (std::future<Candidate>& c : pending) candidates.push_back(c.get());
-  return candidates;
+  return parallel_map<Candidate>(families.size(), [&](std::size_t i) {
+    return free_shape_candidate(families[i], round);
+  });
 }
 
 }  // namespace flange::diagnose

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "library_candidates.h"
 
-#include <future>
-
+#include "parallel_work.h"
 #include "series_statistics.h"
 #include "series_arithmetic.h"
 
@@ -11,23 +10,20 @@ namespace {
 
 std::vector<Candidate> fit_library_candidates(const Parts& parts,
                                               const LibraryRounds::Key& round) {
-  std::vector<std::future<Candidate>> pending;
-  for (const std::string& name : round.names) {
-    pending.push_back(std::async(std::launch::async, [&, name] {
-      Candidate c;
-      c.fit = fit_effect(name, parts.cal_replay, round.cal_v, round.modelled);
-      c.with = round.modelled;
-      c.with.push_back(c.fit.settings);
-      // Each candidate is scored with the effects chosen before it refitted around it.
-      if (c.with.size() > round.first_selected + 1) {
-        backfit(c.with, round.first_selected, parts.cal_replay, round.cal_v);
-      }
-      c.heldout_error = minus(round.ho_v, parts.ho_replay.voltage(c.with));
-      return c;
-    }));
-  }
-  std::vector<Candidate> candidates;
-  for (std::future<Candidate>& c : pending) candidates.push_back(c.get());
+  std::vector<Candidate> candidates =
+      parallel_map<Candidate>(round.names.size(), [&](std::size_t i) {
+        const std::string& name = round.names[i];
+        Candidate c;
+        c.fit = fit_effect(name, parts.cal_replay, round.cal_v, round.modelled);
+        c.with = round.modelled;
+        c.with.push_back(c.fit.settings);
+        // Each candidate is scored with the effects chosen before it refitted around it.
+        if (c.with.size() > round.first_selected + 1) {
+          backfit(c.with, round.first_selected, parts.cal_replay, round.cal_v);
+        }
+        c.heldout_error = minus(round.ho_v, parts.ho_replay.voltage(c.with));
+        return c;
+      });
   return candidates;
 }
 

@@ -5,9 +5,10 @@
 #include <cmath>
 #include <complex>
 #include <limits>
-#include <map>
 #include <numbers>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "effect_classes.h"
 
@@ -25,16 +26,26 @@ double tolerance_for(double lsb) { return std::max(kCsvRoundingV, 2e-3 * lsb); }
 // on a grid every step is a multiple of the LSB and one-LSB steps are the commonest non-zero
 // ones, while a glitch's steps are rare. Steps are binned to 1 uV.
 std::optional<double> recurring_smallest_step(const std::vector<double>& v) {
-  std::map<long long, int> counts;
+  // The binned steps sorted, then counted run by run: in ascending order as a map would hold
+  // them, at a fraction of its cost on a 100 Hz log's quarter of a million steps.
+  std::vector<long long> bins;
+  bins.reserve(v.size());
   for (std::size_t i = 1; i < v.size(); ++i) {
     const double step = std::abs(v[i] - v[i - 1]);
-    if (step > kCsvRoundingV) ++counts[std::llround(step * 1e6)];
+    if (step > kCsvRoundingV) bins.push_back(std::llround(step * 1e6));
+  }
+  std::sort(bins.begin(), bins.end());
+  std::vector<std::pair<long long, int>> counts;
+  for (const long long bin : bins) {
+    if (counts.empty() || counts.back().first != bin) counts.emplace_back(bin, 0);
+    ++counts.back().second;
   }
   const int needed = std::max(3, static_cast<int>(v.size() / 1000));
-  for (const auto& [micro_volts, count] : counts) {
+  for (std::size_t k = 0; k < counts.size(); ++k) {
     // A step and its neighbouring 1 uV bins (rounding splits one step over two bins).
+    const auto [micro_volts, count] = counts[k];
     int near = count;
-    if (const auto up = counts.find(micro_volts + 1); up != counts.end()) near += up->second;
+    if (k + 1 < counts.size() && counts[k + 1].first == micro_volts + 1) near += counts[k + 1].second;
     if (near >= needed) return static_cast<double>(micro_volts) * 1e-6;
   }
   return std::nullopt;

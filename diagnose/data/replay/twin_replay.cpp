@@ -11,9 +11,13 @@ namespace flange::diagnose {
 namespace {
 
 constexpr double kSecondsPerDay = 86400.0;
-// Coil states kept per replay: the fitted effects, and the candidate being searched when it is
-// itself a coil effect, with room for the parallel candidates' own.
+// Coil states kept per replay: at least the fitted effects, and the candidate being searched when
+// it is itself a coil effect, with room for the parallel candidates' own; on a short replay (a
+// search's or its lattice's rows) as many as kCoilCacheBytes hold, so that the lattice points of a
+// lag or a skew, the same in every fit of it against the same coil, are inverted once, not again
+// in each round and each refit (on a 100 Hz pair, three of every four inversions of the lattice).
 constexpr std::size_t kCoilCacheEntries = 6;
+constexpr std::size_t kCoilCacheBytes = 24u << 20;
 // The half-width of the window an inverted reading lag takes its slope over, as a share of the
 // lag's time constant (local_slopes).
 constexpr double kSlopeWindowOfTau = 0.125;
@@ -234,13 +238,22 @@ std::shared_ptr<const TwinReplay::CoilSamples> TwinReplay::coil_samples(
   }
   const std::lock_guard<std::mutex> lock(coil_cache_->mutex);
   auto& entries = coil_cache_->entries;
-  if (entries.size() == kCoilCacheEntries) entries.erase(entries.begin());
+  const std::size_t bytes_per_entry = std::max<std::size_t>(1, series_.size()) * sizeof(sim::ChainSample);
+  const std::size_t capacity = std::max(kCoilCacheEntries, kCoilCacheBytes / bytes_per_entry);
+  if (entries.size() >= capacity) entries.erase(entries.begin());
   entries.push_back({coil_effects, seed, samples});
   return samples;
 }
 
 std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& effects,
                                         std::uint64_t seed) const {
+  std::vector<double> out;
+  voltage_into(effects, seed, out);
+  return out;
+}
+
+void TwinReplay::voltage_into(const std::vector<sim::EffectSettings>& effects, std::uint64_t seed,
+                              std::vector<double>& out) const {
   // The sensor's age at this series' t_s = 0, for the effects fitted on another session.
   std::vector<sim::EffectSettings> aged = effects;
   for (sim::EffectSettings& effect : aged) {
@@ -275,7 +288,7 @@ std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& 
     }
   };
 
-  std::vector<double> out(series_.size());
+  out.resize(series_.size());
   for (std::size_t i = 0; i < series_.size(); ++i) {
     sim::ChainSample sample;
     if (coil) {
@@ -293,7 +306,6 @@ std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& 
     apply(ChainStage::kAcquisition, sample);
     out[i] = sample.voltage_v;
   }
-  return out;
 }
 
 }  // namespace flange::diagnose

@@ -44,6 +44,10 @@ class TwinReplay {
   // random effects (vibration's tone phases), as the twin's seed does.
   std::vector<double> voltage(const std::vector<sim::EffectSettings>& effects,
                               std::uint64_t seed = 0) const;
+  // The same into `out` (resized to one value per sample): a search that replays thousands of
+  // times reuses one buffer rather than allocating and clearing a fresh one at every step.
+  void voltage_into(const std::vector<sim::EffectSettings>& effects, std::uint64_t seed,
+                    std::vector<double>& out) const;
 
   // The nominal model's voltage for every sample (no effect, no noise).
   const std::vector<double>& nominal_voltage() const { return nominal_v_; }

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "diagnosis.h"
-#include "parallel_cases.h"
+#include "parallel_work.h"
 #include "recording_series.h"
 
 namespace flange::diagnose {

@@ -99,13 +99,20 @@ Eigen::MatrixXd CurveFamily::columns(const RecordedPart& part) const {
   const std::size_t n = part.series.size();
   Eigen::MatrixXd a = matrix(n, used_.size());
   const std::vector<double> age = of_ == CurveOf::kAge ? age_days(part) : std::vector<double>{};
+  // The column of each knot (used_ holds the knots in increasing order), -1 where unused.
+  std::vector<long> column_of(hats_.knots.size(), -1);
+  for (std::size_t j = 0; j < used_.size(); ++j) column_of[used_[j]] = static_cast<long>(j);
   for (std::size_t i = 0; i < n; ++i) {
     const double v = part.replay.nominal_voltage()[i];
     const double x = variable_at(part, age, i);
     const double scale = of_ == CurveOf::kGainOfTemperature ? v - part.replay.v_min_v() : 1.0;
-    for (std::size_t j = 0; j < used_.size(); ++j) {
-      a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
-          scale * hats_.weight(used_[j], x);
+    const auto row = static_cast<Eigen::Index>(i);
+    // Off the hats' support a weight is +0.0, and the column scale * +0.0 (-0.0 for a negative
+    // scale): only the knots around x are weighed.
+    if (std::signbit(scale)) a.row(row).setConstant(scale * 0.0);
+    const auto [first, last] = hats_.support(x);
+    for (std::size_t k = first; k <= last; ++k) {
+      if (column_of[k] >= 0) a(row, column_of[k]) = scale * hats_.weight(k, x);
     }
   }
   return a;

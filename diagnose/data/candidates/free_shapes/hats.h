@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "recorded_part.h"
@@ -42,6 +43,17 @@ struct Hats {
       return k + 1 == knots.size() ? 1.0 + beyond : k + 2 == knots.size() ? -beyond : 0.0;
     }
     return std::max(0.0, 1.0 - std::abs(u - static_cast<double>(k)));
+  }
+  // The knots [first, last] whose weight at `x` may be other than +0.0: at most four around x,
+  // so that a column of every row costs what its non-zero weights cost.
+  std::pair<std::size_t, std::size_t> support(double x) const {
+    const std::size_t count = knots.size();
+    const double lo = knots.front(), hi = knots.back();
+    const double step = (hi - lo) / static_cast<double>(count - 1);
+    if (!(step > 0.0) || std::isnan(x)) return {0, count - 1};  // every knot, as weight() has it
+    const double u = std::clamp((x - lo) / step, 0.0, static_cast<double>(count - 1));
+    const auto below = static_cast<std::size_t>(u);
+    return {below > 0 ? below - 1 : 0, std::min(count - 1, below + 2)};
   }
 };
 

@@ -33,10 +33,14 @@ Eigen::MatrixXd PivotGainFamily::columns(const RecordedPart& part) const {
   Eigen::MatrixXd a = matrix(n, 2 * k);
   for (std::size_t i = 0; i < n; ++i) {
     const double above = part.replay.nominal_voltage()[i] - part.replay.v_min_v();
-    for (std::size_t j = 0; j < k; ++j) {
+    const auto row = static_cast<Eigen::Index>(i);
+    // Off the hats' support a weight is +0.0 (hats.h), its gain column above * +0.0.
+    if (std::signbit(above)) a.row(row).head(static_cast<Eigen::Index>(k)).setConstant(above * 0.0);
+    const auto [first, last] = hats_.support(part.series.temp_c[i]);
+    for (std::size_t j = first; j <= last; ++j) {
       const double w = hats_.weight(j, part.series.temp_c[i]);
-      a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = above * w;
-      a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k + j)) = w;
+      a(row, static_cast<Eigen::Index>(j)) = above * w;
+      a(row, static_cast<Eigen::Index>(k + j)) = w;
     }
   }
   return a;

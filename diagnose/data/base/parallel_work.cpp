@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "parallel_cases.h"
+#include "parallel_work.h"
 
 #include <algorithm>
 #include <atomic>
