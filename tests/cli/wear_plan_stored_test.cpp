@@ -38,7 +38,7 @@ TEST_P(WearPlanStored, ThePlanFromTheStoredEstimatesIsThePlanReEstimated) {
   const std::string store = testing::fresh_store_url(GetParam(), name);
   const FlangeOutcome simulated = run_flange_captured(
       {"simulate", "--scenario", "fleet", "--locomotives", "2", "--days", "60", "--seed", "5",
-       "--store", store});
+       "--store", store, "--out", (dir / "fleet").string()});
   ASSERT_EQ(simulated.status, 0) << simulated.err;
   const auto plan = [&](const std::string& out, const std::string& risk) {
     const FlangeOutcome outcome =
