@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The measurement store at a national fleet's scale (docs/benchmarks.md, "Store"): a year of
-// run summaries and alarm events ingested, then one wheel's wear history, the fleet table and
-// the reprofiling plan as `flange wear --plan` makes it (every wheel's runs read in bulk, the
-// estimate, the plan).
+// run summaries and alarm events ingested, then one wheel's wear history, the fleet table,
+// `flange wear`'s nightly path (every wheel's runs read in bulk, the estimate, the estimates
+// kept in the store) and the reprofiling plan as `flange wear --plan` makes it from the kept
+// estimates (checked equal to the plan from the estimate itself: exit status 1 otherwise).
 //
 //   store_bench --store URL [--locomotives 1000] [--days 365] [--runs-per-transaction 100]
 //               [--estimate-locomotives 100]
@@ -12,10 +13,9 @@
 // 4,380,000 wheel rows. The numbers are made up here (wear linear in distance plus noise, a
 // reprofiling, a maintenance event of its own transaction, when a wheel reaches 4 mm: about once
 // a year per wheel): the store's work does not depend on them. Prints one line of figures; the
-// URL must name an empty store. The store's read for the plan is of the whole fleet; the
-// estimate and plan (which do not touch the store) of the first --estimate-locomotives
-// locomotives' wheels (0: none), because the estimator's drift search grows with the square of
-// a wheel's run count and takes minutes for the whole fleet.
+// URL must name an empty store. The nightly read is of the whole fleet; the estimate (which does
+// not touch the store) and so the estimates kept and the plan are of the first
+// --estimate-locomotives locomotives' wheels (0: none).
 #include <fmt/format.h>
 
 #include <algorithm>
