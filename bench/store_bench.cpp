@@ -206,9 +206,9 @@ PlanTimes plan_times(Store& store, int estimate_locomotives) {
   times.read_s = seconds_since(start);
   times.wheels = histories.size();
   if (estimate_locomotives == 0) return times;
-  const std::string past_last = fmt::format("loco-{:03d}", estimate_locomotives);
+  // The first locomotives by number ("loco-NNN"; "loco-1000" would sort before "loco-101").
   std::erase_if(histories, [&](const flange::host::WheelHistory& history) {
-    return history.wheel.locomotive >= past_last;
+    return std::stoi(history.wheel.locomotive.substr(5)) >= estimate_locomotives;
   });
   start = Clock::now();
   const flange::host::FleetWear wear = flange::host::estimate_fleet_wear(histories, {});
