@@ -24,8 +24,8 @@
 #include <iostream>
 #include <map>
 #include <optional>
-#include <stdexcept>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -186,7 +186,8 @@ std::vector<flange::host::WheelHistory> read_histories(Store& store) {
 
 // The plan as `flange wear --plan` makes it from current stored estimates: the store's marks and
 // estimates read, checked current, the plan made.
-flange::host::ReprofilingPlan plan_from_store(Store& store, const flange::host::PlanRequest& request) {
+flange::host::ReprofilingPlan plan_from_store(Store& store,
+                                              const flange::host::PlanRequest& request) {
   const flange::host::StoreMarks marks = store.marks();
   const std::optional<flange::host::WearEstimateSet> stored = store.wear_estimates();
   const std::string why = flange::cli::why_not_current(stored, marks, {});

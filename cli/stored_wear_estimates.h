@@ -23,8 +23,7 @@ host::WearEstimateSet wear_estimate_set(const host::FleetWear& fleet, const host
 // Why the stored estimates cannot stand for a new estimate: "" when they can (made with the same
 // settings, and no run, maintenance event or calibration stored since).
 std::string why_not_current(const std::optional<host::WearEstimateSet>& stored,
-                            const host::StoreMarks& marks,
-                            const host::ThresholdConfig& thresholds);
+                            const host::StoreMarks& marks, const host::ThresholdConfig& thresholds);
 
 // The plan's inputs of every stored wheel, as plan_input gives them from the estimate.
 std::vector<host::PlanInput> plan_inputs(const host::WearEstimateSet& stored);

@@ -159,8 +159,8 @@ int plan_from_stored(const WearOptions& options, host::Store& store,
 
 // The estimate kept in the store for the next plan; a store that refuses the write (a
 // read-only role or replica) is said, not an error: the outputs are written already.
-void keep_estimates(host::Store& store, const host::FleetWear& wear,
-                    const host::StoreMarks& marks, std::ostream& said) {
+void keep_estimates(host::Store& store, const host::FleetWear& wear, const host::StoreMarks& marks,
+                    std::ostream& said) {
   try {
     store.write_wear_estimates(wear_estimate_set(wear, marks, utc_now()));
     said << "  kept the " << wear.wheels.size()

@@ -54,14 +54,14 @@ void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e
   rows.add(static_cast<long long>(e.has_fit));
   rows.add(e.segment_start);
   rows.add(e.last_run_at);
-  for (const double value : {e.last_run_day, e.rate_mm_per_1000km, e.rate_low, e.rate_high,
-                             e.rate_se}) {
+  for (const double value :
+       {e.last_run_day, e.rate_mm_per_1000km, e.rate_low, e.rate_high, e.rate_se}) {
     rows.add(value);  // a non-finite number is stored as NULL and read back as NaN
   }
   rows.add(static_cast<long long>(e.rate_dof));
   rows.add(static_cast<long long>(e.fit_dof));
-  for (const double value : {e.clearance_now_mm, e.wear_now_mm, e.km_per_day, e.km_per_day_se,
-                             e.day_km_sd}) {
+  for (const double value :
+       {e.clearance_now_mm, e.wear_now_mm, e.km_per_day, e.km_per_day_se, e.day_km_sd}) {
     rows.add(value);
   }
   rows.add(static_cast<long long>(e.km_per_day_dof));
@@ -103,9 +103,8 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
        into(e.fit_dof), into(clearance.value, clearance.present), into(wear.value, wear.present),
        into(km.value, km.present), into(km_se.value, km_se.present),
        into(day_sd.value, day_sd.present), into(e.km_per_day_dof),
-       into(clearance_se.value, clearance_se.present),
-       into(covariance.value, covariance.present), into(reached), into(e.critical_date),
-       into(e.warning_date));
+       into(clearance_se.value, clearance_se.present), into(covariance.value, covariance.present),
+       into(reached), into(e.critical_date), into(e.warning_date));
   query.execute();
   while (query.fetch()) {
     e.has_fit = has_fit != 0;
@@ -136,10 +135,9 @@ void SociStore::write_wear_estimates(const WearEstimateSet& set) {
       std::string name, side;
       int axle = 0;
       long long id = 0;
-      soci::statement wheels =
-          (sql_.prepare << "SELECT l.name, w.axle, w.side, w.id FROM wheels w"
-                           " JOIN locomotives l ON l.id = w.locomotive_id",
-           into(name), into(axle), into(side), into(id));
+      soci::statement wheels = (sql_.prepare << "SELECT l.name, w.axle, w.side, w.id FROM wheels w"
+                                                " JOIN locomotives l ON l.id = w.locomotive_id",
+                                into(name), into(axle), into(side), into(id));
       wheels.execute();
       while (wheels.fetch()) ids[{name, axle, side}] = id;
     }

@@ -83,8 +83,8 @@ void SociStore::add_wheel_runs(long long run_id, const RunRecord& run, WheelIds&
   }
   ColumnBatch& rows = batches.wheel_runs;
   for (const WheelRunResult& wheel : run.wheels) {
-    const long long wheel_row = wheel_id({run.locomotive, wheel.axle, wheel.side}, wheel.channel,
-                                         created);
+    const long long wheel_row =
+        wheel_id({run.locomotive, wheel.axle, wheel.side}, wheel.channel, created);
     batches.fit.add_run(wheel_row, run.started_at, run_id, run.odometer_km, wheel.wear_mm);
     rows.add(run_id);
     rows.add(wheel_row);

@@ -207,11 +207,11 @@ struct FleetRow {
 struct WheelEstimateRecord {
   WheelKey wheel;
   int channel = 0;
-  std::string status;        // the estimator's: "ok", "sensor fault", ...
-  bool has_fit = false;      // a wear line (and so a forecast) was fitted
-  std::string segment_start; // the first run of the current flange ("" without runs)
-  std::string last_run_at;   // the wheel's last run
-  double last_run_day = 0.0; // the same in days since 1970-01-01
+  std::string status;         // the estimator's: "ok", "sensor fault", ...
+  bool has_fit = false;       // a wear line (and so a forecast) was fitted
+  std::string segment_start;  // the first run of the current flange ("" without runs)
+  std::string last_run_at;    // the wheel's last run
+  double last_run_day = 0.0;  // the same in days since 1970-01-01
   double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;  // 95 % interval
   double rate_se = 0.0;
   int rate_dof = 0;

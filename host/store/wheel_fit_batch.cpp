@@ -21,14 +21,20 @@ struct WheelSums {
 };
 
 // The sums' columns, as the UPDATE's derived table `d` names them, and PostgreSQL types.
-const std::pair<const char*, const char*> kColumns[] = {
-    {"wheel_id", "BIGINT"},   {"runs", "BIGINT"},
-    {"runs_since", "BIGINT"}, {"n", "BIGINT"},
-    {"sx", "DOUBLE PRECISION"}, {"sy", "DOUBLE PRECISION"},
-    {"sxx", "DOUBLE PRECISION"}, {"sxy", "DOUBLE PRECISION"},
-    {"syy", "DOUBLE PRECISION"}, {"alarms", "BIGINT"},
-    {"last_at", "TEXT"},      {"last_run_id", "BIGINT"},
-    {"last_odometer_km", "DOUBLE PRECISION"}, {"last_wear_mm", "DOUBLE PRECISION"}};
+const std::pair<const char*, const char*> kColumns[] = {{"wheel_id", "BIGINT"},
+                                                        {"runs", "BIGINT"},
+                                                        {"runs_since", "BIGINT"},
+                                                        {"n", "BIGINT"},
+                                                        {"sx", "DOUBLE PRECISION"},
+                                                        {"sy", "DOUBLE PRECISION"},
+                                                        {"sxx", "DOUBLE PRECISION"},
+                                                        {"sxy", "DOUBLE PRECISION"},
+                                                        {"syy", "DOUBLE PRECISION"},
+                                                        {"alarms", "BIGINT"},
+                                                        {"last_at", "TEXT"},
+                                                        {"last_run_id", "BIGINT"},
+                                                        {"last_odometer_km", "DOUBLE PRECISION"},
+                                                        {"last_wear_mm", "DOUBLE PRECISION"}};
 
 // The batch's latest run replaces the wheel's when it is later (time, then run id).
 constexpr const char* kSet =
@@ -65,10 +71,18 @@ std::optional<std::string> number(double value) {
 
 // One wheel's sums as text, in the order of kColumns (NULL as nullopt).
 std::vector<std::optional<std::string>> as_text(const WheelSums& s) {
-  return {std::to_string(s.wheel_id),   std::to_string(s.runs), std::to_string(s.runs_since),
-          std::to_string(s.n),          number(s.sx),           number(s.sy),
-          number(s.sxx),                number(s.sxy),          number(s.syy),
-          std::to_string(s.alarms),     s.last_at,              std::to_string(s.last_run_id),
+  return {std::to_string(s.wheel_id),
+          std::to_string(s.runs),
+          std::to_string(s.runs_since),
+          std::to_string(s.n),
+          number(s.sx),
+          number(s.sy),
+          number(s.sxx),
+          number(s.sxy),
+          number(s.syy),
+          std::to_string(s.alarms),
+          s.last_at,
+          std::to_string(s.last_run_id),
           number(s.last_odometer_km),
           s.last_wear_mm ? number(*s.last_wear_mm) : std::nullopt};
 }

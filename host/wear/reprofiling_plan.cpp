@@ -139,8 +139,8 @@ ReprofilingPlan plan_reprofiling(const FleetWear& fleet, const PlanRequest& requ
   return plan_reprofiling(wheels, fleet.critical_clearance_mm, request);
 }
 
-ReprofilingPlan plan_reprofiling(const std::vector<PlanInput>& wheels,
-                                 double critical_clearance_mm, const PlanRequest& request) {
+ReprofilingPlan plan_reprofiling(const std::vector<PlanInput>& wheels, double critical_clearance_mm,
+                                 const PlanRequest& request) {
   ReprofilingPlan plan;
   plan.request = request;
   double last_day = -INFINITY;

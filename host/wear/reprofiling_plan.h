@@ -31,11 +31,11 @@ struct PlanInput {
   std::string status;
   bool has_forecast = false;  // a wear line, runs and a positive km per day
   double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;  // 95 % interval
-  int dof = 1;                // Student t's for the stated interval
+  int dof = 1;  // Student t's for the stated interval
   double clearance_now_mm = 0.0, wear_now_mm = 0.0;
   double km_per_day = 0.0;
-  double last_day = 0.0;      // the wheel's last run, days since 1970-01-01
-  std::string last_at;        // the same, ISO 8601
+  double last_day = 0.0;  // the wheel's last run, days since 1970-01-01
+  std::string last_at;    // the same, ISO 8601
   bool critical_reached = false;
   std::string critical_date;  // at the fitted rate
 };
@@ -80,8 +80,8 @@ double rate_at_risk(const WheelWear& wheel, double risk);
 ReprofilingPlan plan_reprofiling(const FleetWear& fleet, const PlanRequest& request);
 // The same over the wheels' plan inputs, with the critical clearance they were forecast to.
 // Wheels due on the same day are listed by locomotive, axle, side.
-ReprofilingPlan plan_reprofiling(const std::vector<PlanInput>& wheels,
-                                 double critical_clearance_mm, const PlanRequest& request);
+ReprofilingPlan plan_reprofiling(const std::vector<PlanInput>& wheels, double critical_clearance_mm,
+                                 const PlanRequest& request);
 
 // plan.csv: one row per planned wheel, soonest first.
 std::string plan_csv(const ReprofilingPlan& plan);

@@ -36,9 +36,9 @@ TEST_P(WearPlanStored, ThePlanFromTheStoredEstimatesIsThePlanReEstimated) {
   const std::string name = "wear_plan_stored_" + testing::backend_test_name(GetParam());
   const fs::path dir = testing::fresh_test_dir(name + "_" + std::to_string(::getpid()));
   const std::string store = testing::fresh_store_url(GetParam(), name);
-  const FlangeOutcome simulated = run_flange_captured(
-      {"simulate", "--scenario", "fleet", "--locomotives", "2", "--days", "60", "--seed", "5",
-       "--store", store, "--out", (dir / "fleet").string()});
+  const FlangeOutcome simulated =
+      run_flange_captured({"simulate", "--scenario", "fleet", "--locomotives", "2", "--days", "60",
+                           "--seed", "5", "--store", store, "--out", (dir / "fleet").string()});
   ASSERT_EQ(simulated.status, 0) << simulated.err;
   const auto plan = [&](const std::string& out, const std::string& risk) {
     const FlangeOutcome outcome =
@@ -66,9 +66,9 @@ TEST_P(WearPlanStored, ThePlanFromTheStoredEstimatesIsThePlanReEstimated) {
   const FlangeOutcome cautious_stored = plan("cautious_stored", "0.001");
   EXPECT_NE(cautious_stored.out.find("not re-estimated"), std::string::npos);
   // A plan at other limits cannot use them: re-estimated with those limits.
-  const FlangeOutcome other_limits = run_flange_captured(
-      {"wear", "--store", store, "--out", (dir / "other_limits").string(), "--plan", "--before",
-       "2027-06-01", "--warning-mm", "7.5"});
+  const FlangeOutcome other_limits =
+      run_flange_captured({"wear", "--store", store, "--out", (dir / "other_limits").string(),
+                           "--plan", "--before", "2027-06-01", "--warning-mm", "7.5"});
   EXPECT_EQ(other_limits.status, 0) << other_limits.err;
   EXPECT_NE(other_limits.out.find("re-estimating every wheel (the stored estimates were made "
                                   "with other limits"),
