@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The measurement store at a national fleet's scale (docs/benchmarks.md, "Store"): a year of
-// run summaries and alarm events ingested, then one wheel's wear history, the fleet table and
-// the reprofiling plan as `flange wear --plan` makes it (every wheel's runs read in bulk, the
-// estimate, the plan).
+// run summaries and alarm events ingested, then one wheel's wear history, the fleet table,
+// `flange wear`'s nightly path (every wheel's runs read in bulk, the estimate, the estimates
+// kept in the store) and the reprofiling plan as `flange wear --plan` makes it from the kept
+// estimates (checked equal to the plan from the estimate itself: exit status 1 otherwise).
 //
 //   store_bench --store URL [--locomotives 1000] [--days 365] [--runs-per-transaction 100]
 //               [--estimate-locomotives 100]
@@ -12,10 +13,9 @@
 // 4,380,000 wheel rows. The numbers are made up here (wear linear in distance plus noise, a
 // reprofiling, a maintenance event of its own transaction, when a wheel reaches 4 mm: about once
 // a year per wheel): the store's work does not depend on them. Prints one line of figures; the
-// URL must name an empty store. The store's read for the plan is of the whole fleet; the
-// estimate and plan (which do not touch the store) of the first --estimate-locomotives
-// locomotives' wheels (0: none), because the estimator's drift search grows with the square of
-// a wheel's run count and takes minutes for the whole fleet.
+// URL must name an empty store. The nightly read is of the whole fleet; the estimate (which does
+// not touch the store) and so the estimates kept and the plan are of the first
+// --estimate-locomotives locomotives' wheels (0: none).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -23,7 +23,9 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -31,6 +33,7 @@
 #include "fleet_wear.h"
 #include "reprofiling_plan.h"
 #include "store.h"
+#include "stored_wear_estimates.h"
 
 namespace {
 
@@ -146,15 +149,13 @@ std::pair<double, double> history_ms(Store& store, const Settings& settings, std
 }
 
 struct PlanTimes {
-  double read_s = 0.0, estimate_s = 0.0;
+  double read_s = 0.0, estimate_s = 0.0, keep_s = 0.0, plan_s = 0.0;
   std::size_t wheels = 0, estimated_wheels = 0, due = 0;
+  bool same = false;  // the plan from the stored estimates is the one from the estimate
 };
 
-// `flange wear --plan`'s path: every wheel's runs and the maintenance records read (the
-// store's part), then the estimate and the plan (the estimator's).
-PlanTimes plan_times(Store& store, int estimate_locomotives) {
-  PlanTimes times;
-  auto start = Clock::now();
+// Every wheel's runs and the maintenance records as `flange wear` reads them.
+std::vector<flange::host::WheelHistory> read_histories(Store& store) {
   const std::vector<flange::host::WheelSeries> series = store.wear_series();
   const std::vector<flange::host::StoredMaintenance> maintenance = store.maintenance_events("");
   std::vector<flange::host::WheelHistory> histories;
@@ -180,18 +181,56 @@ PlanTimes plan_times(Store& store, int estimate_locomotives) {
     at->second->maintenance.push_back(
         {event.at, flange::host::day_of_iso_time(event.at), event.odometer_km, event.kind});
   }
+  return histories;
+}
+
+// The plan as `flange wear --plan` makes it from current stored estimates: the store's marks and
+// estimates read, checked current, the plan made.
+flange::host::ReprofilingPlan plan_from_store(Store& store,
+                                              const flange::host::PlanRequest& request) {
+  const flange::host::StoreMarks marks = store.marks();
+  const std::optional<flange::host::WearEstimateSet> stored = store.wear_estimates();
+  const std::string why = flange::cli::why_not_current(stored, marks, {});
+  if (!why.empty()) throw std::runtime_error("the stored estimates are not current: " + why);
+  return flange::host::plan_reprofiling(flange::cli::plan_inputs(*stored),
+                                        stored->critical_clearance_mm, request);
+}
+
+// `flange wear`'s nightly path (every wheel's runs read, the estimate, the estimates kept in the
+// store), then `flange wear --plan`'s from the stored estimates (median of 3), checked against
+// the plan made from the estimate itself.
+PlanTimes plan_times(Store& store, int estimate_locomotives) {
+  PlanTimes times;
+  const flange::host::StoreMarks marks = store.marks();
+  auto start = Clock::now();
+  std::vector<flange::host::WheelHistory> histories = read_histories(store);
   times.read_s = seconds_since(start);
   times.wheels = histories.size();
   if (estimate_locomotives == 0) return times;
-  const std::string past_last = fmt::format("loco-{:03d}", estimate_locomotives);
+  // The first locomotives by number ("loco-NNN"; "loco-1000" would sort before "loco-101").
   std::erase_if(histories, [&](const flange::host::WheelHistory& history) {
-    return history.wheel.locomotive >= past_last;
+    return std::stoi(history.wheel.locomotive.substr(5)) >= estimate_locomotives;
   });
   start = Clock::now();
   const flange::host::FleetWear wear = flange::host::estimate_fleet_wear(histories, {});
-  times.due = flange::host::plan_reprofiling(wear, {"2027-01-01", 0.05}).wheels.size();
   times.estimate_s = seconds_since(start);
   times.estimated_wheels = histories.size();
+  start = Clock::now();
+  store.write_wear_estimates(flange::cli::wear_estimate_set(wear, marks, "2026-01-01T00:00:00Z"));
+  times.keep_s = seconds_since(start);
+  const flange::host::PlanRequest request{"2027-01-01", 0.05};
+  std::vector<double> plan_s;
+  flange::host::ReprofilingPlan stored_plan;
+  for (int i = 0; i < 3; ++i) {
+    start = Clock::now();
+    stored_plan = plan_from_store(store, request);
+    plan_s.push_back(seconds_since(start));
+  }
+  std::sort(plan_s.begin(), plan_s.end());
+  times.plan_s = plan_s[1];
+  times.due = stored_plan.wheels.size();
+  times.same = flange::host::plan_csv(stored_plan) ==
+               flange::host::plan_csv(flange::host::plan_reprofiling(wear, request));
   return times;
 }
 
@@ -245,18 +284,19 @@ int main(int argc, char** argv) {
     std::sort(fleet_times.begin(), fleet_times.end());
     const PlanTimes plan = plan_times(*store, settings.estimate_locomotives);
     const std::uint64_t rows = counts.runs + counts.wheel_rows + counts.alarm_rows;
+    const bool estimated = plan.estimated_wheels > 0;
     fmt::print(
         "| {} | {} x {} d | {} | {} | {} | {:.0f} | {:.0f} | {:.1f} ({:.1f}) | {} | "
-        "{:.1f} ({}) | {:.1f} ({}) | {} | {} | {:.0f} |\n",
+        "{:.1f} ({}) | {:.1f} ({}) | {} | {} | {} | {} | {:.0f} |\n",
         store->backend(), settings.locomotives, settings.days, counts.runs, counts.wheel_rows,
         counts.alarm_rows, ingest_s, static_cast<double>(rows) / ingest_s, history_median,
         history_max, history_rows, 1000.0 * fleet_times[1], fleet_rows, plan.read_s, plan.wheels,
-        plan.estimated_wheels > 0
-            ? fmt::format("{:.1f} ({})", plan.estimate_s, plan.estimated_wheels)
-            : std::string("-"),
-        plan.estimated_wheels > 0 ? fmt::format("{}", plan.due) : std::string("-"),
+        estimated ? fmt::format("{:.1f} ({})", plan.estimate_s, plan.estimated_wheels) : "-",
+        estimated ? fmt::format("{:.2f}", plan.keep_s) : "-",
+        estimated ? fmt::format("{:.0f} ({})", 1000.0 * plan.plan_s, plan.estimated_wheels) : "-",
+        estimated ? fmt::format("{}{}", plan.due, plan.same ? "" : " (DIFFERS)") : "-",
         static_cast<double>(store->size_bytes()) / 1e6);
-    return 0;
+    return plan.estimated_wheels == 0 || plan.same ? 0 : 1;
   } catch (const std::invalid_argument& error) {
     std::cerr << "store_bench: " << error.what() << "\n";
     return 2;

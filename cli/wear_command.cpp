@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <fstream>
 #include <map>
 #include <ostream>
@@ -16,10 +17,13 @@
 #include "fleet_truth_match.h"
 #include "fleet_wear.h"
 #include "input_error.h"
+#include "report_format.h"
 #include "reprofiling_plan.h"
 #include "sim_error.h"
 #include "store.h"
 #include "store_url.h"
+#include "stored_wear_estimates.h"
+#include "utc_time.h"
 #include "version.h"
 #include "wear_outputs.h"
 #include "wear_report.h"
@@ -117,6 +121,55 @@ std::string write_plan(const WearOptions& options, const host::FleetWear& wear, 
   return host::plan_html_section(plan);
 }
 
+std::string utc_now() {
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  return format_utc_time(std::chrono::duration<double>(now).count());
+}
+
+// --plan from the estimates the store keeps (current: nothing stored since they were made): the
+// plan's CSV and a page of its own, without reading the runs or re-running the estimator.
+int plan_from_stored(const WearOptions& options, host::Store& store,
+                     const host::WearEstimateSet& stored, std::ostream& out, std::ostream& said) {
+  const host::ReprofilingPlan plan = host::plan_reprofiling(
+      plan_inputs(stored), stored.critical_clearance_mm, {options.before, options.risk});
+  std::filesystem::create_directories(options.out);
+  const std::string made = fmt::format(
+      "the {} wheels' estimates that flange wear stored at {} (current: no run, maintenance or "
+      "calibration stored since), not re-estimated",
+      stored.wheels.size(), stored.made_at);
+  said << fmt::format("wear: {} wheels from {}: the plan from {}\n", stored.wheels.size(),
+                      store.name(), made);
+  const std::string csv_path = options.plan_csv.value_or((options.out / "plan.csv").string());
+  if (csv_path == "-") {
+    out << host::plan_csv(plan);
+  } else {
+    host::write_plan_csv(csv_path, plan);
+    out << host::plan_summary_text(plan) << "  wrote " << csv_path << "\n";
+  }
+  std::ofstream page(options.out / "index.html", std::ios::binary);
+  page << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Reprofiling plan</title>"
+          "</head><body>\n<p>Made from "
+       << coeffs::html_escape(made) << ".</p>\n"
+       << host::plan_html_section(plan) << "</body></html>\n";
+  page.close();
+  if (!page) throw std::runtime_error("cannot write " + (options.out / "index.html").string());
+  said << "  wrote " << (options.out / "index.html").string() << "\n";
+  return kExitOk;
+}
+
+// The estimate kept in the store for the next plan; a store that refuses the write (a
+// read-only role or replica) is said, not an error: the outputs are written already.
+void keep_estimates(host::Store& store, const host::FleetWear& wear, const host::StoreMarks& marks,
+                    std::ostream& said) {
+  try {
+    store.write_wear_estimates(wear_estimate_set(wear, marks, utc_now()));
+    said << "  kept the " << wear.wheels.size()
+         << " wheels' estimates in the store for the next --plan\n";
+  } catch (const host::StoreError& error) {
+    said << "  the estimates were not kept in the store: " << error.what() << "\n";
+  }
+}
+
 // --truth: the comparison printed and written beside the outputs; false when it fails.
 bool compare_with_truth(const WearOptions& options, const host::FleetWear& wear,
                         std::ostream& out) {
@@ -179,13 +232,22 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
         "last run");
   }
   const std::unique_ptr<host::Store> store = open_existing_store(options.store);
+  // With the plan's CSV on stdout, the rest of what is said goes to stderr.
+  std::ostream& said = options.plan && options.plan_csv == "-" ? err : out;
+  // Read before the runs: a run stored while they are read leaves the estimate stale, not
+  // wrongly current.
+  const host::StoreMarks marks = store->marks();
+  if (options.plan && !options.truth) {
+    const std::optional<host::WearEstimateSet> stored = store->wear_estimates();
+    const std::string why = why_not_current(stored, marks, options.thresholds);
+    if (why.empty()) return plan_from_stored(options, *store, *stored, out, said);
+    said << "plan: re-estimating every wheel (" << why << ")\n";
+  }
   const std::vector<WheelHistory> histories = read_histories(*store);
   if (histories.empty()) {
     throw std::runtime_error(store->name() + ": no run with a wheel's wear estimate");
   }
   check_inputs(options, histories);
-  // With the plan's CSV on stdout, the rest of what is said goes to stderr.
-  std::ostream& said = options.plan && options.plan_csv == "-" ? err : out;
   std::filesystem::create_directories(options.out);
   const host::FleetWear wear = host::estimate_fleet_wear(
       histories, options.thresholds, store_sensitivity(*store, options.out, said));
@@ -199,6 +261,7 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
   said << host::fleet_wear_text(wear);
   const bool truth_ok = !options.truth || compare_with_truth(options, wear, said);
   said << "  wrote " << (options.out / "index.html").string() << ", wear.json and wear.csv\n";
+  keep_estimates(*store, wear, marks, said);
   return truth_ok ? kExitOk : kExitFailure;
 }
 

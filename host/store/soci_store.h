@@ -33,6 +33,7 @@ class SociStore final : public Store {
   std::int64_t record_run(const RunRecord& run) override;
   std::int64_t record_maintenance(const MaintenanceRecord& event) override;
   std::vector<std::int64_t> record_runs(const std::vector<RunRecord>& runs) override;
+  void write_wear_estimates(const WearEstimateSet& set) override;
 
   std::vector<LocomotiveRecord> locomotives() override;
   std::vector<StoredWheel> wheels() override;
@@ -46,6 +47,8 @@ class SociStore final : public Store {
   std::vector<std::pair<std::int64_t, CalibrationRecord>> calibrations() override;
   std::vector<TracePoint> run_trace(std::int64_t run_id) override;
   std::uint64_t run_count() override;
+  StoreMarks marks() override;
+  std::optional<WearEstimateSet> wear_estimates() override;
   std::uint64_t size_bytes() override;
 
  private:

@@ -8,6 +8,7 @@
 #include "column_batch.h"
 #include "soci_store.h"
 #include "store_transaction.h"
+#include "wheel_fit_batch.h"
 #include "wheel_fit_table.h"
 
 namespace flange::host {
@@ -65,6 +66,7 @@ struct SociStore::RunBatches {
                          {"clearance_mm", "DOUBLE PRECISION"},
                          {"temp_c", "DOUBLE PRECISION"},
                          {"samples", "BIGINT"}}};
+  WheelFitBatch fit;  // what the batch adds to its wheels' wheel_fit rows
 
   void flush(soci::session& sql, StoreBackend backend) {
     wheel_runs.flush(sql, backend);
@@ -81,8 +83,11 @@ void SociStore::add_wheel_runs(long long run_id, const RunRecord& run, WheelIds&
   }
   ColumnBatch& rows = batches.wheel_runs;
   for (const WheelRunResult& wheel : run.wheels) {
+    const long long wheel_row =
+        wheel_id({run.locomotive, wheel.axle, wheel.side}, wheel.channel, created);
+    batches.fit.add_run(wheel_row, run.started_at, run_id, run.odometer_km, wheel.wear_mm);
     rows.add(run_id);
-    rows.add(wheel_id({run.locomotive, wheel.axle, wheel.side}, wheel.channel, created));
+    rows.add(wheel_row);
     rows.add(static_cast<long long>(wheel.channel));
     rows.add(run.started_at);
     rows.add(run.odometer_km);
@@ -100,8 +105,10 @@ void SociStore::add_wheel_runs(long long run_id, const RunRecord& run, WheelIds&
 void SociStore::add_alarm_events(long long run_id, const RunRecord& run, WheelIds& created,
                                  RunBatches& batches) {
   for (const AlarmEventRecord& event : run.alarms) {
+    const std::optional<long long> wheel = event_wheel(run, event.axle, event.side, created);
+    if (wheel) batches.fit.add_alarm(*wheel);
     batches.alarm_events.add(run_id);
-    batches.alarm_events.add(event_wheel(run, event.axle, event.side, created));
+    batches.alarm_events.add(wheel);
     batches.alarm_events.add(event.t_s);
     batches.alarm_events.add(event.what);
   }
@@ -207,7 +214,7 @@ std::int64_t SociStore::record_run(const RunRecord& run) {
     RunBatches batches;
     const long long id = insert_run(run, created, batches);
     batches.flush(sql_, url_.backend);
-    if (schema_version_ >= kWheelFitSchemaVersion) add_runs_to_wheel_fit(sql_, url_.backend, {id});
+    if (schema_version_ >= kWheelFitSchemaVersion) batches.fit.apply(sql_, url_.backend);
     pause_for_test();
     transaction.commit();
     wheel_ids_.insert(created.begin(), created.end());
@@ -229,9 +236,7 @@ std::vector<std::int64_t> SociStore::record_runs(const std::vector<RunRecord>& r
       ids.push_back(run_ids[i]);
     }
     batches.flush(sql_, url_.backend);
-    if (schema_version_ >= kWheelFitSchemaVersion) {
-      add_runs_to_wheel_fit(sql_, url_.backend, run_ids);
-    }
+    if (schema_version_ >= kWheelFitSchemaVersion) batches.fit.apply(sql_, url_.backend);
     pause_for_test();
     transaction.commit();
     wheel_ids_.insert(created.begin(), created.end());

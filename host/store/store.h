@@ -73,6 +73,8 @@ class Store {
   // Many runs in ONE transaction (a day's fleet, an import): all written or none. Their ids in
   // order. Faster than one record_run each where every commit waits for the disk.
   virtual std::vector<std::int64_t> record_runs(const std::vector<RunRecord>& runs) = 0;
+  // Replaces the stored wear estimates by `set` (one transaction).
+  virtual void write_wear_estimates(const WearEstimateSet& set) = 0;
 
   // ---- reads ----
   virtual std::vector<LocomotiveRecord> locomotives() = 0;
@@ -97,6 +99,10 @@ class Store {
   // The reduced trace of one run.
   virtual std::vector<TracePoint> run_trace(std::int64_t run_id) = 0;
   virtual std::uint64_t run_count() = 0;
+  // The latest run, maintenance event and calibration ids (0 for none).
+  virtual StoreMarks marks() = 0;
+  // The wear estimates last written (none before the first), wheels by locomotive, axle, side.
+  virtual std::optional<WearEstimateSet> wear_estimates() = 0;
   // The store's size on disk in bytes (SQLite: the file's pages; PostgreSQL: the database).
   virtual std::uint64_t size_bytes() = 0;
 };

@@ -10,7 +10,7 @@
 
 namespace flange::host {
 
-inline constexpr int kStoreSchemaVersion = 3;
+inline constexpr int kStoreSchemaVersion = 4;
 
 // Like open_store, but creates or migrates the schema only up to `version` (1 to
 // kStoreSchemaVersion). A store already past `version` is refused as newer.

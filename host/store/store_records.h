@@ -200,4 +200,46 @@ struct FleetRow {
   std::uint64_t alarm_events = 0;
 };
 
+// One wheel's wear estimate as `flange wear` made it (host/wear/fleet_wear.h), kept so that a
+// reprofiling plan can be made at any risk without reading every run again: the rate with its
+// interval, standard error and degrees of freedom, the fitted clearance and wear at the last run,
+// the locomotive's km per day and what the forecast of the limits was made from.
+struct WheelEstimateRecord {
+  WheelKey wheel;
+  int channel = 0;
+  std::string status;         // the estimator's: "ok", "sensor fault", ...
+  bool has_fit = false;       // a wear line (and so a forecast) was fitted
+  std::string segment_start;  // the first run of the current flange ("" without runs)
+  std::string last_run_at;    // the wheel's last run
+  double last_run_day = 0.0;  // the same in days since 1970-01-01
+  double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;  // 95 % interval
+  double rate_se = 0.0;
+  int rate_dof = 0;
+  int fit_dof = 0;  // the wear line's own (used when rate_dof is 0)
+  double clearance_now_mm = 0.0, wear_now_mm = 0.0;
+  double km_per_day = 0.0;
+  double km_per_day_se = 0.0, day_km_sd = 0.0;
+  int km_per_day_dof = 0;
+  double clearance_now_se_mm = 0.0, clearance_rate_covariance = 0.0;
+  bool critical_reached = false;
+  std::string critical_date, warning_date;  // at the fitted rate; "" when unknown
+};
+
+// What the store held when a set of estimates was made: a set is current while these are the
+// store's latest (no run, maintenance event or calibration stored since).
+struct StoreMarks {
+  std::int64_t last_run_id = 0;
+  std::int64_t last_maintenance_id = 0;
+  std::int64_t last_calibration_id = 0;
+  bool operator==(const StoreMarks&) const = default;
+};
+
+// Every wheel's estimate from one `flange wear`, with the settings it was made with.
+struct WearEstimateSet {
+  std::string made_at;  // ISO 8601 UTC
+  StoreMarks marks;     // the store's when the runs were read
+  double warning_clearance_mm = 0.0, critical_clearance_mm = 0.0, max_step_mm = 0.0;
+  std::vector<WheelEstimateRecord> wheels;  // by locomotive, axle, side
+};
+
 }  // namespace flange::host

@@ -93,10 +93,30 @@ std::vector<std::string> migration_2() {
 // runs already stored.
 std::vector<std::string> migration_3() { return wheel_fit_migration(); }
 
+// 4: the wear estimates `flange wear` keeps (soci_store_estimates.cpp), from which a
+// reprofiling plan is made without reading every run again: the settings and the store's latest
+// ids when they were made, and one row per wheel.
+std::vector<std::string> migration_4() {
+  return {
+      "CREATE TABLE wear_estimates (made_at TEXT NOT NULL, last_run_id BIGINT NOT NULL,"
+      " last_maintenance_id BIGINT NOT NULL, last_calibration_id BIGINT NOT NULL,"
+      " warning_clearance_mm {real} NOT NULL, critical_clearance_mm {real} NOT NULL,"
+      " max_step_mm {real} NOT NULL)",
+      "CREATE TABLE wheel_estimates (wheel_id BIGINT PRIMARY KEY REFERENCES wheels (id),"
+      " status TEXT NOT NULL, has_fit INTEGER NOT NULL, segment_start TEXT NOT NULL,"
+      " last_run_at TEXT NOT NULL, last_run_day {real}, rate {real}, rate_low {real},"
+      " rate_high {real}, rate_se {real}, rate_dof INTEGER NOT NULL, fit_dof INTEGER NOT NULL,"
+      " clearance_now_mm {real}, wear_now_mm {real}, km_per_day {real}, km_per_day_se {real},"
+      " day_km_sd {real}, km_per_day_dof INTEGER NOT NULL, clearance_now_se_mm {real},"
+      " clearance_rate_covariance {real}, critical_reached INTEGER NOT NULL,"
+      " critical_date TEXT NOT NULL, warning_date TEXT NOT NULL)",
+  };
+}
+
 // Migration N is migrations()[N - 1]; kStoreSchemaVersion is their count.
 const std::vector<std::vector<std::string>>& migrations() {
   static const std::vector<std::vector<std::string>> steps = {migration_1(), migration_2(),
-                                                              migration_3()};
+                                                              migration_3(), migration_4()};
   return steps;
 }
 

@@ -68,32 +68,6 @@ std::vector<std::string> add_statements(const std::string& runs) {
   };
 }
 
-// Runs one statement with its "{ids}" (PostgreSQL: a BIGINT array as text) or "{first}" and
-// "{last}" (SQLite: a range of ids) bound, once per occurrence.
-void run_over_ids(soci::session& sql, std::string text, const std::string& ids, long long first,
-                  long long last) {
-  std::vector<std::pair<std::string, int>> slots;  // placeholder, which value
-  for (const auto& [token, which] : {std::pair{"{ids}", 0}, {"{first}", 1}, {"{last}", 2}}) {
-    for (auto at = text.find(token); at != std::string::npos; at = text.find(token)) {
-      const std::string name = fmt::format(":p{}", slots.size());
-      text.replace(at, std::string(token).size(), name);
-      slots.emplace_back(name.substr(1), which);
-    }
-  }
-  std::string id_text = ids;
-  long long first_value = first, last_value = last;
-  soci::statement statement(sql);
-  for (const auto& [name, which] : slots) {
-    if (which == 0) statement.exchange(soci::use(id_text, name));
-    if (which == 1) statement.exchange(soci::use(first_value, name));
-    if (which == 2) statement.exchange(soci::use(last_value, name));
-  }
-  statement.alloc();
-  statement.prepare(text);
-  statement.define_and_bind();
-  statement.execute(true);
-}
-
 }  // namespace
 
 std::vector<std::string> wheel_fit_migration() {
@@ -113,31 +87,6 @@ std::vector<std::string> wheel_fit_migration() {
   // Every run stored so far, added to sums that start at zero.
   for (std::string& statement : add_statements("1 = 1")) steps.push_back(std::move(statement));
   return steps;
-}
-
-void add_runs_to_wheel_fit(soci::session& sql, StoreBackend backend,
-                           const std::vector<long long>& run_ids) {
-  if (run_ids.empty()) return;
-  if (backend == StoreBackend::kPostgresql) {
-    std::string ids = "{";
-    for (const long long id : run_ids) ids += fmt::format("{}{}", ids.size() > 1 ? "," : "", id);
-    ids += "}";
-    const std::string runs = "{a}.run_id = ANY(CAST({ids} AS BIGINT[]))";
-    for (const std::string& statement : add_statements(runs)) {
-      run_over_ids(sql, statement, ids, 0, 0);
-    }
-    return;
-  }
-  // SQLite: one writer at a time, so a batch's run ids are consecutive; otherwise run by run.
-  const auto [low, high] = std::minmax_element(run_ids.begin(), run_ids.end());
-  const bool consecutive = *high - *low + 1 == static_cast<long long>(run_ids.size());
-  for (const std::string& statement : add_statements("{a}.run_id BETWEEN {first} AND {last}")) {
-    if (consecutive) {
-      run_over_ids(sql, statement, "", *low, *high);
-    } else {
-      for (const long long id : run_ids) run_over_ids(sql, statement, "", id, id);
-    }
-  }
 }
 
 void refit_wheel_since_maintenance(soci::session& sql, long long wheel_id) {

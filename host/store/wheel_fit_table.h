@@ -4,7 +4,8 @@
 // maintenance event the least-squares sums of wear against odometer, and the alarm count. The
 // fleet table then reads one row per wheel, whatever the history's length, instead of
 // aggregating every wheel row (at 1,000 locomotives x a year: 12,000 rows against 4.4 million).
-// Each update is set-based SQL over the batch just written; both backends run the same text.
+// A batch of runs adds its own sums (wheel_fit_batch.h); the migration and a maintenance event
+// recompute them with set-based SQL over the stored rows, the same text on both backends.
 #pragma once
 
 #include <soci/soci.h>
@@ -23,11 +24,6 @@ inline constexpr int kWheelFitSchemaVersion = 3;
 // The statements that create `wheel_fit` and fill it from the rows already stored (migration 3);
 // {real} as in store_schema.cpp.
 std::vector<std::string> wheel_fit_migration();
-
-// Adds the wheel rows and alarm events of runs `run_ids` (written in this transaction) to their
-// wheels' sums; runs at or after a wheel's latest maintenance count in its fit.
-void add_runs_to_wheel_fit(soci::session& sql, StoreBackend backend,
-                           const std::vector<long long>& run_ids);
 
 // After a maintenance event on `wheel_id`: its fit restarts from its latest event (recomputed
 // from the runs since).

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "input_error.h"
 #include "limit_forecast.h"
@@ -30,23 +31,23 @@ double day_of_plan_date(const std::string& text) {
 }
 
 // The wheel's plan entry from the forecast at its rate at risk; nothing without a forecast.
-std::optional<PlannedWheel> planned_wheel(const WheelWear& wheel, const FleetWear& fleet,
+std::optional<PlannedWheel> planned_wheel(const PlanInput& wheel, double critical_clearance_mm,
                                           double risk) {
-  if (!wheel.fit || wheel.runs.empty() || !(wheel.km_per_day > 0.0)) return std::nullopt;
+  if (!wheel.has_forecast) return std::nullopt;
   PlannedWheel planned;
   planned.wheel = wheel.wheel;
   planned.status = wheel.status;
   planned.wear_now_mm = wheel.wear_now_mm;
   planned.rate_mm_per_1000km = wheel.rate_mm_per_1000km;
   planned.rate_at_risk_mm_per_1000km = rate_at_risk(wheel, risk);
-  planned.critical_date = wheel.critical.reached ? "reached" : wheel.critical.date;
+  planned.critical_date = wheel.critical_reached ? "reached" : wheel.critical_date;
   ForecastInput input;
   input.clearance_now_mm = wheel.clearance_now_mm;
   input.rate_mm_per_km = input.rate_low_mm_per_km = input.rate_high_mm_per_km =
       planned.rate_at_risk_mm_per_1000km / 1000.0;
   input.km_per_day = wheel.km_per_day;
-  input.last_day = wheel.runs.back().day;
-  const LimitForecast at_risk = forecast_limit(input, fleet.critical_clearance_mm);
+  input.last_day = wheel.last_day;
+  const LimitForecast at_risk = forecast_limit(input, critical_clearance_mm);
   planned.reached = at_risk.reached;
   if (!at_risk.days) return planned;  // never at this rate: due_date stays ""
   planned.due_day = input.last_day + *at_risk.days;
@@ -96,11 +97,31 @@ std::pair<double, std::string> last_run(const std::vector<WheelHistory>& histori
   return latest;
 }
 
-double rate_at_risk(const WheelWear& wheel, double risk) {
+PlanInput plan_input(const WheelWear& wheel) {
+  PlanInput input;
+  input.wheel = wheel.wheel;
+  input.status = wheel.status;
+  input.has_forecast = wheel.fit && !wheel.runs.empty() && wheel.km_per_day > 0.0;
+  input.rate_mm_per_1000km = wheel.rate_mm_per_1000km;
+  input.rate_low = wheel.rate_low;
+  input.rate_high = wheel.rate_high;
   // The stated interval's own degrees of freedom (the block jackknife's, fleet_wear.h).
-  const int dof = wheel.rate_dof > 0 ? wheel.rate_dof : (wheel.fit ? wheel.fit->dof : 1);
-  const double t = t_one_sided(1.0 - risk, dof);
-  const double t_stated = t95(dof);
+  input.dof = wheel.rate_dof > 0 ? wheel.rate_dof : (wheel.fit ? wheel.fit->dof : 1);
+  input.clearance_now_mm = wheel.clearance_now_mm;
+  input.wear_now_mm = wheel.wear_now_mm;
+  input.km_per_day = wheel.km_per_day;
+  if (!wheel.runs.empty()) {
+    input.last_day = wheel.runs.back().day;
+    input.last_at = wheel.runs.back().at;
+  }
+  input.critical_reached = wheel.critical.reached;
+  input.critical_date = wheel.critical.date;
+  return input;
+}
+
+double rate_at_risk(const PlanInput& wheel, double risk) {
+  const double t = t_one_sided(1.0 - risk, wheel.dof);
+  const double t_stated = t95(wheel.dof);
   // The half of the stated interval on the side the quantile lies (they differ when the
   // interval is not symmetric about the rate).
   const double half = t >= 0.0 ? wheel.rate_high - wheel.rate_mm_per_1000km
@@ -108,29 +129,48 @@ double rate_at_risk(const WheelWear& wheel, double risk) {
   return wheel.rate_mm_per_1000km + t * half / t_stated;
 }
 
+double rate_at_risk(const WheelWear& wheel, double risk) {
+  return rate_at_risk(plan_input(wheel), risk);
+}
+
 ReprofilingPlan plan_reprofiling(const FleetWear& fleet, const PlanRequest& request) {
+  std::vector<PlanInput> wheels;
+  for (const WheelWear& wheel : fleet.wheels) wheels.push_back(plan_input(wheel));
+  return plan_reprofiling(wheels, fleet.critical_clearance_mm, request);
+}
+
+ReprofilingPlan plan_reprofiling(const std::vector<PlanInput>& wheels, double critical_clearance_mm,
+                                 const PlanRequest& request) {
   ReprofilingPlan plan;
   plan.request = request;
   double last_day = -INFINITY;
-  for (const WheelWear& wheel : fleet.wheels) {
-    if (!wheel.runs.empty() && wheel.runs.back().day > last_day) {
-      last_day = wheel.runs.back().day;
-      plan.last_run_at = wheel.runs.back().at;
+  for (const PlanInput& wheel : wheels) {
+    if (!wheel.last_at.empty() && wheel.last_day > last_day) {
+      last_day = wheel.last_day;
+      plan.last_run_at = wheel.last_at;
     }
   }
   check_plan_request(request, last_day, plan.last_run_at);
   plan.before_day = day_of_plan_date(request.before);
-  for (const WheelWear& wheel : fleet.wheels) {
-    const std::optional<PlannedWheel> planned = planned_wheel(wheel, fleet, request.risk);
+  for (const PlanInput& wheel : wheels) {
+    const std::optional<PlannedWheel> planned =
+        planned_wheel(wheel, critical_clearance_mm, request.risk);
     if (!planned) {
       plan.unplanned.push_back(wheel);
     } else if (!planned->due_date.empty() && planned->due_day < plan.before_day) {
       plan.wheels.push_back(*planned);
     }
   }
-  std::stable_sort(
-      plan.wheels.begin(), plan.wheels.end(),
-      [](const PlannedWheel& a, const PlannedWheel& b) { return a.due_day < b.due_day; });
+  const auto key = [](const PlannedWheel& w) {
+    return std::tie(w.due_day, w.wheel.locomotive, w.wheel.axle, w.wheel.side);
+  };
+  std::sort(plan.wheels.begin(), plan.wheels.end(),
+            [&](const PlannedWheel& a, const PlannedWheel& b) { return key(a) < key(b); });
+  std::sort(plan.unplanned.begin(), plan.unplanned.end(),
+            [](const PlanInput& a, const PlanInput& b) {
+              return std::tie(a.wheel.locomotive, a.wheel.axle, a.wheel.side) <
+                     std::tie(b.wheel.locomotive, b.wheel.axle, b.wheel.side);
+            });
   return plan;
 }
 
@@ -178,7 +218,7 @@ std::string plan_html_section(const ReprofilingPlan& plan) {
   html += "</table>\n";
   if (!plan.unplanned.empty()) {
     html += "<p>Not planned (no forecast: too few runs, or no distance run):";
-    for (const WheelWear& w : plan.unplanned) {
+    for (const PlanInput& w : plan.unplanned) {
       html += " " + coeffs::html_escape(wheel_text(w.wheel)) + ";";
     }
     html += "</p>\n";

@@ -23,6 +23,25 @@ struct PlanRequest {
   double risk = 0.05;  // the chance of reaching the critical clearance first, in (0, 1)
 };
 
+// What the plan needs of one wheel's estimate: made from the estimator's WheelWear
+// (plan_input) or read back from the estimates a store keeps (the same numbers, so the same
+// plan).
+struct PlanInput {
+  WheelId wheel;
+  std::string status;
+  bool has_forecast = false;  // a wear line, runs and a positive km per day
+  double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;  // 95 % interval
+  int dof = 1;  // Student t's for the stated interval
+  double clearance_now_mm = 0.0, wear_now_mm = 0.0;
+  double km_per_day = 0.0;
+  double last_day = 0.0;  // the wheel's last run, days since 1970-01-01
+  std::string last_at;    // the same, ISO 8601
+  bool critical_reached = false;
+  std::string critical_date;  // at the fitted rate
+};
+
+PlanInput plan_input(const WheelWear& wheel);
+
 struct PlannedWheel {
   WheelId wheel;
   std::string status;        // the estimator's ("ok", "sensor fault", ...)
@@ -41,7 +60,7 @@ struct ReprofilingPlan {
   std::string last_run_at;           // the latest run of any wheel
   std::vector<PlannedWheel> wheels;  // due before `before`, soonest first
   // Wheels without a forecast (too few runs, or a locomotive that never moved): not planned.
-  std::vector<WheelWear> unplanned;
+  std::vector<PlanInput> unplanned;
 };
 
 // Throws InputError (exit status 2) naming the option and its valid range when the risk is not
@@ -54,10 +73,15 @@ void check_plan_request(const PlanRequest& request, double last_run_day,
 std::pair<double, std::string> last_run(const std::vector<WheelHistory>& histories);
 
 // The rate (mm per 1000 km) that a wheel's true rate exceeds with probability `risk`.
+double rate_at_risk(const PlanInput& wheel, double risk);
 double rate_at_risk(const WheelWear& wheel, double risk);
 
 // The plan over the estimator's fleet (check_plan_request first: throws as it does).
 ReprofilingPlan plan_reprofiling(const FleetWear& fleet, const PlanRequest& request);
+// The same over the wheels' plan inputs, with the critical clearance they were forecast to.
+// Wheels due on the same day are listed by locomotive, axle, side.
+ReprofilingPlan plan_reprofiling(const std::vector<PlanInput>& wheels, double critical_clearance_mm,
+                                 const PlanRequest& request);
 
 // plan.csv: one row per planned wheel, soonest first.
 std::string plan_csv(const ReprofilingPlan& plan);
