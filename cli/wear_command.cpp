@@ -108,9 +108,9 @@ void check_inputs(const WearOptions& options, const std::vector<WheelHistory>& h
   }
 }
 
-// --plan: the plan's CSV (to its file or stdout) and its line on `out`; the page's section.
-std::string write_plan(const WearOptions& options, const host::FleetWear& wear, std::ostream& out) {
-  const host::ReprofilingPlan plan = host::plan_reprofiling(wear, {options.before, options.risk});
+// The plan's CSV, to its file (with its line on `out`) or, for `--plan-csv -`, to `out` alone.
+void write_plan_csv_for(const WearOptions& options, const host::ReprofilingPlan& plan,
+                        std::ostream& out) {
   const std::string csv_path = options.plan_csv.value_or((options.out / "plan.csv").string());
   if (csv_path == "-") {
     out << host::plan_csv(plan);
@@ -118,6 +118,12 @@ std::string write_plan(const WearOptions& options, const host::FleetWear& wear, 
     host::write_plan_csv(csv_path, plan);
     out << host::plan_summary_text(plan) << "  wrote " << csv_path << "\n";
   }
+}
+
+// --plan: the plan's CSV and its line on `out`; the page's section.
+std::string write_plan(const WearOptions& options, const host::FleetWear& wear, std::ostream& out) {
+  const host::ReprofilingPlan plan = host::plan_reprofiling(wear, {options.before, options.risk});
+  write_plan_csv_for(options, plan, out);
   return host::plan_html_section(plan);
 }
 
@@ -139,13 +145,7 @@ int plan_from_stored(const WearOptions& options, host::Store& store,
       stored.wheels.size(), stored.made_at);
   said << fmt::format("wear: {} wheels from {}: the plan from {}\n", stored.wheels.size(),
                       store.name(), made);
-  const std::string csv_path = options.plan_csv.value_or((options.out / "plan.csv").string());
-  if (csv_path == "-") {
-    out << host::plan_csv(plan);
-  } else {
-    host::write_plan_csv(csv_path, plan);
-    out << host::plan_summary_text(plan) << "  wrote " << csv_path << "\n";
-  }
+  write_plan_csv_for(options, plan, out);
   std::ofstream page(options.out / "index.html", std::ios::binary);
   page << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Reprofiling plan</title>"
           "</head><body>\n<p>Made from "
