@@ -231,9 +231,8 @@ std::map<std::int64_t, double> side_common_mode(const CommonMode& common, bool l
 
 // The drift candidates of an axle, on what is left once the locomotive's shared part is taken
 // away (locomotive_common_mode.h); none when the runs are too few to tell a drift from wear.
-DriftCandidates axle_drift_candidates(const AxlePair& pair, const CommonMode& common,
-                                      const SensitivityAt& sensitivity) {
-  const AxleSeries both = sum_and_difference(pair);
+DriftCandidates axle_drift_candidates(const AxlePair& pair, const AxleSeries& both,
+                                      const CommonMode& common, const SensitivityAt& sensitivity) {
   try {
     return drift_candidates(
         without_common_mode(both.difference, pair.run_id, common.difference_mm),
@@ -278,8 +277,8 @@ void estimate_locomotive(FleetWear& fleet, const std::vector<const WheelHistory*
   const CommonMode common = locomotive_common_mode(series);
   std::vector<DriftCandidates> candidates;
   std::vector<double> sizes;
-  for (const AxlePair& pair : pairs) {
-    candidates.push_back(axle_drift_candidates(pair, common, sensitivity));
+  for (std::size_t a = 0; a < pairs.size(); ++a) {
+    candidates.push_back(axle_drift_candidates(pairs[a], series[a], common, sensitivity));
     sizes.push_back(drift_like_size(candidates.back()));
   }
   const double min_size = drift_size_to_flag(sizes);

@@ -75,7 +75,6 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
   for (int s = 0; s < segments; ++s) fit.intercepts_mm.push_back(beta(s));
   fit.rate_mm_per_km = beta(segments);
   fit.rate_se = std::sqrt(cov(segments, segments));
-  if (bending) fit.curvature_mm = beta(segments + 1);
   fit.drift_onset_day = drift_onset_day;
   fit.drift_index = static_cast<std::size_t>(first_drift);
   for (int power = 1; drift_onset_day && power <= drift_degree; ++power) {

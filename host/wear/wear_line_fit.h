@@ -29,9 +29,6 @@ struct WearLineFit {
   double rate_mm_per_km = 0.0;
   double rate_se = 0.0;  // its standard error
   std::optional<double> drift_onset_day;
-  // With a bending wear law: c in y += c ((km - km_seg) / 1000)^2, km_seg the segment's first
-  // odometer reading (the flange's wear speeding up or slowing down with distance).
-  std::optional<double> curvature_mm;
   std::vector<double> drift_coefficients;  // g, g2: per day and per day^2 (in mm / m_k)
   std::size_t drift_index = 0;             // where they sit among the parameters
   std::vector<double> residuals;           // y minus the fit, point by point
@@ -46,7 +43,9 @@ struct WearLineFit {
 
 // How the wear grows with km: along one straight line for the whole series (a wheel wears at
 // its own rate whatever its flange's age), or bending (one curvature for every segment of the
-// series, each from its own start: wear that speeds up as the flange thins).
+// series, c ((km - km_seg) / 1000)^2 from the segment's first odometer reading km_seg: wear that
+// speeds up as the flange thins). A bending fit's curvature is not kept: it serves where only the
+// residuals count (locomotive_common_mode.h).
 enum class WearLaw { kStraight, kBending };
 
 // drift_degree 1 or 2 (with an onset). At least one more point than parameters. Throws
@@ -54,7 +53,7 @@ enum class WearLaw { kStraight, kBending };
 WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day,
                           int drift_degree = 1, WearLaw law = WearLaw::kStraight);
 
-// y of the fitted line (without the drift) at odometer km on segment seg.
+// y of a straight fitted line (without the drift) at odometer km on segment seg.
 double wear_line_at(const WearLineFit& fit, int segment, double km);
 
 struct DriftValue {
