@@ -8,12 +8,13 @@
 namespace flange::host {
 namespace {
 
-// Each axle's residuals from its own bending wear law, gathered by run id; an axle with too few
-// runs for the law gives none.
+// Each axle's residuals from its own straight wear law (the null the drift search fits, so the
+// shared part is all of what that search would see, a shared wander included), gathered by run
+// id; an axle with too few runs for the law gives none.
 void add_residuals(const WearSeries& series, const std::vector<std::int64_t>& run_id,
                    std::map<std::int64_t, std::vector<double>>& by_run) {
   try {
-    const WearLineFit fit = fit_wear_line(series, std::nullopt, 1, WearLaw::kBending);
+    const WearLineFit fit = fit_wear_line(series, std::nullopt);
     for (std::size_t k = 0; k < run_id.size(); ++k) by_run[run_id[k]].push_back(fit.residuals[k]);
   } catch (const std::invalid_argument&) {
     // too few runs: this axle takes no part

@@ -3,8 +3,9 @@
 // track on the same days: the route's hand of curves (which flange the curves wear more, and
 // where the day's wheelset centre lands), the season's leftovers of the temperature
 // compensation, a spell of faster wear. Each axle's sum and difference are fitted with their own
-// wear law (segments, a rate, a bend: wear_line_fit.h) and what is left, run by run, is taken
-// across the axles by its median: the part they share. One drifting sensor moves one axle of
+// straight wear law (segments and a rate: wear_line_fit.h, the law the drift search fits, so
+// no part of a shared bend is left behind in every axle) and what is left, run by run, is
+// taken across the axles by its median: the part they share. One drifting sensor moves one axle of
 // six, which the median does not follow, so a drift stands out once the shared part is taken
 // away, and a shared wiggle (which a drift search on one axle alone would take for a drift)
 // does not.

@@ -23,32 +23,22 @@ std::vector<std::vector<double>> rows_of(const Eigen::MatrixXd& matrix) {
 }  // namespace
 
 WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day,
-                          int drift_degree, WearLaw law) {
+                          int drift_degree) {
   const auto n = static_cast<Eigen::Index>(series.y.size());
   const int segments = series.segment.empty()
                            ? 1
                            : *std::max_element(series.segment.begin(), series.segment.end()) + 1;
-  const bool bending = law == WearLaw::kBending;
-  const Eigen::Index first_drift = segments + 1 + (bending ? 1 : 0);
+  const Eigen::Index first_drift = segments + 1;
   const Eigen::Index params = first_drift + (drift_onset_day ? drift_degree : 0);
   if (n <= params) throw std::invalid_argument("fit_wear_line: too few points for the model");
   WearLineFit fit;
   fit.km0 = series.km.front();
   Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, params);
   Eigen::VectorXd y(n);
-  std::vector<double> segment_start_km(static_cast<std::size_t>(segments), fit.km0);
-  for (std::size_t i = series.y.size(); i-- > 0;) {
-    segment_start_km[static_cast<std::size_t>(series.segment[i])] = series.km[i];
-  }
   for (Eigen::Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     x(k, series.segment[i]) = 1.0;
     x(k, segments) = series.km[i] - fit.km0;
-    if (bending) {
-      const double along =
-          (series.km[i] - segment_start_km[static_cast<std::size_t>(series.segment[i])]) / 1000.0;
-      x(k, segments + 1) = along * along;
-    }
     const double since_onset =
         drift_onset_day ? std::max(0.0, series.day[i] - *drift_onset_day) : 0.0;
     const double scale = series.drift_scale.empty() ? 1.0 : series.drift_scale[i];

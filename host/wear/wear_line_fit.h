@@ -36,22 +36,15 @@ struct WearLineFit {
   int dof = 0;                             // points minus parameters
   double residual_sd = 0.0;                // sqrt(rss / dof)
   // (X^T X)^-1 scaled by the residual variance, in the parameter order
-  // [intercepts..., rate, curvature (when bending), drift]: the run-to-run scatter only (block_jackknife.h widens it for
+  // [intercepts..., rate, drift]: the run-to-run scatter only (block_jackknife.h widens it for
   // errors correlated from run to run).
   std::vector<std::vector<double>> covariance;
 };
 
-// How the wear grows with km: along one straight line for the whole series (a wheel wears at
-// its own rate whatever its flange's age), or bending (one curvature for every segment of the
-// series, c ((km - km_seg) / 1000)^2 from the segment's first odometer reading km_seg: wear that
-// speeds up as the flange thins). A bending fit's curvature is not kept: it serves where only the
-// residuals count (locomotive_common_mode.h).
-enum class WearLaw { kStraight, kBending };
-
 // drift_degree 1 or 2 (with an onset). At least one more point than parameters. Throws
 // std::invalid_argument otherwise.
 WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_onset_day,
-                          int drift_degree = 1, WearLaw law = WearLaw::kStraight);
+                          int drift_degree = 1);
 
 // y of a straight fitted line (without the drift) at odometer km on segment seg.
 double wear_line_at(const WearLineFit& fit, int segment, double km);

@@ -93,6 +93,48 @@ TEST(FleetWear, ADriftingSensorIsAFaultNotWear) {
   EXPECT_FALSE(left.sensor_fault.has_value());
 }
 
+// A six-axle locomotive whose axles all wander alike (a slow wave of 0.3 mm in every right
+// wheel's clearance, as a route whose curves wear one flange more for a spell would), with one sensor
+// (axle 4 right) drifting from day 30 when `drifting`.
+std::vector<WheelHistory> locomotive_history(bool drifting, std::uint32_t seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> km_of_day(150.0, 750.0);
+  std::normal_distribution<double> noise(0.0, 0.005);
+  std::vector<WheelHistory> wheels;
+  for (int axle = 1; axle <= 6; ++axle) {
+    wheels.push_back({{"L01", axle, "left", 2 * axle - 2}, {}, {}});
+    wheels.push_back({{"L01", axle, "right", 2 * axle - 1}, {}, {}});
+  }
+  double odometer = 0.0;
+  for (int day = 0; day < 90; ++day) {
+    const double t = 20454.0 + day + 0.25;
+    const double wave = 0.3 * std::sin(2.0 * M_PI * day / 60.0);
+    if (day % 6 != 5) {
+      for (std::size_t w = 0; w < wheels.size(); ++w) {
+        const double rate = 0.04 + 0.005 * static_cast<double>(w);  // mm per 1000 km
+        const bool drifts = drifting && w == 7 && day > 30;
+        const double clearance = 3.0 + rate * odometer / 1000.0 + (w % 2 == 1 ? wave : 0.0) +
+                                 (drifts ? 0.01 * (day - 30) : 0.0) + noise(random);
+        wheels[w].runs.push_back({day, "", t, odometer, clearance});
+      }
+    }
+    odometer += km_of_day(random);
+  }
+  return wheels;
+}
+
+TEST(FleetWear, AWanderAllAxlesShareIsNoDriftButOneSensorStandingOutIs) {
+  for (const bool drifting : {false, true}) {
+    const FleetWear fleet = estimate_fleet_wear(locomotive_history(drifting, 7), {});
+    ASSERT_EQ(fleet.wheels.size(), 12u);
+    for (const WheelWear& w : fleet.wheels) {
+      const bool the_drifting_one = drifting && w.wheel.axle == 4 && w.wheel.side == "right";
+      EXPECT_EQ(w.sensor_fault.has_value(), the_drifting_one)
+          << "axle " << w.wheel.axle << " " << w.wheel.side << (drifting ? " (drift)" : "");
+    }
+  }
+}
+
 TEST(FleetWear, ARateBelowZeroIsAMissedReprofilingWhenAStepExplainsIt) {
   Truth truth;
   truth.rate_left = truth.rate_right = 0.002;  // a lathe pass of 0.45 mm outweighs the wear
