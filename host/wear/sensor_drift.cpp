@@ -84,23 +84,22 @@ std::optional<DriftFinding> best_drift_in(const WearSeries& difference,
   return finding;
 }
 
-bool flagged(const std::optional<DriftFinding>& finding, double min_size_mm) {
-  return finding && std::abs(finding->difference_t) >= kDriftTStatistic &&
-         finding->size_mm >= min_size_mm;
+bool flagged(const std::optional<DriftFinding>& finding, double min_t) {
+  return finding && finding->moved_other && std::abs(finding->difference_t) >= min_t &&
+         finding->size_mm >= kMinDriftMm;
 }
 
-// One sensor's drift moves the sum and the difference by as much; what both wheels share (a
-// step of both flanges the data did not show as a reprofiling, the season) moves only the sum.
-// A drift found in the sum is a sensor's only when the difference, fitted with the same onset
-// and slope, has moved by at least half as much.
-bool shows_in_difference(const DriftFinding& in_sum, const WearSeries& difference,
-                         const WearSeries& left_series, const WearSeries& right_series) {
-  const WearSeries& side = in_sum.left ? left_series : right_series;
-  WearSeries series = difference;
+// Whether `other` (the axle's other combination), fitted with the found onset and slope, has
+// moved by at least half the found drift: one sensor's drift moves the sum and the difference
+// by as much (see the header).
+bool moves_other(const DriftFinding& found, const WearSeries& other,
+                 const WearSeries& left_series, const WearSeries& right_series) {
+  const WearSeries& side = found.left ? left_series : right_series;
+  WearSeries series = other;
   series.drift_scale = side.drift_scale;
-  const DriftValue moved = drift_at(fit_wear_line(series, in_sum.onset_day, kDriftDegree),
-                                    difference.day.back(), last_scale(side));
-  return std::abs(moved.mm) >= 0.5 * in_sum.size_mm;
+  const DriftValue moved = drift_at(fit_wear_line(series, found.onset_day, kDriftDegree),
+                                    other.day.back(), last_scale(side));
+  return std::abs(moved.mm) >= 0.5 * found.size_mm;
 }
 
 }  // namespace
@@ -112,33 +111,39 @@ DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries&
   DriftCandidates candidates;
   candidates.in_difference = best_drift_in(difference, left_series, right_series);
   candidates.in_sum = best_drift_in(sum, left_series, right_series);
-  if (candidates.in_sum) candidates.in_sum->in_sum = true;
-  if (candidates.in_sum &&
-      !shows_in_difference(*candidates.in_sum, difference, left_series, right_series)) {
-    candidates.in_sum.reset();
+  if (candidates.in_difference) {
+    candidates.in_difference->moved_other =
+        moves_other(*candidates.in_difference, sum, left_series, right_series);
+  }
+  if (candidates.in_sum) {
+    candidates.in_sum->in_sum = true;
+    candidates.in_sum->moved_other =
+        moves_other(*candidates.in_sum, difference, left_series, right_series);
   }
   return candidates;
 }
 
-double drift_like_size(const DriftCandidates& candidates) {
-  double size = 0.0;
+double drift_like_t(const DriftCandidates& candidates) {
+  double t = 0.0;
   for (const auto& finding : {candidates.in_difference, candidates.in_sum}) {
-    if (finding) size = std::max(size, finding->size_mm);
+    if (finding && finding->size_mm >= kMinDriftMm) {
+      t = std::max(t, std::abs(finding->difference_t));
+    }
   }
-  return size;
+  return t;
 }
 
-double drift_size_to_flag(std::vector<double> sizes) {
-  if (sizes.size() < kMinAxlesForTypical) return kMinDriftMm;
-  // The size half the axles reach (the upper median of an even count).
-  const auto half = sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2);
-  std::nth_element(sizes.begin(), half, sizes.end());
-  return std::max(kMinDriftMm, kDriftSizeOverTypical * *half);
+double drift_t_to_flag(std::vector<double> ts) {
+  if (ts.size() < kMinAxlesForTypical) return kDriftTStatistic;
+  // The t half the axles reach (the upper median of an even count).
+  const auto half = ts.begin() + static_cast<std::ptrdiff_t>(ts.size() / 2);
+  std::nth_element(ts.begin(), half, ts.end());
+  return std::max(kDriftTStatistic, kDriftTOverTypical * *half);
 }
 
-std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, double min_size_mm) {
-  const bool in_difference = flagged(candidates.in_difference, min_size_mm);
-  const bool in_sum = flagged(candidates.in_sum, min_size_mm);
+std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, double min_t) {
+  const bool in_difference = flagged(candidates.in_difference, min_t);
+  const bool in_sum = flagged(candidates.in_sum, min_t);
   if (in_sum && (!in_difference || std::abs(candidates.in_sum->difference_t) >
                                        std::abs(candidates.in_difference->difference_t))) {
     return candidates.in_sum;
@@ -150,7 +155,7 @@ std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, dou
 std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
                                               const WearSeries& left_series,
                                               const WearSeries& right_series) {
-  return flagged_drift(drift_candidates(difference, left_series, right_series), kMinDriftMm);
+  return flagged_drift(drift_candidates(difference, left_series, right_series), kDriftTStatistic);
 }
 
 }  // namespace flange::host

@@ -17,17 +17,20 @@
 // two clearances by as much in opposite directions, so an error in where a run's centre is taken
 // (a day of uneven curves) scatters the difference and cancels in the sum; the season's leftovers
 // do the opposite. A drift shows in both, so it is looked for where it stands out: the series
-// whose drift has the larger t. A drift found in the sum must have moved the difference (fitted
-// with the same onset and slope) by at least half as much: a change both wheels share (a small
-// lathe pass the data did not show as a jump) moves the sum alone.
+// whose drift has the larger t. One sensor's drift moves the sum and the difference by as much,
+// so a drift found in either must have moved the other (fitted with the same onset and slope)
+// by at least half as much: a change both wheels share (a small lathe pass the data did not show
+// as a jump) moves the sum alone, and where the wheelset runs between the rails the difference
+// alone.
 //
 // What a drift is judged against. The series come with what every axle of the locomotive shares
 // taken away (locomotive_common_mode.h). What is left still wanders slowly in a real fleet (a
 // flange's wear speeding up as it thins, a wheel's own reaction to a route), and a drift search
 // fits such a wander as well as a drift: the drift's standard error is widened for residuals
-// correlated from run to run (an AR(1) error's (1 + rho) / (1 - rho)), and a drift must reach
-// kDriftSizeOverTypical times the size the same search finds on a typical axle of its
-// locomotive.
+// correlated from run to run (an AR(1) error's (1 + rho) / (1 - rho)), and a drift's t must
+// reach kDriftTOverTypical times the t the same search finds on a typical axle of its
+// locomotive: the other axles are the null the statistic is judged against, whatever the
+// wander of that locomotive's wear does to it.
 #pragma once
 
 #include <optional>
@@ -46,11 +49,14 @@ inline constexpr double kDriftTStatistic = 6.0;
 // ... and when it has moved the difference by at least this much (mm) by the last run: the
 // smallest change that shifts an alarm decision (twice the alarms' default 0.1 mm hysteresis).
 inline constexpr double kMinDriftMm = 0.2;
-// ... and at least this many times the drift-like size half its locomotive's axles reach:
-// what the axles show alike (a wiggle of the wear that a drift search takes for a drift) is the
-// locomotive's normal, and one sensor's drift is one axle of several standing out from it.
-inline constexpr double kDriftSizeOverTypical = 2.0;
-// That size is taken over at least this many axles: with three, one drifting sensor's axle
+// ... and its t at least this many times the t half its locomotive's axles reach with a
+// drift-like fit of kMinDriftMm or more: what the axles show alike (a wiggle of the wear that a
+// drift search takes for a drift, at a t the widening does not tame) is the locomotive's
+// normal, and one sensor's drift is one axle of several standing out from it. A fit smaller
+// than kMinDriftMm is no drift whatever its t (the sum of a well-centred axle scatters so little
+// that a bend of a few tenths of a mm reaches t = 30), so it does not count towards the normal.
+inline constexpr double kDriftTOverTypical = 3.0;
+// That t is taken over at least this many axles: with three, one drifting sensor's axle
 // cannot move it past the other two.
 inline constexpr std::size_t kMinAxlesForTypical = 3;
 // An onset leaves at least this many runs after it, so that a drift is a trend, not one point,
@@ -67,11 +73,12 @@ struct DriftFinding {
                                  // series it was found in (the difference or the sum)
   double size_mm = 0.0;          // |the difference's drift by the last run|
   bool in_sum = false;           // found in the axle's sum (else in its difference)
+  bool moved_other = true;       // the other combination moved by at least half as much
 };
 
 // The best drift-like fit of each combination of the two wheels, before any threshold: its t
-// and size say how far it stands out. A sum's fit is kept only when the difference moved with
-// it (see above).
+// and size say how far it stands out, and whether the other combination moved with it (see
+// above).
 struct DriftCandidates {
   std::optional<DriftFinding> in_difference, in_sum;
 };
@@ -80,17 +87,17 @@ struct DriftCandidates {
 DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries& left_series,
                                  const WearSeries& right_series);
 
-// The larger size of the two candidates (0 without any).
-double drift_like_size(const DriftCandidates& candidates);
+// The larger |t| of the two candidates of kMinDriftMm or more (0 without any).
+double drift_like_t(const DriftCandidates& candidates);
 
-// The size a drift must reach on a locomotive whose axles have the drift-like sizes `sizes`:
-// at least kMinDriftMm, and kDriftSizeOverTypical times the size half of them reach when there
-// are at least kMinAxlesForTypical (only kMinDriftMm on fewer).
-double drift_size_to_flag(std::vector<double> sizes);
+// The |t| a drift must reach on a locomotive whose axles have the drift-like t's `ts`: at least
+// kDriftTStatistic, and kDriftTOverTypical times the t half of them reach when there are at
+// least kMinAxlesForTypical (only kDriftTStatistic on fewer).
+double drift_t_to_flag(std::vector<double> ts);
 
-// The candidate flagged as a sensor fault: its t at least kDriftTStatistic and its size at
-// least `min_size_mm`; of two, the one with the larger t.
-std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, double min_size_mm);
+// The candidate flagged as a sensor fault: its |t| at least `min_t`, its size at least
+// kMinDriftMm, the other combination moved with it; of two, the one with the larger t.
+std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, double min_t);
 
 // `difference`, `left_series` and `right_series` share km, day and segments (their y: right -
 // left, left, right); the side series carry their sensor's slope as drift_scale. Nothing when
