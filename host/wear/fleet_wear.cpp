@@ -264,7 +264,7 @@ void estimate_axle(FleetWear& fleet, AxlePair pair, const std::optional<DriftFin
 }
 
 // Every axle of one locomotive: each pair segmented, what the axles share, each axle's drift
-// candidates, the t a drift must reach on this locomotive (sensor_drift.h), then each axle.
+// candidates, what a drift must reach on this locomotive (sensor_drift.h), then each axle.
 void estimate_locomotive(FleetWear& fleet, const std::vector<const WheelHistory*>& lefts,
                          const std::vector<const WheelHistory*>& rights,
                          const SensitivityAt& sensitivity) {
@@ -276,14 +276,12 @@ void estimate_locomotive(FleetWear& fleet, const std::vector<const WheelHistory*
   }
   const CommonMode common = locomotive_common_mode(series);
   std::vector<DriftCandidates> candidates;
-  std::vector<double> ts;
   for (std::size_t a = 0; a < pairs.size(); ++a) {
     candidates.push_back(axle_drift_candidates(pairs[a], series[a], common, sensitivity));
-    ts.push_back(drift_like_t(candidates.back()));
   }
-  const double min_t = drift_t_to_flag(ts);
+  const LocomotiveBar bar = locomotive_bar(candidates);
   for (std::size_t a = 0; a < pairs.size(); ++a) {
-    estimate_axle(fleet, std::move(pairs[a]), flagged_drift(candidates[a], min_t), sensitivity);
+    estimate_axle(fleet, std::move(pairs[a]), flagged_drift(candidates[a], bar), sensitivity);
   }
 }
 

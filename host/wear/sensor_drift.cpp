@@ -84,9 +84,17 @@ std::optional<DriftFinding> best_drift_in(const WearSeries& difference,
   return finding;
 }
 
-bool flagged(const std::optional<DriftFinding>& finding, double min_t) {
-  return finding && finding->moved_other && std::abs(finding->difference_t) >= min_t &&
-         finding->size_mm >= kMinDriftMm;
+bool flagged(const std::optional<DriftFinding>& finding, const LocomotiveBar& bar) {
+  if (!finding || !finding->moved_other || finding->size_mm < kMinDriftMm) return false;
+  const double t = std::abs(finding->difference_t);
+  return t >= kDriftTStatistic && (t >= bar.t || finding->size_mm >= bar.size_mm);
+}
+
+// The value half of `values` reach (the upper median of an even count).
+double upper_median(std::vector<double> values) {
+  const auto half = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), half, values.end());
+  return *half;
 }
 
 // Whether `other` (the axle's other combination), fitted with the found onset and slope, has
@@ -123,27 +131,29 @@ DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries&
   return candidates;
 }
 
-double drift_like_t(const DriftCandidates& candidates) {
-  double t = 0.0;
-  for (const auto& finding : {candidates.in_difference, candidates.in_sum}) {
-    if (finding && finding->size_mm >= kMinDriftMm) {
-      t = std::max(t, std::abs(finding->difference_t));
+LocomotiveBar locomotive_bar(const std::vector<DriftCandidates>& axles) {
+  LocomotiveBar bar;
+  if (axles.size() < kMinAxlesForTypical) return bar;
+  std::vector<double> ts, sizes;
+  for (const DriftCandidates& axle : axles) {
+    double t = 0.0, size = 0.0;
+    for (const auto& finding : {axle.in_difference, axle.in_sum}) {
+      if (!finding) continue;
+      size = std::max(size, finding->size_mm);
+      if (finding->size_mm >= kMinDriftMm) t = std::max(t, std::abs(finding->difference_t));
     }
+    ts.push_back(t);
+    sizes.push_back(size);
   }
-  return t;
+  bar.t = std::max(kDriftTStatistic, kDriftTOverTypical * upper_median(ts));
+  bar.size_mm = std::max(kMinDriftMm, kDriftSizeOverTypical * upper_median(sizes));
+  return bar;
 }
 
-double drift_t_to_flag(std::vector<double> ts) {
-  if (ts.size() < kMinAxlesForTypical) return kDriftTStatistic;
-  // The t half the axles reach (the upper median of an even count).
-  const auto half = ts.begin() + static_cast<std::ptrdiff_t>(ts.size() / 2);
-  std::nth_element(ts.begin(), half, ts.end());
-  return std::max(kDriftTStatistic, kDriftTOverTypical * *half);
-}
-
-std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, double min_t) {
-  const bool in_difference = flagged(candidates.in_difference, min_t);
-  const bool in_sum = flagged(candidates.in_sum, min_t);
+std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates,
+                                          const LocomotiveBar& bar) {
+  const bool in_difference = flagged(candidates.in_difference, bar);
+  const bool in_sum = flagged(candidates.in_sum, bar);
   if (in_sum && (!in_difference || std::abs(candidates.in_sum->difference_t) >
                                        std::abs(candidates.in_difference->difference_t))) {
     return candidates.in_sum;
@@ -155,7 +165,7 @@ std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, dou
 std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
                                               const WearSeries& left_series,
                                               const WearSeries& right_series) {
-  return flagged_drift(drift_candidates(difference, left_series, right_series), kDriftTStatistic);
+  return flagged_drift(drift_candidates(difference, left_series, right_series), LocomotiveBar{});
 }
 
 }  // namespace flange::host

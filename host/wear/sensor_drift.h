@@ -27,10 +27,10 @@
 // taken away (locomotive_common_mode.h). What is left still wanders slowly in a real fleet (a
 // flange's wear speeding up as it thins, a wheel's own reaction to a route), and a drift search
 // fits such a wander as well as a drift: the drift's standard error is widened for residuals
-// correlated from run to run (an AR(1) error's (1 + rho) / (1 - rho)), and a drift's t must
-// reach kDriftTOverTypical times the t the same search finds on a typical axle of its
-// locomotive: the other axles are the null the statistic is judged against, whatever the
-// wander of that locomotive's wear does to it.
+// correlated from run to run (an AR(1) error's (1 + rho) / (1 - rho)), and a drift must stand
+// out from what the same search finds on a typical axle of its locomotive, by its t or by its
+// size (LocomotiveBar): the other axles are the null a drift is judged against, whatever the
+// wander of that locomotive's wear does to the statistic.
 #pragma once
 
 #include <optional>
@@ -49,15 +49,19 @@ inline constexpr double kDriftTStatistic = 6.0;
 // ... and when it has moved the difference by at least this much (mm) by the last run: the
 // smallest change that shifts an alarm decision (twice the alarms' default 0.1 mm hysteresis).
 inline constexpr double kMinDriftMm = 0.2;
-// ... and its t at least this many times the t half its locomotive's axles reach with a
-// drift-like fit of kMinDriftMm or more: what the axles show alike (a wiggle of the wear that a
-// drift search takes for a drift, at a t the widening does not tame) is the locomotive's
-// normal, and one sensor's drift is one axle of several standing out from it. A fit smaller
-// than kMinDriftMm is no drift whatever its t (the sum of a well-centred axle scatters so little
-// that a bend of a few tenths of a mm reaches t = 30), so it does not count towards the normal.
+// ... and it stands out from its locomotive: what the axles show alike (a wiggle of the wear
+// that a drift search takes for a drift, at a t the widening does not tame) is the
+// locomotive's normal, and one sensor's drift is one axle of several standing out from it,
+// either by its t, at least this many times the t half the axles reach with a drift-like fit
+// of kMinDriftMm or more (a fit smaller than that is no drift whatever its t: the sum of a
+// well-centred axle scatters so little that a bend of a few tenths of a mm reaches t = 30) ...
 inline constexpr double kDriftTOverTypical = 3.0;
-// That t is taken over at least this many axles: with three, one drifting sensor's axle
-// cannot move it past the other two.
+// ... or by its size, at least this many times the size half the axles' drift-like fits reach
+// (a drift of several mm on a locomotive whose wear wanders by tenths stands out whatever the
+// wander does to its t).
+inline constexpr double kDriftSizeOverTypical = 2.0;
+// Those are taken over at least this many axles: with three, one drifting sensor's axle
+// cannot move them past the other two.
 inline constexpr std::size_t kMinAxlesForTypical = 3;
 // An onset leaves at least this many runs after it, so that a drift is a trend, not one point,
 inline constexpr std::size_t kMinRunsAfterOnset = 5;
@@ -87,17 +91,24 @@ struct DriftCandidates {
 DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries& left_series,
                                  const WearSeries& right_series);
 
-// The larger |t| of the two candidates of kMinDriftMm or more (0 without any).
-double drift_like_t(const DriftCandidates& candidates);
+// What a drift must reach on one locomotive to stand out from its axles: a t or a size.
+struct LocomotiveBar {
+  double t = kDriftTStatistic;
+  double size_mm = kMinDriftMm;
+};
 
-// The |t| a drift must reach on a locomotive whose axles have the drift-like t's `ts`: at least
-// kDriftTStatistic, and kDriftTOverTypical times the t half of them reach when there are at
-// least kMinAxlesForTypical (only kDriftTStatistic on fewer).
-double drift_t_to_flag(std::vector<double> ts);
+// From each axle's candidates: kDriftTOverTypical times the t half the axles reach (each axle's
+// larger |t| among its candidates of kMinDriftMm or more, 0 without any) and
+// kDriftSizeOverTypical times the size half of them reach (each axle's larger size), each at
+// least kDriftTStatistic and kMinDriftMm; with fewer than kMinAxlesForTypical axles, nothing to
+// stand out from: a t of kDriftTStatistic is enough.
+LocomotiveBar locomotive_bar(const std::vector<DriftCandidates>& axles);
 
-// The candidate flagged as a sensor fault: its |t| at least `min_t`, its size at least
-// kMinDriftMm, the other combination moved with it; of two, the one with the larger t.
-std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates, double min_t);
+// The candidate flagged as a sensor fault: its |t| at least kDriftTStatistic, its size at least
+// kMinDriftMm, the other combination moved with it, and its |t| or its size at the bar; of two,
+// the one with the larger t.
+std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates,
+                                          const LocomotiveBar& bar);
 
 // `difference`, `left_series` and `right_series` share km, day and segments (their y: right -
 // left, left, right); the side series carry their sensor's slope as drift_scale. Nothing when
