@@ -6,7 +6,7 @@
 # maintenance`, `flange run --manifest --store` for every locomotive-day), read back by `flange
 # wear --truth`, and pooled into the same table by wheel kind (bench/wear_coverage_table.py).
 #   bash bench/wear_coverage_alt.sh [SEEDS] [LOCOMOTIVES] [DAYS] [FLANGE]
-#   (defaults: "9221 9222 9223 9224 9225", 5, 120, build/flange: 300 wheels)
+#   (defaults: "9241 9242 9243 9244 9245", 5, 120, build/flange: 300 wheels)
 # Leaves every seed's depot folder, store and wear outputs in
 # build/wear_coverage/alt_seed_S_LxD/; a seed whose store is complete there (from an earlier run
 # of the same binary) is not simulated or fed again: delete the folder after changing how a run
@@ -15,7 +15,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 # shellcheck source=bench/wear_truth_check.sh
 source "$here/wear_truth_check.sh"
-seeds="${1:-9221 9222 9223 9224 9225}"
+seeds="${1:-9241 9242 9243 9244 9245}"
 locomotives="${2:-5}"
 days="${3:-120}"
 flange="${4:-$here/../build/flange}"
