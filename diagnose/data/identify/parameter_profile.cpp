@@ -51,10 +51,11 @@ class Refit {
       if (c.norm() > 0.0) scale_(a) = c.norm();
       unit.col(a) = c / scale_(a);
     }
+    compensation_ = Eigen::VectorXd::Zero(o);
+    if (o == 0) return;  // a value alone: nothing compensates (and no decomposition of nothing)
     solver_.setThreshold(1e-9);
     solver_.compute(unit);
-    compensation_ = o > 0 ? solve(columns.col(static_cast<Eigen::Index>(k)))
-                          : Eigen::VectorXd::Zero(0);
+    compensation_ = solve(columns.col(static_cast<Eigen::Index>(k)));
   }
 
   Point at(double x) const {
