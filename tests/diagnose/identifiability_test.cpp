@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// What the data can tell: a temperature law is undetermined on a session at room temperature,
+// What the data can tell: a temperature law is undetermined on a session at room temperature or
+// within a few degrees of it, with its gain there reported, and determined on a full sweep;
 // a recording of one operating point names every class that shifts it and says it is degenerate,
 // no parameter is reported at the edge of its search, the held-out data must be another session,
 // and nothing but the results reaches standard output.
@@ -9,7 +10,9 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include "compensated_sensitivity.h"
 #include "confidence.h"
@@ -20,6 +23,7 @@
 #include "flange_in_process.h"
 #include "polynomial_sensor_model.h"
 #include "test_files.h"
+#include "twin_recording.h"
 #include "verdict_reasons.h"
 
 namespace flange::diagnose {
@@ -127,6 +131,74 @@ TEST(Identifiability, ATemperatureLawIsUndeterminedAtRoomTemperature) {
   EXPECT_FALSE(d.next_measurement.empty());
 }
 
+// The twin's gain drifting with the temperature, 2.5e-3 per degC from 15 degC (1.75 % high at
+// 22 degC, 16 % at 80 degC), 20 mV of noise, over the micrometer's staircase for 30 min, with
+// the oven at 22 degC wandering by +-`wander_c` over 700 s, or (`wander_c` < 0) swept up and down
+// over 20-98 degC, as the bench's blower does.
+constexpr double kGainPerC = 2.5e-3, kReferenceC = 15.0;
+RecordingSeries gain_drift_session(double wander_c, std::uint64_t seed, double phase_s) {
+  sim::TwinConfig config;
+  config.noise.voltage_std_v = 0.02;
+  config.effects = {sim::make_effect_settings(
+      "temp_gain_drift", {{"gain_per_c", kGainPerC}, {"reference_c", kReferenceC}}, "test")};
+  const auto clearance = [phase_s](double t) { return staircase_mm(t + phase_s); };
+  const auto temperature = [wander_c, phase_s](double t) {
+    if (wander_c < 0.0) {
+      const double u = std::fmod(t + phase_s, 1800.0) / 1800.0;
+      return 20.0 + 78.0 * (u < 0.5 ? 2.0 * u : 2.0 - 2.0 * u);
+    }
+    return 22.0 + wander_c * std::sin(2.0 * std::numbers::pi * (t + phase_s) / 700.0);
+  };
+  return record_twin(config, seed, kFsHz, 1800.0, clearance, temperature);
+}
+
+const EffectFinding& the_gain_drift(const Diagnosis& d) {
+  const auto it = std::find_if(d.effects.begin(), d.effects.end(),
+                               [](const EffectFinding& f) { return f.name == "temp_gain_drift"; });
+  if (it == d.effects.end()) throw std::runtime_error("no temp_gain_drift found");
+  return *it;
+}
+
+TEST(Identifiability, ATemperatureLawHeldWithinAFewDegreesIsUndetermined) {
+  // Exactly constant, within +-0.2 degC and within +-2 degC: a slope fitted over 4 degC at most is
+  // extrapolated over 20-98 degC, where the slopes the data allow part by more than the noise.
+  for (const double wander_c : {0.0, 0.2, 2.0}) {
+    const DiagnosisResult r =
+        diagnose_pair(gain_drift_session(wander_c, 1, 0.0), gain_drift_session(wander_c, 2, 333.0));
+    const Diagnosis& d = r.diagnosis;
+    ASSERT_EQ(d.status, Status::kExplained) << wander_c;
+    const EffectFinding& f = the_gain_drift(d);
+    EXPECT_TRUE(has(f.undetermined, "gain_per_c")) << wander_c;
+    EXPECT_TRUE(has(f.undetermined, "reference_c")) << wander_c;
+    // The gain at the recorded temperature is what the data fix: within 6 % of the truth.
+    ASSERT_TRUE(f.level.has_value()) << wander_c;
+    EXPECT_EQ(f.level->key, "gain_change");
+    EXPECT_NEAR(f.level->value, kGainPerC * (f.level->temp_c - kReferenceC), 1e-3) << wander_c;
+    EXPECT_LT(f.level->resolution, 1e-3) << wander_c;
+    EXPECT_TRUE(std::any_of(d.next_measurement.begin(), d.next_measurement.end(),
+                            [](const std::string& s) {
+                              return s.find("to determine gain_per_c and reference_c of "
+                                            "temp_gain_drift: a session that sweeps the "
+                                            "temperature") != std::string::npos;
+                            }))
+        << wander_c;
+  }
+}
+
+TEST(Identifiability, ATemperatureLawSweptOverTheRangeIsDetermined) {
+  const DiagnosisResult r =
+      diagnose_pair(gain_drift_session(-1.0, 1, 0.0), gain_drift_session(-1.0, 2, 333.0));
+  const Diagnosis& d = r.diagnosis;
+  ASSERT_EQ(d.status, Status::kExplained);
+  const EffectFinding& f = the_gain_drift(d);
+  EXPECT_TRUE(f.undetermined.empty());
+  EXPECT_TRUE(f.bounds.empty());
+  EXPECT_NEAR(f.params.at("gain_per_c"), kGainPerC, 0.05 * kGainPerC);
+  EXPECT_NEAR(f.params.at("reference_c"), kReferenceC, 1.0);
+  EXPECT_TRUE(std::none_of(d.next_measurement.begin(), d.next_measurement.end(),
+                           [](const std::string& s) { return s.find("to determine") == 0; }));
+}
+
 TEST(Identifiability, AConstantRecordingNamesEveryClassThatShiftsItsOnePoint) {
   // 0.3 V below the twin: within reach of every class that shifts a voltage (1.56 V is beyond
   // the temperature offset's search at 22 degC, and the data then rule it out).
@@ -184,6 +256,27 @@ TEST(CompensatedSensitivity, AnOrthogonalColumnKeepsItsOwnRms) {
   const Eigen::VectorXd s = compensated_sensitivity(columns.transpose() * columns, 4);
   EXPECT_NEAR(s(0), 1.0, 1e-12);
   EXPECT_NEAR(s(1), 1.0, 1e-12);
+}
+
+TEST(CompensatedSensitivity, ACombinationTheDataSeeKeepsItsSensitivityWhereItsPartsHaveNone) {
+  // A level g (T - T_ref) at one temperature: the columns of g and T_ref are copies of each other
+  // (scaled), so neither value has any sensitivity, but the level they make has.
+  Eigen::MatrixXd columns(100, 2);
+  for (int i = 0; i < 100; ++i) {
+    columns(i, 0) = 7.0 * (1.0 + 0.01 * i);     // d/dg = (T - T_ref) w
+    columns(i, 1) = -0.0025 * (1.0 + 0.01 * i);  // d/dT_ref = -g w
+  }
+  const Eigen::MatrixXd gram = columns.transpose() * columns;
+  EXPECT_NEAR(compensated_sensitivity(gram, 100)(0), 0.0, 1e-6);
+  const double w_rms = columns.col(0).norm() / std::sqrt(100.0) / 7.0;
+  // The level's gradient (T - T_ref, -g): it moves the voltage by w per unit.
+  EXPECT_NEAR(combination_sensitivity(gram, 100, Eigen::Vector2d(7.0, -0.0025)), w_rms, 1e-9);
+  // Moving g alone is a direction the data do not see.
+  EXPECT_EQ(combination_sensitivity(gram, 100, Eigen::Vector2d(1.0, 0.0)), 0.0);
+  // A single column's own gradient is its compensated sensitivity.
+  const Eigen::MatrixXd one = columns.col(0);
+  EXPECT_NEAR(combination_sensitivity(one.transpose() * one, 100, Eigen::VectorXd::Ones(1)),
+              compensated_sensitivity(one.transpose() * one, 100)(0), 1e-12);
 }
 
 void write_csv(const std::filesystem::path& path, const RecordingSeries& s) {
@@ -258,3 +351,4 @@ TEST(DiagnoseCommand, OneOperatingPointPrintsOnlyTheResults) {
 
 }  // namespace
 }  // namespace flange::diagnose
+

@@ -53,4 +53,26 @@ Eigen::VectorXd compensated_sensitivity(const Eigen::MatrixXd& gram, Eigen::Inde
   return out;
 }
 
+double combination_sensitivity(const Eigen::MatrixXd& gram, Eigen::Index rows,
+                               const Eigen::VectorXd& gradient) {
+  const Eigen::Index m = gram.cols();
+  const double n = std::max<double>(1.0, static_cast<double>(rows));
+  // Scaled to unit diagonal, as above; a value nothing moves may not carry the combination.
+  Eigen::VectorXd scale = gram.diagonal().cwiseMax(0.0).cwiseSqrt();
+  for (Eigen::Index k = 0; k < m; ++k) {
+    if (scale(k) > 0.0) continue;
+    if (gradient(k) != 0.0) return 0.0;
+    scale(k) = 1.0;
+  }
+  const Eigen::MatrixXd unit = scale.cwiseInverse().asDiagonal() * gram *
+                               scale.cwiseInverse().asDiagonal();
+  const Eigen::VectorXd g = gradient.cwiseQuotient(scale);
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver(unit);
+  solver.setThreshold(1e-9);
+  const Eigen::VectorXd x = solver.solve(g);
+  if ((unit * x - g).norm() > 1e-6 * g.norm()) return 0.0;  // g outside the data's directions
+  const double q = g.dot(x);
+  return q > 0.0 ? 1.0 / std::sqrt(n * q) : 0.0;
+}
+
 }  // namespace flange::diagnose

@@ -15,4 +15,12 @@ namespace flange::diagnose {
 // Computed from the columns' Gram matrix `gram` (columns' * columns) and the number of rows.
 Eigen::VectorXd compensated_sensitivity(const Eigen::MatrixXd& gram, Eigen::Index rows);
 
+// The same for a combination of the values (a quantity derived from them) whose gradient over the
+// values is `gradient`: the least RMS change of the fitted voltage per unit change of the
+// combination, the values free to move every other way, 1 / sqrt(g' M^+ g) with M = gram / rows.
+// 0 when the combination moves with a direction of the values that moves nothing in the data.
+// For the gradient of value k alone it is compensated_sensitivity's k-th entry.
+double combination_sensitivity(const Eigen::MatrixXd& gram, Eigen::Index rows,
+                               const Eigen::VectorXd& gradient);
+
 }  // namespace flange::diagnose

@@ -80,11 +80,27 @@ inline constexpr double kRemovalMargin = kScoreResolution;
 // Diagnose.AConverterBehindADaqGainCalibrationIsNamedAloneWithItsGain.
 inline constexpr double kConverterPlacementGain = kScoreResolution;
 
-// Undetermined: a parameter is reported as undetermined when the values the data cannot tell
-// from the fitted one (within its resolution, identify/parameter_resolution.h) cover at least
-// half of its search range: the value reported would then be the search's choice, not the data's.
-// Test: Identifiability.ATemperatureLawIsUndeterminedAtRoomTemperature.
-inline constexpr double kUndeterminedShareOfSearch = 0.5;
+// Undetermined: a library parameter is reported as undetermined when the values the data allow
+// (its profile, identify/parameter_profile.h: the value moved away from its fit, the other fitted
+// values refitted, as far as the fitted voltage moves by no more than the held-out score resolves)
+// change the twin's voltage outside the recording, on a session over the bench's whole operating
+// range (kOperatingRange*), by more than this share of the noise (RMS): a twin carrying an allowed
+// value where the truth is the fitted one would leave sqrt(1 + 0.458^2) = 1.10 sigma on such a
+// session, the most the verdict calls explained (kExplainedRatio, static_assert below), so beyond
+// it the value the data leave open decides whether the twin would be right there. The level the
+// law takes inside the recording is reported apart (EffectFinding::level). A value whose allowed
+// values reach both edges of its search is undetermined too: the data bound it on neither side.
+// Test: Identifiability.ATemperatureLawIsUndeterminedAtRoomTemperature,
+// Identifiability.ATemperatureLawHeldWithinAFewDegreesIsUndetermined,
+// Identifiability.ATemperatureLawSweptOverTheRangeIsDetermined.
+inline constexpr double kMostChangeOutsideTheRecording = 0.458;
+// The bench's operating range: the temperatures the thesis's bench heated the sensor over and
+// eq. 3.14 was fitted on (20-98 degC; the twin's blower reaches 98.5 degC), and the micrometer's
+// clearances (the bench protocol's 1.5-10 mm, inside eq. 3.14's range at every temperature).
+inline constexpr double kOperatingRangeLowestC = 20.0;
+inline constexpr double kOperatingRangeHighestC = 98.0;
+inline constexpr double kOperatingRangeLowestMm = 1.5;
+inline constexpr double kOperatingRangeHighestMm = 10.0;
 // Confidence: the base rates at which a class the method names is in the data, the first it
 // names and any later one, measured blind on the alternative reality's seeds 459 and 460 (80
 // pairs run once; the only use of that reality beyond checking): first claims 53 of 54 right,
@@ -110,6 +126,13 @@ inline constexpr double kGapRatio = 1.05;
 // within it before any pick is no gap (a verdict without a finding is then "none").
 // Tests: Verdict.LeftWithinTheNoiseIsExplained, ImprovedTwin.RediagnosingAnExplained*.
 inline constexpr double kExplainedRatio = 1.10;
+inline constexpr double kExplainedShareAboveTheNoise = kExplainedRatio * kExplainedRatio - 1.0;
+static_assert((kMostChangeOutsideTheRecording * kMostChangeOutsideTheRecording -
+               kExplainedShareAboveTheNoise) *
+                      (kMostChangeOutsideTheRecording * kMostChangeOutsideTheRecording -
+                       kExplainedShareAboveTheNoise) <
+                  1e-6,
+              "the most change outside the recording is what kExplainedRatio leaves above sigma");
 // Where there was no gap before the picks (the held-out gap within kExplainedRatio of the noise
 // over the session and in every window), picks found by their gain are findings only when they
 // take at least this share of the gap above the noise. A weak effect of the library takes most of

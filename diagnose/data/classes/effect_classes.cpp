@@ -17,6 +17,11 @@ EffectClass temp_gain_drift() {
       .name = "temp_gain_drift",
       .search = {{"gain_per_c", -0.01, 0.01}, {"reference_c", 0, 40}},
       .follows = "the temperature",
+      // The relative change of the gain there (the effect's factor less 1).
+      .level = TemperatureLevel{"gain_change",
+                                [](const sim::ParamValues& p, double temp_c) {
+                                  return p.at("gain_per_c") * (temp_c - p.at("reference_c"));
+                                }},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"gain_per_c", d.signed_magnitude(0.5e-3, 3e-3)},
                 {"reference_c", d.uniform(15, 25)}};
@@ -29,6 +34,10 @@ EffectClass temp_offset_drift() {
       .name = "temp_offset_drift",
       .search = {{"offset_v_per_c", -0.05, 0.05}, {"reference_c", 0, 40}},
       .follows = "the temperature",
+      .level = TemperatureLevel{"offset_v",
+                                [](const sim::ParamValues& p, double temp_c) {
+                                  return p.at("offset_v_per_c") * (temp_c - p.at("reference_c"));
+                                }},
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"offset_v_per_c", d.signed_magnitude(1e-3, 5e-3)},
                 {"reference_c", d.uniform(15, 25)}};

@@ -40,6 +40,13 @@ struct ChannelDelay {
   bool voltage_late() const { return skew.skew_s < 0.0 || skew.drifts(); }
 };
 
+// A law of the temperature whose level at one temperature the data fix where its slope is left
+// open (identify/recorded_level.h): the effect at `temp_c` under `params`, reported as `key`.
+struct TemperatureLevel {
+  std::string key;
+  double (*at)(const sim::ParamValues& params, double temp_c) = nullptr;
+};
+
 class SelftestDraw;
 
 struct EffectClass {
@@ -57,6 +64,8 @@ struct EffectClass {
   bool profiled_in_other_fits = false;
   // What its effect follows, for saying which recording tells two classes apart.
   std::string follows{};
+  // Its level at the recorded temperature, for a linear law of the temperature.
+  std::optional<TemperatureLevel> level{};
   // Replayed at the sensor's age: the parameter that carries the age from one session to the
   // next (empty for classes that depend on time only through its differences).
   std::string age_param{};

@@ -29,4 +29,11 @@ const std::vector<Sweep>& sweeps();
 RecordingSeries hypothetical_session(const RecordingSeries& calibration,
                                      const std::string& variable, double span);
 
+// The bench's whole operating range as one session that was not recorded: `calibration`'s times
+// (at most 8192 of them), the temperature once up and back down over
+// criteria::kOperatingRangeLowestC-HighestC, and the clearance up and down over
+// kOperatingRangeLowestMm-HighestMm twenty times on the way (so that every temperature meets every
+// clearance); voltage 0. What a law fitted on the recording is asked to predict outside it.
+RecordingSeries operating_range_session(const RecordingSeries& calibration);
+
 }  // namespace flange::diagnose

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -79,21 +80,29 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
-// The pick's undetermined library parameters, determined by which sweep.
+// The pick's undetermined library parameters, determined by which sweep: one in which they are no
+// longer undetermined (parameter_resolution.h, judge_values), the law asked of over the same
+// operating range as on the calibration part.
 std::string determine(const Parts& parts, const Selection& selection, const Pick& pick,
                       double noise_v) {
   const auto index = static_cast<std::size_t>(pick.modelled_index);
   const sim::EffectSettings& effect = selection.modelled[index];
   std::vector<ModelledValue> values;
+  std::vector<std::size_t> open;
   for (const SearchRange& range : effect_class(effect.name).search) {
-    if (effect.params.count(range.key) != 0) values.push_back({index, range});
+    if (effect.params.count(range.key) == 0) continue;
+    const auto& undetermined = pick.finding.undetermined;
+    if (std::find(undetermined.begin(), undetermined.end(), range.key) != undetermined.end()) {
+      open.push_back(values.size());
+    }
+    values.push_back({index, range});
   }
+  const RecordingSeries range_session = operating_range_session(parts.calibration);
+  const TwinReplay operating_range(range_session, parts.cal_replay.nominal());
   const auto tells = [&](const TwinReplay& replay) {
-    const Eigen::VectorXd s = value_sensitivity(replay, selection.modelled, values);
-    for (std::size_t k = 0; k < values.size(); ++k) {
-      const double at = effect.params.at(values[k].range.key);
-      const double r = resolution_of(s(static_cast<Eigen::Index>(k)), noise_v);
-      if (undetermined_within(values[k].range, at, r)) return false;
+    for (const ValueJudgement& j :
+         judge_values(replay, operating_range, selection.modelled, values, open, noise_v)) {
+      if (j.undetermined) return false;
     }
     return true;
   };

@@ -6,12 +6,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "compensated_sensitivity.h"
 #include "criteria.h"
 #include "effect_classes.h"
-#include "series_statistics.h"
+#include "hypothetical_session.h"
+#include "parallel_work.h"
+#include "recorded_level.h"
 #include "series_arithmetic.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {
@@ -38,48 +42,63 @@ PickValues library_values(const Selection& selection) {
   return out;
 }
 
-Eigen::VectorXd derivative(const TwinReplay& replay,
-                           const std::vector<sim::EffectSettings>& modelled,
-                           const ModelledValue& value) {
-  const double at = modelled[value.effect].params.at(value.range.key);
-  const double h = 1e-4 * (value.range.hi - value.range.lo);
-  const double up = std::min(at + h, value.range.hi), down = std::max(at - h, value.range.lo);
-  std::vector<sim::EffectSettings> moved = modelled;
-  moved[value.effect].params[value.range.key] = up;
-  const std::vector<double> v_up = replay.voltage(moved);
-  moved[value.effect].params[value.range.key] = down;
-  const std::vector<double> v_down = replay.voltage(moved);
-  Eigen::VectorXd column(static_cast<Eigen::Index>(v_up.size()));
-  for (std::size_t i = 0; i < v_up.size(); ++i) {
-    column(static_cast<Eigen::Index>(i)) = (v_up[i] - v_down[i]) / (up - down);
-  }
-  return column;
-}
-
 std::string number(double v) { return fmt::format("{:.6g}", v); }
 
-// What the data say of one library value, at `at` with resolution `r`.
-void judge_library_value(const SearchRange& range, double at, double r, EffectFinding& finding) {
-  finding.resolution[range.key] = r;
-  if (undetermined_within(range, at, r)) {
-    finding.undetermined.push_back(range.key);
-  } else if (at - r <= range.lo) {
-    finding.bounds[range.key] = "<= " + number(at + r);
-  } else if (at + r >= range.hi) {
-    finding.bounds[range.key] = ">= " + number(at - r);
+Eigen::VectorXd sensitivities(const Eigen::MatrixXd& columns) {
+  return compensated_sensitivity(columns.transpose() * columns, columns.rows());
+}
+
+// The largest RMS change of the twin's voltage on `operating_range` at either end of `profile`.
+double change_outside(const TwinReplay& operating_range, const std::vector<double>& fitted_v,
+                      const ValueProfile& profile) {
+  double most = 0.0;
+  for (const ProfileEnd* end : {&profile.low, &profile.high}) {
+    most = std::max(most, rms_of(minus(operating_range.voltage(end->modelled), fitted_v)));
   }
+  return most;
+}
+
+ValueJudgement judge(const ValueProfile& profile, double change_outside_v, double noise_v) {
+  ValueJudgement out;
+  if ((profile.low.at_edge && profile.high.at_edge) ||
+      change_outside_v > criteria::kMostChangeOutsideTheRecording * noise_v) {
+    out.undetermined = true;
+  } else if (profile.low.at_edge) {
+    out.bound = "<= " + number(profile.high.value);
+  } else if (profile.high.at_edge) {
+    out.bound = ">= " + number(profile.low.value);
+  }
+  return out;
 }
 
 void resolve_library_picks(const Parts& parts, Selection& selection, double noise_v) {
   const PickValues found = library_values(selection);
   if (found.values.empty()) return;
-  const Eigen::VectorXd sensitivity =
-      value_sensitivity(parts.cal_replay, selection.modelled, found.values);
+  const Eigen::MatrixXd columns = value_columns(parts.cal_replay, selection.modelled, found.values);
+  const Eigen::VectorXd sensitivity = sensitivities(columns);
+  const RecordingSeries range_session = operating_range_session(parts.calibration);
+  const TwinReplay operating_range(range_session, parts.cal_replay.nominal());
+  std::vector<std::size_t> every(found.values.size());
+  std::iota(every.begin(), every.end(), std::size_t{0});
+  const std::vector<ValueJudgement> judged = judge_values(
+      parts.cal_replay, operating_range, selection.modelled, found.values, every, noise_v);
   for (std::size_t k = 0; k < found.values.size(); ++k) {
     EffectFinding& finding = selection.picks[found.pick[k]].finding;
-    const SearchRange& range = found.values[k].range;
-    judge_library_value(range, finding.params.at(range.key),
-                        resolution_of(sensitivity(static_cast<Eigen::Index>(k)), noise_v), finding);
+    const std::string& key = found.values[k].range.key;
+    finding.resolution[key] = resolution_of(sensitivity(static_cast<Eigen::Index>(k)), noise_v);
+    if (judged[k].undetermined) finding.undetermined.push_back(key);
+    if (!judged[k].bound.empty()) finding.bounds[key] = judged[k].bound;
+  }
+  const Eigen::MatrixXd gram = columns.transpose() * columns;
+  for (std::size_t j = 0; j < selection.picks.size(); ++j) {
+    std::vector<std::size_t> own;
+    for (std::size_t k = 0; k < found.values.size(); ++k) {
+      if (found.pick[k] == j) own.push_back(k);
+    }
+    if (own.empty()) continue;
+    selection.picks[j].finding.level = recorded_level(parts.calibration, selection.modelled,
+                                                      found.values, own, gram, columns.rows(),
+                                                      noise_v);
   }
 }
 
@@ -99,22 +118,6 @@ void resolve_free_shape(const FreeShapeFit& shape, double noise_v, EffectFinding
 
 }  // namespace
 
-Eigen::VectorXd value_sensitivity(const TwinReplay& replay,
-                                  const std::vector<sim::EffectSettings>& modelled,
-                                  const std::vector<ModelledValue>& values) {
-  Eigen::MatrixXd columns(static_cast<Eigen::Index>(replay.size()),
-                          static_cast<Eigen::Index>(values.size()));
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    columns.col(static_cast<Eigen::Index>(k)) = derivative(replay, modelled, values[k]);
-  }
-  return compensated_sensitivity(columns.transpose() * columns, columns.rows());
-}
-
-bool undetermined_within(const SearchRange& range, double at, double resolution) {
-  const double open = std::min(range.hi, at + resolution) - std::max(range.lo, at - resolution);
-  return open >= criteria::kUndeterminedShareOfSearch * (range.hi - range.lo);
-}
-
 double resolution_of(double sensitivity, double noise_v) {
   if (sensitivity <= 0.0) return std::numeric_limits<double>::infinity();
   return std::sqrt(criteria::kScoreResolution) * noise_v / sensitivity;
@@ -124,12 +127,30 @@ double resolution_noise(const Selection& selection) {
   return std::max(selection.noise_v, criteria::kTieFloorShareOfGap * rms_of(selection.raw_ho_gap));
 }
 
+std::vector<ValueJudgement> judge_values(const TwinReplay& replay,
+                                         const TwinReplay& operating_range,
+                                         const std::vector<sim::EffectSettings>& modelled,
+                                         const std::vector<ModelledValue>& values,
+                                         const std::vector<std::size_t>& which, double noise_v) {
+  const TwinReplay& search = replay.search_replay();
+  const Eigen::MatrixXd columns = value_columns(search, modelled, values);
+  const Eigen::VectorXd sensitivity = sensitivities(columns);
+  const std::vector<double> fitted_outside = operating_range.voltage(modelled);
+  return parallel_map<ValueJudgement>(which.size(), [&](std::size_t i) {
+    const std::size_t k = which[i];
+    const double r = resolution_of(sensitivity(static_cast<Eigen::Index>(k)), noise_v);
+    const ValueProfile profile = profile_value(search, modelled, values, columns, k, r, noise_v);
+    return judge(profile, change_outside(operating_range, fitted_outside, profile), noise_v);
+  });
+}
+
 Selection resolve_parameters(const Parts& parts, Selection selection) {
   const double noise_v = resolution_noise(selection);
   for (Pick& pick : selection.picks) {
     pick.finding.resolution.clear();
     pick.finding.undetermined.clear();
     pick.finding.bounds.clear();
+    pick.finding.level.reset();
     if (pick.modelled_index < 0 && pick.chosen().free_shape) {
       resolve_free_shape(*pick.chosen().free_shape, noise_v, pick.finding);
     }

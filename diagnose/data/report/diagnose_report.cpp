@@ -21,6 +21,7 @@ nlohmann::ordered_json finding_json(const EffectFinding& f) {
   return {{"name", f.name},
           {"params", params_json(f)},
           {"undetermined", f.undetermined},
+          {"level", level_json(f)},
           {"resolution", resolution_json(f)},
           {"indistinguishable_from", f.indistinguishable_from},
           {"confidence", f.confidence},

@@ -37,7 +37,19 @@ std::string params_text(const EffectFinding& f) {
       text += fmt::format("{}={:.4g}", key, value);
     }
   }
+  if (f.level) {
+    text += fmt::format(", at {:.1f} degC {}={:.4g}", f.level->temp_c, f.level->key,
+                        f.level->value);
+  }
   return text;
+}
+
+nlohmann::ordered_json level_json(const EffectFinding& f) {
+  if (!f.level) return nullptr;
+  const double r = f.level->resolution;
+  return {{"temp_c", f.level->temp_c},
+          {f.level->key, f.level->value},
+          {"resolution", std::isfinite(r) ? nlohmann::ordered_json(r) : nlohmann::ordered_json()}};
 }
 
 nlohmann::ordered_json params_json(const EffectFinding& f) {

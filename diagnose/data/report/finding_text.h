@@ -13,11 +13,16 @@
 
 namespace flange::diagnose {
 
-// "key=value,key=undetermined,key<=bound", keys in order.
+// "key=value,key=undetermined,key<=bound", keys in order, and a law of the temperature's level
+// inside the recording where the finding has one: ", at 22.0 degC gain_change=0.0175".
 std::string params_text(const EffectFinding& finding);
 
 // {"key": value or null (undetermined) or "<= bound"}.
 nlohmann::ordered_json params_json(const EffectFinding& finding);
+
+// A law of the temperature's level inside the recording: {"temp_c": 22.0, "gain_change": 0.0175,
+// "resolution": 0.0003 or null}, or null for a finding without one.
+nlohmann::ordered_json level_json(const EffectFinding& finding);
 
 // Each parameter's resolution ({"key": value, or null where nothing in the data moves with it}).
 nlohmann::ordered_json resolution_json(const EffectFinding& finding);

@@ -24,6 +24,16 @@ struct DiagnoseOptions {
   std::uint64_t seed = 1;      // bootstrap resampling
 };
 
+// A law of the temperature inside the recording (identify/recorded_level.h): the effect at the
+// calibration part's mean recorded temperature, which the data fix even where the law's slope is
+// undetermined, with its resolution (infinite where the data do not fix it either).
+struct EffectLevel {
+  std::string key;          // "gain_change" (relative: the gain's factor less 1), "offset_v" (V)
+  double temp_c = 0.0;      // where: the calibration part's mean recorded temperature
+  double value = 0.0;
+  double resolution = 0.0;  // in the level's unit
+};
+
 struct EffectFinding {
   std::string name;                      // an effect of the twin's library
   std::map<std::string, double> params;  // fitted on the calibration part only
@@ -45,6 +55,8 @@ struct EffectFinding {
   std::map<std::string, double> resolution{};
   std::vector<std::string> undetermined{};
   std::map<std::string, std::string> bounds{};
+  // A law of the temperature's level inside the recording (its class's TemperatureLevel).
+  std::optional<EffectLevel> level{};
   // The classes whose candidates left the held-out gap within the tie criterion of this one's in
   // the round that picked it: the data cannot tell them from it.
   std::vector<std::string> indistinguishable_from{};
