@@ -31,7 +31,23 @@ std::size_t stride_of(const RecordingSeries& calibration) {
   return std::max<std::size_t>(1, (calibration.size() + kMostRows - 1) / kMostRows);
 }
 
+// A span's centre: `mean`, moved so that the span stays within [lowest, highest] where it fits.
+double centre_within(double mean, double span, double lowest, double highest) {
+  return std::clamp(mean, lowest + 0.5 * span, std::max(lowest + 0.5 * span, highest - 0.5 * span));
+}
+
 }  // namespace
+
+SweepRange sweep_range(const RecordingSeries& calibration, const std::string& variable,
+                       double span) {
+  const bool temperature = variable == "temperature";
+  const double centre =
+      temperature ? centre_within(mean_of(calibration.temp_c), span,
+                                  criteria::kOperatingRangeLowestC, criteria::kOperatingRangeHighestC)
+                  : centre_within(mean_of(calibration.clearance_mm), span, kLowestClearanceMm,
+                                  kHighestClearanceMm);
+  return {centre - 0.5 * span, centre + 0.5 * span};
+}
 
 const std::vector<Sweep>& sweeps() {
   static const std::vector<Sweep> all = {
@@ -48,18 +64,15 @@ RecordingSeries hypothetical_session(const RecordingSeries& calibration,
   const std::size_t n = calibration.size();
   const std::size_t stride = stride_of(calibration);
   const double t0 = calibration.t_s.front(), t1 = calibration.t_s.back();
-  const double temp_mean = mean_of(calibration.temp_c);
-  const double clearance_centre =
-      std::clamp(mean_of(calibration.clearance_mm), kLowestClearanceMm + 0.5 * span,
-                 std::max(kLowestClearanceMm + 0.5 * span, kHighestClearanceMm - 0.5 * span));
+  const SweepRange range = sweep_range(calibration, variable, span);
+  const double centre = 0.5 * (range.lowest + range.highest);
   for (std::size_t i = 0; i < n; i += stride) {
     const double t = calibration.t_s[i];
     const double swing = span * (triangle(t, t0, t1) - 0.5);
     out.t_s.push_back(t);
     const bool temperature = variable == "temperature";
-    out.temp_c.push_back(temperature ? temp_mean + swing : calibration.temp_c[i]);
-    out.clearance_mm.push_back(temperature ? calibration.clearance_mm[i]
-                                           : clearance_centre + swing);
+    out.temp_c.push_back(temperature ? centre + swing : calibration.temp_c[i]);
+    out.clearance_mm.push_back(temperature ? calibration.clearance_mm[i] : centre + swing);
     out.voltage_v.push_back(0.0);
   }
   out.start_utc_s = calibration.start_utc_s;

@@ -22,10 +22,18 @@ struct Sweep {
 // 1.5-10 mm).
 const std::vector<Sweep>& sweeps();
 
+// Where a sweep of `span` runs: about the variable's recorded mean, moved inside the bench's
+// operating range (criteria::kOperatingRange*) when it would leave it (a bench heats from room
+// temperature and cannot cool below it). {lowest, highest}.
+struct SweepRange {
+  double lowest = 0.0, highest = 0.0;
+};
+SweepRange sweep_range(const RecordingSeries& calibration, const std::string& variable,
+                       double span);
+
 // `calibration`'s times (at most 8192 of them, evenly spread, so that the sweep's replays stay
-// quick) with the swept variable moving once up and back down over `span` about its recorded
-// mean (a clearance kept within 1.5-10 mm), the other as recorded, and voltage 0 (a replay needs
-// none).
+// quick) with the swept variable moving once up and back down over its sweep_range, the other
+// as recorded, and voltage 0 (a replay needs none).
 RecordingSeries hypothetical_session(const RecordingSeries& calibration,
                                      const std::string& variable, double span);
 

@@ -17,7 +17,8 @@
 namespace flange::diagnose {
 namespace {
 
-// The smallest span of a sweep that satisfies `tells`, as "the temperature over at least 5 degC".
+// The smallest span of a sweep that satisfies `tells`, as "the temperature over at least 5 degC
+// (20 to 25 degC)": where the sweep that tells was tried.
 template <typename Tells>
 std::optional<std::string> smallest_sweep(const RecordingSeries& calibration, const Sweep& sweep,
                                           const sim::PolynomialSensorModel& nominal, Tells tells) {
@@ -25,8 +26,9 @@ std::optional<std::string> smallest_sweep(const RecordingSeries& calibration, co
     const RecordingSeries session = hypothetical_session(calibration, sweep.variable, span);
     const TwinReplay replay(session, nominal);
     if (tells(replay)) {
-      return fmt::format("a session that sweeps the {} over at least {:g} {}", sweep.variable, span,
-                         sweep.unit);
+      const SweepRange range = sweep_range(calibration, sweep.variable, span);
+      return fmt::format("a session that sweeps the {} over at least {:g} {} ({:.3g} to {:.3g} {})",
+                         sweep.variable, span, sweep.unit, range.lowest, range.highest, sweep.unit);
     }
   }
   return std::nullopt;
