@@ -92,6 +92,24 @@ TEST_P(StoreTest, WearHistoryIsInTimeOrderAndTheFleetRateFollowsTheLatestReprofi
   EXPECT_TRUE(store->maintenance_events("other").empty());
 }
 
+// A wheelset move keeps the axle it came from as data beside the depot's note; the column takes
+// the project's axles only.
+TEST_P(StoreTest, AWheelsetMoveKeepsTheAxleItCameFromBesideItsNote) {
+  auto store = open();
+  store->record_maintenance(
+      {{"L1", 1, "right"}, test_time(2), 2000.0, "wheelset_moved", "from the spare; 3 left", 6});
+  store->record_maintenance({{"L1", 1, "right"}, test_time(3), 3000.0, "reprofile", "lathe"});
+  EXPECT_THROW(store->record_maintenance(
+                   {{"L1", 2, "right"}, test_time(4), 4000.0, "wheelset_moved", "", 7}),
+               host::StoreError);
+  const auto events = store->maintenance_events("L1");
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].event.from_axle, 6);
+  EXPECT_EQ(events[0].event.note, "from the spare; 3 left");
+  EXPECT_EQ(events[1].event.from_axle, std::nullopt);
+  EXPECT_EQ(events[1].event.note, "lathe");
+}
+
 TEST_P(StoreTest, TheFleetTableTheWritesKeepEqualsOneRecomputedFromTheRuns) {
   auto store = open();
   write_mixed_history(*store);
