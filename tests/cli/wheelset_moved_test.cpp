@@ -110,7 +110,8 @@ TEST_P(WheelsetMoved, AMoveStoredByAVersion4StoreCarriesTheWearOnceMigrated) {
 // nothing is carried over: the wear is against the new flange, as for a wheel never moved.
 TEST_P(WheelsetMoved, AMoveWithoutASourceAxleCarriesNothing) {
   const auto store = host::open_store(url(""));
-  store->record_maintenance({{"L", 1, "left"}, test_time(3), 3000.0, "wheelset_moved", "by hand"});
+  store->record_maintenance(
+      {{"L", 1, "left"}, test_time(3), 3000.0, "wheelset_moved", "by hand", std::nullopt});
   for (int day = 0; day < 3; ++day)
     store->record_run(test_run("L", test_time(day), 1000.0 * day, 0.2 * day));
   host::RunRecord run = run_with_axle_1_left(4, 5.0);
@@ -120,7 +121,7 @@ TEST_P(WheelsetMoved, AMoveWithoutASourceAxleCarriesNothing) {
 
 TEST(WheelsetMovedRefusals, ASourceAxleOutsideTheAxlesOrEqualToTheAxleIsOneLine) {
   const std::string store = fresh_store_url(StoreBackendUnderTest::kSqlite, "refusals");
-  for (const std::string& from : {"0", "7", "2"}) {
+  for (const char* from : {"0", "7", "2"}) {
     const std::vector<std::string> args = {
         "maintenance", "--store", store,  "--locomotive", "L",           "--kind", "wheelset_moved",
         "--axle",      "2",       "--at", test_time(3),   "--from-axle", from};
@@ -135,7 +136,9 @@ TEST(WheelsetMovedRefusals, ASourceAxleOutsideTheAxlesOrEqualToTheAxleIsOneLine)
 INSTANTIATE_TEST_SUITE_P(Backends, WheelsetMoved,
                          ::testing::Values(StoreBackendUnderTest::kSqlite,
                                            StoreBackendUnderTest::kPostgresql),
-                         [](const auto& info) { return testing::backend_test_name(info.param); });
+                         [](const auto& backend) {
+                           return testing::backend_test_name(backend.param);
+                         });
 
 }  // namespace
 }  // namespace flange::cli

@@ -144,7 +144,8 @@ TEST_P(StoreUnderTroubleTest, AVersion2StoreGetsItsFleetSumsFromItsRuns) {
   EXPECT_EQ(store->schema_version(), host::kStoreSchemaVersion);
   expect_fleet_table_matches_runs(*store);
   store->record_run(test_run("N", test_time(12), 9900.0, 1.2));
-  store->record_maintenance({{"N", 2, "right"}, test_time(10), 9000.0, "reprofile", "after"});
+  store->record_maintenance(
+      {{"N", 2, "right"}, test_time(10), 9000.0, "reprofile", "after", std::nullopt});
   expect_fleet_table_matches_runs(*store);
 }
 
@@ -161,11 +162,16 @@ TEST_P(StoreUnderTroubleTest, AnOlderStoresWheelsetMovesGetTheirSourceAxleFromTh
       old->record_maintenance({{"W", 1, "left"}, test_time(1), 100.0, "wheelset_moved", "", 3});
       old->record_maintenance(
           {{"W", 2, "left"}, test_time(2), 200.0, "wheelset_moved", "after a flat; see log", 5});
+      old->record_maintenance({{"W", 3, "left"},
+                               test_time(3),
+                               300.0,
+                               "reprofile",
+                               "from axle 2; not a move",
+                               std::nullopt});
       old->record_maintenance(
-          {{"W", 3, "left"}, test_time(3), 300.0, "reprofile", "from axle 2; not a move"});
+          {{"W", 4, "left"}, test_time(4), 400.0, "wheelset_moved", "from axle 12", std::nullopt});
       old->record_maintenance(
-          {{"W", 4, "left"}, test_time(4), 400.0, "wheelset_moved", "from axle 12"});
-      old->record_maintenance({{"W", 5, "left"}, test_time(5), 500.0, "wheelset_moved", "by hand"});
+          {{"W", 5, "left"}, test_time(5), 500.0, "wheelset_moved", "by hand", std::nullopt});
       EXPECT_EQ(old->maintenance_events("W").at(0).event.note, "from axle 3");
     }
     const auto store = host::open_store(old_url);
