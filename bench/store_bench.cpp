@@ -88,8 +88,12 @@ RunRecord service_day(int locomotive, int day, std::vector<double>& wear, double
     const int axle = channel / 2 + 1;
     const std::string side = channel % 2 ? "right" : "left";
     if (w > 4.0) {  // the depot reprofiles it
-      store.record_maintenance(
-          {{run.locomotive, axle, side}, run.started_at, odometer, "reprofile", "store_bench"});
+      store.record_maintenance({{run.locomotive, axle, side},
+                                run.started_at,
+                                odometer,
+                                "reprofile",
+                                "store_bench",
+                                std::nullopt});
       ++counts.maintenance;
       w = 0.0;
     }

@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <cstdio>
 #include <ostream>
 
 #include "cli.h"
@@ -50,18 +49,6 @@ std::vector<host::WheelKey> event_wheels(const MaintenanceOptions& o) {
 
 }  // namespace
 
-std::string wheelset_moved_note(int from_axle, const std::string& note) {
-  return fmt::format("from axle {}", from_axle) + (note.empty() ? "" : "; " + note);
-}
-
-std::optional<int> moved_from_axle(const std::string& note) {
-  int axle = 0;
-  if (std::sscanf(note.c_str(), "from axle %d", &axle) != 1 || axle < 1 || axle > 6) {
-    return std::nullopt;
-  }
-  return axle;
-}
-
 CLI::App* add_maintenance_command(CLI::App& app, MaintenanceOptions& options) {
   CLI::App* cmd = app.add_subcommand(
       "maintenance",
@@ -98,9 +85,8 @@ int run_maintenance_command(const MaintenanceOptions& options, std::ostream& out
     event.at = at;
     event.odometer_km = options.odometer_km.value_or(0.0);
     event.kind = options.kind;
-    event.note = options.kind == "wheelset_moved"
-                     ? wheelset_moved_note(*options.from_axle, options.note)
-                     : options.note;
+    event.note = options.note;
+    event.from_axle = options.from_axle;
     store->record_maintenance(event);
     if (options.kind == "sensor_replaced" && !options.sensor.empty()) {
       store->upsert_sensor({options.sensor, "", wheel, at});

@@ -29,7 +29,7 @@ struct MaintenanceOptions {
   std::optional<int> from_axle;       // wheelset_moved: 1 to 6, not --axle
   std::optional<double> odometer_km;  // the odometer then (odometer_reset: before the reset)
   std::string sensor;                 // sensor_replaced: the new unit's serial
-  std::string note;
+  std::string note;                   // free text, stored as given
 };
 
 CLI::App* add_maintenance_command(CLI::App& app, MaintenanceOptions& options);
@@ -37,10 +37,5 @@ CLI::App* add_maintenance_command(CLI::App& app, MaintenanceOptions& options);
 // Returns 0; throws host::StoreError when the store cannot be written (1) and host::InputError
 // or host::StoreUrlError for a bad argument (2: one line naming it).
 int run_maintenance_command(const MaintenanceOptions& options, std::ostream& out);
-
-// The note a wheelset_moved event carries, "from axle N ...", and the axle read back from it
-// (nullopt for any other note).
-std::string wheelset_moved_note(int from_axle, const std::string& note);
-std::optional<int> moved_from_axle(const std::string& note);
 
 }  // namespace flange::cli

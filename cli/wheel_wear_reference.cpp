@@ -7,7 +7,6 @@
 #include <optional>
 
 #include "input_error.h"
-#include "maintenance_command.h"
 #include "utc_time.h"
 
 namespace flange::cli {
@@ -35,9 +34,9 @@ std::optional<double> wear_carried(host::Store& store, const host::StoredMainten
   const double at_s = seconds(event.at);
   if (event.kind == "reprofile") return 0.0;
   if (event.kind == "sensor_replaced") return last_wear_before(store, event.wheel, at_s);
-  const std::optional<int> from = moved_from_axle(event.note);
-  if (!from) return std::nullopt;
-  return last_wear_before(store, {event.wheel.locomotive, *from, event.wheel.side}, at_s);
+  if (!event.from_axle) return std::nullopt;
+  return last_wear_before(store, {event.wheel.locomotive, *event.from_axle, event.wheel.side},
+                          at_s);
 }
 
 // The clearance of the wheel's first run after `after_s` and before `run_s`, if any.

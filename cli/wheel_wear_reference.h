@@ -10,6 +10,7 @@
 //   sensor_replaced  the wheel's last stored wear before it (the flange did not change; the new
 //                    unit's own offset is not wear)
 //   wheelset_moved   the last stored wear of the same side on the axle the wheelset came from
+//                    (the event's from_axle)
 // (with no stored wear to carry over, the new flange's clearance is the reference again).
 // The odometer: the reading given plus every recorded reset's reading before the run, so that a
 // reset odometer counts on; a reading that would run backwards is refused.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The store's reads: wheels, a wheel's wear history, events, sessions, calibrations.
 #include "soci_store.h"
+#include "store_migration.h"
 
 namespace flange::host {
 
@@ -98,18 +99,28 @@ std::vector<StoredMaintenance> SociStore::maintenance_events(const std::string& 
     std::vector<StoredMaintenance> found;
     StoredMaintenance row;
     long long id = 0;
+    int from_axle = 0;
+    soci::indicator has_from_axle = soci::i_null;
     const int all = locomotive.empty() ? 1 : 0;
+    // A store older than kFromAxleSchemaVersion has no source axles (its notes hold them).
+    const std::string from_axle_column =
+        schema_version_ >= kFromAxleSchemaVersion ? "m.from_axle" : "NULL";
     soci::statement query =
         (sql_.prepare << "SELECT m.id, l.name, w.axle, w.side, m.at, m.odometer_km, m.kind,"
-                         " m.note FROM maintenance_events m JOIN wheels w ON w.id = m.wheel_id"
-                         " JOIN locomotives l ON l.id = w.locomotive_id"
-                         " WHERE :all = 1 OR l.name = :name ORDER BY m.at, m.id",
+                         " m.note, " +
+                             from_axle_column +
+                             " FROM maintenance_events m JOIN wheels w ON w.id = m.wheel_id"
+                             " JOIN locomotives l ON l.id = w.locomotive_id"
+                             " WHERE :all = 1 OR l.name = :name ORDER BY m.at, m.id",
          use(all, "all"), use(locomotive, "name"), into(id), into(row.event.wheel.locomotive),
          into(row.event.wheel.axle), into(row.event.wheel.side), into(row.event.at),
-         into(row.event.odometer_km), into(row.event.kind), into(row.event.note));
+         into(row.event.odometer_km), into(row.event.kind), into(row.event.note),
+         into(from_axle, has_from_axle));
     query.execute();
     while (query.fetch()) {
       row.id = id;
+      row.event.from_axle =
+          has_from_axle == soci::i_ok ? std::optional<int>(from_axle) : std::nullopt;
       found.push_back(row);
     }
     return found;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The store's writes: each one transaction, every value a bound parameter.
 #include "soci_store.h"
+#include "store_migration.h"
 #include "store_transaction.h"
 #include "wheel_fit_table.h"
 
@@ -13,6 +14,14 @@ using soci::use;
 
 soci::indicator present(const std::optional<double>& value) {
   return value ? soci::i_ok : soci::i_null;
+}
+
+// The note a store older than kFromAxleSchemaVersion holds: the source axle written in front of
+// the depot's words, as the flange of that schema wrote it (migration 5 reads it back).
+std::string older_schema_note(const MaintenanceRecord& event) {
+  if (!event.from_axle) return event.note;
+  return "from axle " + std::to_string(*event.from_axle) +
+         (event.note.empty() ? "" : "; " + event.note);
 }
 
 void into_cache(std::map<std::tuple<std::string, int, std::string>, long long>& cache,
@@ -209,10 +218,19 @@ std::int64_t SociStore::record_maintenance(const MaintenanceRecord& event) {
     WheelIds created;
     const long long wheel = wheel_id(event.wheel, default_channel(event.wheel), created);
     long long id = 0;
-    sql_ << "INSERT INTO maintenance_events (wheel_id, at, odometer_km, kind, note)"
-            " VALUES (:wheel, :at, :km, :kind, :note) RETURNING id",
-        use(wheel), use(event.at), use(event.odometer_km), use(event.kind), use(event.note),
-        into(id);
+    if (schema_version_ >= kFromAxleSchemaVersion) {
+      int from_axle = event.from_axle.value_or(0);
+      soci::indicator has_from_axle = event.from_axle ? soci::i_ok : soci::i_null;
+      sql_ << "INSERT INTO maintenance_events (wheel_id, at, odometer_km, kind, note, from_axle)"
+              " VALUES (:wheel, :at, :km, :kind, :note, :from_axle) RETURNING id",
+          use(wheel), use(event.at), use(event.odometer_km), use(event.kind), use(event.note),
+          use(from_axle, has_from_axle), into(id);
+    } else {
+      const std::string note = older_schema_note(event);
+      sql_ << "INSERT INTO maintenance_events (wheel_id, at, odometer_km, kind, note)"
+              " VALUES (:wheel, :at, :km, :kind, :note) RETURNING id",
+          use(wheel), use(event.at), use(event.odometer_km), use(event.kind), use(note), into(id);
+    }
     if (schema_version_ >= kWheelFitSchemaVersion) refit_wheel_since_maintenance(sql_, wheel);
     transaction.commit();
     into_cache(wheel_ids_, created);

@@ -132,7 +132,8 @@ struct MaintenanceRecord {
   std::string at;  // UTC
   double odometer_km = 0.0;
   std::string kind = "reprofile";
-  std::string note;
+  std::string note;              // the depot's own words, free text
+  std::optional<int> from_axle;  // wheelset_moved: the axle it ran on before, 1 to 6
 };
 
 // ---- read back ----

@@ -113,10 +113,28 @@ std::vector<std::string> migration_4() {
   };
 }
 
+// 5: a wheelset move's source axle as data. Older stores wrote it into the note, as
+// "from axle N" or "from axle N; the depot's note" (nothing else wrote that form): it moves to
+// the column and the note keeps the depot's words only. A note in any other form is left as it
+// is, with no source axle.
+std::vector<std::string> migration_5() {
+  const std::string old_form =
+      " WHERE kind = 'wheelset_moved' AND SUBSTR(note, 1, 10) = 'from axle '"
+      " AND SUBSTR(note, 11, 1) IN ('1', '2', '3', '4', '5', '6')"
+      " AND (LENGTH(note) = 11 OR SUBSTR(note, 12, 2) = '; ')";
+  return {
+      "ALTER TABLE maintenance_events ADD COLUMN from_axle INTEGER"
+      " CHECK (from_axle BETWEEN 1 AND 6)",
+      "UPDATE maintenance_events SET from_axle = CAST(SUBSTR(note, 11, 1) AS INTEGER),"
+      " note = CASE WHEN LENGTH(note) = 11 THEN '' ELSE SUBSTR(note, 14) END" +
+          old_form,
+  };
+}
+
 // Migration N is migrations()[N - 1]; kStoreSchemaVersion is their count.
 const std::vector<std::vector<std::string>>& migrations() {
-  static const std::vector<std::vector<std::string>> steps = {migration_1(), migration_2(),
-                                                              migration_3(), migration_4()};
+  static const std::vector<std::vector<std::string>> steps = {
+      migration_1(), migration_2(), migration_3(), migration_4(), migration_5()};
   return steps;
 }
 

@@ -100,7 +100,8 @@ TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
   EXPECT_EQ(store->wear_estimates()->wheels[0].wheel.axle, 3);
   // Every write the estimate depends on moves the marks.
   const host::StoreMarks before = store->marks();
-  store->record_maintenance({{"L1", 1, "left"}, test_time(1), 150.0, "reprofile", ""});
+  store->record_maintenance(
+      {{"L1", 1, "left"}, test_time(1), 150.0, "reprofile", "", std::nullopt});
   EXPECT_GT(store->marks().last_maintenance_id, before.last_maintenance_id);
   store->record_calibration({"2026-03-03T00:00:00Z", "", "{}", 10, 0.01, {}});
   EXPECT_GT(store->marks().last_calibration_id, before.last_calibration_id);

@@ -8,9 +8,11 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <thread>
 
 #include "store_migration.h"
+#include "store_test_backends.h"
 #include "store_test_fixture.h"
 #include "store_test_records.h"
 
@@ -142,8 +144,51 @@ TEST_P(StoreUnderTroubleTest, AVersion2StoreGetsItsFleetSumsFromItsRuns) {
   EXPECT_EQ(store->schema_version(), host::kStoreSchemaVersion);
   expect_fleet_table_matches_runs(*store);
   store->record_run(test_run("N", test_time(12), 9900.0, 1.2));
-  store->record_maintenance({{"N", 2, "right"}, test_time(10), 9000.0, "reprofile", "after"});
+  store->record_maintenance(
+      {{"N", 2, "right"}, test_time(10), 9000.0, "reprofile", "after", std::nullopt});
   expect_fleet_table_matches_runs(*store);
+}
+
+// A store of every older version holds a wheelset move's source axle in the event's note, as the
+// flange of that version wrote it ("from axle N" or "from axle N; the depot's note"): opened, it
+// is migrated to the from_axle column and the note keeps the depot's words. Notes in any other
+// form, and the notes of other kinds of event, are kept as they are, with no source axle.
+TEST_P(StoreUnderTroubleTest, AnOlderStoresWheelsetMovesGetTheirSourceAxleFromTheirNotes) {
+  for (int version = 1; version < host::kFromAxleSchemaVersion; ++version) {
+    SCOPED_TRACE("a store of schema version " + std::to_string(version));
+    const std::string old_url = fresh_store_url(GetParam(), "moves_v" + std::to_string(version));
+    {
+      const auto old = host::open_store_at_schema_version(old_url, version);
+      old->record_maintenance({{"W", 1, "left"}, test_time(1), 100.0, "wheelset_moved", "", 3});
+      old->record_maintenance(
+          {{"W", 2, "left"}, test_time(2), 200.0, "wheelset_moved", "after a flat; see log", 5});
+      old->record_maintenance({{"W", 3, "left"},
+                               test_time(3),
+                               300.0,
+                               "reprofile",
+                               "from axle 2; not a move",
+                               std::nullopt});
+      old->record_maintenance(
+          {{"W", 4, "left"}, test_time(4), 400.0, "wheelset_moved", "from axle 12", std::nullopt});
+      old->record_maintenance(
+          {{"W", 5, "left"}, test_time(5), 500.0, "wheelset_moved", "by hand", std::nullopt});
+      EXPECT_EQ(old->maintenance_events("W").at(0).event.note, "from axle 3");
+    }
+    const auto store = host::open_store(old_url);
+    ASSERT_EQ(store->schema_version(), host::kStoreSchemaVersion);
+    const auto events = store->maintenance_events("W");
+    ASSERT_EQ(events.size(), 5u);
+    const std::pair<std::optional<int>, std::string> expected[] = {
+        {3, ""},
+        {5, "after a flat; see log"},
+        {std::nullopt, "from axle 2; not a move"},
+        {std::nullopt, "from axle 12"},
+        {std::nullopt, "by hand"}};
+    for (std::size_t i = 0; i < events.size(); ++i) {
+      EXPECT_EQ(events[i].event.from_axle, expected[i].first) << "event " << i;
+      EXPECT_EQ(events[i].event.note, expected[i].second) << "event " << i;
+    }
+  }
 }
 
 TEST_P(StoreUnderTroubleTest, ATableThatIsNotAFlangeStoreIsRefused) {

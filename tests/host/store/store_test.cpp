@@ -66,7 +66,8 @@ TEST_P(StoreTest, WearHistoryIsInTimeOrderAndTheFleetRateFollowsTheLatestReprofi
   for (const int day : {3, 0, 4, 1, 2}) {
     store->record_run(test_run("L1", test_time(day), 1000.0 * day, 0.2 * day));
   }
-  store->record_maintenance({{"L1", 2, "left"}, test_time(5), 5000.0, "reprofile", "lathe 2"});
+  store->record_maintenance(
+      {{"L1", 2, "left"}, test_time(5), 5000.0, "reprofile", "lathe 2", std::nullopt});
   for (int day = 5; day < 9; ++day) {
     store->record_run(test_run("L1", test_time(day, 1), 1000.0 * day, 0.3 * (day - 5)));
   }
@@ -92,6 +93,25 @@ TEST_P(StoreTest, WearHistoryIsInTimeOrderAndTheFleetRateFollowsTheLatestReprofi
   EXPECT_TRUE(store->maintenance_events("other").empty());
 }
 
+// A wheelset move keeps the axle it came from as data beside the depot's note; the column takes
+// the project's axles only.
+TEST_P(StoreTest, AWheelsetMoveKeepsTheAxleItCameFromBesideItsNote) {
+  auto store = open();
+  store->record_maintenance(
+      {{"L1", 1, "right"}, test_time(2), 2000.0, "wheelset_moved", "from the spare; 3 left", 6});
+  store->record_maintenance(
+      {{"L1", 1, "right"}, test_time(3), 3000.0, "reprofile", "lathe", std::nullopt});
+  EXPECT_THROW(store->record_maintenance(
+                   {{"L1", 2, "right"}, test_time(4), 4000.0, "wheelset_moved", "", 7}),
+               host::StoreError);
+  const auto events = store->maintenance_events("L1");
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].event.from_axle, 6);
+  EXPECT_EQ(events[0].event.note, "from the spare; 3 left");
+  EXPECT_EQ(events[1].event.from_axle, std::nullopt);
+  EXPECT_EQ(events[1].event.note, "lathe");
+}
+
 TEST_P(StoreTest, TheFleetTableTheWritesKeepEqualsOneRecomputedFromTheRuns) {
   auto store = open();
   write_mixed_history(*store);
@@ -107,7 +127,8 @@ TEST_P(StoreTest, NamesWithQuotesAndSemicolonsAreStoredAsData) {
   const std::string hostile = "O'Brien\"; DROP TABLE runs; --";
   store->upsert_locomotive({hostile, "it's; ok"});
   store->record_run(test_run(hostile, test_time(0), 10.0, 0.1));
-  store->record_maintenance({{hostile, 1, "right"}, test_time(1), 20.0, "reprofile", "'; --"});
+  store->record_maintenance(
+      {{hostile, 1, "right"}, test_time(1), 20.0, "reprofile", "'; --", std::nullopt});
   EXPECT_EQ(store->run_count(), 1u);
   EXPECT_EQ(store->locomotives().at(0).name, hostile);
   EXPECT_EQ(store->wear_history({hostile, 1, "right"}).size(), 1u);

@@ -77,7 +77,8 @@ std::optional<double> slope_of(const std::vector<host::WearPoint>& points) {
 
 void write_mixed_history(host::Store& store) {
   store.upsert_wheel({{"idle", 1, "left"}, 0});
-  store.record_maintenance({{"M", 3, "right"}, test_time(2), 0.0, "reprofile", "before"});
+  store.record_maintenance(
+      {{"M", 3, "right"}, test_time(2), 0.0, "reprofile", "before", std::nullopt});
   for (const int day : {4, 0, 2}) {
     store.record_run(test_run("M", test_time(day), 1000.0 * day, 0.2 * day));
   }
@@ -88,8 +89,10 @@ void write_mixed_history(host::Store& store) {
   }
   batch[3].wheels[2].wear_mm.reset();  // N axle 2 left: no wear figure that day
   store.record_runs(batch);
-  store.record_maintenance({{"M", 1, "left"}, test_time(6, 1), 6100.0, "reprofile", "lathe"});
-  store.record_maintenance({{"M", 1, "left"}, test_time(3), 3100.0, "inspect", "backdated"});
+  store.record_maintenance(
+      {{"M", 1, "left"}, test_time(6, 1), 6100.0, "reprofile", "lathe", std::nullopt});
+  store.record_maintenance(
+      {{"M", 1, "left"}, test_time(3), 3100.0, "inspect", "backdated", std::nullopt});
   // Tied in time with N's day 8 run, and one older than N's latest.
   store.record_runs(
       {test_run("N", test_time(8), 7200.0, 0.85), test_run("N", test_time(1), 900.0, 0.1)});
