@@ -90,7 +90,9 @@ class ThirdReality : public BlindReality<ThirdPairSpec, ThirdPair> {
   }
 };
 
-bool share_at_least(int part, int whole, int pct) { return whole == 0 || 100 * part >= pct * whole; }
+bool share_at_least(int part, int whole, int pct) {
+  return whole == 0 || 100 * part >= pct * whole;
+}
 
 }  // namespace
 

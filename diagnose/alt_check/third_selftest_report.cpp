@@ -30,15 +30,16 @@ std::string effects_table(const BlindSummary& s) {
       "shrink (bias-type) | above-noise shrink (explained, bias-type) |\n"
       "|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const BlindEffectsRow& row : s.by_effects) {
-    text += fmt::format(
-        "| {} | {} | {} | {} | {} | {} | {} |\n", row.effects, row.cases, row.explained,
-        share(row.top_correct, row.cases), share(row.all_found, row.cases),
-        row.bias_cases > 0 ? fmt::format("{:.1f} % ({})", row.mean_excess_shrink_pct, row.bias_cases)
-                           : std::string("-"),
-        row.explained_bias_cases > 0 ? fmt::format("{:.1f} % ({})",
-                                                   row.mean_explained_excess_shrink_pct,
-                                                   row.explained_bias_cases)
-                                     : std::string("-"));
+    text +=
+        fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", row.effects, row.cases, row.explained,
+                    share(row.top_correct, row.cases), share(row.all_found, row.cases),
+                    row.bias_cases > 0
+                        ? fmt::format("{:.1f} % ({})", row.mean_excess_shrink_pct, row.bias_cases)
+                        : std::string("-"),
+                    row.explained_bias_cases > 0
+                        ? fmt::format("{:.1f} % ({})", row.mean_explained_excess_shrink_pct,
+                                      row.explained_bias_cases)
+                        : std::string("-"));
   }
   text += fmt::format("| null and outside | {} | | | | | |\n", s.null_cases + s.outside_cases);
   return text;

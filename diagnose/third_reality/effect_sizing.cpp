@@ -21,13 +21,15 @@ double added_rms_v(const EffectDraw& draw, const SessionPlan& fit,
                    const std::vector<double>& baseline) {
   const std::vector<double> gap = ideal_twin_gap(render_session(fit, {draw}, false));
   double sum = 0.0;
-  for (std::size_t k = 0; k < gap.size(); ++k) sum += (gap[k] - baseline[k]) * (gap[k] - baseline[k]);
+  for (std::size_t k = 0; k < gap.size(); ++k)
+    sum += (gap[k] - baseline[k]) * (gap[k] - baseline[k]);
   return std::sqrt(sum / static_cast<double>(std::max<std::size_t>(gap.size(), 1)));
 }
 
 EffectDraw draw_of(const std::string& name, const DrawContext& context, ThirdRandom& random) {
   const ThirdClass& c = third_class(name);
-  const std::string& shape = c.shapes[static_cast<std::size_t>(random.below(static_cast<int>(c.shapes.size())))];
+  const std::string& shape =
+      c.shapes[static_cast<std::size_t>(random.below(static_cast<int>(c.shapes.size())))];
   return c.draw(shape, context, random);
 }
 
@@ -42,7 +44,8 @@ ThirdTruthEffect noise_setting(const std::string& name, const DrawContext& conte
     const EffectDraw draw = draw_of(name, context, random);
     const double rms = added_rms_v(draw, spec.fit, baseline);
     const double noise = rms / ratio;
-    const double miss = std::max({0.0, std::log(kLeastNoiseV / noise), std::log(noise / kMostNoiseV)});
+    const double miss =
+        std::max({0.0, std::log(kLeastNoiseV / noise), std::log(noise / kMostNoiseV)});
     if (miss < best_miss) {
       best_miss = miss;
       best = {draw, rms};
@@ -54,9 +57,8 @@ ThirdTruthEffect noise_setting(const std::string& name, const DrawContext& conte
 }
 
 // An effect with an amplitude, scaled until it adds `target_v`; redrawn when it adds nothing.
-ThirdTruthEffect scaled(const std::string& name, const DrawContext& context,
-                        const SessionPlan& fit, const std::vector<double>& baseline,
-                        double target_v, ThirdRandom& random) {
+ThirdTruthEffect scaled(const std::string& name, const DrawContext& context, const SessionPlan& fit,
+                        const std::vector<double>& baseline, double target_v, ThirdRandom& random) {
   ThirdTruthEffect e{draw_of(name, context, random), 0.0};
   for (int attempt = 0; attempt < kRedraws; ++attempt) {
     e.rms_v = added_rms_v(e.draw, fit, baseline);

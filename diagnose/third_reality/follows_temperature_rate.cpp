@@ -20,8 +20,8 @@ class SensorLag : public ThirdEffect {
       : kernel_(get_lag_kernel(d.params, "path")), volts_per_c_(d.params.at("amplitude_v_per_c")) {}
   void sense(const ChannelPass& pass, std::vector<double>& v) const override {
     const HeatingPlan& heating = pass.plan->heating;
-    const std::vector<double> lagged =
-        apply_lag_kernel(kernel_, [&](double t) { return heating(t); }, pass.instant_s);
+    const std::vector<double> lagged = apply_lag_kernel(
+        kernel_, [&](double t) { return heating(t); }, pass.instant_s);
     for (std::size_t k = 0; k < v.size(); ++k) {
       v[k] += volts_per_c_ * (pass.ambient_c[k] - lagged[k]);
     }
@@ -37,7 +37,8 @@ class ReadingLag : public ThirdEffect {
   explicit ReadingLag(const EffectDraw& d) : kernel_(get_lag_kernel(d.params, "path")) {}
   void read_temperature(const ChannelPass& pass, std::vector<double>& temp_c) const override {
     const HeatingPlan& heating = pass.plan->heating;
-    temp_c = apply_lag_kernel(kernel_, [&](double t) { return heating(t); }, pass.instant_s);
+    temp_c = apply_lag_kernel(
+        kernel_, [&](double t) { return heating(t); }, pass.instant_s);
   }
 
  private:
@@ -52,8 +53,7 @@ ThirdClass sensor_thermal_lag_class() {
   c.shapes = {"one_path", "two_paths", "three_paths"};
   c.draw = [](const std::string& shape, const DrawContext&, ThirdRandom& random) {
     EffectDraw d{"sensor_thermal_lag", shape, {}, "amplitude_v_per_c"};
-    put_lag_kernel(draw_lag_kernel(paths_of(shape), 60.0, 1500.0, 120.0, random), "path",
-                   d.params);
+    put_lag_kernel(draw_lag_kernel(paths_of(shape), 60.0, 1500.0, 120.0, random), "path", d.params);
     d.params["amplitude_v_per_c"] = random.sign() * 0.005;
     return d;
   };
@@ -70,8 +70,7 @@ ThirdClass temperature_reading_lag_class() {
   c.sets_noise = true;
   c.draw = [](const std::string& shape, const DrawContext&, ThirdRandom& random) {
     EffectDraw d{"temperature_reading_lag", shape, {}, ""};
-    put_lag_kernel(draw_lag_kernel(paths_of(shape), 30.0, 900.0, 90.0, random), "path",
-                   d.params);
+    put_lag_kernel(draw_lag_kernel(paths_of(shape), 30.0, 900.0, 90.0, random), "path", d.params);
     return d;
   };
   c.make = [](const EffectDraw& d, const SessionPlan&) -> std::unique_ptr<ThirdEffect> {

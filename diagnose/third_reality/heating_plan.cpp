@@ -80,8 +80,8 @@ HeatingPlan draw_heating_plan(HeatingKind kind, double duration_s, ThirdRandom& 
       const int steps = 3 + random.below(3);
       for (int s = 0; s < steps; ++s) {
         const double target = plan.room_c + (peak - plan.room_c) * (s + 1) / steps;
-        plan.segments.push_back({duration_s * 0.75 * s / steps, target,
-                                 random.uniform(150.0, 500.0), 0.0});
+        plan.segments.push_back(
+            {duration_s * 0.75 * s / steps, target, random.uniform(150.0, 500.0), 0.0});
       }
       plan.segments.push_back({duration_s * 0.75, plan.room_c, random.uniform(500.0, 1200.0), 0.0});
       break;

@@ -20,8 +20,8 @@ const char* heating_kind_name(HeatingKind kind);
 struct HeatingSegment {
   double start_s = 0.0;
   double target_c = 20.0;
-  double tau_s = 600.0;        // a first-order approach to the target (when ramp_c_per_s == 0)
-  double ramp_c_per_s = 0.0;   // > 0: a straight ramp to the target, then held
+  double tau_s = 600.0;       // a first-order approach to the target (when ramp_c_per_s == 0)
+  double ramp_c_per_s = 0.0;  // > 0: a straight ramp to the target, then held
 };
 
 struct HeatingPlan {

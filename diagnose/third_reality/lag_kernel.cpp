@@ -32,7 +32,8 @@ std::vector<double> apply_lag_kernel(const LagKernel& kernel,
     for (std::size_t k = 1; k < instants_s.size(); ++k) {
       const double h = instants_s[k] - instants_s[k - 1];
       const double xk = x(instants_s[k] - path.dead_s);
-      // dy/dt = (x - y) / tau with x linear over the step: y = x - s tau + (y0 - x0 + s tau) e^-h/tau.
+      // dy/dt = (x - y) / tau with x linear over the step: y = x - s tau + (y0 - x0 + s tau)
+      // e^-h/tau.
       const double slope = (xk - previous_x) / h, decay = std::exp(-h / path.tau_s);
       y = xk - slope * path.tau_s + (y - previous_x + slope * path.tau_s) * decay;
       previous_x = xk;

@@ -14,7 +14,7 @@ namespace flange::third_reality {
 
 struct MainsWave {
   double nominal_hz = 50.0;
-  double offset_hz = 0.0;                   // the grid's mean departure from nominal
+  double offset_hz = 0.0;  // the grid's mean departure from nominal
   std::array<double, 2> swing_hz{}, swing_period_s{}, swing_phase{};  // the wander
   std::array<double, 4> harmonic{}, harmonic_phase{};                 // 2nd..5th, relative
   double operator()(double absolute_s) const;

@@ -54,8 +54,8 @@ double MicrometerPlan::operator()(double t_s) const {
   const double leave_s = arrive_s[i + 1] - move_s;
   if (t_s <= leave_s) return position_mm[i];
   const double s = (t_s - leave_s) / move_s;
-  return position_mm[i] + (position_mm[i + 1] - position_mm[i]) * 0.5 *
-                              (1.0 - std::cos(std::numbers::pi * s));
+  return position_mm[i] +
+         (position_mm[i + 1] - position_mm[i]) * 0.5 * (1.0 - std::cos(std::numbers::pi * s));
 }
 
 MicrometerPlan draw_micrometer_plan(MicrometerKind kind, double duration_s, ThirdRandom& random) {

@@ -35,7 +35,9 @@ class SupplySags : public ThirdEffect {
       double sag = 0.0;
       for (std::size_t i = 0; i < starts_.size(); ++i) {
         const double into = std::min(pass.instant_s[k] - starts_[i], ends_[i] - pass.instant_s[k]);
-        if (into > 0.0) sag = std::max(sag, into >= kEdgeS ? 1.0 : 0.5 - 0.5 * std::cos(std::numbers::pi * into / kEdgeS));
+        if (into > 0.0)
+          sag = std::max(
+              sag, into >= kEdgeS ? 1.0 : 0.5 - 0.5 * std::cos(std::numbers::pi * into / kEdgeS));
       }
       v[k] *= 1.0 - depth_ * sag;
     }

@@ -17,7 +17,7 @@ namespace flange::third_reality {
 using Params = std::map<std::string, double>;
 
 struct SmoothFunction {
-  std::vector<double> x, y;  // knots, x rising from 0 to 1
+  std::vector<double> x, y;   // knots, x rising from 0 to 1
   std::vector<double> slope;  // at each knot (set by prepare())
   void prepare();
   double operator()(double u) const;
@@ -31,8 +31,6 @@ void put_smooth_function(const SmoothFunction& f, const std::string& prefix, Par
 SmoothFunction get_smooth_function(const Params& params, const std::string& prefix);
 
 // `value` mapped onto [0, 1] over [lo, hi] (hi > lo).
-inline double unit_position(double value, double lo, double hi) {
-  return (value - lo) / (hi - lo);
-}
+inline double unit_position(double value, double lo, double hi) { return (value - lo) / (hi - lo); }
 
 }  // namespace flange::third_reality

@@ -6,11 +6,17 @@
 namespace flange::third_reality {
 
 const std::vector<ThirdClass>& third_classes() {
-  static const std::vector<ThirdClass> classes = {
-      mount_vibration_class(),     sensor_thermal_lag_class(), temperature_reading_lag_class(),
-      temperature_offset_class(),  temperature_gain_class(),   static_nonlinearity_class(),
-      range_compression_class(),   ageing_class(),             mains_pickup_class(),
-      channel_skew_class(),        quantisation_class()};
+  static const std::vector<ThirdClass> classes = {mount_vibration_class(),
+                                                  sensor_thermal_lag_class(),
+                                                  temperature_reading_lag_class(),
+                                                  temperature_offset_class(),
+                                                  temperature_gain_class(),
+                                                  static_nonlinearity_class(),
+                                                  range_compression_class(),
+                                                  ageing_class(),
+                                                  mains_pickup_class(),
+                                                  channel_skew_class(),
+                                                  quantisation_class()};
   return classes;
 }
 

@@ -17,7 +17,7 @@ namespace flange::third_reality {
 // What a draw may depend on: the pair's rate and the fitting session as an ideal sensor sees it.
 struct DrawContext {
   double fs_hz = 6.0;
-  double duration_s = 3600.0;           // the fitting session's
+  double duration_s = 3600.0;  // the fitting session's
   double temp_lo_c = 20.0, temp_hi_c = 90.0;
   double clearance_lo_mm = 1.5, clearance_hi_mm = 10.0;
   double voltage_median_v = 5.0, voltage_high_v = 8.0;  // the 50th and 90th percentiles
@@ -27,8 +27,8 @@ struct DrawContext {
 struct ThirdClass {
   std::string name;
   std::vector<std::string> shapes;
-  bool bias_type = true;      // a deterministic departure; false: noise-like (vibration, ADC)
-  bool sets_noise = false;    // sized by setting the pair's noise (no amplitude to scale)
+  bool bias_type = true;    // a deterministic departure; false: noise-like (vibration, ADC)
+  bool sets_noise = false;  // sized by setting the pair's noise (no amplitude to scale)
   std::function<EffectDraw(const std::string& shape, const DrawContext&, ThirdRandom&)> draw;
   std::function<std::unique_ptr<ThirdEffect>(const EffectDraw&, const SessionPlan&)> make;
 };

@@ -36,8 +36,8 @@ class ThirdEffect {
   // The data acquisition's converter.
   virtual void convert(std::vector<double>& /*voltage_v*/) const {}
   // The temperature channel (before its noise and display step).
-  virtual void read_temperature(const ChannelPass& /*pass*/, std::vector<double>& /*temp_c*/) const {
-  }
+  virtual void read_temperature(const ChannelPass& /*pass*/,
+                                std::vector<double>& /*temp_c*/) const {}
 };
 
 // One drawn effect: class, shape and every parameter (the truth the sidecar records).

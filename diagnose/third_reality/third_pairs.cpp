@@ -44,8 +44,9 @@ std::vector<std::string> classes_of(int index, std::uint64_t seed, ThirdPairKind
     const std::string& name = classes[static_cast<std::size_t>(random.below(n))].name;
     const bool twice = std::find(drawn.begin(), drawn.end(), name) != drawn.end();
     const bool second_noise_setter =
-        third_class(name).sets_noise &&
-        std::any_of(drawn.begin(), drawn.end(), [](const auto& d) { return third_class(d).sets_noise; });
+        third_class(name).sets_noise && std::any_of(drawn.begin(), drawn.end(), [](const auto& d) {
+          return third_class(d).sets_noise;
+        });
     if (!twice && !second_noise_setter) drawn.push_back(name);
   }
   std::sort(drawn.begin(), drawn.end(),
@@ -86,8 +87,8 @@ void draw_sessions(ThirdPairSpec& spec, bool with_mains, double cap_s, ThirdRand
     duration_s *= random.uniform(0.75, 1.0);  // the held-out session is a little shorter
   }
   spec.fit.start_age_s = random.log_uniform(0.02, 30.0) * kSecondsPerDay;
-  spec.heldout.start_age_s = spec.fit.start_age_s + spec.fit.duration_s +
-                             random.log_uniform(0.2, 5.0) * kSecondsPerDay;
+  spec.heldout.start_age_s =
+      spec.fit.start_age_s + spec.fit.duration_s + random.log_uniform(0.2, 5.0) * kSecondsPerDay;
 }
 
 }  // namespace
@@ -114,7 +115,8 @@ ThirdPairSpec draw_third_pair(int index, std::uint64_t seed, double duration_s) 
   spec.kind = kind_of(index, count);
   ThirdRandom random(seed * 0xBF58476D1CE4E5B9ULL + static_cast<std::uint64_t>(index) * 104729u);
   const std::vector<std::string> classes = classes_of(index, seed, spec.kind, count, random);
-  const bool with_mains = std::find(classes.begin(), classes.end(), "mains_pickup") != classes.end();
+  const bool with_mains =
+      std::find(classes.begin(), classes.end(), "mains_pickup") != classes.end();
   draw_sessions(spec, with_mains, duration_s, random);
   if (classes.empty()) return spec;
   spec.truth = sized_effects(classes, spec, random);

@@ -20,7 +20,7 @@ struct SessionPlan {
   HeatingPlan heating;
   MicrometerPlan micrometer;
   LoggerPlan logger;
-  double noise_v = 0.03;              // white voltage noise, V
+  double noise_v = 0.03;               // white voltage noise, V
   double thermocouple_noise_c = 0.05;  // white noise of the temperature reading, degC
   double thermocouple_step_c = 0.1;    // the temperature module's display step, degC
   std::uint64_t noise_seed = 1;

@@ -56,8 +56,8 @@ TEST(ThirdReality, DrawnShapesAreSmoothMonotoneWhenAskedAndKernelsSettle) {
     ASSERT_EQ(static_cast<int>(kernel.paths.size()), 1 + i % 3);
     std::vector<double> instants;
     for (double t = 0.0; t < 20000.0; t += 7.0) instants.push_back(t);
-    const std::vector<double> step =
-        apply_lag_kernel(kernel, [](double t) { return t < 100.0 ? 20.0 : 80.0; }, instants);
+    const std::vector<double> step = apply_lag_kernel(
+        kernel, [](double t) { return t < 100.0 ? 20.0 : 80.0; }, instants);
     EXPECT_NEAR(step.front(), 20.0, 1e-9);
     EXPECT_NEAR(step.back(), 80.0, 1e-6);
   }
@@ -92,9 +92,10 @@ TEST(ThirdReality, EveryClassIsDrawnAloneAndInTwosAndThrees) {
     for (const ThirdTruthEffect& e : spec.truth) {
       (spec.kind == ThirdPairKind::kMulti ? together : alone)[e.draw.class_name]++;
     }
-    const int setters = static_cast<int>(std::count_if(
-        spec.truth.begin(), spec.truth.end(),
-        [](const auto& e) { return third_class(e.draw.class_name).sets_noise; }));
+    const int setters =
+        static_cast<int>(std::count_if(spec.truth.begin(), spec.truth.end(), [](const auto& e) {
+          return third_class(e.draw.class_name).sets_noise;
+        }));
     EXPECT_LE(setters, 1) << spec.index;
   }
   EXPECT_EQ(kinds["single"], 44);
@@ -118,8 +119,10 @@ TEST(ThirdReality, EveryEffectAddsOnePointTwoToTwoTimesTheNoise) {
     for (const ThirdTruthEffect& e : spec.truth) {
       ++effects;
       const double size = e.rms_v / spec.fit.noise_v;
-      EXPECT_GE(size, kLeastSize * 0.98) << spec.index << " " << e.draw.class_name << "/" << e.draw.shape;
-      EXPECT_LE(size, kMostSize * 1.02) << spec.index << " " << e.draw.class_name << "/" << e.draw.shape;
+      EXPECT_GE(size, kLeastSize * 0.98)
+          << spec.index << " " << e.draw.class_name << "/" << e.draw.shape;
+      EXPECT_LE(size, kMostSize * 1.02)
+          << spec.index << " " << e.draw.class_name << "/" << e.draw.shape;
     }
   }
   EXPECT_GT(effects, 120);
@@ -134,7 +137,8 @@ TEST(ThirdReality, RatesSpanSixToAHundredHertzAndTheLoggerDropsAndJitters) {
   for (int i : {1, 2, 3}) {
     const ThirdPairSpec spec = draw_third_pair(i, 7, 900.0);
     const ThirdRecording fit = render_third_pair(spec).fit;
-    const auto planned = static_cast<std::size_t>(std::floor(spec.fit.duration_s * spec.fit.fs_hz)) + 1;
+    const auto planned =
+        static_cast<std::size_t>(std::floor(spec.fit.duration_s * spec.fit.fs_hz)) + 1;
     EXPECT_GT(fit.dropped, 0u) << i;
     EXPECT_EQ(fit.size() + fit.dropped, planned) << i;
     std::set<double> steps;

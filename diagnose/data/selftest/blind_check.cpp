@@ -19,8 +19,8 @@ void score_in_library(const BlindTruth& truth, const Diagnosis& diagnosis, Blind
   score.all_found = std::all_of(truth.classes.begin(), truth.classes.end(), [&](const auto& c) {
     return std::find(score.claimed.begin(), score.claimed.end(), c) != score.claimed.end();
   });
-  score.nearest_correct =
-      diagnosis.status == Status::kUnexplained && !score.nearest.empty() && holds(truth, score.nearest);
+  score.nearest_correct = diagnosis.status == Status::kUnexplained && !score.nearest.empty() &&
+                          holds(truth, score.nearest);
   score.bias_type = truth.bias_type;
 }
 

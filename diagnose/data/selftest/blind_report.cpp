@@ -50,7 +50,8 @@ Column index_column(const BlindStyle& style) {
 Column kind_column() { return {"kind", 7, false, &BlindRow::kind_name}; }
 Column truth_column(const std::string& title) { return {title, 0, false, &BlindRow::truth_text}; }
 Column verdict_column() {
-  return {"verdict", 11, false, [](const BlindRow& r) { return std::string(status_text(r.outcome->diagnosis.status)); }};
+  return {"verdict", 11, false,
+          [](const BlindRow& r) { return std::string(status_text(r.outcome->diagnosis.status)); }};
 }
 Column named_column(const BlindStyle& style) {
   return {style.named_title, style.named_width, false,
@@ -224,16 +225,16 @@ nlohmann::json summary_json(const BlindStyle& style, const BlindSummary& s) {
   }
   nlohmann::json by_effects = nlohmann::json::array();
   for (const BlindEffectsRow& row : s.by_effects) {
-    by_effects.push_back({{"effects", row.effects},
-                          {"cases", row.cases},
-                          {"explained", row.explained},
-                          {"top_correct", row.top_correct},
-                          {"all_found", row.all_found},
-                          {"bias_cases", row.bias_cases},
-                          {"mean_excess_shrink_pct", row.mean_excess_shrink_pct},
-                          {"explained_bias_cases", row.explained_bias_cases},
-                          {"mean_explained_excess_shrink_pct",
-                           row.mean_explained_excess_shrink_pct}});
+    by_effects.push_back(
+        {{"effects", row.effects},
+         {"cases", row.cases},
+         {"explained", row.explained},
+         {"top_correct", row.top_correct},
+         {"all_found", row.all_found},
+         {"bias_cases", row.bias_cases},
+         {"mean_excess_shrink_pct", row.mean_excess_shrink_pct},
+         {"explained_bias_cases", row.explained_bias_cases},
+         {"mean_explained_excess_shrink_pct", row.mean_explained_excess_shrink_pct}});
   }
   j["by_effects"] = by_effects;
   return j;
