@@ -109,14 +109,14 @@ struct Subcommands {
   }
 
   // The name the parsed subcommand's errors start with: "flange design", and for the layers of
-  // diagnose "flange diagnose --hw", "flange diagnose --selftest [--reality alt]".
+  // diagnose "flange diagnose --hw", "flange diagnose --selftest [--reality alt|third]".
   std::string command_name(const CLI::App& app) const {
     std::string name = "flange";
     for (const CLI::App* sub : app.get_subcommands()) name += " " + sub->get_name();
     if (diagnose->parsed() && hw_diagnose_options.hw) return name + " --hw";
     if (diagnose->parsed() && selftest_options.selftest) {
-      return name +
-             (selftest_options.reality == "alt" ? " --selftest --reality alt" : " --selftest");
+      const std::string& reality = selftest_options.reality;
+      return name + " --selftest" + (reality == "twin" ? "" : " --reality " + reality);
     }
     return name;
   }

@@ -12,6 +12,7 @@
 #include "bench_scenario.h"
 #include "cli.h"
 #include "diagnose_alt_selftest_command.h"
+#include "diagnose_third_selftest_command.h"
 #include "input_error.h"
 #include "selftest_report.h"
 
@@ -53,10 +54,11 @@ void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
                     "blind check: simulated bench sessions with random, undisclosed effects");
   diagnose
       .add_option("--reality", options.reality,
-                  "--selftest: whose sessions: twin (the sensor twin's) or alt (the alternative "
-                  "reality's, diagnose/alt_reality/)")
+                  "--selftest: whose sessions: twin (the sensor twin's), alt (the alternative "
+                  "reality's, diagnose/alt_reality/) or third (the third reality's, shapes drawn "
+                  "per pair, diagnose/third_reality/)")
       ->default_val("twin")
-      ->check(CLI::IsMember({"twin", "alt"}));
+      ->check(CLI::IsMember({"twin", "alt", "third"}));
   diagnose
       .add_option("--cases,--pairs", options.run.cases,
                   "--selftest: number of cases (pairs of sessions), 1 to 1000")
@@ -69,7 +71,7 @@ void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
   diagnose
       .add_option("--duration", options.run.duration_s,
                   "--selftest: seconds per bench session, 600 to 6600 (default: the protocol's "
-                  "own; --reality alt: a cap on its 3600-6600)")
+                  "own; --reality alt: a cap on its 3600-6600; third: on its 2400-5400)")
       ->check(CLI::Range(600.0, 6600.0));
   diagnose.add_option("--jobs", options.run.jobs, "--selftest: worker threads, 1 to 64")
       ->check(CLI::Range(1, 64));
@@ -77,6 +79,7 @@ void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
 
 int run_selftest_command(const SelftestCommandOptions& options, std::ostream& out) {
   if (options.reality == "alt") return run_alt_selftest_command(options, out);
+  if (options.reality == "third") return run_third_selftest_command(options, out);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<diagnose::SelftestCaseResult> results = diagnose::run_selftest(options.run);
   const double seconds =

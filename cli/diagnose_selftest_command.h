@@ -3,7 +3,8 @@
 // (diagnose/data/selftest/diagnose_selftest.h). Prints one row per case and the summary against the aims;
 // with --out writes DIR/selftest.json and DIR/selftest.md (as docs/diagnose_figures.md records
 // it). `--reality alt [--pairs N]` runs it on the alternative reality instead
-// (diagnose/alt_check/, diagnose_alt_selftest_command.h).
+// (diagnose/alt_check/, diagnose_alt_selftest_command.h), `--reality third` on the third
+// (diagnose_third_selftest_command.h).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -19,6 +20,7 @@ struct SelftestCommandOptions {
   bool selftest = false;
   diagnose::SelftestOptions run;   // cases, duration, jobs; seed and bootstrap from the data layer
   std::string reality = "twin";    // "twin": the sensor twin's sessions; "alt": the alternative
+                                   // reality's; "third": the third reality's
   std::optional<std::string> out;  // folder for selftest.json and selftest.md
 };
 

@@ -232,7 +232,7 @@ std::vector<BadInput> diagnose_and_demo_cases(const InputFiles& f) {
        2,
        "--real-start requires --holdout"},
       {{"diagnose", "--selftest", "--cases", "0"}, 2, "--cases"},
-      {{"diagnose", "--selftest", "--reality", "moon"}, 2, "--reality: moon not in {twin,alt}"},
+      {{"diagnose", "--selftest", "--reality", "moon"}, 2, "--reality: moon not in {twin,alt,third}"},
       {{"diagnose", "--selftest", "--reality", "alt", "--pairs", "0"}, 2, "not in range 1 to 1000"},
       {{"demo", "--out", f.good + "/inside_a_file"}, 1, "cannot create directories"},
   };

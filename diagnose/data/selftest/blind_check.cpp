@@ -19,8 +19,8 @@ void score_in_library(const BlindTruth& truth, const Diagnosis& diagnosis, Blind
   score.all_found = std::all_of(truth.classes.begin(), truth.classes.end(), [&](const auto& c) {
     return std::find(score.claimed.begin(), score.claimed.end(), c) != score.claimed.end();
   });
-  score.nearest_correct =
-      diagnosis.status == Status::kUnexplained && !score.nearest.empty() && holds(truth, score.nearest);
+  score.nearest_correct = diagnosis.status == Status::kUnexplained && !score.nearest.empty() &&
+                          holds(truth, score.nearest);
   score.bias_type = truth.bias_type;
 }
 
@@ -75,7 +75,12 @@ std::vector<BlindClassRow> class_rows(const std::vector<BlindRow>& rows,
       ++line.pairs;
       line.top_correct += score.top_correct ? 1 : 0;
       const auto& named = score.claimed;
-      line.named += std::find(named.begin(), named.end(), name) != named.end() ? 1 : 0;
+      const int is_named = std::find(named.begin(), named.end(), name) != named.end() ? 1 : 0;
+      line.named += is_named;
+      const bool alone = row.truth.classes.size() == 1;
+      (alone ? line.alone : line.shared) += 1;
+      (alone ? line.alone_top : line.shared_top) += score.top_correct ? 1 : 0;
+      line.shared_named += alone ? 0 : is_named;
       if (score.bias_type) {
         ++line.bias_pairs;
         excess_sum += score.excess_shrink_pct;
@@ -84,6 +89,37 @@ std::vector<BlindClassRow> class_rows(const std::vector<BlindRow>& rows,
     if (line.bias_pairs > 0) line.mean_excess_shrink_pct = excess_sum / line.bias_pairs;
     table.push_back(line);
   }
+  return table;
+}
+
+std::vector<BlindEffectsRow> effects_rows(const std::vector<BlindRow>& rows) {
+  std::vector<BlindEffectsRow> table;
+  for (const BlindRow& row : rows) {
+    if (!in_library(row.truth.kind)) continue;
+    const int effects = static_cast<int>(row.truth.classes.size());
+    auto line = std::find_if(table.begin(), table.end(),
+                             [&](const BlindEffectsRow& r) { return r.effects == effects; });
+    if (line == table.end()) line = table.insert(table.end(), BlindEffectsRow{effects});
+    const BlindScore& score = row.outcome->score;
+    ++line->cases;
+    line->explained += row.outcome->diagnosis.status == Status::kExplained ? 1 : 0;
+    line->top_correct += score.top_correct ? 1 : 0;
+    line->all_found += score.all_found ? 1 : 0;
+    if (score.bias_type) {
+      // A running mean, so the row needs no sum kept beside it.
+      ++line->bias_cases;
+      line->mean_excess_shrink_pct +=
+          (score.excess_shrink_pct - line->mean_excess_shrink_pct) / line->bias_cases;
+      if (row.outcome->diagnosis.status == Status::kExplained) {
+        ++line->explained_bias_cases;
+        line->mean_explained_excess_shrink_pct +=
+            (score.excess_shrink_pct - line->mean_explained_excess_shrink_pct) /
+            line->explained_bias_cases;
+      }
+    }
+  }
+  std::sort(table.begin(), table.end(),
+            [](const auto& a, const auto& b) { return a.effects < b.effects; });
   return table;
 }
 
@@ -144,6 +180,7 @@ BlindSummary summarise_blind(const std::vector<BlindRow>& rows, const BlindAims&
     s.mean_excess_shrink_pct = excess_sum / s.bias_type;
   }
   s.classes = class_rows(rows, class_names);
+  s.by_effects = effects_rows(rows);
   s.top_aim_met = s.in_library == 0 || 100 * s.top_correct >= aims.top_pct * s.in_library;
   s.shrink_aim_met = s.bias_type == 0 || s.mean_excess_shrink_pct >= aims.excess_shrink_pct;
   s.claims_aim_met = s.null_claims == 0 && (!aims.no_claim_outside || s.outside_claims == 0);

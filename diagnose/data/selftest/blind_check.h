@@ -91,6 +91,18 @@ struct BlindClassRow {
   int pairs = 0, top_correct = 0, named = 0;
   int bias_pairs = 0;                 // of them, cases whose every class is bias-type
   double mean_excess_shrink_pct = 0;  // over those
+  int alone = 0, alone_top = 0;       // cases that hold this class only; right top class
+  int shared = 0, shared_top = 0, shared_named = 0;  // cases that hold it with others
+};
+
+// In-library cases by how many true classes they hold.
+struct BlindEffectsRow {
+  int effects = 0;  // true classes per case
+  int cases = 0, explained = 0, top_correct = 0, all_found = 0;
+  int bias_cases = 0;                           // of them, cases whose every class is bias-type
+  double mean_excess_shrink_pct = 0;            // over those
+  int explained_bias_cases = 0;                 // of those, cases explained
+  double mean_explained_excess_shrink_pct = 0;  // over those
 };
 
 // A reality's aims for a run (docs/diagnose.md gives their reasons).
@@ -110,7 +122,8 @@ struct BlindSummary {
   double mean_shrink_pct = 0.0, mean_excess_shrink_pct = 0.0;  // over bias-type cases
   int null_cases = 0, null_claims = 0, null_none = 0;
   int outside_cases = 0, outside_claims = 0, outside_unexplained = 0;
-  std::vector<BlindClassRow> classes;  // in the order of the reality's class names
+  std::vector<BlindClassRow> classes;       // in the order of the reality's class names
+  std::vector<BlindEffectsRow> by_effects;  // fewest true classes first
   bool top_aim_met = false, shrink_aim_met = false, claims_aim_met = false, none_aim_met = false;
   bool aims_met() const { return top_aim_met && shrink_aim_met && claims_aim_met && none_aim_met; }
 };

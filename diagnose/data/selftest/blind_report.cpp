@@ -50,7 +50,8 @@ Column index_column(const BlindStyle& style) {
 Column kind_column() { return {"kind", 7, false, &BlindRow::kind_name}; }
 Column truth_column(const std::string& title) { return {title, 0, false, &BlindRow::truth_text}; }
 Column verdict_column() {
-  return {"verdict", 11, false, [](const BlindRow& r) { return std::string(status_text(r.outcome->diagnosis.status)); }};
+  return {"verdict", 11, false,
+          [](const BlindRow& r) { return std::string(status_text(r.outcome->diagnosis.status)); }};
 }
 Column named_column(const BlindStyle& style) {
   return {style.named_title, style.named_width, false,
@@ -213,10 +214,29 @@ nlohmann::json summary_json(const BlindStyle& style, const BlindSummary& s) {
                          {"top_correct", row.top_correct},
                          {"named", row.named},
                          {"bias_pairs", row.bias_pairs},
-                         {"mean_excess_shrink_pct", row.mean_excess_shrink_pct}});
+                         {"mean_excess_shrink_pct", row.mean_excess_shrink_pct},
+                         {"alone", row.alone},
+                         {"alone_top_correct", row.alone_top},
+                         {"shared", row.shared},
+                         {"shared_top_correct", row.shared_top},
+                         {"shared_named", row.shared_named}});
     }
     j["by_class"] = classes;
   }
+  nlohmann::json by_effects = nlohmann::json::array();
+  for (const BlindEffectsRow& row : s.by_effects) {
+    by_effects.push_back(
+        {{"effects", row.effects},
+         {"cases", row.cases},
+         {"explained", row.explained},
+         {"top_correct", row.top_correct},
+         {"all_found", row.all_found},
+         {"bias_cases", row.bias_cases},
+         {"mean_excess_shrink_pct", row.mean_excess_shrink_pct},
+         {"explained_bias_cases", row.explained_bias_cases},
+         {"mean_explained_excess_shrink_pct", row.mean_explained_excess_shrink_pct}});
+  }
+  j["by_effects"] = by_effects;
   return j;
 }
 
@@ -255,6 +275,7 @@ std::string blind_terminal_report(const std::string& header, const BlindStyle& s
                                   const std::vector<BlindRow>& rows, const BlindSummary& summary) {
   std::string text = header + "\n" + terminal_table(style, rows);
   if (!summary.classes.empty()) text += "\n" + class_table(summary) + "\n";
+  if (style.extra_tables) text += style.extra_tables(summary) + "\n";
   for (const std::string& line : blind_summary_lines(style, summary)) text += line + "\n";
   return text;
 }
@@ -266,6 +287,7 @@ std::string blind_markdown(const std::string& header, const BlindStyle& style,
     md +=
         "By class (in-library " + style.noun + "s that hold it):\n\n" + class_table(summary) + "\n";
   }
+  if (style.extra_tables) md += style.extra_tables(summary) + "\n";
   for (const std::string& line : blind_summary_lines(style, summary)) md += "- " + line + "\n";
   return md;
 }

@@ -32,6 +32,8 @@ struct BlindStyle {
   std::function<std::vector<std::string>(const BlindSummary&)> kind_lines;
   // A case's fields of selftest.json beyond the harness's (its fits, what the candidates got).
   std::function<void(const BlindRow&, nlohmann::json&)> add_case_json;
+  // Tables after the table by class (Markdown; none when unset).
+  std::function<std::string(const BlindSummary&)> extra_tables;
 };
 
 // The header line, the table of cases (and by class, when the reality has classes) and the
