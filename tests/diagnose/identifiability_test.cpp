@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -175,13 +176,19 @@ TEST(Identifiability, ATemperatureLawHeldWithinAFewDegreesIsUndetermined) {
     EXPECT_EQ(f.level->key, "gain_change");
     EXPECT_NEAR(f.level->value, kGainPerC * (f.level->temp_c - kReferenceC), 1e-3) << wander_c;
     EXPECT_LT(f.level->resolution, 1e-3) << wander_c;
-    EXPECT_TRUE(std::any_of(d.next_measurement.begin(), d.next_measurement.end(),
-                            [](const std::string& s) {
-                              return s.find("to determine gain_per_c and reference_c of "
-                                            "temp_gain_drift: a session that sweeps the "
-                                            "temperature") != std::string::npos;
-                            }))
-        << wander_c;
+    const auto sweep = std::find_if(
+        d.next_measurement.begin(), d.next_measurement.end(), [](const std::string& s) {
+          return s.find("to determine gain_per_c and reference_c of temp_gain_drift: a session "
+                        "that sweeps the temperature") != std::string::npos;
+        });
+    ASSERT_NE(sweep, d.next_measurement.end()) << wander_c;
+    // A sweep a bench can run: from room temperature up, not about 22 degC into the cold.
+    double lowest_c = 0.0, highest_c = 0.0;
+    ASSERT_EQ(std::sscanf(sweep->substr(sweep->find('(')).c_str(), "(%lf to %lf degC)", &lowest_c,
+                          &highest_c),
+              2)
+        << *sweep;
+    EXPECT_GE(lowest_c, criteria::kOperatingRangeLowestC) << *sweep;
   }
 }
 
