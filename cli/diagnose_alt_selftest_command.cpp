@@ -5,15 +5,14 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <ostream>
 #include <stdexcept>
 
 #include "alt_selftest_report.h"
 #include "alt_truth.h"
+#include "blind_check_files.h"
 #include "cli.h"
 #include "input_error.h"
-#include "utc_time.h"
 
 namespace flange::cli {
 namespace fs = std::filesystem;
@@ -32,27 +31,12 @@ void write_alt_files(const SelftestCommandOptions& options, const std::string& h
   fs::create_directories(dir);
   const diagnose::AltPairResult& first = results.front();
   if (first.sessions) {
-    const std::vector<fs::path> paths =
-        alt_reality::write_alt_pair(dir, first.spec, *first.sessions);
-    for (const fs::path& path : paths) out << "  wrote " << path.string() << "\n";
-    // The diagnosis the self-test ran, as a user runs it on the files (with the start times the
-    // self-test gave it).
-    out << fmt::format(
-        "  the same diagnosis: flange diagnose --real {} --holdout {} --real-start {} "
-        "--holdout-start {} --out DIR\n",
-        paths[0].string(), paths[1].string(),
-        format_utc_time(diagnose::alt_session_start_utc_s(first.spec.fit)),
-        format_utc_time(diagnose::alt_session_start_utc_s(first.spec.heldout)));
+    print_same_diagnosis(alt_reality::write_alt_pair(dir, first.spec, *first.sessions),
+                         diagnose::alt_session_start_utc_s(first.spec.fit),
+                         diagnose::alt_session_start_utc_s(first.spec.heldout), out);
   }
-  std::ofstream json(dir / "selftest.json", std::ios::binary);
-  json << diagnose::blind_json(options.run, style, rows, summary).dump(2) << "\n";
-  std::ofstream md(dir / "selftest.md", std::ios::binary);
-  md << diagnose::blind_markdown(header, style, rows, summary);
-  json.close();
-  md.close();
-  if (!json || !md) throw std::runtime_error(dir.string() + ": cannot write");
-  out << "  wrote " << (dir / "selftest.json").string() << " and " << (dir / "selftest.md").string()
-      << "\n";
+  write_blind_check_files(dir, diagnose::blind_json(options.run, style, rows, summary),
+                          diagnose::blind_markdown(header, style, rows, summary), out);
 }
 
 }  // namespace

@@ -5,14 +5,13 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <ostream>
 #include <stdexcept>
 
+#include "blind_check_files.h"
 #include "cli.h"
 #include "third_selftest_report.h"
 #include "third_truth.h"
-#include "utc_time.h"
 
 namespace flange::cli {
 namespace fs = std::filesystem;
@@ -31,27 +30,13 @@ void write_third_files(const SelftestCommandOptions& options, const std::string&
   fs::create_directories(dir);
   const diagnose::ThirdPairResult& first = results.front();
   if (first.sessions) {
-    const std::vector<fs::path> paths =
-        third_reality::write_third_pair(dir, first.spec, *first.sessions);
-    for (const fs::path& path : paths) out << "  wrote " << path.string() << "\n";
-    out << fmt::format(
-        "  the same diagnosis: flange diagnose --real {} --holdout {} --real-start {} "
-        "--holdout-start {} --out DIR\n",
-        paths[0].string(), paths[1].string(),
-        format_utc_time(diagnose::third_session_start_utc_s(first.spec.fit)),
-        format_utc_time(diagnose::third_session_start_utc_s(first.spec.heldout)));
+    print_same_diagnosis(third_reality::write_third_pair(dir, first.spec, *first.sessions),
+                         diagnose::third_session_start_utc_s(first.spec.fit),
+                         diagnose::third_session_start_utc_s(first.spec.heldout), out);
   }
-  std::ofstream json(dir / "selftest.json", std::ios::binary);
   nlohmann::json j = diagnose::blind_json(options.run, style, rows, summary);
   j["summary"]["third_aims_met"] = diagnose::third_aims(summary).met();
-  json << j.dump(2) << "\n";
-  std::ofstream md(dir / "selftest.md", std::ios::binary);
-  md << diagnose::blind_markdown(header, style, rows, summary);
-  json.close();
-  md.close();
-  if (!json || !md) throw std::runtime_error(dir.string() + ": cannot write");
-  out << "  wrote " << (dir / "selftest.json").string() << " and " << (dir / "selftest.md").string()
-      << "\n";
+  write_blind_check_files(dir, j, diagnose::blind_markdown(header, style, rows, summary), out);
 }
 
 }  // namespace
