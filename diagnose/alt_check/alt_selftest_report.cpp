@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include "pair_reality_style.h"
+
 namespace flange::diagnose {
 namespace {
 
@@ -36,20 +38,8 @@ std::string alt_selftest_header(const AltSummary& summary, const SelftestOptions
 }
 
 BlindStyle alt_selftest_style(const SelftestOptions& options) {
-  BlindStyle style;
-  style.noun = "pair";
-  style.command = "flange diagnose --selftest --reality alt";
-  style.item = "class";
-  style.items = "classes";
-  style.top_label = "right top class";
-  style.named_title = "classes named";
-  style.named_width = 34;
-  style.truth_title = "truth (size: effect RMS / noise)";
-  style.claimed_key = "claimed_classes";
-  style.shows_noise = true;
-  style.shows_nearest = true;
-  style.aims = alt_reality_for_check().aims();
-  style.run_json = {{"reality", "alt"}, {"seed", options.seed}};
+  BlindStyle style = pair_reality_style("alt", "truth (size: effect RMS / noise)",
+                                        alt_reality_for_check().aims(), options);
   style.kind_lines = kind_lines;
   style.add_case_json = add_case_json;
   return style;

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include "pair_reality_style.h"
+
 namespace flange::diagnose {
 namespace {
 
@@ -93,20 +95,8 @@ std::string third_selftest_header(const BlindSummary& summary, const SelftestOpt
 }
 
 BlindStyle third_selftest_style(const SelftestOptions& options) {
-  BlindStyle style;
-  style.noun = "pair";
-  style.command = "flange diagnose --selftest --reality third";
-  style.item = "class";
-  style.items = "classes";
-  style.top_label = "right top class";
-  style.named_title = "classes named";
-  style.named_width = 34;
-  style.truth_title = "truth (size: effect RMS / noise; rate)";
-  style.claimed_key = "claimed_classes";
-  style.shows_noise = true;
-  style.shows_nearest = true;
-  style.aims = third_reality_for_check().aims();
-  style.run_json = {{"reality", "third"}, {"seed", options.seed}};
+  BlindStyle style = pair_reality_style("third", "truth (size: effect RMS / noise; rate)",
+                                        third_reality_for_check().aims(), options);
   style.kind_lines = kind_lines;
   style.add_case_json = add_case_json;
   style.extra_tables = tables;
