@@ -162,10 +162,4 @@ std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates,
   return std::nullopt;
 }
 
-std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
-                                              const WearSeries& left_series,
-                                              const WearSeries& right_series) {
-  return flagged_drift(drift_candidates(difference, left_series, right_series), LocomotiveBar{});
-}
-
 }  // namespace flange::host

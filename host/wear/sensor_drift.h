@@ -87,7 +87,8 @@ struct DriftCandidates {
   std::optional<DriftFinding> in_difference, in_sum;
 };
 
-// `difference`, `left_series` and `right_series` share km, day and segments (as below).
+// `difference`, `left_series` and `right_series` share km, day and segments (their y: right -
+// left, left, right); the side series carry their sensor's slope as drift_scale.
 DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries& left_series,
                                  const WearSeries& right_series);
 
@@ -109,12 +110,5 @@ LocomotiveBar locomotive_bar(const std::vector<DriftCandidates>& axles);
 // the one with the larger t.
 std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates,
                                           const LocomotiveBar& bar);
-
-// `difference`, `left_series` and `right_series` share km, day and segments (their y: right -
-// left, left, right); the side series carry their sensor's slope as drift_scale. Nothing when
-// no series, side and onset give a flagged drift of kMinDriftMm or more.
-std::optional<DriftFinding> find_sensor_drift(const WearSeries& difference,
-                                              const WearSeries& left_series,
-                                              const WearSeries& right_series);
 
 }  // namespace flange::host
