@@ -54,7 +54,9 @@ def migrated_base(fleet, db_name, flange):
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     base = os.path.join(fleet, "migrated.db")
-    shutil.copy(os.path.join(fleet, db_name), base)
+    for name in os.listdir(fleet):  # the database and its write-ahead log, if any
+        if name.startswith(db_name):
+            shutil.copy(os.path.join(fleet, name), base + name[len(db_name):])
     subprocess.run([flange, "wear", "--store", "sqlite:" + base, "--out",
                     os.path.join(work, "migrate")], check=True, stdout=subprocess.DEVNULL)
     db = sqlite3.connect(base)
@@ -82,7 +84,9 @@ def weekly_flags(fleet, db_name, truth, flange):
             shutil.rmtree(os.path.dirname(previous))
         previous = path
     shutil.rmtree(work)
-    os.remove(os.path.join(fleet, "migrated.db"))
+    for name in os.listdir(fleet):
+        if name.startswith("migrated.db"):
+            os.remove(os.path.join(fleet, name))
     return seen
 
 

@@ -42,7 +42,8 @@ struct Wheel {
 };
 
 nlohmann::json wheel_json(const fs::path& out, const Wheel& wheel) {
-  for (const auto& w : nlohmann::json::parse(std::ifstream(out / "wear.json")).at("wheels")) {
+  const nlohmann::json wear = nlohmann::json::parse(std::ifstream(out / "wear.json"));
+  for (const auto& w : wear.at("wheels")) {
     if (w.at("locomotive") == wheel.locomotive && w.at("axle") == wheel.axle &&
         w.at("side") == wheel.side) {
       return w;
@@ -85,7 +86,8 @@ TEST_P(WearSensorFlag, IsLatchedOnceConfirmedHeldAndClearedByTheDepot) {
   };
   wear("first");
   Wheel drifting, healthy, other;
-  for (const auto& w : nlohmann::json::parse(std::ifstream(dir / "first" / "wear.json")).at("wheels")) {
+  const nlohmann::json first = nlohmann::json::parse(std::ifstream(dir / "first" / "wear.json"));
+  for (const auto& w : first.at("wheels")) {
     const Wheel wheel{w.at("locomotive"), w.at("side"), w.at("runs").back().at("at"), w.at("axle")};
     if (!w.at("sensor_fault").is_null()) {
       drifting = wheel;
