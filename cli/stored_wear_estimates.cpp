@@ -98,16 +98,16 @@ host::SensorFlags sensor_flags(const std::optional<host::WearEstimateSet>& store
     if (e.sensor_flag_first.empty() && e.sensor_flag_confirmed.empty()) continue;
     const auto refuse = [&](const std::string& why) {
       throw host::StoreError(fmt::format("store {}: wheel_estimates of {} axle {} {}: {}",
-                                         store_name, e.wheel.locomotive, e.wheel.axle,
-                                         e.wheel.side, why));
+                                         store_name, e.wheel.locomotive, e.wheel.axle, e.wheel.side,
+                                         why));
     };
     try {
       if (e.sensor_flag_first.empty()) refuse("sensor_flag_confirmed without sensor_flag_first");
       const double first = host::day_of_iso_time(e.sensor_flag_first);
       if (!e.sensor_flag_confirmed.empty() &&
           host::day_of_iso_time(e.sensor_flag_confirmed) < first) {
-        refuse("sensor_flag_confirmed " + e.sensor_flag_confirmed + " is before sensor_flag_first " +
-               e.sensor_flag_first);
+        refuse("sensor_flag_confirmed " + e.sensor_flag_confirmed +
+               " is before sensor_flag_first " + e.sensor_flag_first);
       }
     } catch (const std::invalid_argument& error) {
       refuse(std::string("sensor flag: ") + error.what());

@@ -56,8 +56,7 @@ const std::vector<std::pair<std::string, std::string>>& flag_columns() {
   return columns;
 }
 
-void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e,
-             bool with_flags) {
+void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e, bool with_flags) {
   rows.add(wheel_id);
   rows.add(e.status);
   rows.add(static_cast<long long>(e.has_fit));
@@ -109,9 +108,9 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
                       " e.critical_reached, e.critical_date, e.warning_date, " +
                           std::string(with_flags ? "e.sensor_flag_first, e.sensor_flag_confirmed"
                                                  : "'', ''") +
-                      " FROM wheel_estimates e JOIN wheels w ON w.id = e.wheel_id"
-                      " JOIN locomotives l ON l.id = w.locomotive_id"
-                      " ORDER BY l.name, w.axle, w.side",
+                          " FROM wheel_estimates e JOIN wheels w ON w.id = e.wheel_id"
+                          " JOIN locomotives l ON l.id = w.locomotive_id"
+                          " ORDER BY l.name, w.axle, w.side",
        into(e.wheel.locomotive), into(e.wheel.axle), into(e.wheel.side), into(e.channel),
        into(e.status), into(has_fit), into(e.segment_start), into(e.last_run_at),
        into(day.value, day.present), into(rate.value, rate.present), into(low.value, low.present),

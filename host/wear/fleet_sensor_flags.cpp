@@ -20,9 +20,8 @@ void latch_sensor_flags(FleetWear& fleet, const std::vector<WheelHistory>& histo
       continue;
     }
     const auto events = maintenance.find(key);
-    wheel.sensor_flag =
-        next_sensor_flag(kept, wheel.sensor_fault.has_value(), wheel.runs.back().at,
-                         events == maintenance.end() ? none : *events->second);
+    wheel.sensor_flag = next_sensor_flag(kept, wheel.sensor_fault.has_value(), wheel.runs.back().at,
+                                         events == maintenance.end() ? none : *events->second);
     if (wheel.sensor_flag && wheel.sensor_flag->latched() && wheel.status != "too few runs") {
       wheel.status = "sensor fault";
     }

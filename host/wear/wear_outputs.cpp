@@ -160,10 +160,10 @@ std::string fleet_wear_text(const FleetWear& fleet) {
   }
   for (const WheelWear& w : fleet.wheels) {
     if (!w.sensor_flag) continue;
-    text += fmt::format("  {} axle {} {}: sensor {}{}\n", w.wheel.locomotive, w.wheel.axle,
-                        w.wheel.side, sensor_flag_text(*w.sensor_flag),
-                        w.sensor_flag->latched() ? " (held until a maintenance event on the wheel)"
-                                                 : "");
+    text += fmt::format(
+        "  {} axle {} {}: sensor {}{}\n", w.wheel.locomotive, w.wheel.axle, w.wheel.side,
+        sensor_flag_text(*w.sensor_flag),
+        w.sensor_flag->latched() ? " (held until a maintenance event on the wheel)" : "");
   }
   return text;
 }

@@ -7,10 +7,9 @@
 // odometer reset and is cleared by a sensor replacement recorded with `flange maintenance`. A
 // flag in the store whose date is not a time is refused in one line. On SQLite and on the
 // PostgreSQL server of the StorePostgres fixture.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
-
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <fstream>
@@ -67,6 +66,30 @@ void keep_flag(const std::string& store, const Wheel& wheel, const std::string& 
   opened->write_wear_estimates(set);
 }
 
+// From the first estimate: the sensor the search flags (pending from now on) and two healthy
+// wheels never reprofiled.
+struct Wheels {
+  Wheel drifting, healthy, other;
+};
+
+Wheels wheels_of_first_estimate(const fs::path& out) {
+  Wheels found;
+  const nlohmann::json first = nlohmann::json::parse(std::ifstream(out / "wear.json"));
+  for (const auto& w : first.at("wheels")) {
+    const Wheel wheel{w.at("locomotive"), w.at("side"), w.at("runs").back().at("at"), w.at("axle")};
+    if (!w.at("sensor_fault").is_null()) {
+      found.drifting = wheel;
+      // First flagged now: pending, its date the wheel's last run.
+      EXPECT_EQ(w.at("sensor_flag").at("first_flagged"), wheel.last_run_at);
+      EXPECT_FALSE(w.at("sensor_flag").at("latched").get<bool>());
+    } else if (w.at("status") == "ok" && w.at("reprofilings").empty()) {
+      EXPECT_TRUE(w.at("sensor_flag").is_null());
+      (found.healthy.locomotive.empty() ? found.healthy : found.other) = wheel;
+    }
+  }
+  return found;
+}
+
 class WearSensorFlag : public ::testing::TestWithParam<StoreBackendUnderTest> {};
 
 TEST_P(WearSensorFlag, IsLatchedOnceConfirmedHeldAndClearedByTheDepot) {
@@ -85,20 +108,7 @@ TEST_P(WearSensorFlag, IsLatchedOnceConfirmedHeldAndClearedByTheDepot) {
     return outcome;
   };
   wear("first");
-  Wheel drifting, healthy, other;
-  const nlohmann::json first = nlohmann::json::parse(std::ifstream(dir / "first" / "wear.json"));
-  for (const auto& w : first.at("wheels")) {
-    const Wheel wheel{w.at("locomotive"), w.at("side"), w.at("runs").back().at("at"), w.at("axle")};
-    if (!w.at("sensor_fault").is_null()) {
-      drifting = wheel;
-      // First flagged now: pending, its date the wheel's last run.
-      EXPECT_EQ(w.at("sensor_flag").at("first_flagged"), wheel.last_run_at);
-      EXPECT_FALSE(w.at("sensor_flag").at("latched").get<bool>());
-    } else if (w.at("status") == "ok" && w.at("reprofilings").empty()) {
-      EXPECT_TRUE(w.at("sensor_flag").is_null());
-      (healthy.locomotive.empty() ? healthy : other) = wheel;
-    }
-  }
+  const auto [drifting, healthy, other] = wheels_of_first_estimate(dir / "first");
   ASSERT_FALSE(drifting.locomotive.empty()) << "seed 11 should flag its drifting sensor";
   ASSERT_FALSE(other.locomotive.empty()) << "seed 11 should have wheels never reprofiled";
   // Not yet two weeks of data since the first flag: still pending.
@@ -119,9 +129,10 @@ TEST_P(WearSensorFlag, IsLatchedOnceConfirmedHeldAndClearedByTheDepot) {
   EXPECT_TRUE(held.at("sensor_fault").is_null()) << "the search flags no healthy sensor here";
   EXPECT_EQ(held.at("status"), "sensor fault");
   EXPECT_TRUE(held.at("sensor_flag").at("latched").get<bool>());
-  EXPECT_NE(latched.out.find(fmt::format("{} axle {} {}: sensor flagged since {}", healthy.locomotive,
-                                         healthy.axle, healthy.side, since.substr(0, 10))),
-            std::string::npos)
+  EXPECT_NE(
+      latched.out.find(fmt::format("{} axle {} {}: sensor flagged since {}", healthy.locomotive,
+                                   healthy.axle, healthy.side, since.substr(0, 10))),
+      std::string::npos)
       << latched.out;
   // Held at the next estimate; an odometer reset is no act on the sensor.
   host::open_store(store)->record_maintenance({{healthy.locomotive, healthy.axle, healthy.side},
@@ -134,10 +145,10 @@ TEST_P(WearSensorFlag, IsLatchedOnceConfirmedHeldAndClearedByTheDepot) {
   EXPECT_EQ(wheel_json(dir / "held", healthy).at("status"), "sensor fault");
   EXPECT_EQ(wheel_json(dir / "held", drifting).at("status"), "sensor fault");
   // The depot replaces the sensor: the flag is cleared.
-  const FlangeOutcome replaced = run_flange_captured(
-      {"maintenance", "--store", store, "--locomotive", healthy.locomotive, "--kind",
-       "sensor_replaced", "--axle", std::to_string(healthy.axle), "--side", healthy.side, "--at",
-       days_after(healthy.last_run_at, 0.6)});
+  const FlangeOutcome replaced =
+      run_flange_captured({"maintenance", "--store", store, "--locomotive", healthy.locomotive,
+                           "--kind", "sensor_replaced", "--axle", std::to_string(healthy.axle),
+                           "--side", healthy.side, "--at", days_after(healthy.last_run_at, 0.6)});
   ASSERT_EQ(replaced.status, 0) << replaced.err;
   wear("cleared");
   const nlohmann::json cleared = wheel_json(dir / "cleared", healthy);

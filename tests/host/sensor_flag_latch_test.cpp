@@ -16,7 +16,7 @@ namespace {
 // Day d of a history, as the wheel's last run at an estimate.
 std::string at_day(int d) {
   return d < 10 ? "2026-03-0" + std::to_string(d) + "T06:00:00Z"
-               : "2026-03-" + std::to_string(d) + "T06:00:00Z";
+                : "2026-03-" + std::to_string(d) + "T06:00:00Z";
 }
 
 MaintenanceMark event(int d, const std::string& kind) {
@@ -49,8 +49,8 @@ TEST(WearSensorFlagLatch, ALatchedFlagHoldsWhenTheSearchNoLongerFlagsTheSensor) 
   EXPECT_EQ(next_sensor_flag(latched, false, at_day(29), {}), latched);
   // An odometer reset touches no wheel; maintenance before the flag was the depot's before it.
   EXPECT_EQ(next_sensor_flag(latched, false, at_day(29), {event(20, "odometer_reset")}), latched);
-  const MaintenanceMark before{"2026-02-20T12:00:00Z", day_of_iso_time("2026-02-20T12:00:00Z"),
-                               0.0, "reprofile"};
+  const MaintenanceMark before{"2026-02-20T12:00:00Z", day_of_iso_time("2026-02-20T12:00:00Z"), 0.0,
+                               "reprofile"};
   EXPECT_EQ(next_sensor_flag(latched, false, at_day(29), {before}), latched);
 }
 
@@ -66,9 +66,9 @@ TEST(WearSensorFlagLatch, AMaintenanceEventOnTheWheelClearsIt) {
     EXPECT_FALSE(again->latched());
   }
   // A pending flag too.
-  EXPECT_FALSE(next_sensor_flag(SensorFlag{at_day(1), ""}, false, at_day(8),
-                                {event(3, "sensor_replaced")})
-                   .has_value());
+  EXPECT_FALSE(
+      next_sensor_flag(SensorFlag{at_day(1), ""}, false, at_day(8), {event(3, "sensor_replaced")})
+          .has_value());
 }
 
 TEST(WearSensorFlagLatch, AFleetsLatchedWheelIsASensorFaultWithItsDates) {
