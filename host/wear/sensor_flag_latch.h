@@ -23,9 +23,9 @@ namespace flange::host {
 
 // Days of data between the estimate that first flags a sensor and the one that confirms it. A
 // healthy sensor's wander on the second fleet reality is often flagged for a week or two and
-// then not: on its development fleets (weekly estimates) a week's confirmation would latch 37 of
-// 590 healthy sensors at some time, two weeks' 27, three weeks' 20, while every drift is
-// latched with any of them; two weeks delay the latch, not the flag (the search's own flag shows
+// then not: on its development fleets (weekly estimates, bench/wear_drift_delay.sh) a week's
+// confirmation latches 28 of 590 healthy sensors at some time, two weeks' 23, and every drift is
+// latched with either; two weeks delay the latch, not the flag (the search's own flag shows
 // from the first estimate).
 inline constexpr double kFlagConfirmDays = 14.0;
 
