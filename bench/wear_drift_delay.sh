@@ -6,7 +6,8 @@
 # cut date (every 7 days, aligned on the fleet's first drift start, from two weeks after the
 # first day to the end), the runs and maintenance from the cut on deleted, with the wear
 # estimates (and so the sensor flags, host/wear/sensor_flag_latch.h) the previous cut's
-# `flange wear` kept, read by `flange wear`. Prints, for each drifting sensor, the days from its
+# `flange wear` kept, read by `flange wear` (the copies are made in the fleet's folder, under
+# cuts/, and deleted as it goes). Prints, for each drifting sensor, the days from its
 # start to the first cut whose search flags it and to the first whose flag is latched, and
 # whether it is flagged at the end (the search alone; the search or the latch); for the healthy
 # sensors, how many the search flags at some cut, how many are ever latched and how many are
