@@ -143,7 +143,8 @@ WheelCheck check_wheel(const host::WheelWear* w, const sim::FleetTruth& truth, i
   check.rate_ok =
       w->fit && (std::abs(check.relative_error) <= kRateTolerance ||
                  (check.true_rate >= check.rate_low && check.true_rate <= check.rate_high));
-  check.flagged = w->sensor_fault.has_value();
+  check.latched = w->sensor_flag && w->sensor_flag->latched();
+  check.flagged = w->sensor_fault.has_value() || check.latched;
   count_reprofilings(check, *w, wheel.reprofiled_days, truth.settings.start_day);
   check.kind = check.drifting                ? "drifting sensor"
                : check.true_reprofilings > 0 ? "reprofiled"
@@ -295,6 +296,7 @@ void write_truth_check_json(const std::filesystem::path& path, const TruthCheck&
                       {"found_reprofilings", w.found_reprofilings},
                       {"drifting", w.drifting},
                       {"flagged", w.flagged},
+                      {"latched", w.latched},
                       {"kind", w.kind},
                       {"rate_coverage", coverage_json(w.rate_coverage)},
                       {"true_warning_date", day_json(w.true_warning_day)},

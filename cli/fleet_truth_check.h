@@ -45,7 +45,8 @@ struct WheelCheck {
   int true_reprofilings = 0;   // with a run after them
   int found_reprofilings = 0;  // of those, found in the data
   bool drifting = false;       // the truth
-  bool flagged = false;        // the estimate
+  bool flagged = false;        // the estimate: this search, or a flag latched by earlier ones
+  bool latched = false;        // a sensor flag confirmed by earlier estimates (still held)
   std::string kind;            // "healthy", "reprofiled" (with a run after it) or "drifting sensor"
   Coverage rate_coverage, warning_coverage, critical_coverage;
   std::optional<int> true_warning_day, true_critical_day;  // days since 1970-01-01

@@ -3,6 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
+#include "store.h"
+
 namespace flange::cli {
 
 namespace {
@@ -40,6 +44,10 @@ host::WheelEstimateRecord estimate_record(const host::WheelWear& wheel) {
   e.critical_reached = wheel.critical.reached;
   e.critical_date = wheel.critical.date;
   e.warning_date = wheel.warning.reached ? "reached" : wheel.warning.date;
+  if (wheel.sensor_flag) {
+    e.sensor_flag_first = wheel.sensor_flag->first_flagged;
+    e.sensor_flag_confirmed = wheel.sensor_flag->confirmed;
+  }
   return e;
 }
 
@@ -80,6 +88,34 @@ std::string why_not_current(const std::optional<host::WearEstimateSet>& stored,
         stored->warning_clearance_mm, stored->critical_clearance_mm, stored->max_step_mm);
   }
   return "";
+}
+
+host::SensorFlags sensor_flags(const std::optional<host::WearEstimateSet>& stored,
+                               const std::string& store_name) {
+  host::SensorFlags flags;
+  if (!stored) return flags;
+  for (const host::WheelEstimateRecord& e : stored->wheels) {
+    if (e.sensor_flag_first.empty() && e.sensor_flag_confirmed.empty()) continue;
+    const auto refuse = [&](const std::string& why) {
+      throw host::StoreError(fmt::format("store {}: wheel_estimates of {} axle {} {}: {}",
+                                         store_name, e.wheel.locomotive, e.wheel.axle, e.wheel.side,
+                                         why));
+    };
+    try {
+      if (e.sensor_flag_first.empty()) refuse("sensor_flag_confirmed without sensor_flag_first");
+      const double first = host::day_of_iso_time(e.sensor_flag_first);
+      if (!e.sensor_flag_confirmed.empty() &&
+          host::day_of_iso_time(e.sensor_flag_confirmed) < first) {
+        refuse("sensor_flag_confirmed " + e.sensor_flag_confirmed +
+               " is before sensor_flag_first " + e.sensor_flag_first);
+      }
+    } catch (const std::invalid_argument& error) {
+      refuse(std::string("sensor flag: ") + error.what());
+    }
+    flags[{e.wheel.locomotive, e.wheel.axle, e.wheel.side}] = {e.sensor_flag_first,
+                                                               e.sensor_flag_confirmed};
+  }
+  return flags;
 }
 
 std::vector<host::PlanInput> plan_inputs(const host::WearEstimateSet& stored) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fleet_sensor_flags.h"
 #include "fleet_wear.h"
 #include "reprofiling_plan.h"
 #include "store_records.h"
@@ -24,6 +25,12 @@ host::WearEstimateSet wear_estimate_set(const host::FleetWear& fleet, const host
 // settings, and no run, maintenance event or calibration stored since).
 std::string why_not_current(const std::optional<host::WearEstimateSet>& stored,
                             const host::StoreMarks& marks, const host::ThresholdConfig& thresholds);
+
+// The sensor flags the stored estimates carry (none without them), for latch_sensor_flags. A
+// flag whose dates are not times, or confirmed before it was first flagged, is refused
+// (host::StoreError naming the store, the wheel and the field).
+host::SensorFlags sensor_flags(const std::optional<host::WearEstimateSet>& stored,
+                               const std::string& store_name);
 
 // The plan's inputs of every stored wheel, as plan_input gives them from the estimate.
 std::vector<host::PlanInput> plan_inputs(const host::WearEstimateSet& stored);

@@ -237,8 +237,9 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
   // Read before the runs: a run stored while they are read leaves the estimate stale, not
   // wrongly current.
   const host::StoreMarks marks = store->marks();
+  const std::optional<host::WearEstimateSet> stored = store->wear_estimates();
+  const host::SensorFlags kept_flags = sensor_flags(stored, store->name());
   if (options.plan && !options.truth) {
-    const std::optional<host::WearEstimateSet> stored = store->wear_estimates();
     const std::string why = why_not_current(stored, marks, options.thresholds);
     if (why.empty()) return plan_from_stored(options, *store, *stored, out, said);
     said << "plan: re-estimating every wheel (" << why << ")\n";
@@ -249,8 +250,9 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
   }
   check_inputs(options, histories);
   std::filesystem::create_directories(options.out);
-  const host::FleetWear wear = host::estimate_fleet_wear(
-      histories, options.thresholds, store_sensitivity(*store, options.out, said));
+  host::FleetWear wear = host::estimate_fleet_wear(histories, options.thresholds,
+                                                   store_sensitivity(*store, options.out, said));
+  host::latch_sensor_flags(wear, histories, kept_flags);
   const std::string generated_by = runtime::generated_by(command_line);
   host::write_wear_json(options.out / "wear.json", wear, generated_by);
   host::write_wear_csv(options.out / "wear.csv", wear);

@@ -10,6 +10,7 @@
 
 #include "column_batch.h"
 #include "soci_store.h"
+#include "store_migration.h"
 #include "store_transaction.h"
 
 namespace flange::host {
@@ -48,7 +49,14 @@ const std::vector<std::pair<std::string, std::string>>& estimate_columns() {
   return columns;
 }
 
-void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e) {
+// ... and the sensor flag's, from schema version 6 on.
+const std::vector<std::pair<std::string, std::string>>& flag_columns() {
+  static const std::vector<std::pair<std::string, std::string>> columns = {
+      {"sensor_flag_first", "TEXT"}, {"sensor_flag_confirmed", "TEXT"}};
+  return columns;
+}
+
+void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e, bool with_flags) {
   rows.add(wheel_id);
   rows.add(e.status);
   rows.add(static_cast<long long>(e.has_fit));
@@ -70,6 +78,10 @@ void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e
   rows.add(static_cast<long long>(e.critical_reached));
   rows.add(e.critical_date);
   rows.add(e.warning_date);
+  if (with_flags) {
+    rows.add(e.sensor_flag_first);
+    rows.add(e.sensor_flag_confirmed);
+  }
 }
 
 // A nullable REAL read into a double: NaN for NULL.
@@ -82,7 +94,8 @@ struct Real {
 };
 
 // Every wheel's row, by locomotive, axle, side.
-void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& wheels) {
+void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& wheels,
+                          bool with_flags) {
   WheelEstimateRecord e;
   int has_fit = 0, reached = 0;
   Real day, rate, low, high, se, clearance, wear, km, km_se, day_sd, clearance_se, covariance;
@@ -92,10 +105,12 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
                       " e.rate_high, e.rate_se, e.rate_dof, e.fit_dof, e.clearance_now_mm,"
                       " e.wear_now_mm, e.km_per_day, e.km_per_day_se, e.day_km_sd,"
                       " e.km_per_day_dof, e.clearance_now_se_mm, e.clearance_rate_covariance,"
-                      " e.critical_reached, e.critical_date, e.warning_date"
-                      " FROM wheel_estimates e JOIN wheels w ON w.id = e.wheel_id"
-                      " JOIN locomotives l ON l.id = w.locomotive_id"
-                      " ORDER BY l.name, w.axle, w.side",
+                      " e.critical_reached, e.critical_date, e.warning_date, " +
+                          std::string(with_flags ? "e.sensor_flag_first, e.sensor_flag_confirmed"
+                                                 : "'', ''") +
+                          " FROM wheel_estimates e JOIN wheels w ON w.id = e.wheel_id"
+                          " JOIN locomotives l ON l.id = w.locomotive_id"
+                          " ORDER BY l.name, w.axle, w.side",
        into(e.wheel.locomotive), into(e.wheel.axle), into(e.wheel.side), into(e.channel),
        into(e.status), into(has_fit), into(e.segment_start), into(e.last_run_at),
        into(day.value, day.present), into(rate.value, rate.present), into(low.value, low.present),
@@ -104,7 +119,8 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
        into(km.value, km.present), into(km_se.value, km_se.present),
        into(day_sd.value, day_sd.present), into(e.km_per_day_dof),
        into(clearance_se.value, clearance_se.present), into(covariance.value, covariance.present),
-       into(reached), into(e.critical_date), into(e.warning_date));
+       into(reached), into(e.critical_date), into(e.warning_date), into(e.sensor_flag_first),
+       into(e.sensor_flag_confirmed));
   query.execute();
   while (query.fetch()) {
     e.has_fit = has_fit != 0;
@@ -150,7 +166,10 @@ void SociStore::write_wear_estimates(const WearEstimateSet& set) {
             " VALUES (:at, :run, :maintenance, :calibration, :warning, :critical, :step)",
         use(set.made_at), use(run), use(maintenance), use(calibration),
         use(set.warning_clearance_mm), use(set.critical_clearance_mm), use(set.max_step_mm);
-    ColumnBatch rows("wheel_estimates", estimate_columns());
+    const bool with_flags = schema_version_ >= kSensorFlagSchemaVersion;
+    auto columns = estimate_columns();
+    if (with_flags) columns.insert(columns.end(), flag_columns().begin(), flag_columns().end());
+    ColumnBatch rows("wheel_estimates", columns);
     for (const WheelEstimateRecord& wheel : set.wheels) {
       const auto id = ids.find({wheel.wheel.locomotive, wheel.wheel.axle, wheel.wheel.side});
       if (id == ids.end()) {
@@ -158,7 +177,7 @@ void SociStore::write_wear_estimates(const WearEstimateSet& set) {
                                      url_.shown, wheel.wheel.locomotive, wheel.wheel.axle,
                                      wheel.wheel.side));
       }
-      add_row(rows, id->second, wheel);
+      add_row(rows, id->second, wheel, with_flags);
     }
     rows.flush(sql_, url_.backend);
     transaction.commit();
@@ -188,7 +207,7 @@ std::optional<WearEstimateSet> SociStore::wear_estimates() {
         into(set.warning_clearance_mm), into(set.critical_clearance_mm), into(set.max_step_mm);
     if (!sql_.got_data()) return found;
     set.marks = {run, maintenance, calibration};
-    read_wheel_estimates(sql_, set.wheels);
+    read_wheel_estimates(sql_, set.wheels, schema_version_ >= kSensorFlagSchemaVersion);
     found = std::move(set);
     return found;
   });

@@ -10,11 +10,15 @@
 
 namespace flange::host {
 
-inline constexpr int kStoreSchemaVersion = 5;
+inline constexpr int kStoreSchemaVersion = 6;
 
 // The version whose maintenance events carry a wheelset move's source axle as a column
 // (from_axle); an older one holds it only in the event's note, "from axle N[; note]".
 inline constexpr int kFromAxleSchemaVersion = 5;
+
+// The version whose wear estimates carry each wheel's sensor flag (sensor_flag_first,
+// sensor_flag_confirmed).
+inline constexpr int kSensorFlagSchemaVersion = 6;
 
 // Like open_store, but creates or migrates the schema only up to `version` (1 to
 // kStoreSchemaVersion). A store already past `version` is refused as newer.

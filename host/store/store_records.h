@@ -224,6 +224,10 @@ struct WheelEstimateRecord {
   double clearance_now_se_mm = 0.0, clearance_rate_covariance = 0.0;
   bool critical_reached = false;
   std::string critical_date, warning_date;  // at the fitted rate; "" when unknown
+  // The wheel's sensor flag carried to the next estimate (host/wear/sensor_flag_latch.h,
+  // schema version 6): the wheel's last run at the estimate that first flagged its sensor and
+  // at the one that confirmed it ("" when none, or while pending).
+  std::string sensor_flag_first, sensor_flag_confirmed;
 };
 
 // What the store held when a set of estimates was made: a set is current while these are the

@@ -131,10 +131,19 @@ std::vector<std::string> migration_5() {
   };
 }
 
+// 6: each wheel's sensor flag, carried by the wear estimates from one `flange wear` to the next
+// (host/wear/sensor_flag_latch.h): when it was first flagged and when confirmed ('' for none).
+std::vector<std::string> migration_6() {
+  return {
+      "ALTER TABLE wheel_estimates ADD COLUMN sensor_flag_first TEXT NOT NULL DEFAULT ''",
+      "ALTER TABLE wheel_estimates ADD COLUMN sensor_flag_confirmed TEXT NOT NULL DEFAULT ''",
+  };
+}
+
 // Migration N is migrations()[N - 1]; kStoreSchemaVersion is their count.
 const std::vector<std::vector<std::string>>& migrations() {
   static const std::vector<std::vector<std::string>> steps = {
-      migration_1(), migration_2(), migration_3(), migration_4(), migration_5()};
+      migration_1(), migration_2(), migration_3(), migration_4(), migration_5(), migration_6()};
   return steps;
 }
 

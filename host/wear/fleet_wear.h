@@ -16,6 +16,7 @@
 
 #include "limit_forecast.h"
 #include "sensor_drift.h"
+#include "sensor_flag_latch.h"
 #include "sensor_sensitivity.h"
 #include "thresholds.h"
 #include "wear_line_fit.h"
@@ -50,7 +51,10 @@ struct WheelWear {
   double wear_now_mm = 0.0;         // clearance_now_mm - the sensor gap on a new flange
   LimitForecast warning, critical;  // 95 % intervals
   ForecastInput forecast_input;     // what they were made from: forecasts at other levels
-  std::optional<DriftFinding> sensor_fault;
+  std::optional<DriftFinding> sensor_fault;  // this estimate's drift search
+  // The flag kept from one estimate to the next (sensor_flag_latch.h): pending, or latched
+  // until the depot acts; set by latch_sensor_flags (fleet_sensor_flags.h).
+  std::optional<SensorFlag> sensor_flag;
   double km_per_day = 0.0;  // the locomotive's, over this wheel's history
 };
 

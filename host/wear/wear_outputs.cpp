@@ -61,6 +61,13 @@ ordered_json wheel_json(const WheelWear& wheel) {
              {"t_statistic", wheel.sensor_fault->difference_t},
              {"found_in", wheel.sensor_fault->in_sum ? "sum" : "difference"}};
   }
+  ordered_json flag = nullptr;
+  if (wheel.sensor_flag) {
+    flag = {{"first_flagged", wheel.sensor_flag->first_flagged},
+            {"confirmed", wheel.sensor_flag->latched() ? ordered_json(wheel.sensor_flag->confirmed)
+                                                       : ordered_json(nullptr)},
+            {"latched", wheel.sensor_flag->latched()}};
+  }
   return {{"locomotive", wheel.wheel.locomotive},
           {"axle", wheel.wheel.axle},
           {"side", wheel.wheel.side},
@@ -77,6 +84,7 @@ ordered_json wheel_json(const WheelWear& wheel) {
           {"warning", forecast_json(wheel.warning)},
           {"critical", forecast_json(wheel.critical)},
           {"sensor_fault", fault},
+          {"sensor_flag", flag},
           {"reprofilings", reprofilings},
           {"runs", runs_json(wheel)}};
 }
@@ -149,6 +157,13 @@ std::string fleet_wear_text(const FleetWear& fleet) {
             : std::string("-"),
         w.status, warning,
         w.critical.reached ? "reached" : (w.critical.date.empty() ? "-" : w.critical.date));
+  }
+  for (const WheelWear& w : fleet.wheels) {
+    if (!w.sensor_flag) continue;
+    text += fmt::format(
+        "  {} axle {} {}: sensor {}{}\n", w.wheel.locomotive, w.wheel.axle, w.wheel.side,
+        sensor_flag_text(*w.sensor_flag),
+        w.sensor_flag->latched() ? " (held until a maintenance event on the wheel)" : "");
   }
   return text;
 }

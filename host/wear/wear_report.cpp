@@ -110,7 +110,8 @@ void write_table(std::ofstream& html, const FleetWear& fleet) {
         w.fit
             ? fmt::format("{:.4f} [{:.4f}, {:.4f}]", w.rate_mm_per_1000km, w.rate_low, w.rate_high)
             : std::string("-"),
-        w.status, std::isfinite(days) ? fmt::format("{:.0f}", days) : "-",
+        w.sensor_flag ? w.status + " (" + sensor_flag_text(*w.sensor_flag) + ")" : w.status,
+        std::isfinite(days) ? fmt::format("{:.0f}", days) : "-",
         interval_text(w.warning.km, w.warning.km_low, w.warning.km_high, 0), date_range(w.warning),
         date_range(w.critical));
   }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "store_migration.h"
 #include "store_test_fixture.h"
 #include "store_test_records.h"
 
@@ -66,6 +67,8 @@ void expect_same(const host::WheelEstimateRecord& a, const host::WheelEstimateRe
   EXPECT_EQ(a.critical_reached, b.critical_reached);
   EXPECT_EQ(a.critical_date, b.critical_date);
   EXPECT_EQ(a.warning_date, b.warning_date);
+  EXPECT_EQ(a.sensor_flag_first, b.sensor_flag_first);
+  EXPECT_EQ(a.sensor_flag_confirmed, b.sensor_flag_confirmed);
 }
 
 TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
@@ -81,6 +84,9 @@ TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
   set.critical_clearance_mm = 10.0;
   set.max_step_mm = 0.5;
   set.wheels = {estimate("L1", 1, 0.1 + 1e-13), estimate("L1", 2, 0.25)};
+  set.wheels[0].sensor_flag_first = "2026-02-01T06:00:00Z";  // a latched sensor flag
+  set.wheels[0].sensor_flag_confirmed = "2026-02-15T06:00:00Z";
+  set.wheels[1].sensor_flag_first = "2026-02-20T06:00:00Z";  // a pending one
   store->write_wear_estimates(set);
   const auto read = open()->wear_estimates();
   ASSERT_TRUE(read.has_value());
@@ -107,6 +113,36 @@ TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
   EXPECT_GT(store->marks().last_calibration_id, before.last_calibration_id);
   store->record_run(test_run("L1", test_time(2), 200.0, 0.3));
   EXPECT_GT(store->marks().last_run_id, before.last_run_id);
+}
+
+// A version 5 store's estimates (no sensor flags) open at version 6 with their rows and no flag,
+// and keep the flags written from then on.
+TEST_P(StoreTest, AVersion5StoresEstimatesOpenWithNoSensorFlagAndKeepTheFlagsWrittenThen) {
+  host::WearEstimateSet set;
+  set.made_at = "2026-03-02T01:00:00Z";
+  set.warning_clearance_mm = 8.0;
+  set.critical_clearance_mm = 10.0;
+  set.max_step_mm = 0.5;
+  set.wheels = {estimate("L1", 1, 0.1), estimate("L1", 2, 0.25)};
+  {
+    const auto old = host::open_store_at_schema_version(url(), 5);
+    old->record_run(test_run("L1", test_time(0), 100.0, 0.2));
+    set.marks = old->marks();
+    old->write_wear_estimates(set);
+    ASSERT_EQ(old->wear_estimates()->wheels.size(), 2u);
+  }
+  auto store = open();
+  ASSERT_EQ(store->schema_version(), host::kStoreSchemaVersion);
+  const auto migrated = store->wear_estimates();
+  ASSERT_TRUE(migrated.has_value());
+  EXPECT_EQ(migrated->marks, set.marks);
+  ASSERT_EQ(migrated->wheels.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) expect_same(migrated->wheels[i], set.wheels[i]);
+  EXPECT_EQ(migrated->wheels[0].sensor_flag_first, "");
+  set.wheels[1].sensor_flag_first = "2026-02-01T06:00:00Z";
+  set.wheels[1].sensor_flag_confirmed = "2026-02-15T06:00:00Z";
+  store->write_wear_estimates(set);
+  expect_same(open()->wear_estimates()->wheels.at(1), set.wheels[1]);
 }
 
 }  // namespace
