@@ -67,6 +67,20 @@ TEST(ReplaySpeedPaths, KeptCoilStatesGiveWhatAFreshReplayGives) {
   EXPECT_NE(kept.voltage(late_temperature), kept.voltage({}));
 }
 
+// Stepping from the last rows finds the rows a binary search finds, forwards, backwards, on a
+// row's own time, between repeated times and beyond either end: the same value, bit for bit.
+TEST(ReplaySpeedPaths, TheSteppingInterpolatorAgreesWithTheBinarySearch) {
+  const std::vector<double> t = {0.0, 0.1, 0.25, 0.25, 0.4, 0.55, 0.7, 0.7, 0.7, 1.0, 1.3};
+  std::vector<double> values;
+  for (std::size_t i = 0; i < t.size(); ++i) values.push_back(std::sin(3.0 * static_cast<double>(i)));
+  SeriesInterpolator stepping(t, values);
+  const std::vector<double> asked = {-1.0, 0.05, 0.25, 0.3, 0.7,  0.71, 1.29, 1.3, 2.0,
+                                     0.26, 0.1,  0.0,  0.69, 1.0, 0.24, 0.7,  0.4, 0.56};
+  for (const double at : asked) {
+    ASSERT_EQ(stepping.at(at), interpolate_at(t, values, at)) << at;
+  }
+}
+
 TEST(ReplaySpeedPaths, ALongLogIsSearchedOnAnIncreasingSubsetOfItsRows) {
   const sim::PolynomialSensorModel nominal = sim::PolynomialSensorModel::thesis_eq_3_14();
   const RecordingSeries short_log = sweep({}, 6.0, 6600.0, 0.0, 2);

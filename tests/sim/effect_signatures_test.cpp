@@ -176,6 +176,21 @@ TEST(ChannelSkew, ADriftingSkewMovesTheDelayFromOneChannelToTheOther) {
   }
 }
 
+// A delay of a thousand samples held over twelve thousand: the points the delay line keeps are
+// dropped from its front and its storage compacted many times, and every value is still the
+// ramp's value skew_s back.
+TEST(ChannelSkew, ALongDelayAtAHighRateReadsThePastThroughout) {
+  auto skew = effect("channel_skew", {{"skew_s", 10.0}, {"drift_s_per_h", -20.0}});
+  for (int n = 0; n < 12000; ++n) {
+    const double t = n / 100.0;
+    ChainSample sample = sample_at(t, 2.0, 20.0 + 0.5 * t);
+    skew->apply(sample);
+    const double skew_s = 10.0 - 20.0 * t / 3600.0;
+    ASSERT_NEAR(sample.thermocouple_c, 20.0 + 0.5 * std::max(0.0, t - skew_s), 1e-9) << t;
+    ASSERT_DOUBLE_EQ(sample.voltage_v, 2.0);
+  }
+}
+
 TEST(AgeingDrift, OffsetGrowsAtTheGivenRatePerDay) {
   auto ageing = effect("ageing_drift", {{"rate_v_per_day", -0.08}, {"start_age_days", 10.0}});
   // Least-squares slope over two days sampled once a minute.

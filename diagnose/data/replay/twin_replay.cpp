@@ -82,6 +82,18 @@ double interpolate_at(const std::vector<double>& t, const std::vector<double>& v
   return values[j - 1] + w * (values[j] - values[j - 1]);
 }
 
+double SeriesInterpolator::at(double t_s) {
+  if (t_s <= t_.front()) return values_.front();
+  if (t_s >= t_.back()) return values_.back();
+  // The row std::upper_bound finds: the first with t > t_s (t_s lies inside, so 1 <= j < n).
+  std::size_t j = std::clamp<std::size_t>(upper_, 1, t_.size() - 1);
+  while (t_[j] <= t_s) ++j;
+  while (t_[j - 1] > t_s) --j;
+  upper_ = j;
+  const double w = (t_s - t_[j - 1]) / (t_[j] - t_[j - 1]);
+  return values_[j - 1] + w * (values_[j] - values_[j - 1]);
+}
+
 bool delays_temperature_channel(const sim::EffectSettings& effect) {
   const ChannelDelay delay = channel_delay_of(effect);
   return delay.temperature_late() || delay.temperature_lag_tau_s > 0.0;
@@ -134,9 +146,10 @@ std::vector<double> ambient_from_recorded(const RecordingSeries& series,
   for (const sim::EffectSettings& effect : effects) {
     if (const ChannelDelay delay = channel_delay_of(effect); delay.temperature_late()) {
       std::vector<double> advanced(n);
+      SeriesInterpolator late(series.t_s, ambient);
       for (std::size_t i = 0; i < n; ++i) {
         const double t = series.t_s[i];
-        advanced[i] = interpolate_at(series.t_s, ambient, t + std::max(0.0, delay.skew.at(t)));
+        advanced[i] = late.at(t + std::max(0.0, delay.skew.at(t)));
       }
       ambient = std::move(advanced);
     }
@@ -270,24 +283,25 @@ void TwinReplay::voltage_into(const std::vector<sim::EffectSettings>& effects, s
   // The coil effects in chain order, and whether any is there: without one the coil sees the
   // recorded inputs and the inversion made once in the constructor serves.
   std::vector<sim::EffectSettings> coil_effects;
-  std::vector<std::unique_ptr<sim::Effect>> chain;
-  std::vector<ChainStage> stages;
   for (const sim::EffectSettings* effect : ordered) {
-    const ChainStage stage = sim::chain_stage_of(effect->name);
     const bool moves_drive = channel_delay_of(*effect).temperature_late();
-    if (stage <= ChainStage::kThermal || moves_drive) coil_effects.push_back(*effect);
-    if (stage <= ChainStage::kThermal) continue;
-    chain.push_back(sim::make_effect(*effect, nominal_.v_min_v(), nominal_.v_max_v(), seed));
-    stages.push_back(stage);
+    if (sim::chain_stage_of(effect->name) <= ChainStage::kThermal || moves_drive) {
+      coil_effects.push_back(*effect);
+    }
+  }
+  // The effects after the coil, stage by stage and in catalogue order within a stage: those
+  // before the rails' clamp (the sensor's) and those after it (wiring, then acquisition).
+  std::vector<std::unique_ptr<sim::Effect>> before_clamp, after_clamp;
+  for (const ChainStage stage : {ChainStage::kSensor, ChainStage::kWiring, ChainStage::kAcquisition}) {
+    for (const sim::EffectSettings* effect : ordered) {
+      if (sim::chain_stage_of(effect->name) != stage) continue;
+      (stage == ChainStage::kSensor ? before_clamp : after_clamp)
+          .push_back(sim::make_effect(*effect, nominal_.v_min_v(), nominal_.v_max_v(), seed));
+    }
   }
   const std::shared_ptr<const CoilSamples> coil =
       coil_effects.empty() ? nullptr : coil_samples(coil_effects, seed);
-  const auto apply = [&](ChainStage stage, sim::ChainSample& sample) {
-    for (std::size_t k = 0; k < chain.size(); ++k) {
-      if (stages[k] == stage) chain[k]->apply(sample);
-    }
-  };
-
+  const double v_min = nominal_.v_min_v(), v_max = nominal_.v_max_v();
   out.resize(series_.size());
   for (std::size_t i = 0; i < series_.size(); ++i) {
     sim::ChainSample sample;
@@ -300,10 +314,9 @@ void TwinReplay::voltage_into(const std::vector<sim::EffectSettings>& effects, s
       sample.voltage_v = nominal_v_[i];
       sample.clip = nominal_clip_[i];
     }
-    apply(ChainStage::kSensor, sample);
-    sample.voltage_v = std::clamp(sample.voltage_v, nominal_.v_min_v(), nominal_.v_max_v());
-    apply(ChainStage::kWiring, sample);
-    apply(ChainStage::kAcquisition, sample);
+    for (const std::unique_ptr<sim::Effect>& effect : before_clamp) effect->apply(sample);
+    sample.voltage_v = std::clamp(sample.voltage_v, v_min, v_max);
+    for (const std::unique_ptr<sim::Effect>& effect : after_clamp) effect->apply(sample);
     out[i] = sample.voltage_v;
   }
 }

@@ -21,6 +21,21 @@ namespace flange::diagnose {
 // constant beyond the ends.
 double interpolate_at(const std::vector<double>& t, const std::vector<double>& values, double t_s);
 
+// interpolate_at for a run of times that mostly move forward (every sample's time plus a lead or
+// a skew): the bracketing rows are found by stepping from the last ones rather than by a binary
+// search over the whole series, with the same rows and so the same value.
+class SeriesInterpolator {
+ public:
+  SeriesInterpolator(const std::vector<double>& t, const std::vector<double>& values)
+      : t_(t), values_(values) {}
+  double at(double t_s);
+
+ private:
+  const std::vector<double>& t_;
+  const std::vector<double>& values_;
+  std::size_t upper_ = 1;  // the first row later than the last time asked for
+};
+
 // Whether `effect` delays the temperature channel behind the coil: channel_skew with skew_s > 0,
 // thermal_lag with tau_s < 0 (what ambient_from_recorded undoes).
 bool delays_temperature_channel(const sim::EffectSettings& effect);

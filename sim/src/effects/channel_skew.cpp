@@ -7,7 +7,8 @@
 // The delayed channel is interpolated linearly between past samples.
 #include <algorithm>
 #include <cmath>
-#include <deque>
+#include <cstddef>
+#include <vector>
 
 #include "channel_skew_law.h"
 #include "effects.h"
@@ -28,12 +29,19 @@ class DelayLine {
 
   // The channel's value (and rail flag) `delay_s` >= 0 before `now`, `now` stored first.
   Point delayed(const Point& now, double delay_s) {
+    // The points still needed are history_[first_, end): what falls out of the window is
+    // dropped from the front by moving first_, and the storage is compacted once the dropped
+    // points are the larger part (a replay of a long session runs this on every sample).
+    if (first_ > 64 && 2 * first_ > history_.size()) {
+      history_.erase(history_.begin(), history_.begin() + static_cast<std::ptrdiff_t>(first_));
+      first_ = 0;
+    }
     history_.push_back(now);
     const double wanted_t_s = now.t_s - delay_s;
-    while (history_.size() >= 2 && history_[1].t_s <= wanted_t_s) history_.pop_front();
-    const Point& before = history_.front();
-    if (history_.size() == 1 || wanted_t_s <= before.t_s) return before;  // hold the first value
-    const Point& after = history_[1];
+    while (history_.size() - first_ >= 2 && history_[first_ + 1].t_s <= wanted_t_s) ++first_;
+    const Point& before = history_[first_];
+    if (history_.size() - first_ == 1 || wanted_t_s <= before.t_s) return before;  // hold it
+    const Point& after = history_[first_ + 1];
     const double weight = (wanted_t_s - before.t_s) / (after.t_s - before.t_s);
     // The rail flag travels with the value it describes.
     return {wanted_t_s, before.value + weight * (after.value - before.value),
@@ -41,7 +49,8 @@ class DelayLine {
   }
 
  private:
-  std::deque<Point> history_;
+  std::vector<Point> history_;
+  std::size_t first_ = 0;
 };
 
 class ChannelSkew final : public Effect {

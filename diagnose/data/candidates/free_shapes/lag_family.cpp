@@ -33,9 +33,9 @@ Eigen::MatrixXd LagFamily::columns(const RecordedPart& part) const {
   }
   for (std::size_t k = 0; k < kLeads.size(); ++k) {
     const auto col = static_cast<Eigen::Index>(kLags.size() + k);
+    SeriesInterpolator ahead(t, temp);
     for (std::size_t i = 0; i < n; ++i) {
-      a(static_cast<Eigen::Index>(i), col) =
-          dv_dt[i] * (interpolate_at(t, temp, t[i] + kLeads[k]) - temp[i]);
+      a(static_cast<Eigen::Index>(i), col) = dv_dt[i] * (ahead.at(t[i] + kLeads[k]) - temp[i]);
     }
   }
   return a;
