@@ -33,6 +33,23 @@ std::vector<double> harmonics_on_line(double mains_hz, double line_hz, double fs
   return out;
 }
 
+// The lines in groups, each of lines within twice the line search's reach of the group's first:
+// the lines near one alias, judged together (two lines 0.04 Hz apart share a 20 s window's fit).
+std::vector<std::vector<double>> line_groups(const std::vector<double>& lines_hz) {
+  std::vector<std::vector<double>> groups;
+  for (const double f : lines_hz) {
+    const auto near = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
+      return std::abs(g.front() - f) <= 2.0 * free_shapes::kMainsSearchHz;
+    });
+    if (near == groups.end()) {
+      groups.push_back({f});
+    } else {
+      near->push_back(f);
+    }
+  }
+  return groups;
+}
+
 // "4, 8, 10, 14, ... Hz": the first few of `hz`.
 std::string some_of(const std::vector<double>& hz) {
   constexpr std::size_t kShown = 6;
@@ -80,11 +97,14 @@ void judge_aliased_lines(const Parts& parts, Selection& selection) {
     if (!effect_class(pick.finding.name).lines_of_each_session) continue;
     const std::vector<double> lines = mains_pick_lines_hz(pick.finding, fs_hz);
     if (lines.empty()) continue;
-    const free_shapes::LineSourceJudgement judged =
-        free_shapes::line_source({{cal, cal_gap}, {ho, selection.raw_ho_gap}}, lines);
+    bool pickup = true;
+    for (const std::vector<double>& group : line_groups(lines)) {
+      pickup = pickup && free_shapes::line_source({{cal, cal_gap}, {ho, selection.raw_ho_gap}},
+                                                  group)
+                                 .source == free_shapes::LineSource::kPickup;
+    }
     std::vector<std::string>& alike = pick.finding.indistinguishable_from;
-    if (judged.source == free_shapes::LineSource::kEither &&
-        std::find(alike.begin(), alike.end(), motion->name) == alike.end()) {
+    if (!pickup && std::find(alike.begin(), alike.end(), motion->name) == alike.end()) {
       alike.push_back(motion->name);
     }
   }
@@ -93,30 +113,26 @@ void judge_aliased_lines(const Parts& parts, Selection& selection) {
 std::string tell_line_from_motion(const Parts& parts, const EffectFinding& pick,
                                   const std::string& motion) {
   const double fs_hz = sample_rate_hz(parts.calibration);
-  const std::vector<double> lines = mains_pick_lines_hz(pick, fs_hz);
   const double mains_hz = param_or(pick, "mains_hz", 0.0);
   const std::string clearances = fmt::format(
       "a session whose clearance steps over the range (or whose temperature changes) so that the "
       "sensitivity dV/dd changes: a line of {} then follows it, one of {} does not",
       motion, pick.name);
-  if (lines.empty() || mains_hz <= 0.0) {
-    return fmt::format("to tell {} from {}: {}", pick.name, motion, clearances);
+  // The first line where a harmonic of the pick's mains folds at this rate.
+  for (const double line_hz : mains_pick_lines_hz(pick, fs_hz)) {
+    const std::vector<double> harmonics = harmonics_on_line(mains_hz, line_hz, fs_hz);
+    const std::optional<double> rate = separating_rate_hz(line_hz, fs_hz, harmonics);
+    if (!rate) continue;
+    return fmt::format(
+        "to tell {} from {}: the line at {:.3g} Hz is where {:g} Hz folds at {:.4g} Hz sampling, "
+        "and where motion at {} Hz folds; a session sampled at {:g} Hz, where {:g} Hz folds to "
+        "{:.3g} Hz and motion at any of those frequencies (up to {:g} Hz) folds at least {:g} Hz "
+        "away, or {}",
+        pick.name, motion, line_hz, harmonics.front(), fs_hz,
+        some_of(motion_folding_onto(line_hz, fs_hz, harmonics)), *rate, harmonics.front(),
+        folded_hz(harmonics.front(), *rate), kHighestMotionHz, kSeparatedLinesHz, clearances);
   }
-  const double line_hz = lines.front();
-  const std::vector<double> harmonics = harmonics_on_line(mains_hz, line_hz, fs_hz);
-  const std::optional<double> rate = separating_rate_hz(line_hz, fs_hz, harmonics);
-  const std::vector<double> motion_hz = motion_folding_onto(line_hz, fs_hz, harmonics);
-  const std::string where = fmt::format(
-      "the line at {:.3g} Hz is where {:g} Hz folds at {:.4g} Hz sampling, and where motion at "
-      "{} Hz folds",
-      line_hz, harmonics.empty() ? mains_hz : harmonics.front(), fs_hz, some_of(motion_hz));
-  if (!rate) return fmt::format("to tell {} from {}: {}; {}", pick.name, motion, where, clearances);
-  return fmt::format(
-      "to tell {} from {}: {}; a session sampled at {:g} Hz, where {:g} Hz folds to {:.3g} Hz and "
-      "motion at any of those frequencies (up to {:g} Hz) folds at least {:g} Hz away, or {}",
-      pick.name, motion, where, *rate, harmonics.empty() ? mains_hz : harmonics.front(),
-      folded_hz(harmonics.empty() ? mains_hz : harmonics.front(), *rate), kHighestMotionHz,
-      kSeparatedLinesHz, clearances);
+  return fmt::format("to tell {} from {}: {}", pick.name, motion, clearances);
 }
 
 }  // namespace flange::diagnose

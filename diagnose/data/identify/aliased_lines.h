@@ -17,9 +17,11 @@ namespace flange::diagnose {
 // the aliases of a library pick's harmonics that show as lines (free_shapes::mains_aliases).
 std::vector<double> mains_pick_lines_hz(const EffectFinding& finding, double fs_hz);
 
-// Each mains pick whose lines' window power over both parts' gaps neither follows (dV/dd)^2 nor
-// could have shown that it does not (free_shapes::line_source, LineSource::kEither) names mount
-// motion in its indistinguishable_from.
+// Each mains pick with a line (a group of lines near one alias) whose window power over both
+// parts' gaps is not shown to be pickup (free_shapes::line_source: it follows (dV/dd)^2, or the
+// data could not have shown that it does not) names mount motion in its indistinguishable_from.
+// A line that follows dV/dd is motion, but the pick's other lines may be pickup: the selection
+// kept them as one pick, so both classes are named rather than the pick dropped.
 void judge_aliased_lines(const Parts& parts, Selection& selection);
 
 // What would tell the pick's line from motion: a sample rate at which its mains harmonics fold

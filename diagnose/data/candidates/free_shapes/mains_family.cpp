@@ -10,16 +10,13 @@
 #include "family_makers.h"
 #include "line_source.h"
 #include "mains_lines.h"
-#include "sample_rate.h"
 
 namespace flange::diagnose::free_shapes {
 
 void MainsFamily::search(const RecordedPart& calibration, const std::vector<double>& gap_v) {
   const std::vector<double>& t = calibration.series.t_s;
   if (t.size() < 2) return;
-  // The rate from the median step: a logger that drops rows lengthens the mean step, and at
-  // 12.5 Hz 0.3 % of rows dropped moves 50 Hz's alias from 0 to 0.15 Hz.
-  const double fs_hz = sample_rate_hz(calibration.series);
+  const double fs_hz = static_cast<double>(t.size() - 1) / (t.back() - t.front());
   const MainsAliases aliases = mains_aliases(fs_hz);
   // The aliases with a line on the calibration part, unless the lines are motion.
   cal_lines_ = find_lines(t, gap_v, aliases.distinct_hz);
