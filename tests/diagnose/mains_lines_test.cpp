@@ -3,6 +3,7 @@
 // small synthetic gaps with known answers: where 50 and 60 Hz and their harmonics alias, the lines
 // found there, none on pure noise, and lines whose power follows the sensor's sensitivity taken
 // for motion.
+#include "line_source.h"
 #include "mains_lines.h"
 
 #include <gtest/gtest.h>
@@ -173,8 +174,8 @@ TEST(MainsLineFinding, LinesWhosePowerFollowsTheSensitivityAreMotion) {
     motion[i] += 0.03 * s[i] * wave;
     pickup[i] += 0.03 * std::sqrt(s2) * wave;
   }
-  EXPECT_TRUE(lines_follow_sensitivity(bench.part(), motion, {2.0}));
-  EXPECT_FALSE(lines_follow_sensitivity(bench.part(), pickup, {2.0}));
+  EXPECT_EQ(line_source({{bench.part(), motion}}, {2.0}).source, LineSource::kMotion);
+  EXPECT_EQ(line_source({{bench.part(), pickup}}, {2.0}).source, LineSource::kPickup);
   MainsFamily mains;
   mains.search(bench.part(), motion);
   EXPECT_TRUE(mains.empty());

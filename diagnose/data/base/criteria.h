@@ -112,6 +112,12 @@ inline constexpr double kOperatingRangeHighestMm = 10.0;
 // Identifiability.ConfidenceIsTheBaseRateSharedAmongAlikeClasses.
 inline constexpr double kFirstClaimAccuracy = 0.90;
 inline constexpr double kLaterClaimAccuracy = 0.31;
+// A class the data cannot tell from another (indistinguishable_from): with nothing in the data to
+// weigh one against the other each is as likely, so a claim of either is right at most half the
+// time, whatever the base rate and inclusion say (mains pickup and mount motion folded onto one
+// line where the sensitivity dV/dd does not change: identify/aliased_lines.h).
+// Test: AliasedLines.ALineTheDataCannotSeparateNamesBothAtHalfConfidenceOrLess.
+inline constexpr double kMostConfidenceOfIndistinguishable = 0.5;
 // The most bias-type picks: three effects at once is as many as a bench pair's two sessions can
 // separate; more would fit the noise of one session.
 // Test: SelectionRules.AtMostThreePicks.
@@ -194,6 +200,19 @@ inline constexpr std::size_t kResidualTestLags = 25;
 // LowAliasedMotion.AResonanceOnAMainsAliasIsMotionNotPickup.
 inline constexpr double kMotionSlopeT = 8.0;
 inline constexpr double kMotionLeastShare = 0.1;
+// Mount motion and mains pickup folded onto one line of the recording (candidates/free_shapes/
+// line_source.h): the line's power in each 20 s window regressed on the window's mean (dV/dd)^2.
+// Motion's power is proportional to (dV/dd)^2, pickup's does not change with it. The line is
+// motion when the slope's t exceeds 4 (far out in pickup's N(0, 1)); it is pickup only when the
+// data could have shown motion: motion of the power seen would give a slope of mean power / mean
+// (dV/dd)^2, and that must lie 8 standard errors of the slope from 0 (twice the motion's bar, so
+// motion would pass the bar by 4 standard errors). Otherwise (a constant clearance and
+// temperature, dV/dd constant) the data cannot tell them apart, and both are named.
+// Test: AliasedLines.MotionOnTheMainsAliasWithTheSensitivityChangingIsMotion,
+// AliasedLines.MainsAloneWithTheSensitivityChangingIsMains,
+// AliasedLines.ALineTheDataCannotSeparateNamesBothAtHalfConfidenceOrLess.
+inline constexpr double kMotionLineT = 4.0;
+inline constexpr double kLineSourceSeparation = 2.0 * kMotionLineT;
 // The converter: a grid found on the recordings is the one a twin's noise holds the rounding of
 // (sim::NoiseSettings::rounding_lsb_v) when their LSBs agree within 1 %. A grid's LSB is found
 // from the spacing of thousands of codes, far closer than that; converters of neighbouring

@@ -10,7 +10,9 @@ namespace flange::diagnose {
 double confidence_of(const EffectFinding& finding, bool first) {
   const double base = first ? criteria::kFirstClaimAccuracy : criteria::kLaterClaimAccuracy;
   const double alike = 1.0 + static_cast<double>(finding.indistinguishable_from.size());
-  return base * std::clamp(finding.inclusion, 0.0, 1.0) / alike;
+  const double shared = base * std::clamp(finding.inclusion, 0.0, 1.0) / alike;
+  if (finding.indistinguishable_from.empty()) return shared;
+  return std::min(shared, criteria::kMostConfidenceOfIndistinguishable);
 }
 
 std::vector<EffectFinding> with_confidences(std::vector<EffectFinding> effects) {

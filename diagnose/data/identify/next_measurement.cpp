@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "aliased_lines.h"
 #include "criteria.h"
 #include "effect_classes.h"
 #include "hypothetical_session.h"
@@ -57,6 +58,9 @@ std::string tell_apart(const Parts& parts, const Pick& pick, const std::string& 
                        double least_v) {
   const EffectClass& a = effect_class(pick.finding.name);
   const EffectClass& b = effect_class(other);
+  if (a.lines_of_each_session && b.is_mount_motion) {
+    return tell_line_from_motion(parts, pick.finding, other);
+  }
   const std::string fallback =
       fmt::format("to tell {} from {}: a session in which {} and {} do not move together", a.name,
                   b.name, a.follows, a.follows == b.follows ? "the other's shape" : b.follows);

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "family_makers.h"
+#include "line_source.h"
 #include "mains_lines.h"
 
 namespace flange::diagnose::free_shapes {
@@ -19,7 +20,8 @@ void MainsFamily::search(const RecordedPart& calibration, const std::vector<doub
   const MainsAliases aliases = mains_aliases(fs_hz);
   // The aliases with a line on the calibration part, unless the lines are motion.
   cal_lines_ = find_lines(t, gap_v, aliases.distinct_hz);
-  if (!cal_lines_.empty() && lines_follow_sensitivity(calibration, gap_v, cal_lines_)) {
+  if (!cal_lines_.empty() &&
+      line_source({{calibration, gap_v}}, cal_lines_).source == LineSource::kMotion) {
     cal_lines_.clear();
     follow_sensitivity_ = true;
   }

@@ -21,7 +21,7 @@ class MainsFamily : public Family {
   FreeShapeFit fit(const FreeShapeInputs& in) override;
 
   bool empty() const { return tones_hz_.empty(); }
-  // Lines were found, but their power followed the sensitivity: motion (lines_follow_sensitivity).
+  // Lines were found, but their power followed the sensitivity: motion (line_source.h).
   bool lines_are_motion() const { return follow_sensitivity_; }
   std::size_t lines() const { return tones_hz_.size(); }
   // The lines found on the calibration part, Hz.

@@ -8,7 +8,6 @@
 #include <numbers>
 
 #include "grid_search.h"
-#include "series_statistics.h"
 
 namespace flange::diagnose::free_shapes {
 namespace {
@@ -21,12 +20,6 @@ constexpr int kMainsLinesPerAlias = 2;
 // chance reduction is a sum of as many small chi-square terms, whose spread is a fraction of its
 // mean: four times the mean is far in its tail.
 constexpr double kMainsLineFactor = 4.0;
-// The t of the slope of the lines' window power on the window's (dV/dd)^2 above which the lines
-// are taken for mount motion (lines_follow_sensitivity): far out in the null's N(0, 1).
-constexpr double kMotionLineT = 4.0;
-// The fewest windows that slope is fitted on.
-constexpr std::size_t kLeastWindowsForTheSlope = 8;
-
 // The frequency within kMainsSearchHz of `nominal_hz` whose window-by-window fit leaves the
 // least of `gap`, on a lattice of kMainsStepHz.
 double refine_line(const std::vector<double>& t, const std::vector<double>& gap,
@@ -164,30 +157,6 @@ std::vector<double> find_lines(const std::vector<double>& t, const std::vector<d
     }
   }
   return found;
-}
-
-// The power of the fitted lines in each window regressed on the window's mean (dV/dd)^2. Pickup
-// on the cable is as strong at any clearance; mount motion that lands near an alias (a narrow
-// resonance) is stronger where the sensor is more sensitive, and is then motion, not mains.
-bool lines_follow_sensitivity(const RecordedPart& part, const std::vector<double>& gap_v,
-                              const std::vector<double>& lines_hz) {
-  const std::vector<double>& t = part.series.t_s;
-  const std::vector<double>& s = part.replay.sensitivity_v_per_mm();
-  int values = 0;
-  const std::vector<double> tones = windowed_tones(t, gap_v, lines_hz, values);
-  std::vector<double> power, s2;
-  for (const auto& [begin, end] : mains_windows(t)) {
-    double p = 0.0, q = 0.0;
-    for (std::size_t i = begin; i < end; ++i) {
-      p += tones[i] * tones[i];
-      q += s[i] * s[i];
-    }
-    power.push_back(p / static_cast<double>(end - begin));
-    s2.push_back(q / static_cast<double>(end - begin));
-  }
-  if (power.size() < kLeastWindowsForTheSlope) return false;
-  const LineFit fit = line_fit(s2, power);
-  return fit.fitted && fit.slope_t > kMotionLineT;
 }
 
 }  // namespace flange::diagnose::free_shapes

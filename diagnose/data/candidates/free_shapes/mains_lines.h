@@ -8,8 +8,6 @@
 #include <utility>
 #include <vector>
 
-#include "recorded_part.h"
-
 namespace flange::diagnose::free_shapes {
 
 // Windows of 20 s: 120 samples or more, so the two values of a line in each cost under 2 % of the
@@ -60,10 +58,5 @@ double mean_square(const std::vector<double>& x);
 // kMainsLineFactor times what its values would take from white noise.
 std::vector<double> find_lines(const std::vector<double>& t, const std::vector<double>& gap,
                                const std::vector<double>& nominals_hz);
-
-// Whether the power of `lines_hz` fitted window by window follows the sensor's sensitivity from
-// window to window: mount motion on an alias, not pickup on the cable.
-bool lines_follow_sensitivity(const RecordedPart& part, const std::vector<double>& gap_v,
-                              const std::vector<double>& lines_hz);
 
 }  // namespace flange::diagnose::free_shapes
