@@ -3,37 +3,49 @@
 # The reliability of the diagnosis's confidence (docs/diagnose.md, "Confidence"): runs the blind
 # self-test on each seed and tables every claim by its confidence, in bins of 0.1, with the share
 # right in each bin and among all claims at or above the bin's low end.
-#   bash bench/confidence_reliability.sh alt|twin SEED... [-- FLANGE]   (FLANGE: build/flange)
-# alt: 40 pairs per seed of the alternative reality; twin: 50 cases per seed of the twin's own.
+#   bash bench/confidence_reliability.sh REALITY SEED... [REALITY SEED...]... [-- FLANGE]
+# REALITY: twin (50 cases per seed of the twin's own), alt (40 pairs per seed of the alternative
+# reality) or third (40 pairs per seed of the third); seeds of several realities go into one table
+# (e.g. `twin 27 28 alt 475 476 third 501 502`). FLANGE: build/flange.
 # Leaves each seed's selftest.json in build/confidence_reliability/<reality><seed>/, and writes the
 # table, under the command that made it, into docs/diagnose_figures.md (FIGURES=FILE writes it into
 # FILE instead, FIGURES=none nowhere): between the lines "<!-- begin: COMMAND -->" and
 # "<!-- end: COMMAND -->", replacing that command's earlier table, or at the end of the file.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-reality="${1:?alt or twin}"
-shift
-seeds=()
+runs=()  # "reality seed"
+reality=""
 flange="$here/../build/flange"
+args=()
 while [ $# -gt 0 ]; do
-  if [ "$1" = "--" ]; then flange="$2"; break; fi
-  seeds+=("$1")
+  case "$1" in
+    --) flange="$2"; break ;;
+    twin | alt | third) reality="$1" ;;
+    *)
+      [ -n "$reality" ] ||
+        { echo "confidence_reliability: seed $1 before any reality (twin, alt or third)" >&2; exit 2; }
+      [[ "$1" =~ ^[0-9]+$ ]] ||
+        { echo "confidence_reliability: $1 is neither a reality nor a seed" >&2; exit 2; }
+      runs+=("$reality $1") ;;
+  esac
+  args+=("$1")
   shift
 done
-[ "${#seeds[@]}" -gt 0 ] || { echo "confidence_reliability: give at least one seed" >&2; exit 2; }
+[ "${#runs[@]}" -gt 0 ] || { echo "confidence_reliability: give at least one seed" >&2; exit 2; }
 figures="${FIGURES:-$here/../docs/diagnose_figures.md}"
-command="bash bench/confidence_reliability.sh $reality ${seeds[*]}"
+command="bash bench/confidence_reliability.sh ${args[*]}"
 out="$here/../build/confidence_reliability"
 mkdir -p "$out"
 files=()
-for seed in "${seeds[@]}"; do
+for run in "${runs[@]}"; do
+  read -r reality seed <<<"$run"
   dir="$out/$reality$seed"
-  if [ "$reality" = alt ]; then
-    "$flange" diagnose --selftest --reality alt --pairs 40 --seed "$seed" --jobs 2 --out "$dir" \
-      > "$dir.txt" || true
-  else
-    "$flange" diagnose --selftest --cases 50 --seed "$seed" --jobs 2 --out "$dir" > "$dir.txt" || true
-  fi
+  case "$reality" in
+    twin) what=(--cases 50) ;;
+    *) what=(--reality "$reality" --pairs 40) ;;
+  esac
+  "$flange" diagnose --selftest "${what[@]}" --seed "$seed" --jobs 2 --out "$dir" > "$dir.txt" ||
+    true
   files+=("$dir/selftest.json")
 done
 table="$(mktemp)"
@@ -66,6 +78,7 @@ for c, _ in claims:
 print()
 print("reliability: claims with confidence >= p are right at least p of the time:",
       "holds" if ok else "does not hold")
+print("wrong claims at confidence 0.9 or more:", sum(1 for c, r in claims if c >= 0.9 and not r))
 PY
 [ "$figures" = none ] && exit 0
 python3 - "$figures" "$command" "$table" <<'PY'
