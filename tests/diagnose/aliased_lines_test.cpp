@@ -26,20 +26,6 @@ constexpr double kDurationS = 1800.0;
 constexpr double kMotionHz = 14.0;  // folds to 2 Hz at 6 Hz, as 50 Hz does
 constexpr double kMainsHz = 50.0;
 
-// The micrometer over 1.5-10 mm in 0.5 mm steps, up and down: 20 s at each, 4 s moves.
-double staircase_mm(double t) {
-  constexpr double kMove = 4.0, kDwell = 20.0;
-  std::vector<double> seq;
-  for (int k = 0; k < 18; ++k) seq.push_back(1.5 + 0.5 * k);
-  for (int k = 16; k > 0; --k) seq.push_back(1.5 + 0.5 * k);
-  const double step = kMove + kDwell;
-  const double u = std::fmod(t, step * static_cast<double>(seq.size()));
-  const auto k = static_cast<std::size_t>(u / step);
-  const double r = u - static_cast<double>(k) * step;
-  const double a = seq[k], b = seq[(k + 1) % seq.size()];
-  return r < kDwell ? a : a + (b - a) * (r - kDwell) / kMove;
-}
-
 // The oven swept up and down over 20-90 degC once per session.
 double swept_c(double t) {
   const double u = t / kDurationS;

@@ -36,20 +36,6 @@ using testing::run_flange_captured;
 
 constexpr double kFsHz = 6.0;
 
-// The micrometer over 1.5-10 mm in 0.5 mm steps, up and down: 20 s at each position, 4 s moves.
-double staircase_mm(double t) {
-  constexpr double kMove = 4.0, kDwell = 20.0;
-  std::vector<double> seq;
-  for (int k = 0; k < 18; ++k) seq.push_back(1.5 + 0.5 * k);
-  for (int k = 16; k > 0; --k) seq.push_back(1.5 + 0.5 * k);
-  const double step = kMove + kDwell;
-  const double u = std::fmod(t, step * static_cast<double>(seq.size()));
-  const auto k = static_cast<std::size_t>(u / step);
-  const double r = u - static_cast<double>(k) * step;
-  const double a = seq[k], b = seq[(k + 1) % seq.size()];
-  return r < kDwell ? a : a + (b - a) * (r - kDwell) / kMove;
-}
-
 double rounded(double v, double quantum) { return std::round(v / quantum) * quantum; }
 
 // A bench session at room temperature: the recorded temperature reads 21.9 or 22.0 degC all

@@ -3,7 +3,10 @@
 // what the diagnosis's tests feed it where the twin's own scenarios do not fit.
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "recording_series.h"
 #include "sensor_twin.h"
@@ -28,6 +31,20 @@ RecordingSeries record_twin(const sim::TwinConfig& config, std::uint64_t seed, d
     series.voltage_v.push_back(r.voltage_v);
   }
   return series;
+}
+
+// The micrometer over 1.5-10 mm in 0.5 mm steps, up and down: 20 s at each position, 4 s moves.
+inline double staircase_mm(double t) {
+  constexpr double kMove = 4.0, kDwell = 20.0;
+  std::vector<double> seq;
+  for (int k = 0; k < 18; ++k) seq.push_back(1.5 + 0.5 * k);
+  for (int k = 16; k > 0; --k) seq.push_back(1.5 + 0.5 * k);
+  const double step = kMove + kDwell;
+  const double u = std::fmod(t, step * static_cast<double>(seq.size()));
+  const auto k = static_cast<std::size_t>(u / step);
+  const double r = u - static_cast<double>(k) * step;
+  const double a = seq[k], b = seq[(k + 1) % seq.size()];
+  return r < kDwell ? a : a + (b - a) * (r - kDwell) / kMove;
 }
 
 }  // namespace flange::diagnose
