@@ -16,10 +16,12 @@ function(flange_scaled_timeout out seconds)
   set(${out} ${scaled} PARENT_SCOPE)
 endfunction()
 
-# flange_add_gtest(<unit>_test SOURCES <files> LIBS <targets> [TIMEOUT s] [TEST_PREFIX p])
+# flange_add_gtest(<unit>_test SOURCES <files> LIBS <targets> [TIMEOUT s] [TEST_PREFIX p] [STORE])
 # TEST_PREFIX (e.g. "VehicleSos.") tells apart the same tests built for several coefficient sets.
+# STORE: the tests run on both store backends (tests/host/store/store_test_backends.h), their
+# PostgreSQL server the StorePostgres fixture's (tests/host/CMakeLists.txt).
 function(flange_add_gtest name)
-  cmake_parse_arguments(ARG "" "TIMEOUT;TEST_PREFIX" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "STORE" "TIMEOUT;TEST_PREFIX" "SOURCES;LIBS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} flange_warnings GTest::gtest_main)
   # tests/: helpers shared by the test folders (test_files.h).
@@ -31,9 +33,19 @@ function(flange_add_gtest name)
     set(ARG_TIMEOUT 300)
   endif()
   flange_scaled_timeout(ARG_TIMEOUT ${ARG_TIMEOUT})
+  set(store_properties "")
+  if(ARG_STORE)
+    find_package(PostgreSQL REQUIRED)
+    find_package(SQLite3 REQUIRED)
+    target_sources(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests/host/store/store_test_backends.cpp)
+    target_link_libraries(${name} PRIVATE PostgreSQL::PostgreSQL SQLite::SQLite3)
+    target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests/host/store)
+    set(store_properties FIXTURES_REQUIRED StorePostgres ENVIRONMENT
+        FLANGE_TEST_POSTGRES_STATE=${PROJECT_BINARY_DIR}/test_files/store_postgres_server)
+  endif()
   gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_BINARY_DIR}
                        TEST_PREFIX "${ARG_TEST_PREFIX}"
-                       PROPERTIES TIMEOUT ${ARG_TIMEOUT} DISCOVERY_TIMEOUT 60)
+                       PROPERTIES TIMEOUT ${ARG_TIMEOUT} ${store_properties} DISCOVERY_TIMEOUT 60)
 endfunction()
 
 # flange_camel_case(<out-var> <snake_name>): measurement_sos -> MeasurementSos, the prefix of the

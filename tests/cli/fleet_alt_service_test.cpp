@@ -21,6 +21,7 @@
 #include "flange_in_process.h"
 #include "store.h"
 #include "store_test_backends.h"
+#include "store_test_fixture.h"
 #include "test_files.h"
 
 namespace flange::cli {
@@ -230,14 +231,10 @@ TEST(FleetAltServiceRefusals, AnOdometerThatRunsBackwardsWithoutARecordedReset) 
   EXPECT_NEAR(history[1].odometer_km, std::stod(runs[0][4]) + 12.5, 1e-6);
 }
 
-std::string backend_name(const ::testing::TestParamInfo<StoreBackendUnderTest>& param) {
-  return testing::backend_test_name(param.param);
-}
-
 INSTANTIATE_TEST_SUITE_P(Backends, FleetAltService,
                          ::testing::Values(StoreBackendUnderTest::kSqlite,
                                            StoreBackendUnderTest::kPostgresql),
-                         backend_name);
+                         testing::backend_param_name);
 
 }  // namespace
 }  // namespace flange::cli

@@ -13,6 +13,7 @@
 #include "flange_in_process.h"
 #include "store.h"
 #include "store_test_backends.h"
+#include "store_test_fixture.h"
 #include "test_files.h"
 
 namespace flange::cli {
@@ -95,14 +96,10 @@ TEST_P(WearPlanStored, ThePlanFromTheStoredEstimatesIsThePlanReEstimated) {
       << after_run.out;
 }
 
-std::string backend_name(const ::testing::TestParamInfo<StoreBackendUnderTest>& param) {
-  return testing::backend_test_name(param.param);
-}
-
 INSTANTIATE_TEST_SUITE_P(Backends, WearPlanStored,
                          ::testing::Values(StoreBackendUnderTest::kSqlite,
                                            StoreBackendUnderTest::kPostgresql),
-                         backend_name);
+                         testing::backend_param_name);
 
 }  // namespace
 }  // namespace flange::cli

@@ -18,6 +18,7 @@
 #include "flange_in_process.h"
 #include "store.h"
 #include "store_test_backends.h"
+#include "store_test_fixture.h"
 #include "test_files.h"
 #include "utc_time.h"
 #include "wheel_history.h"
@@ -169,14 +170,10 @@ TEST_P(WearSensorFlag, IsLatchedOnceConfirmedHeldAndClearedByTheDepot) {
   EXPECT_FALSE(fs::exists(dir / "refused"));
 }
 
-std::string backend_name(const ::testing::TestParamInfo<StoreBackendUnderTest>& param) {
-  return testing::backend_test_name(param.param);
-}
-
 INSTANTIATE_TEST_SUITE_P(Backends, WearSensorFlag,
                          ::testing::Values(StoreBackendUnderTest::kSqlite,
                                            StoreBackendUnderTest::kPostgresql),
-                         backend_name);
+                         testing::backend_param_name);
 
 }  // namespace
 }  // namespace flange::cli

@@ -15,6 +15,7 @@
 #include "store.h"
 #include "store_migration.h"
 #include "store_test_backends.h"
+#include "store_test_fixture.h"
 #include "store_test_records.h"
 #include "wheel_wear_reference.h"
 
@@ -136,9 +137,7 @@ TEST(WheelsetMovedRefusals, ASourceAxleOutsideTheAxlesOrEqualToTheAxleIsOneLine)
 INSTANTIATE_TEST_SUITE_P(Backends, WheelsetMoved,
                          ::testing::Values(StoreBackendUnderTest::kSqlite,
                                            StoreBackendUnderTest::kPostgresql),
-                         [](const auto& backend) {
-                           return testing::backend_test_name(backend.param);
-                         });
+                         testing::backend_param_name);
 
 }  // namespace
 }  // namespace flange::cli
