@@ -3,10 +3,11 @@
 # Diagnoses self-test pairs, then each "explained" pair again against the twin.json the first
 # diagnosis wrote (docs/diagnose.md, "The improved twin"), and prints one row per pair: its truth,
 # the first verdict and the second. The pairs come from the blind self-tests: the twin's own
-# (`--reality twin`) or the alternative reality's (`--reality alt`, a simulator the method never
-# fitted to; its sessions are given their start times, as the alt self-test gives them).
+# (`--reality twin`), the alternative reality's (`--reality alt`) or the third's (`--reality
+# third`, shapes drawn at random), the last two simulators the method never fitted to; their
+# sessions are given their start times, as their self-tests give them.
 #
-#   bash scripts/rediagnose_pairs.sh --reality twin|alt --seed S --from K --to L [--duration D]
+#   bash scripts/rediagnose_pairs.sh --reality twin|alt|third --seed S --from K --to L [--duration D]
 #        [--build-dir DIR] [--work DIR] [--jobs N]
 #
 # --duration (twin only) shortens the sessions; --jobs runs that many pairs at once (default 2).
@@ -34,7 +35,14 @@ while [ $# -gt 0 ]; do
     *) echo "rediagnose_pairs.sh: unknown argument '$1' (valid: --reality, --seed, --from, --to, --duration, --build-dir, --work, --jobs)" >&2; exit 2 ;;
   esac
 done
-case "$reality" in twin|alt) ;; *) echo "rediagnose_pairs.sh: --reality must be twin or alt" >&2; exit 2 ;; esac
+# The date each reality's sensor was calibrated: a session starts its age after it
+# (diagnose/alt_check/alt_selftest.cpp and third_selftest.cpp).
+case "$reality" in
+  twin) calibrated="" ;;
+  alt) calibrated="2026-01-01" ;;
+  third) calibrated="2026-03-01" ;;
+  *) echo "rediagnose_pairs.sh: --reality must be twin, alt or third, not '$reality'" >&2; exit 2 ;;
+esac
 flange="$build/flange"
 [ -x "$flange" ] || { echo "rediagnose_pairs.sh: $flange not found (build the flange target)" >&2; exit 1; }
 work="${work:-$(mktemp -d)}"
@@ -55,14 +63,14 @@ one_pair() {
     truth="$(python3 -c 'import json,sys; c=json.load(open(sys.argv[1]))["cases"][0]; print("+".join(e["name"] for e in c["truth"]) or c["kind"])' \
       "$dir/pair/selftest.json")"
   else
-    "$flange" diagnose --selftest --reality alt --case "$k" --seed "$seed" --bootstrap 20 \
+    "$flange" diagnose --selftest --reality "$reality" --case "$k" --seed "$seed" --bootstrap 20 \
       --out "$dir/pair" > /dev/null
     real="$dir/pair/pair_${k}_fit.csv"
     heldout="$dir/pair/pair_${k}_heldout.csv"
-    read -r truth fit_start heldout_start < <(python3 - "$dir/pair/pair_${k}_truth.json" <<'PY'
+    read -r truth fit_start heldout_start < <(python3 - "$dir/pair/pair_${k}_truth.json" "$calibrated" <<'PY'
 import datetime, json, sys
 t = json.load(open(sys.argv[1]))
-calibrated = datetime.datetime(2026, 1, 1, tzinfo=datetime.timezone.utc)
+calibrated = datetime.datetime.fromisoformat(sys.argv[2]).replace(tzinfo=datetime.timezone.utc)
 def start(session):
     at = calibrated + datetime.timedelta(seconds=session["start_age_s"])
     return at.strftime("%Y-%m-%dT%H:%M:%S.%fZ")
@@ -84,7 +92,7 @@ PY
   printf '%s\t%s\t%s\t%s\n' "$k" "$truth" "$first" "$second" > "$dir/row.tsv"
 }
 export -f one_pair
-export work reality seed duration flange
+export work reality seed duration flange calibrated
 
 seq "$from" "$to" | xargs -P "$jobs" -I{} bash -c 'one_pair "$@"' _ {}
 printf 'pair\ttruth\tfirst\tagainst twin.json\n'
