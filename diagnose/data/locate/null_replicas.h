@@ -37,19 +37,31 @@ void for_each_null_replica(const RecordingSeries& real, const std::vector<double
                            const WhiteNoise& white, const sim::PolynomialSensorModel& model,
                            double fs_hz, std::uint64_t seed, Each each,
                            const NullReplica& replica_of = {}) {
-  // Replicas are drawn a batch at a time: a batch's normals are all that is held at once.
+  // Replicas run a batch at a time, while the next batch's normals are drawn beside them: a
+  // batch's normals and the next's are all that is held at once.
   const int batch = worker_threads();
   sim::GaussianSource noise(seed);
-  for (int first = 0; first < criteria::kNullReplicas; first += batch) {
-    const int count = std::min(batch, criteria::kNullReplicas - first);
+  const auto draw = [&](int count) {
     std::vector<std::vector<double>> zs(static_cast<std::size_t>(count));
     for (std::vector<double>& z : zs) {
       z.resize(sim_v.size());
       for (double& zi : z) zi = noise.standard_normal();
     }
-    run_in_parallel(count, 0, [&](int k) {
-      const int replica = first + k;
-      const std::vector<double>& z = zs[static_cast<std::size_t>(k)];
+    return zs;
+  };
+  std::vector<std::vector<double>> next = draw(std::min(batch, criteria::kNullReplicas));
+  for (int first = 0; first < criteria::kNullReplicas; first += batch) {
+    const std::vector<std::vector<double>> zs = std::move(next);
+    const int count = static_cast<int>(zs.size());
+    const int next_count = std::clamp(criteria::kNullReplicas - first - count, 0, batch);
+    // Piece 0 draws the next batch; piece k > 0 runs replica first + k - 1.
+    run_in_parallel(count + 1, 0, [&](int piece) {
+      if (piece == 0) {
+        next = draw(next_count);
+        return;
+      }
+      const int replica = first + piece - 1;
+      const std::vector<double>& z = zs[static_cast<std::size_t>(piece - 1)];
       std::vector<double> noisy_v(sim_v.size());
       if (replica_of) {
         noisy_v = replica_of(sim::derive_seed(seed, 1000 + static_cast<std::uint64_t>(replica)), z);
