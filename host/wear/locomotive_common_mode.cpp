@@ -49,4 +49,17 @@ WearSeries without_common_mode(WearSeries series, const std::vector<std::int64_t
   return series;
 }
 
+WearSeries with_shared_shapes(WearSeries series, const std::vector<std::int64_t>& run_id,
+                              const CommonMode& common) {
+  for (const auto* shared : {&common.sum_mm, &common.difference_mm}) {
+    std::vector<double> shape;
+    for (const std::int64_t run : run_id) {
+      const auto found = shared->find(run);
+      shape.push_back(found != shared->end() ? found->second : 0.0);
+    }
+    series.shared.push_back(std::move(shape));
+  }
+  return series;
+}
+
 }  // namespace flange::host
