@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "locomotive_common_mode.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "robust_location.h"
@@ -57,6 +58,9 @@ WearSeries with_shared_shapes(WearSeries series, const std::vector<std::int64_t>
       const auto found = shared->find(run);
       shape.push_back(found != shared->end() ? found->second : 0.0);
     }
+    // None of this axle's runs has it (a locomotive of fewer than kMinAxlesForCommonMode
+    // axles): a column of zeros would leave the fit without a covariance.
+    if (std::all_of(shape.begin(), shape.end(), [](double v) { return v == 0.0; })) continue;
     series.shared.push_back(std::move(shape));
   }
   return series;

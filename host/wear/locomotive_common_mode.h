@@ -50,6 +50,7 @@ WearSeries without_common_mode(WearSeries series, const std::vector<std::int64_t
 // curves moves the left and the right flanges' wear apart (left = (sum - difference) / 2,
 // right = (sum + difference) / 2: any mix of the two sides' wander is in their span). One
 // drifting sensor moves one axle, which the median does not follow, so the drift is not in them.
+// A shape none of the axle's runs has is left out.
 WearSeries with_shared_shapes(WearSeries series, const std::vector<std::int64_t>& run_id,
                               const CommonMode& common);
 
