@@ -53,8 +53,9 @@ std::string tell_fixed_knee_from_compression(const Parts& parts, const EffectFin
       pick.name, other, span.lowest_c, span.highest_c);
   if (span.lowest_c <= criteria::kOperatingRangeLowestC &&
       span.highest_c >= criteria::kOperatingRangeHighestC) {
-    return what + "; the recordings span the bench's operating range, so no session on it tells "
-                  "them apart";
+    return what +
+           "; the recordings span the bench's operating range, so no session on it tells "
+           "them apart";
   }
   return fmt::format(
       "{}; a session that holds the clearance where the voltage lies over the top of the range "
