@@ -49,9 +49,10 @@ TEST(FixedKnees, ACompressionFamilyNamedANonlinearityNamesBothAtHalfConfidenceOr
             std::vector<std::string>{"range_compression"});
   EXPECT_TRUE(selection.picks[1].finding.indistinguishable_from.empty());
   EXPECT_TRUE(selection.picks[2].finding.indistinguishable_from.empty());
-  EXPECT_LE(confidence_of(selection.picks[0].finding, true),
+  EXPECT_LE(confidence_of(selection.picks[0].finding, ClaimPlace::first_of_several),
             criteria::kMostConfidenceOfIndistinguishable);
-  EXPECT_DOUBLE_EQ(confidence_of(selection.picks[1].finding, true), criteria::kFirstClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(selection.picks[1].finding, ClaimPlace::alone),
+                   criteria::kAloneClaimAccuracy);
 }
 
 TEST(FixedKnees, AFixedKneeOnTheThirdRealityIsNamedAsEitherClass) {

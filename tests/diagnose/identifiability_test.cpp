@@ -220,14 +220,32 @@ TEST(Identifiability, AConstantRecordingNamesEveryClassThatShiftsItsOnePoint) {
   EXPECT_FALSE(d.next_measurement.empty());
 }
 
-TEST(Identifiability, ConfidenceIsTheBaseRateSharedAmongAlikeClasses) {
+TEST(Identifiability, ConfidenceIsTheBaseRateOfItsPlaceSharedAmongAlikeClasses) {
   EffectFinding f;
   f.inclusion = 1.0;
-  EXPECT_DOUBLE_EQ(confidence_of(f, true), criteria::kFirstClaimAccuracy);
-  EXPECT_DOUBLE_EQ(confidence_of(f, false), criteria::kLaterClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone), criteria::kAloneClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::first_of_several),
+                   criteria::kFirstOfSeveralClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::later), criteria::kLaterClaimAccuracy);
   f.inclusion = 0.5;
   f.indistinguishable_from = {"ageing_drift"};
-  EXPECT_DOUBLE_EQ(confidence_of(f, true), criteria::kFirstClaimAccuracy * 0.5 / 2.0);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone), criteria::kAloneClaimAccuracy * 0.5 / 2.0);
+}
+
+// A class named alone is trusted more than the first of several, which shapes outside the library
+// split between, and a later one least.
+TEST(Identifiability, AVerdictsPlacesGiveItsClassesTheirBaseRates) {
+  EffectFinding a;
+  a.name = "temp_gain_drift";
+  a.inclusion = 1.0;
+  EffectFinding b = a;
+  b.name = "nonlinearity";
+  const std::vector<EffectFinding> one = with_confidences({a});
+  EXPECT_DOUBLE_EQ(one[0].confidence, criteria::kAloneClaimAccuracy);
+  const std::vector<EffectFinding> two = with_confidences({a, b});
+  EXPECT_DOUBLE_EQ(two[0].confidence, criteria::kFirstOfSeveralClaimAccuracy);
+  EXPECT_DOUBLE_EQ(two[1].confidence, criteria::kLaterClaimAccuracy);
+  EXPECT_GT(criteria::kAloneClaimAccuracy, criteria::kFirstOfSeveralClaimAccuracy);
 }
 
 TEST(CompensatedSensitivity, ACopyOfAnotherColumnHasNone) {

@@ -7,8 +7,21 @@
 
 namespace flange::diagnose {
 
-double confidence_of(const EffectFinding& finding, bool first) {
-  const double base = first ? criteria::kFirstClaimAccuracy : criteria::kLaterClaimAccuracy;
+namespace {
+
+double base_rate(ClaimPlace place) {
+  switch (place) {
+    case ClaimPlace::alone: return criteria::kAloneClaimAccuracy;
+    case ClaimPlace::first_of_several: return criteria::kFirstOfSeveralClaimAccuracy;
+    case ClaimPlace::later: return criteria::kLaterClaimAccuracy;
+  }
+  return criteria::kLaterClaimAccuracy;
+}
+
+}  // namespace
+
+double confidence_of(const EffectFinding& finding, ClaimPlace place) {
+  const double base = base_rate(place);
   const double alike = 1.0 + static_cast<double>(finding.indistinguishable_from.size());
   const double shared = base * std::clamp(finding.inclusion, 0.0, 1.0) / alike;
   if (finding.indistinguishable_from.empty()) return shared;
@@ -17,7 +30,10 @@ double confidence_of(const EffectFinding& finding, bool first) {
 
 std::vector<EffectFinding> with_confidences(std::vector<EffectFinding> effects) {
   for (std::size_t k = 0; k < effects.size(); ++k) {
-    effects[k].confidence = confidence_of(effects[k], k == 0);
+    const ClaimPlace place = k > 0                ? ClaimPlace::later
+                             : effects.size() == 1 ? ClaimPlace::alone
+                                                   : ClaimPlace::first_of_several;
+    effects[k].confidence = confidence_of(effects[k], place);
   }
   return effects;
 }

@@ -10,12 +10,15 @@
 
 namespace flange::diagnose {
 
-// The base rate (criteria::kFirstClaimAccuracy for the verdict's first class, else
-// criteria::kLaterClaimAccuracy) x inclusion / (1 + the classes the data cannot tell from it):
+// Where a class stands in its verdict: the base rate of a claim depends on it.
+enum class ClaimPlace { alone, first_of_several, later };
+
+// The base rate of `place` (criteria::kAloneClaimAccuracy, kFirstOfSeveralClaimAccuracy or
+// kLaterClaimAccuracy) x inclusion / (1 + the classes the data cannot tell from it):
 // how often a class named there is present, lowered where resamples of the held-out data do not
 // confirm the pick, and shared among the classes the data cannot tell apart (each as likely), then
 // at most criteria::kMostConfidenceOfIndistinguishable when there are any.
-double confidence_of(const EffectFinding& finding, bool first);
+double confidence_of(const EffectFinding& finding, ClaimPlace place);
 
 // `effects` (a verdict's, in its order) with their confidences.
 std::vector<EffectFinding> with_confidences(std::vector<EffectFinding> effects);
