@@ -23,11 +23,16 @@
 
 namespace flange::host {
 
-// The stretch left out at a time: longer than the spells the slow errors come in (the season's
-// temperature leftovers move over weeks), short enough to leave three of them in a quarter's
-// history. Four-week stretches left part of those errors inside each stretch on the development
-// fleets (docs/fleet.md): six weeks.
-inline constexpr double kBlockDays = 42.0;
+// The stretch left out at a time: longer than the spells most slow errors come in (a spell of
+// weather, a route's week), short enough to leave five or six stretches in a quarter's history
+// so that each wheel's jackknife has some degrees of freedom of its own before the fleet's
+// prior steadies it (moderated_spread.h). Six-week stretches (three in a quarter) overstate the
+// rate's variance about threefold on errors that last days: leaving out a third of a trending
+// history takes much of the odometer's leverage with it (docs/fleet.md, step 5).
+inline constexpr double kBlockDays = 21.0;
+// A wheel with a drift fitted out: its drift terms trade off against the rate over the whole
+// time since the onset, so the stretches stay long (and its own jackknife is not moderated).
+inline constexpr double kDriftBlockDays = 42.0;
 inline constexpr int kMinBlocks = 3;
 inline constexpr int kMaxBlocks = 8;
 
@@ -38,13 +43,15 @@ struct SerialSpread {
   int blocks = 0;          // stretches the refits left out (0: none)
 };
 
-// B for a history spanning `span_days`: round(span / kBlockDays) within [kMinBlocks, kMaxBlocks].
-int jackknife_blocks(double span_days);
+// B for a history spanning `span_days`: round(span / block_days) within [kMinBlocks,
+// kMaxBlocks].
+int jackknife_blocks(double span_days, double block_days = kBlockDays);
 
 // `fit` is fit_wear_line(series, drift_onset_day, drift_degree). A stretch whose leaving out
 // leaves too few runs for the model makes the whole jackknife fall back on the least-squares
 // figures (blocks 0).
 SerialSpread jackknife_rate(const WearSeries& series, std::optional<double> drift_onset_day,
-                            int drift_degree, const WearLineFit& fit);
+                            int drift_degree, const WearLineFit& fit,
+                            double block_days = kBlockDays);
 
 }  // namespace flange::host
