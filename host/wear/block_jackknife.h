@@ -7,14 +7,15 @@
 //
 // Delete-a-block jackknife over time: the history is cut into B stretches of equal calendar
 // length (about kBlockDays each, 3 to 8 of them), the line refitted B times with one stretch
-// left out, and var r = (B - 1) / B sum_b (r_(b) - mean r_(.))^2; the rate over that standard
-// error is taken as Student t with B - 1 degrees of freedom. Errors correlated within a few weeks
-// move a whole stretch together, so leaving it out shows how much the rate leans on them. The
-// ratio of the jackknife's variance to the least-squares one (the inflation) scales the whole
-// least-squares covariance, so the forecast's clearance now, whose intercept may rest on a few
-// runs after a reprofiling, widens with the rate. On independent errors the jackknife scatters
-// about the least-squares figure (its few degrees of freedom are in t), so it is not floored
-// at it: a floor would make the interval hold more often than its level says.
+// left out, and var r = (B - 1) / B sum_b (r_(b) - mean r_(.))^2 with B - 1 degrees of freedom.
+// Errors correlated within a stretch move it together, so leaving it out shows how much the
+// rate leans on them. The ratio of the jackknife's variance to the least-squares one (the
+// inflation) scales the whole least-squares covariance, so the forecast's clearance now, whose
+// intercept may rest on a few runs after a reprofiling, widens with the rate. One wheel's B - 1
+// degrees of freedom are few: the fleet's wheels steady each other's inflation
+// (moderated_spread.h) before an interval is made. On a trending history the jackknife is biased
+// upward (a stretch left out at either end takes much of the odometer's leverage with it), the
+// more so the fewer the stretches; it is not floored at the least-squares figure.
 #pragma once
 
 #include <optional>
