@@ -29,16 +29,16 @@ WearSeries without_block(const WearSeries& series, const std::vector<int>& block
 
 }  // namespace
 
-int jackknife_blocks(double span_days) {
-  return std::clamp(static_cast<int>(std::lround(span_days / kBlockDays)), kMinBlocks, kMaxBlocks);
+int jackknife_blocks(double span_days, double block_days) {
+  return std::clamp(static_cast<int>(std::lround(span_days / block_days)), kMinBlocks, kMaxBlocks);
 }
 
 SerialSpread jackknife_rate(const WearSeries& series, std::optional<double> drift_onset_day,
-                            int drift_degree, const WearLineFit& fit) {
+                            int drift_degree, const WearLineFit& fit, double block_days) {
   SerialSpread spread{fit.rate_se, 1.0, fit.dof, 0};
   const double first = series.day.front(), span = series.day.back() - first;
   if (!(span > 0.0)) return spread;
-  const int blocks = jackknife_blocks(span);
+  const int blocks = jackknife_blocks(span, block_days);
   std::vector<int> block;
   for (const double day : series.day) {
     block.push_back(std::min(blocks - 1, static_cast<int>((day - first) / span * blocks)));

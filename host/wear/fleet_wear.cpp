@@ -12,6 +12,7 @@
 #include "block_jackknife.h"
 #include "daily_distance.h"
 #include "locomotive_common_mode.h"
+#include "moderated_spread.h"
 #include "negative_rate.h"
 #include "reprofiling_search.h"
 
@@ -143,8 +144,9 @@ ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread)
   return input;
 }
 
-// The wheel's line, rate interval and forecasts; "too few runs" when the line cannot be fitted.
-void fit_wheel(WheelWear& wheel, const FleetWear& fleet, std::optional<double> drift_onset,
+// The wheel's line and its own jackknife; "too few runs" when the line cannot be fitted. The
+// interval and the forecasts wait for the fleet's prior (finish_wheel).
+void fit_wheel(WheelWear& wheel, std::optional<double> drift_onset,
                const SensitivityAt& sensitivity) {
   const std::vector<WearObservation>& runs = wheel.runs;
   const WearSeries series = series_of(wheel, clearances(runs), sensitivity);
@@ -154,8 +156,14 @@ void fit_wheel(WheelWear& wheel, const FleetWear& fleet, std::optional<double> d
     wheel.status = "too few runs";
     return;
   }
+  wheel.own_spread = jackknife_rate(series, drift_onset, kDriftDegree, *wheel.fit,
+                                    drift_onset ? kDriftBlockDays : kBlockDays);
+}
+
+// The rate's interval and the forecasts from `spread` (the wheel's jackknife, moderated).
+void finish_wheel(WheelWear& wheel, const FleetWear& fleet, const SerialSpread& spread) {
   const WearLineFit& fit = *wheel.fit;
-  const SerialSpread spread = jackknife_rate(series, drift_onset, kDriftDegree, fit);
+  const std::vector<WearObservation>& runs = wheel.runs;
   wheel.rate_mm_per_1000km = fit.rate_mm_per_km * 1000.0;
   wheel.rate_se = spread.rate_se * 1000.0;
   wheel.rate_dof = spread.dof;
@@ -259,10 +267,8 @@ void estimate_axle(FleetWear& fleet, AxlePair pair, const std::optional<DriftFin
     faulty.sensor_fault = drift;
     faulty.status = "sensor fault";
   }
-  fit_wheel(l, fleet, l.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
-  fit_wheel(r, fleet, r.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
-  mark_negative_rate(l);
-  mark_negative_rate(r);
+  fit_wheel(l, l.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
+  fit_wheel(r, r.sensor_fault ? std::optional(drift->onset_day) : std::nullopt, sensitivity);
   fleet.wheels.push_back(std::move(l));
   fleet.wheels.push_back(std::move(r));
 }
@@ -296,9 +302,27 @@ void estimate_lone_wheel(FleetWear& fleet, const WheelHistory& history) {
   const std::set<std::size_t> changes = recorded_changes(wheel.runs, history.maintenance);
   segment_runs(wheel, unexplained(find_reprofilings(y, y, fleet.thresholds.max_step_mm), changes),
                recorded_boundaries(wheel.runs, history.maintenance), changes);
-  fit_wheel(wheel, fleet, std::nullopt, {});
-  mark_negative_rate(wheel);
+  fit_wheel(wheel, std::nullopt, {});
   fleet.wheels.push_back(std::move(wheel));
+}
+
+// Every wheel's interval and forecasts, its jackknife moderated by the fleet's (moderated_spread.h):
+// the prior from the wheels whose line is wear alone. A wheel with a drift fitted out keeps its
+// own jackknife: its drift terms lean on the late runs in a way the others' lines do not.
+void finish_wheels(FleetWear& fleet) {
+  std::vector<SerialSpread> plain;
+  for (const WheelWear& wheel : fleet.wheels) {
+    if (wheel.fit && !wheel.sensor_fault) plain.push_back(wheel.own_spread);
+  }
+  const InflationPrior prior = inflation_prior(plain);
+  for (WheelWear& wheel : fleet.wheels) {
+    if (!wheel.fit) continue;
+    finish_wheel(wheel, fleet,
+                 wheel.sensor_fault
+                     ? wheel.own_spread
+                     : moderated_spread(wheel.own_spread, prior, wheel.fit->rate_se));
+    mark_negative_rate(wheel);
+  }
 }
 
 }  // namespace
@@ -339,6 +363,7 @@ FleetWear estimate_fleet_wear(const std::vector<WheelHistory>& histories,
   for (const auto& [locomotive, sides] : locomotives) {
     estimate_locomotive(fleet, sides.first, sides.second, sensitivity);
   }
+  finish_wheels(fleet);
   std::stable_sort(fleet.wheels.begin(), fleet.wheels.end(),
                    [](const WheelWear& a, const WheelWear& b) {
                      return days_to_warning(a) < days_to_warning(b);

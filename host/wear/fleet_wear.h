@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "block_jackknife.h"
 #include "limit_forecast.h"
 #include "sensor_drift.h"
 #include "sensor_flag_latch.h"
@@ -44,9 +45,11 @@ struct WheelWear {
   std::optional<WearLineFit> fit;
   double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;  // 95 % interval
   // The rate's standard error (per 1000 km) allowing errors correlated from run to run, and
-  // Student t's degrees of freedom for it (block_jackknife.h): an interval at any level.
+  // Student t's degrees of freedom for it (the wheel's jackknife, block_jackknife.h, moderated by
+  // the fleet's, moderated_spread.h): an interval at any level.
   double rate_se = 0.0;
   int rate_dof = 0;
+  SerialSpread own_spread;  // the wheel's own jackknife, before the moderation
   double clearance_now_mm = 0.0;    // the fitted line at the last run (drift fitted out)
   double wear_now_mm = 0.0;         // clearance_now_mm - the sensor gap on a new flange
   LimitForecast warning, critical;  // 95 % intervals
