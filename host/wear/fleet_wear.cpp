@@ -14,6 +14,7 @@
 #include "locomotive_common_mode.h"
 #include "moderated_spread.h"
 #include "negative_rate.h"
+#include "new_flange_rates.h"
 #include "reprofiling_search.h"
 
 namespace flange::host {
@@ -57,12 +58,15 @@ std::map<std::size_t, std::string> recorded_boundaries(const std::vector<WearObs
 }
 
 // The first run after each recorded sensor replacement or wheelset move: a new segment (another
-// unit's offset, another flange) that is neither wear nor a reprofiling.
+// unit's offset, another flange) that is neither wear nor a reprofiling. `moves_only`: the
+// wheelset moves alone (another flange; a replaced sensor reads the same one).
 std::set<std::size_t> recorded_changes(const std::vector<WearObservation>& runs,
-                                       const std::vector<MaintenanceMark>& marks) {
+                                       const std::vector<MaintenanceMark>& marks,
+                                       bool moves_only = false) {
   std::set<std::size_t> changes;
   for (const MaintenanceMark& mark : marks) {
-    if (mark.kind != "sensor_replaced" && mark.kind != "wheelset_moved") continue;
+    const bool move = mark.kind == "wheelset_moved";
+    if (!move && (moves_only || mark.kind != "sensor_replaced")) continue;
     for (std::size_t k = 1; k < runs.size(); ++k) {
       if (runs[k - 1].day <= mark.day && runs[k].day > mark.day) changes.insert(k);
     }
@@ -195,13 +199,14 @@ struct AxlePair {
   WheelWear left, right;
   std::vector<double> yl, yr;  // the clearances
   std::vector<std::int64_t> run_id;
+  std::set<std::size_t> new_flanges;  // the first run on each flange after the first
 };
 
 AxlePair segmented_axle(const FleetWear& fleet, const WheelHistory& left,
                         const WheelHistory& right) {
   AxleRuns axle = align_runs(left, right);
   AxlePair pair{wheel_with_runs(left, std::move(axle.left)),
-                wheel_with_runs(right, std::move(axle.right)), {}, {}, {}};
+                wheel_with_runs(right, std::move(axle.right)), {}, {}, {}, {}};
   pair.yl = clearances(pair.left.runs);
   pair.yr = clearances(pair.right.runs);
   for (const WearObservation& run : pair.left.runs) pair.run_id.push_back(run.run_id);
@@ -213,6 +218,9 @@ AxlePair segmented_axle(const FleetWear& fleet, const WheelHistory& left,
   const auto recorded = recorded_boundaries(pair.left.runs, marks);
   segment_runs(pair.left, found, recorded, changes);
   segment_runs(pair.right, found, recorded, changes);
+  pair.new_flanges = recorded_changes(pair.left.runs, marks, true);
+  pair.new_flanges.insert(found.begin(), found.end());
+  for (const auto& [k, at] : recorded) pair.new_flanges.insert(k);
   return pair;
 }
 
@@ -238,13 +246,14 @@ std::map<std::int64_t, double> side_common_mode(const CommonMode& common, bool l
 }
 
 // The drift candidates of an axle, on what is left once the locomotive's shared part is taken
-// away, at this axle's own scale (locomotive_common_mode.h); none when the runs are too few to
-// tell a drift from wear.
+// away, at this axle's own scale (locomotive_common_mode.h), each new flange wearing at its own
+// rate (new_flange_rates.h); none when the runs are too few to tell a drift from wear.
 DriftCandidates axle_drift_candidates(const AxlePair& pair, const AxleSeries& both,
                                       const CommonMode& common, const SensitivityAt& sensitivity) {
   try {
     const auto shaped = [&](const WearSeries& series) {
-      return with_shared_shapes(series, pair.run_id, common);
+      return with_new_flange_rates(with_shared_shapes(series, pair.run_id, common),
+                                   pair.new_flanges);
     };
     return drift_candidates(
         shaped(without_common_mode(both.difference, pair.run_id, common.difference_mm)),

@@ -23,7 +23,8 @@ struct WearSeries {
   // slope in mm/V at that point: sensor_sensitivity.h); empty: 1, a drift in mm.
   std::vector<double> drift_scale;
   // Further regressors, each with a coefficient of its own and as long as y (the shapes the
-  // locomotive's axles share, at this axle's scale: locomotive_common_mode.h). Empty: none.
+  // locomotive's axles share, at this axle's scale: locomotive_common_mode.h; a new flange's
+  // own rate: new_flange_rates.h). Empty: none.
   std::vector<std::vector<double>> shared;
 };
 

@@ -21,6 +21,10 @@ struct Truth {
   std::optional<int> drift_from_day;           // the right sensor drifts from then ...
   double drift_mm_per_day = 0.01;              // ... at this rate
   std::optional<int> small_step_day;           // both flanges 0.45 mm thinner (< h) that day
+  // From the reprofiling or the wheelset move on, each flange wears at its rate times these (a
+  // new flange, another wheelset: its own rate).
+  double left_rate_after = 1.0, right_rate_after = 1.0;
+  std::optional<int> moved_day;  // the depot moved another wheelset in that day (recorded)
 };
 
 // One axle's 90 days: depot days every 6th, 150-750 km on the others, 0.005 mm of noise per run.
@@ -30,9 +34,20 @@ std::vector<WheelHistory> axle_history(const Truth& truth, std::uint32_t seed) {
   std::normal_distribution<double> noise(0.0, 0.005);
   WheelHistory left{{"L01", 1, "left", 0}, {}, {}}, right{{"L01", 1, "right", 1}, {}, {}};
   double odometer = 0.0, wear_left = 3.0, wear_right = 2.0;
+  double rate_left = truth.rate_left, rate_right = truth.rate_right;
   for (int day = 0; day < 90; ++day) {
     const double t = 20454.0 + day + 0.25;
     if (truth.reprofile_day && day == *truth.reprofile_day) wear_left = wear_right = 0.0;
+    if ((truth.reprofile_day && day == *truth.reprofile_day) ||
+        (truth.moved_day && day == *truth.moved_day)) {
+      rate_left *= truth.left_rate_after;
+      rate_right *= truth.right_rate_after;
+    }
+    if (truth.moved_day && day == *truth.moved_day) {
+      for (WheelHistory* wheel : {&left, &right}) {
+        wheel->maintenance.push_back({"", 20454.0 + day, odometer, "wheelset_moved"});
+      }
+    }
     if (truth.small_step_day && day == *truth.small_step_day) {
       wear_left -= 0.45;
       wear_right -= 0.45;
@@ -45,8 +60,8 @@ std::vector<WheelHistory> axle_history(const Truth& truth, std::uint32_t seed) {
     right.runs.push_back({day, "", t, odometer, 2.0 + wear_right + drift + noise(random)});
     const double km = km_of_day(random);
     odometer += km;
-    wear_left += truth.rate_left * km / 1000.0;
-    wear_right += truth.rate_right * km / 1000.0;
+    wear_left += rate_left * km / 1000.0;
+    wear_right += rate_right * km / 1000.0;
   }
   return {left, right};
 }
@@ -131,6 +146,37 @@ TEST(FleetWear, ADriftingSensorIsAFaultNotWear) {
   EXPECT_NEAR(right.sensor_fault->rate_mm_per_day, 0.01, 0.002);
   EXPECT_NEAR(right.rate_mm_per_1000km, 0.04, 0.004);  // the drift fitted out
   EXPECT_FALSE(left.sensor_fault.has_value());
+}
+
+// A lathe pass or a wheelset moved in from another axle gives the axle new flanges, which wear
+// at rates of their own (on the second fleet reality a thinner flange wears faster, so a new one
+// slower): the bend from the change on is no drift (new_flange_rates.h), and a sensor that starts
+// drifting a few runs after a lathe pass is still flagged.
+TEST(FleetWear, ANewFlangesOwnRateIsNoDriftButADriftJustAfterALathePassIs) {
+  Truth lathe;
+  lathe.reprofile_day = 45;
+  lathe.left_rate_after = 0.7;
+  lathe.right_rate_after = 0.9;
+  Truth moved;
+  moved.moved_day = 45;
+  moved.left_rate_after = 0.6;
+  moved.right_rate_after = 1.1;
+  for (const auto& [truth, name] : {std::pair{lathe, "reprofiled"}, {moved, "wheelset moved"}}) {
+    for (const std::uint32_t seed : {11u, 12u, 13u}) {
+      const FleetWear fleet = estimate_fleet_wear(axle_history(truth, seed), {});
+      for (const WheelWear& w : fleet.wheels) {
+        EXPECT_FALSE(w.sensor_fault.has_value()) << name << " seed " << seed << " " << w.wheel.side;
+        EXPECT_EQ(w.status, "ok") << name << " seed " << seed << " " << w.wheel.side;
+      }
+    }
+  }
+  Truth drift = lathe;
+  drift.drift_from_day = 48;
+  for (const std::uint32_t seed : {11u, 12u, 13u}) {
+    const FleetWear fleet = estimate_fleet_wear(axle_history(drift, seed), {});
+    EXPECT_TRUE(side(fleet, "right").sensor_fault.has_value()) << "seed " << seed;
+    EXPECT_FALSE(side(fleet, "left").sensor_fault.has_value()) << "seed " << seed;
+  }
 }
 
 // A six-axle locomotive whose axles all wander alike (a slow wave of 0.3 mm in every right
