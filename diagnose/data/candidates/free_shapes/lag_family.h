@@ -32,4 +32,26 @@ class LagFamily : public LinearFamily {
   static constexpr std::array<double, 3> kLeads = {30.0, 120.0, 480.0};
 };
 
+// A voltage that follows how far the recorded temperature has run ahead of its own lags, with a
+// scale of its own: A (S T - T), S a mix of the first-order lags of LagFamily and A volts per
+// degC, not the coil's dV/dT. What the coil's temperature lagging cannot make (its scale is the
+// sensor's sensitivity), but a housing or a mount that lags in the heat makes. Its summary is
+// the mix's mean delay (delay_s, the weights' own mean, whatever their sign) and A (v_per_c); it
+// has no tau_s, so the improved twin does not take it for the library's lag.
+class VoltsLagFamily : public LinearFamily {
+ public:
+  explicit VoltsLagFamily(const RecordedPart& calibration);
+  std::vector<std::string> names() const override;
+  Eigen::MatrixXd columns(const RecordedPart& part) const override;
+  void summarise(const Eigen::VectorXd& beta, const RecordedPart& calibration,
+                 std::map<std::string, double>& params) const override;
+  std::string describe(const Eigen::VectorXd& beta) const override;
+
+ private:
+  std::map<std::string, double> summary(const Eigen::VectorXd& beta) const;
+  // The calibration part's median |dV/dT|: the columns' scale, so that the ridge weighs this
+  // family's weights as it weighs LagFamily's.
+  double volts_per_c_scale_ = 0.0;
+};
+
 }  // namespace flange::diagnose::free_shapes
