@@ -16,6 +16,7 @@
 #include "hw_diagnose_command.h"
 #include "input_notes.h"
 #include "maintenance_command.h"
+#include "parallel_work.h"
 #include "printable_stream.h"
 #include "run_command.h"
 #include "simulate_command.h"
@@ -129,6 +130,8 @@ struct Subcommands {
       if (!diagnose_options.out.empty()) hw_diagnose_options.out = diagnose_options.out;
       return run_hw_diagnosis(hw_diagnose_options, out, err);
     }
+    // --jobs: the threads of the whole run, a diagnosis's or a self-test's (parallel_work.h).
+    if (selftest_options.run.jobs > 0) diagnose::set_worker_threads(selftest_options.run.jobs);
     if (selftest_options.selftest) {
       // --seed, --out and --bootstrap are the data layer's options; the self-test reads them.
       selftest_options.run.seed = diagnose_options.seed;

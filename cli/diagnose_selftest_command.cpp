@@ -73,7 +73,10 @@ void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
                   "--selftest: seconds per bench session, 600 to 6600 (default: the protocol's "
                   "own; --reality alt: a cap on its 3600-6600; third: on its 2400-5400)")
       ->check(CLI::Range(600.0, 6600.0));
-  diagnose.add_option("--jobs", options.run.jobs, "--selftest: worker threads, 1 to 64")
+  diagnose
+      .add_option("--jobs", options.run.jobs,
+                  "worker threads of the diagnosis (with --selftest, its cases run on them), 1 "
+                  "to 64 (default: the machine's cores)")
       ->check(CLI::Range(1, 64));
 }
 

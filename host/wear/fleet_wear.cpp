@@ -230,16 +230,20 @@ std::map<std::int64_t, double> side_common_mode(const CommonMode& common, bool l
 }
 
 // The drift candidates of an axle, on what is left once the locomotive's shared part is taken
-// away (locomotive_common_mode.h); none when the runs are too few to tell a drift from wear.
+// away, at this axle's own scale (locomotive_common_mode.h); none when the runs are too few to
+// tell a drift from wear.
 DriftCandidates axle_drift_candidates(const AxlePair& pair, const AxleSeries& both,
                                       const CommonMode& common, const SensitivityAt& sensitivity) {
   try {
+    const auto shaped = [&](const WearSeries& series) {
+      return with_shared_shapes(series, pair.run_id, common);
+    };
     return drift_candidates(
-        without_common_mode(both.difference, pair.run_id, common.difference_mm),
-        without_common_mode(series_of(pair.left, pair.yl, sensitivity), pair.run_id,
-                            side_common_mode(common, true)),
-        without_common_mode(series_of(pair.right, pair.yr, sensitivity), pair.run_id,
-                            side_common_mode(common, false)));
+        shaped(without_common_mode(both.difference, pair.run_id, common.difference_mm)),
+        shaped(without_common_mode(series_of(pair.left, pair.yl, sensitivity), pair.run_id,
+                                   side_common_mode(common, true))),
+        shaped(without_common_mode(series_of(pair.right, pair.yr, sensitivity), pair.run_id,
+                                   side_common_mode(common, false))));
   } catch (const std::invalid_argument&) {
     return {};
   }

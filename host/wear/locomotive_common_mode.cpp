@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "locomotive_common_mode.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "robust_location.h"
@@ -45,6 +46,22 @@ WearSeries without_common_mode(WearSeries series, const std::vector<std::int64_t
   for (std::size_t k = 0; k < run_id.size(); ++k) {
     const auto found = shared.find(run_id[k]);
     if (found != shared.end()) series.y[k] -= found->second;
+  }
+  return series;
+}
+
+WearSeries with_shared_shapes(WearSeries series, const std::vector<std::int64_t>& run_id,
+                              const CommonMode& common) {
+  for (const auto* shared : {&common.sum_mm, &common.difference_mm}) {
+    std::vector<double> shape;
+    for (const std::int64_t run : run_id) {
+      const auto found = shared->find(run);
+      shape.push_back(found != shared->end() ? found->second : 0.0);
+    }
+    // None of this axle's runs has it (a locomotive of fewer than kMinAxlesForCommonMode
+    // axles): a column of zeros would leave the fit without a covariance.
+    if (std::all_of(shape.begin(), shape.end(), [](double v) { return v == 0.0; })) continue;
+    series.shared.push_back(std::move(shape));
   }
   return series;
 }

@@ -41,4 +41,17 @@ CommonMode locomotive_common_mode(const std::vector<AxleSeries>& axles);
 WearSeries without_common_mode(WearSeries series, const std::vector<std::int64_t>& run_id,
                                const std::map<std::int64_t, double>& shared);
 
+// `series` with the two shared shapes (the sum's and the difference's, 0 where a run has none)
+// as regressors of their own (WearSeries::shared), each fitted with this axle's coefficient.
+// The route's curving, the season and a spell of faster wear multiply each wheel's own rate,
+// so an axle that wears faster than the locomotive's median carries more of the shared wander
+// than the median took away, and one that wears slower less: taken away at coefficient 1 the
+// rest is left as a bend that a drift search fits. Two shapes, because the route's hand of
+// curves moves the left and the right flanges' wear apart (left = (sum - difference) / 2,
+// right = (sum + difference) / 2: any mix of the two sides' wander is in their span). One
+// drifting sensor moves one axle, which the median does not follow, so the drift is not in them.
+// A shape none of the axle's runs has is left out.
+WearSeries with_shared_shapes(WearSeries series, const std::vector<std::int64_t>& run_id,
+                              const CommonMode& common);
+
 }  // namespace flange::host

@@ -28,7 +28,8 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
   const int segments = series.segment.empty()
                            ? 1
                            : *std::max_element(series.segment.begin(), series.segment.end()) + 1;
-  const Eigen::Index first_drift = segments + 1;
+  const Eigen::Index first_shared = segments + 1;
+  const Eigen::Index first_drift = first_shared + static_cast<Eigen::Index>(series.shared.size());
   const Eigen::Index params = first_drift + (drift_onset_day ? drift_degree : 0);
   if (n <= params) throw std::invalid_argument("fit_wear_line: too few points for the model");
   WearLineFit fit;
@@ -39,6 +40,9 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
     const auto i = static_cast<std::size_t>(k);
     x(k, series.segment[i]) = 1.0;
     x(k, segments) = series.km[i] - fit.km0;
+    for (std::size_t j = 0; j < series.shared.size(); ++j) {
+      x(k, first_shared + static_cast<Eigen::Index>(j)) = series.shared[j][i];
+    }
     const double since_onset =
         drift_onset_day ? std::max(0.0, series.day[i] - *drift_onset_day) : 0.0;
     const double scale = series.drift_scale.empty() ? 1.0 : series.drift_scale[i];

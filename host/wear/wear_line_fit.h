@@ -3,8 +3,9 @@
 //   y_k = a_seg(k) + r (km_k - km_0) [+ m_k (g tau_k (+ g2 tau_k^2))],  tau_k = max(0, day_k -
 //   onset)
 // one intercept per segment (a reprofiling starts a new one: the flange is new again), one rate
-// per km for the whole series (the wheel wears at its own rate whatever its flange's age), and
-// optionally a drift from an onset: a sensor's offset creeping with time, not distance, scaled
+// per km for the whole series (the wheel wears at its own rate whatever its flange's age),
+// optionally shared shapes s_j with coefficients c_j (WearSeries::shared), and optionally a
+// drift from an onset: a sensor's offset creeping with time, not distance, scaled
 // at each point by m_k (WearSeries::drift_scale).
 #pragma once
 
@@ -21,6 +22,9 @@ struct WearSeries {
   // Multiplies the drift terms point by point (a drift in volts read through the sensor's
   // slope in mm/V at that point: sensor_sensitivity.h); empty: 1, a drift in mm.
   std::vector<double> drift_scale;
+  // Further regressors, each with a coefficient of its own and as long as y (the shapes the
+  // locomotive's axles share, at this axle's scale: locomotive_common_mode.h). Empty: none.
+  std::vector<std::vector<double>> shared;
 };
 
 struct WearLineFit {
@@ -36,7 +40,7 @@ struct WearLineFit {
   int dof = 0;                             // points minus parameters
   double residual_sd = 0.0;                // sqrt(rss / dof)
   // (X^T X)^-1 scaled by the residual variance, in the parameter order
-  // [intercepts..., rate, drift]: the run-to-run scatter only (block_jackknife.h widens it for
+  // [intercepts..., rate, shared..., drift]: the run-to-run scatter only (block_jackknife.h widens it for
   // errors correlated from run to run).
   std::vector<std::vector<double>> covariance;
 };

@@ -5,12 +5,12 @@
 // at two risks; a run stored since makes the next plan re-estimate. On SQLite and on the
 // PostgreSQL server of the StorePostgres fixture.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <fstream>
 #include <sstream>
 
 #include "flange_in_process.h"
+#include "simulated_fleet_store.h"
 #include "store.h"
 #include "store_test_backends.h"
 #include "store_test_fixture.h"
@@ -34,13 +34,10 @@ std::string file_text(const fs::path& path) {
 class WearPlanStored : public ::testing::TestWithParam<StoreBackendUnderTest> {};
 
 TEST_P(WearPlanStored, ThePlanFromTheStoredEstimatesIsThePlanReEstimated) {
-  const std::string name = "wear_plan_stored_" + testing::backend_test_name(GetParam());
-  const fs::path dir = testing::fresh_test_dir(name + "_" + std::to_string(::getpid()));
-  const std::string store = testing::fresh_store_url(GetParam(), name);
-  const FlangeOutcome simulated =
-      run_flange_captured({"simulate", "--scenario", "fleet", "--locomotives", "2", "--days", "60",
-                           "--seed", "5", "--store", store, "--out", (dir / "fleet").string()});
-  ASSERT_EQ(simulated.status, 0) << simulated.err;
+  const auto fleet = testing::simulate_fleet_into_store("wear_plan_stored", GetParam(), 2, 60, 5);
+  ASSERT_EQ(fleet.simulated.status, 0) << fleet.simulated.err;
+  const fs::path& dir = fleet.dir;
+  const std::string& store = fleet.store;
   const auto plan = [&](const std::string& out, const std::string& risk) {
     const FlangeOutcome outcome =
         run_flange_captured({"wear", "--store", store, "--out", (dir / out).string(), "--plan",

@@ -9,13 +9,13 @@
 // PostgreSQL server of the StorePostgres fixture.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "flange_in_process.h"
+#include "simulated_fleet_store.h"
 #include "store.h"
 #include "store_test_backends.h"
 #include "store_test_fixture.h"
@@ -94,14 +94,11 @@ Wheels wheels_of_first_estimate(const fs::path& out) {
 class WearSensorFlag : public ::testing::TestWithParam<StoreBackendUnderTest> {};
 
 TEST_P(WearSensorFlag, IsLatchedOnceConfirmedHeldAndClearedByTheDepot) {
-  const std::string name = "wear_sensor_flag_" + testing::backend_test_name(GetParam());
-  const fs::path dir = testing::fresh_test_dir(name + "_" + std::to_string(::getpid()));
-  const std::string store = testing::fresh_store_url(GetParam(), name);
   // Two locomotives over 45 days, seed 11: a drifting sensor the search flags, none other.
-  const FlangeOutcome simulated =
-      run_flange_captured({"simulate", "--scenario", "fleet", "--locomotives", "2", "--days", "45",
-                           "--seed", "11", "--store", store, "--out", (dir / "fleet").string()});
-  ASSERT_EQ(simulated.status, 0) << simulated.err;
+  const auto fleet = testing::simulate_fleet_into_store("wear_sensor_flag", GetParam(), 2, 45, 11);
+  ASSERT_EQ(fleet.simulated.status, 0) << fleet.simulated.err;
+  const fs::path& dir = fleet.dir;
+  const std::string& store = fleet.store;
   const auto wear = [&](const std::string& out) {
     const FlangeOutcome outcome =
         run_flange_captured({"wear", "--store", store, "--out", (dir / out).string()});

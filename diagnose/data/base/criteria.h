@@ -115,8 +115,16 @@ inline constexpr double kLaterClaimAccuracy = 0.31;
 // A class the data cannot tell from another (indistinguishable_from): with nothing in the data to
 // weigh one against the other each is as likely, so a claim of either is right at most half the
 // time, whatever the base rate and inclusion say (mains pickup and mount motion folded onto one
-// line where the sensitivity dV/dd does not change: identify/aliased_lines.h).
-// Test: AliasedLines.ALineTheDataCannotSeparateNamesBothAtHalfConfidenceOrLess.
+// line where the sensitivity dV/dd does not change: identify/aliased_lines.h). A range
+// compression's family whose knee (or surface) does not move with temperature by more than the
+// noise tells (free_shapes::kLeastShareForATemperatureDependence) fits a curve of the voltage alone
+// over the top of the range, which the selection names a nonlinearity; a compression whose knee
+// stays put is that same curve, so such a pick names both (identify/fixed_knees.h): named a
+// nonlinearity alone, it was wrong on 3 of 3 third-reality claims at 0.90 (seeds 501-503, where
+// the compression's knee was fixed) and right on the alternative reality's 1.
+// Test: AliasedLines.ALineTheDataCannotSeparateNamesBothAtHalfConfidenceOrLess,
+// FixedKnees.ACompressionFamilyNamedANonlinearityNamesBothAtHalfConfidenceOrLess,
+// FixedKnees.AFixedKneeOnTheThirdRealityIsNamedAsEitherClass.
 inline constexpr double kMostConfidenceOfIndistinguishable = 0.5;
 // The most bias-type picks: three effects at once is as many as a bench pair's two sessions can
 // separate; more would fit the noise of one session.

@@ -10,6 +10,7 @@
 #include "aliased_lines.h"
 #include "criteria.h"
 #include "effect_classes.h"
+#include "fixed_knees.h"
 #include "hypothetical_session.h"
 #include "parameter_resolution.h"
 #include "series_statistics.h"
@@ -64,6 +65,9 @@ std::string tell_apart(const Parts& parts, const Pick& pick, const std::string& 
   const std::string fallback =
       fmt::format("to tell {} from {}: a session in which {} and {} do not move together", a.name,
                   b.name, a.follows, a.follows == b.follows ? "the other's shape" : b.follows);
+  if (pick.chosen().free_shape && pick.chosen().free_shape->also_of_class == other) {
+    return tell_fixed_knee_from_compression(parts, pick.finding, other);
+  }
   const Candidate* rival = library_candidate(pick.step, other);
   if (pick.chosen().free_shape || rival == nullptr) return fallback;
   const auto tells = [&](const TwinReplay& replay) {

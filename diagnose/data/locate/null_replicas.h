@@ -3,14 +3,15 @@
 // the estimated noise (on the recording's converter grid, if it has one).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
-#include <future>
 #include <vector>
 
 #include "criteria.h"
 #include "gaussian_source.h"
 #include "measurement_chain.h"
+#include "parallel_work.h"
 #include "recording_series.h"
 #include "white_noise.h"
 
@@ -29,24 +30,38 @@ using NullReplica =
 // twin (on the recording's converter grid, if it has one) of `sim_v` (drawn by `replica_of`,
 // when set), with its compensated and filtered clearance. The draws come from one stream in
 // replica order, so the floors do not depend on the threads; what each draw then costs (motion,
-// inversion, filter, alarms: most of it) runs two replicas at a time, so `each` must only write
-// to its replica's own place.
+// inversion, filter, alarms: most of it) runs as many replicas at a time as there are worker
+// threads (parallel_work.h), so `each` must only write to its replica's own place.
 template <class Each>
 void for_each_null_replica(const RecordingSeries& real, const std::vector<double>& sim_v,
                            const WhiteNoise& white, const sim::PolynomialSensorModel& model,
                            double fs_hz, std::uint64_t seed, Each each,
                            const NullReplica& replica_of = {}) {
-  constexpr std::size_t kInFlight = 2;
+  // Replicas run a batch at a time, while the next batch's normals are drawn beside them: a
+  // batch's normals and the next's are all that is held at once.
+  const int batch = worker_threads();
   sim::GaussianSource noise(seed);
-  std::vector<std::future<void>> running;
-  for (int replica = 0; replica < criteria::kNullReplicas; ++replica) {
-    std::vector<double> z(sim_v.size());
-    for (double& zi : z) zi = noise.standard_normal();
-    if (running.size() == kInFlight) {
-      running.front().get();
-      running.erase(running.begin());
+  const auto draw = [&](int count) {
+    std::vector<std::vector<double>> zs(static_cast<std::size_t>(count));
+    for (std::vector<double>& z : zs) {
+      z.resize(sim_v.size());
+      for (double& zi : z) zi = noise.standard_normal();
     }
-    running.push_back(std::async(std::launch::async, [&, replica, z = std::move(z)] {
+    return zs;
+  };
+  std::vector<std::vector<double>> next = draw(std::min(batch, criteria::kNullReplicas));
+  for (int first = 0; first < criteria::kNullReplicas; first += batch) {
+    const std::vector<std::vector<double>> zs = std::move(next);
+    const int count = static_cast<int>(zs.size());
+    const int next_count = std::clamp(criteria::kNullReplicas - first - count, 0, batch);
+    // Piece 0 draws the next batch; piece k > 0 runs replica first + k - 1.
+    run_in_parallel(count + 1, 0, [&](int piece) {
+      if (piece == 0) {
+        next = draw(next_count);
+        return;
+      }
+      const int replica = first + piece - 1;
+      const std::vector<double>& z = zs[static_cast<std::size_t>(piece - 1)];
       std::vector<double> noisy_v(sim_v.size());
       if (replica_of) {
         noisy_v = replica_of(sim::derive_seed(seed, 1000 + static_cast<std::uint64_t>(replica)), z);
@@ -55,9 +70,8 @@ void for_each_null_replica(const RecordingSeries& real, const std::vector<double
       }
       const std::vector<double> d_noisy = clearance_of(model, noisy_v, real.temp_c);
       each(static_cast<std::size_t>(replica), noisy_v, d_noisy, measurement_filter(d_noisy, fs_hz));
-    }));
+    });
   }
-  for (std::future<void>& r : running) r.get();
 }
 
 }  // namespace flange::diagnose

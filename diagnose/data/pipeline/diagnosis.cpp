@@ -15,6 +15,7 @@
 #include "diagnosis_detail.h"
 #include "effect_classes.h"
 #include "final_fit.h"
+#include "fixed_knees.h"
 #include "how_far.h"
 #include "improved_twin.h"
 #include "inclusion.h"
@@ -156,6 +157,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   measure_picks_in_final_fit(parts, selection);
   selection = resolve_parameters(parts, std::move(selection));
   judge_aliased_lines(parts, selection);
+  judge_fixed_knees(selection);
   const TwinNoise reported_noise = noise_after_selection(noise, selection);
   if (selection.reestimated_noise) so_far.noise_std_v = selection.noise_v;
   // Signatures: the noise-type classes; a converter that reproduces the codes joins the model.

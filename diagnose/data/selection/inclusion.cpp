@@ -1,35 +1,31 @@
 // SPDX-License-Identifier: MIT
 #include "inclusion.h"
 
-#include <future>
 #include <limits>
 
 #include "final_fit.h"
+#include "parallel_work.h"
 
 namespace flange::diagnose {
 namespace {
 
 // The share of resamples on which the final fit without each pick leaves more than with it; each
-// pick's replay and resamples in its own thread.
+// pick's replay and resamples a piece of parallel work.
 void measure_need_in_final_fit(const Parts& parts, Selection& selection) {
   const std::vector<bool> all(selection.picks.size(), true);
   const std::vector<double> with_all =
       selection.resamples.mean_squares(heldout_error_with(parts, selection, all));
-  std::vector<std::future<double>> shares;
-  for (std::size_t j = 0; j < selection.picks.size(); ++j) {
-    shares.push_back(std::async(std::launch::async, [&, j] {
-      std::vector<bool> kept = all;
-      kept[j] = false;
-      const std::vector<double> without =
-          selection.resamples.mean_squares(heldout_error_with(parts, selection, kept));
-      int needed = 0;
-      for (std::size_t r = 0; r < without.size(); ++r) needed += without[r] > with_all[r] ? 1 : 0;
-      return static_cast<double>(needed) / static_cast<double>(selection.resamples.size());
-    }));
-  }
-  for (std::size_t j = 0; j < shares.size(); ++j) {
-    selection.picks[j].finding.inclusion = shares[j].get();
-  }
+  const std::vector<double> shares =
+      parallel_map<double>(selection.picks.size(), [&](std::size_t j) {
+        std::vector<bool> kept = all;
+        kept[j] = false;
+        const std::vector<double> without =
+            selection.resamples.mean_squares(heldout_error_with(parts, selection, kept));
+        int needed = 0;
+        for (std::size_t r = 0; r < without.size(); ++r) needed += without[r] > with_all[r] ? 1 : 0;
+        return static_cast<double>(needed) / static_cast<double>(selection.resamples.size());
+      });
+  for (std::size_t j = 0; j < shares.size(); ++j) selection.picks[j].finding.inclusion = shares[j];
 }
 
 }  // namespace
@@ -63,17 +59,12 @@ void measure_inclusion(const Parts& parts, Selection& selection) {
     return;
   }
   const std::vector<Pick>& picks = selection.picks;
-  std::vector<std::future<double>> shares;
-  for (std::size_t s = 0; s < picks.size(); ++s) {
+  const std::vector<double> shares = parallel_map<double>(picks.size(), [&](std::size_t s) {
     const std::vector<double>& before =
         s == 0 ? selection.ho_gap : picks[s - 1].chosen().heldout_error;
-    shares.push_back(std::async(std::launch::async, [&, s] {
-      return share_of_wins(picks[s].step, before, selection.resamples);
-    }));
-  }
-  for (std::size_t s = 0; s < shares.size(); ++s) {
-    selection.picks[s].finding.inclusion = shares[s].get();
-  }
+    return share_of_wins(picks[s].step, before, selection.resamples);
+  });
+  for (std::size_t s = 0; s < shares.size(); ++s) selection.picks[s].finding.inclusion = shares[s];
 }
 
 }  // namespace flange::diagnose

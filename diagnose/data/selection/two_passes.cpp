@@ -2,10 +2,10 @@
 #include "two_passes.h"
 
 #include <algorithm>
-#include <future>
 
 #include "criteria.h"
 #include "forward.h"
+#include "parallel_work.h"
 #include "refinement.h"
 #include "series_statistics.h"
 
@@ -36,8 +36,8 @@ bool free_pass_wins(const Selection& library, const Selection& free, bool severa
   const double sigma = std::min(library.noise_v, free.noise_v);
   const double margin = criteria::kPassComparisonMargin * sigma * sigma;
   const bool leaves_less = left * left - free_left * free_left >= margin;
-  const bool both_leave_the_noise = left <= criteria::kExplainedRatio * sigma &&
-                                    free_left <= criteria::kExplainedRatio * sigma;
+  const bool both_leave_the_noise =
+      left <= criteria::kExplainedRatio * sigma && free_left <= criteria::kExplainedRatio * sigma;
   const bool fewer_classes = !free.picks.empty() && free.picks.size() < library.picks.size() &&
                              (free_left * free_left - left * left < margin || both_leave_the_noise);
   return leaves_less || (several_classes && fewer_classes);
@@ -54,15 +54,14 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
     return rms_of(selection.current_error) <= criteria::kExplainedRatio * selection.noise_v &&
            !several_classes;
   };
-  if (explained_by_one_class(library)) return with_shapes_where_they_gain(parts, std::move(library));
+  if (explained_by_one_class(library))
+    return with_shapes_where_they_gain(parts, std::move(library));
   // The refinement and the free pass do not depend on each other: they run at once, and the
   // refined selection is taken alone when it explains with one class (the free pass then unused).
-  std::future<Selection> refining =
-      std::async(std::launch::async, with_shapes_where_they_gain, std::cref(parts), library);
   Selection free = start;
   free.free_shapes = true;
-  select_bias_effects(parts, rounds, options, cal_grid, free);
-  library = refining.get();
+  run_both([&] { library = with_shapes_where_they_gain(parts, library); },
+           [&] { select_bias_effects(parts, rounds, options, cal_grid, free); });
   if (explained_by_one_class(library)) return library;
   return free_pass_wins(library, free, several_classes) ? free : library;
 }

@@ -37,7 +37,9 @@ FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const FreeShapeInputs
   shape->search(in.calibration, in.cal_gap_v);
   FreeShapeFit fit = shape->fit(in);
   fit.family = family;
-  if (shape->shape_is_function_of_clearance_alone()) {
+  if (shape->shape_is_function_of_clearance_alone() &&
+      family.effect != class_of_a_function_of_clearance_alone()) {
+    fit.also_of_class = family.effect;
     fit.family.effect = class_of_a_function_of_clearance_alone();
   }
   return fit;

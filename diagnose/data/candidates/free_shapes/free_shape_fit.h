@@ -85,6 +85,11 @@ struct FreeShapeFit {
   // Summary parameters whose search ended on an edge of its range: key -> "<= x" or ">= x"
   // (LinearFamily::search_edges).
   std::map<std::string, std::string> search_edges;
+  // The class whose family made the shape when the shape names another: a range compression's
+  // family whose knee (or surface) does not move with temperature is a curve of V alone above a
+  // fixed voltage, named a nonlinearity, and no data tell it from a compression whose knee stays
+  // put (identify/fixed_knees.h). Empty when the family's class is the one named.
+  std::string also_of_class;
 };
 
 // What a family is fitted to: the two parts, the gap the modelled effects leave on each, and

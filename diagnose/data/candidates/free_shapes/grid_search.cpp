@@ -3,6 +3,8 @@
 
 #include <utility>
 
+#include "parallel_work.h"
+
 namespace flange::diagnose::free_shapes {
 
 std::vector<double> stepped_axis(double lo, double hi, double step) {
@@ -42,6 +44,17 @@ bool try_point(const std::vector<double>& at, const Objective& value, SearchPoin
 void search_points(const std::vector<std::vector<double>>& points, const Objective& value,
                    SearchPoint& best) {
   for (const std::vector<double>& at : points) try_point(at, value, best);
+}
+
+void search_points_at_once(const std::vector<std::vector<double>>& points, const Objective& value,
+                           SearchPoint& best) {
+  const std::vector<double> values =
+      parallel_map<double>(points.size(), [&](std::size_t i) { return value(points[i]); });
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!(values[i] < best.value)) continue;
+    best.value = values[i];
+    best.at = points[i];
+  }
 }
 
 std::vector<PatternMove> coordinate_moves(std::size_t dims) {

@@ -33,6 +33,12 @@ std::vector<std::vector<double>> lattice(const std::vector<std::vector<double>>&
 void search_points(const std::vector<std::vector<double>>& points, const Objective& value,
                    SearchPoint& best);
 
+// search_points with the points' values worked out over the worker threads (parallel_work.h)
+// and then taken in the order given: the same point as search_points, for an objective that
+// writes nothing it shares (a family that keeps its state in the objective uses search_points).
+void search_points_at_once(const std::vector<std::vector<double>>& points, const Objective& value,
+                           SearchPoint& best);
+
 // One move of a pattern search: from the point `from` by `step`, the point to try, or nothing
 // where the move leaves the search's domain.
 using PatternMove =

@@ -34,9 +34,9 @@ double refine_line(const std::vector<double>& t, const std::vector<double>& gap,
     for (std::size_t i = 0; i < gap.size(); ++i) left += (gap[i] - tone[i]) * (gap[i] - tone[i]);
     return left;
   };
-  search_points(lattice({stepped_axis(nominal_hz - kMainsSearchHz,
-                                      nominal_hz + kMainsSearchHz + 1e-9, kMainsStepHz)}),
-                left_by, best);
+  search_points_at_once(lattice({stepped_axis(nominal_hz - kMainsSearchHz,
+                                              nominal_hz + kMainsSearchHz + 1e-9, kMainsStepHz)}),
+                        left_by, best);
   return best.at[0];
 }
 

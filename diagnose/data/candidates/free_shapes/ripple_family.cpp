@@ -20,7 +20,7 @@ void RippleFamily::search(const RecordedPart& calibration, const std::vector<dou
   const auto sse = [&](double per_mm) { return fitted_sse(d, gap_v, per_mm); };
   const double first = 2.0 / range, last = 1.0 / kShortestRippleMm, step = 0.25 / range;
   SearchPoint lattice_best{{first}};
-  search_points(
+  search_points_at_once(
       lattice({stepped_axis(first, last, step)}),
       [&](const std::vector<double>& at) { return sse(at[0]); }, lattice_best);
   const double best = lattice_best.at[0];

@@ -33,12 +33,15 @@ void SkewFamily::search(const RecordedPart& calibration, const std::vector<doubl
     }
     return sse;
   };
-  const SearchPoint best =
-      grid_search(lattice({stepped_axis(-kMaxSkewS, kMaxSkewS + 1e-9, kLatticeStep),
-                           stepped_axis(-kMaxDriftSPerHour, kMaxDriftSPerHour + 1e-9, kLatticeStep),
-                           {0.0}}),
-                  {std::begin(kPatternSteps), std::end(kPatternSteps)}, coordinate_moves(3), sse_of,
-                  {{law_[0], law_[1], law_[2]}});
+  // The lattice's points over the worker threads, then the pattern's steps one by one.
+  SearchPoint best{{law_[0], law_[1], law_[2]}};
+  search_points_at_once(
+      lattice({stepped_axis(-kMaxSkewS, kMaxSkewS + 1e-9, kLatticeStep),
+               stepped_axis(-kMaxDriftSPerHour, kMaxDriftSPerHour + 1e-9, kLatticeStep),
+               {0.0}}),
+      sse_of, best);
+  refine_by_pattern({std::begin(kPatternSteps), std::end(kPatternSteps)}, coordinate_moves(3),
+                    sse_of, best);
   law_ = {best.at[0], best.at[1], best.at[2]};
 }
 
