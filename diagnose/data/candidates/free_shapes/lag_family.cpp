@@ -7,13 +7,14 @@
 #include <cmath>
 
 #include "family_makers.h"
+#include "first_order_lag.h"
 #include "ridge_solve.h"
 
 namespace flange::diagnose::free_shapes {
 
 std::vector<std::string> LagFamily::names() const {
   std::vector<std::string> out;
-  for (double tau : kLags) out.push_back(fmt::format("weight_lag_{:g}s", tau));
+  for (double tau : kLags) out.push_back(lag_weight_name(tau));
   for (double lead : kLeads) out.push_back(fmt::format("weight_advance_{:g}s", lead));
   return out;
 }
@@ -71,6 +72,10 @@ double LagFamily::mean_delay_s(const Eigen::VectorXd& beta) const {
   return delay;
 }
 
+std::string LagFamily::lag_weight_name(double tau_s) {
+  return fmt::format("weight_lag_{:g}s", tau_s);
+}
+
 std::unique_ptr<Family> make_lag(const RecordedPart&) { return std::make_unique<LagFamily>(); }
 
 namespace {
@@ -90,7 +95,7 @@ VoltsLagFamily::VoltsLagFamily(const RecordedPart& calibration)
 
 std::vector<std::string> VoltsLagFamily::names() const {
   std::vector<std::string> out;
-  for (double tau : LagFamily::kLags) out.push_back(fmt::format("weight_lag_{:g}s", tau));
+  for (double tau : LagFamily::kLags) out.push_back(LagFamily::lag_weight_name(tau));
   return out;
 }
 
@@ -100,13 +105,10 @@ Eigen::MatrixXd VoltsLagFamily::columns(const RecordedPart& part) const {
   const std::size_t n = t.size();
   Eigen::MatrixXd a = matrix(n, LagFamily::kLags.size());
   for (std::size_t k = 0; k < LagFamily::kLags.size(); ++k) {
-    double lagged = temp.empty() ? 0.0 : temp.front();
+    sim::FirstOrderLag lag(LagFamily::kLags[k]);
     for (std::size_t i = 0; i < n; ++i) {
-      if (i > 0) {
-        lagged += (temp[i] - lagged) * (1.0 - std::exp(-(t[i] - t[i - 1]) / LagFamily::kLags[k]));
-      }
       a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) =
-          volts_per_c_scale_ * (lagged - temp[i]);
+          volts_per_c_scale_ * (lag.step(t[i], temp[i]) - temp[i]);
     }
   }
   return a;

@@ -25,6 +25,8 @@ class LagFamily : public LinearFamily {
   std::string describe(const Eigen::VectorXd& beta) const override;
 
   double mean_delay_s(const Eigen::VectorXd& beta) const;
+  // The name of the free value that weighs the lag of `tau_s` ("weight_lag_240s").
+  static std::string lag_weight_name(double tau_s);
 
   // Time constants and advances a factor of four apart, 30 s to 16 min: the bench's heating and
   // cooling take tens of minutes, so shorter ones look alike and longer ones exceed a session.
@@ -37,7 +39,9 @@ class LagFamily : public LinearFamily {
 // degC, not the coil's dV/dT. What the coil's temperature lagging cannot make (its scale is the
 // sensor's sensitivity), but a housing or a mount that lags in the heat makes. Its summary is
 // the mix's mean delay (delay_s, the weights' own mean, whatever their sign) and A (v_per_c); it
-// has no tau_s, so the improved twin does not take it for the library's lag.
+// has no tau_s, so the improved twin does not take it for the library's lag but holds it as the
+// twin's thermal_lag_volts with the same lags (candidates/class_fits.cpp, lag_member). The lags
+// are the twin's (sim::FirstOrderLag), so that the twin replays the shape as fitted.
 class VoltsLagFamily : public LinearFamily {
  public:
   explicit VoltsLagFamily(const RecordedPart& calibration);
