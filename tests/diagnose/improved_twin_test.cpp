@@ -122,7 +122,7 @@ Rediagnosis rediagnose(const SelftestCaseSpec& spec) {
   DiagnoseOptions options;
   options.bootstrap_rounds = 20;
   const DiagnosisResult first = diagnose_in_detail(rec.calibration, rec.heldout, options);
-  Rediagnosis out{spec.index, spec.truth.front().name, status_text(first.diagnosis.status), "", {}};
+  Rediagnosis out{spec.index, spec.truth.front().name, status_text(first.diagnosis.status), "", {}, {}, {}};
   if (first.diagnosis.status != Status::kExplained) return out;
   for (const HeldFinding& f : first.improved_twin.findings) out.held_as.push_back(reasons::held_as_text(f.held_as));
   for (const EffectFinding& f : first.diagnosis.effects) out.found.push_back(f.name);
