@@ -15,8 +15,8 @@ const std::vector<EffectSpec>& effect_catalogue() {
   static const std::vector<EffectSpec> catalogue = {
       vibration_effect(),         thermal_lag_effect(),       nonlinearity_effect(),
       temp_gain_drift_effect(),   temp_offset_drift_effect(), ageing_drift_effect(),
-      range_compression_effect(), mains_pickup_effect(),      channel_skew_effect(),
-      tabulated_effect(),         adc_quantization_effect(),
+      range_compression_effect(), thermal_lag_volts_effect(), mains_pickup_effect(),
+      channel_skew_effect(),      tabulated_effect(),         adc_quantization_effect(),
   };
   return catalogue;
 }

@@ -245,6 +245,7 @@ TEST(Diagnose, ReplayMatchesTheTwinSampleForSample) {
   const std::vector<sim::EffectSettings> effects = {
       sim::make_effect_settings("thermal_lag", {{"tau_s", 40}}, "test"),
       sim::make_effect_settings("nonlinearity", {}, "test"),
+      sim::make_effect_settings("thermal_lag_volts", {{"v_per_c", 0.03}}, "test"),
       sim::make_effect_settings("mains_pickup", {}, "test")};
   RecordingSeries recording;
   sim::TwinConfig config;

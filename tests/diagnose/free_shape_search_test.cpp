@@ -261,6 +261,36 @@ TEST(LagSearch, TheMeanDelayHasTheKnownSignAndSize) {
   EXPECT_NEAR(fit_on_itself(reading, bench, reading_lags).params.at("tau_s"), -120.0, 12.0);
 }
 
+// A voltage of -0.015 V per degC of the recorded temperature's lead over its own 240 s lag,
+// several times what the coil's dV/dT would make of the same lag: the volts family finds the
+// amplitude and the delay; the coil's family, whose scale is dV/dT, leaves more of it.
+TEST(VoltsLagSearch, FindsTheAmplitudeAndDelayTheCoilsScaleCannotTake) {
+  const SyntheticBench bench;
+  const std::vector<double>& t = bench.series().t_s;
+  const std::vector<double>& temp = bench.series().temp_c;
+  std::vector<double> gap = white_noise(bench.size(), 0.005, 9);
+  std::vector<double> effect(bench.size());
+  double lagged = temp.front();
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (i > 0) lagged += (temp[i] - lagged) * (1.0 - std::exp(-(t[i] - t[i - 1]) / 240.0));
+    effect[i] = -0.015 * (temp[i] - lagged);
+  }
+  gap = plus(gap, effect);
+  VoltsLagFamily volts(bench.part());
+  const FreeShapeFit found = fit_on_itself(volts, bench, gap);
+  EXPECT_NEAR(found.params.at("v_per_c"), 0.015, 0.0015);  // the column is (S T - T)
+  EXPECT_NEAR(found.params.at("delay_s"), 240.0, 24.0);
+  EXPECT_EQ(found.params.count("tau_s"), 0u) << "no library lag member to hold";
+  const auto left = [&](const FreeShapeFit& fit) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < gap.size(); ++i) sum += std::pow(gap[i] - fit.cal_voltage_v[i], 2);
+    return std::sqrt(sum / static_cast<double>(gap.size()));
+  };
+  LagFamily coil;
+  EXPECT_LT(left(found), 0.0055);  // the noise
+  EXPECT_GT(left(fit_on_itself(coil, bench, gap)), left(found));
+}
+
 // A gain of 0.002 per degC about a pivot of 4 V.
 TEST(PivotGainSearch, FindsAKnownPivot) {
   const SyntheticBench bench;

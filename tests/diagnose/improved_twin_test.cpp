@@ -113,6 +113,8 @@ struct Rediagnosis {
   int index = 0;
   std::string truth, first, second;
   std::vector<std::string> held_as;  // how the improved twin holds each finding
+  std::vector<std::string> found;    // the first diagnosis's findings
+  sim::TwinConfig twin;              // the improved twin, as read back from its file
 };
 
 Rediagnosis rediagnose(const SelftestCaseSpec& spec) {
@@ -120,11 +122,13 @@ Rediagnosis rediagnose(const SelftestCaseSpec& spec) {
   DiagnoseOptions options;
   options.bootstrap_rounds = 20;
   const DiagnosisResult first = diagnose_in_detail(rec.calibration, rec.heldout, options);
-  Rediagnosis out{spec.index, spec.truth.front().name, status_text(first.diagnosis.status), "", {}};
+  Rediagnosis out{spec.index, spec.truth.front().name, status_text(first.diagnosis.status), "", {}, {}, {}};
   if (first.diagnosis.status != Status::kExplained) return out;
   for (const HeldFinding& f : first.improved_twin.findings) out.held_as.push_back(reasons::held_as_text(f.held_as));
+  for (const EffectFinding& f : first.diagnosis.effects) out.found.push_back(f.name);
   // Through the twin file, as `flange diagnose --twin twin.json` reads it.
   options.twin = sim::twin_from_json(sim::twin_to_json(first.improved_twin.twin), "twin.json");
+  out.twin = options.twin;
   out.second = status_text(diagnose_in_detail(rec.calibration, rec.heldout, options).diagnosis.status);
   return out;
 }
@@ -188,6 +192,27 @@ TEST(ImprovedTwin, AFreeShapeIsHeldAsATableAndRediagnosisLeavesNone) {
   const Rediagnosis r = rediagnose(temperature_bump_case());
   ASSERT_EQ(r.first, "explained");
   EXPECT_NE(std::find(r.held_as.begin(), r.held_as.end(), "table"), r.held_as.end());
+  EXPECT_EQ(r.second, "none");
+}
+
+// A housing that lags in the heat and pulls the output by 0.03 V per degC of the ambient's lead
+// over its 300 s lag: several times what the coil's dV/dT makes of a lag, so only the thermal
+// lag's family in volts takes it. The improved twin holds it as thermal_lag_volts (the family's
+// lags, weighed as fitted), and re-diagnosis against that twin leaves nothing.
+TEST(ImprovedTwin, ALagInVoltsIsHeldAsTheTwinsVoltsLagAndRediagnosisLeavesNone) {
+  SelftestCaseSpec spec;
+  spec.index = 1;
+  spec.noise_seed = 7;
+  spec.truth = {sim::make_effect_settings("thermal_lag_volts",
+                                          {{"v_per_c", 0.03}, {"tau_1_s", 300.0}}, "test")};
+  const Rediagnosis r = rediagnose(spec);
+  ASSERT_EQ(r.first, "explained");
+  EXPECT_EQ(r.found, std::vector<std::string>{"thermal_lag"});
+  const auto held = std::find_if(r.twin.effects.begin(), r.twin.effects.end(),
+                                 [](const sim::EffectSettings& e) { return e.name == "thermal_lag_volts"; });
+  ASSERT_NE(held, r.twin.effects.end()) << "the twin does not hold the lag in volts";
+  EXPECT_NEAR(held->params.at("v_per_c"), 0.03, 0.006);
+  EXPECT_EQ(r.held_as, std::vector<std::string>{"library effect and table"});
   EXPECT_EQ(r.second, "none");
 }
 

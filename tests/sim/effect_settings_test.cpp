@@ -24,11 +24,11 @@ std::string error_of(const std::function<void()>& action) {
   return "";
 }
 
-TEST(EffectCatalogue, HoldsTheElevenEffectsInChainOrderWithSaneDefaults) {
+TEST(EffectCatalogue, HoldsTheTwelveEffectsInChainOrderWithSaneDefaults) {
   const std::vector<std::string> expected = {
-      "vibration",         "thermal_lag",  "nonlinearity",      "temp_gain_drift",
-      "temp_offset_drift", "ageing_drift", "range_compression", "mains_pickup",
-      "channel_skew",      "tabulated",    "adc_quantization"};
+      "vibration",         "thermal_lag",       "nonlinearity",      "temp_gain_drift",
+      "temp_offset_drift", "ageing_drift",      "range_compression", "thermal_lag_volts",
+      "mains_pickup",      "channel_skew",      "tabulated",         "adc_quantization"};
   ASSERT_EQ(effect_catalogue().size(), expected.size());
   ChainStage previous = ChainStage::kMount;
   for (std::size_t i = 0; i < expected.size(); ++i) {

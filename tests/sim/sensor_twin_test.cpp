@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -147,6 +149,44 @@ TEST(SensorTwin, ThermalLagMakesTheCoilAndThermocoupleDisagree) {
   EXPECT_NE(now.voltage_v, direct.step({1.0, 8.0, 90.0}).voltage_v);
   const Reading later = lagged.step({2000.0, 8.0, 90.0});
   EXPECT_NEAR(later.voltage_v, direct.step({2000.0, 8.0, 90.0}).voltage_v, 1e-9);
+}
+
+// A housing that lags in the heat: V += A (sum_k w_k y_k - T), y_k the ambient through a lag of
+// tau_k. The oven ramps at b from rest until t1, then holds: each lag trails by
+// b tau (1 - exp(-t / tau)) on the ramp and closes on the held value as exp(-(t - t1) / tau)
+// after it, so the recording is known in closed form at every sample.
+TEST(SensorTwin, AVoltsLagAddsItsOwnVoltsPerDegreeOfAMixOfLagsBehindTheAmbient) {
+  const double a = -0.035, b = 0.05, t1 = 600.0, fs_hz = 6.0;
+  const std::array<double, 3> tau = {240.0, 60.0, 960.0}, w = {0.7, 0.5, -0.2};
+  TwinConfig config = noiseless();
+  config.effects = {make_effect_settings("thermal_lag_volts",
+                                         {{"v_per_c", a},
+                                          {"tau_1_s", tau[0]},
+                                          {"weight_1", w[0]},
+                                          {"tau_2_s", tau[1]},
+                                          {"weight_2", w[1]},
+                                          {"tau_3_s", tau[2]},
+                                          {"weight_3", w[2]}},
+                                         "test")};
+  SensorTwin lagged(config, 1), direct(noiseless(), 1);
+  double largest_v = 0.0;
+  for (int n = 0; n <= static_cast<int>(1800 * fs_hz); ++n) {
+    const double t = n / fs_hz;
+    const double temp_c = 20.0 + b * std::min(t, t1);
+    double mix = 0.0;
+    for (std::size_t k = 0; k < tau.size(); ++k) {
+      const double at_t1 = 20.0 + b * t1 - b * tau[k] * (1.0 - std::exp(-t1 / tau[k]));
+      const double y = t <= t1 ? temp_c - b * tau[k] * (1.0 - std::exp(-t / tau[k]))
+                               : temp_c - (temp_c - at_t1) * std::exp(-(t - t1) / tau[k]);
+      mix += w[k] * y;
+    }
+    const Reading with = lagged.step({t, 5.0, temp_c});
+    const Reading without = direct.step({t, 5.0, temp_c});
+    ASSERT_NEAR(with.voltage_v - without.voltage_v, a * (mix - temp_c), 1e-9) << "t = " << t;
+    EXPECT_EQ(with.temp_c, temp_c);  // the thermocouple reads the ambient
+    largest_v = std::max(largest_v, std::abs(with.voltage_v - without.voltage_v));
+  }
+  EXPECT_GT(largest_v, 0.15);  // at t1 the mix trails the ambient by 4.8 degC: 0.17 V
 }
 
 TEST(SensorTwin, RejectsAnEffectTwiceAndBadNoise) {

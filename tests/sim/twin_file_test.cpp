@@ -43,6 +43,8 @@ TwinConfig every_effect_retuned() {
       make_effect_settings("adc_quantization", {{"bits", 14}}, "t"),
       make_effect_settings("channel_skew", {{"skew_s", -0.4}}, "t"),
       make_effect_settings("mains_pickup", {{"mains_hz", 60}, {"phase_deg", 1.0 / 3.0}}, "t"),
+      make_effect_settings("thermal_lag_volts", {{"v_per_c", -0.02}, {"weight_1", 0.75},
+                                                 {"weight_2", 0.25}, {"tau_3_s", 1200}}, "t"),
       make_effect_settings("range_compression", {{"onset_c", 45}}, "t"),
       make_effect_settings("ageing_drift", {{"rate_v_per_day", 0.123456789012345}}, "t"),
       make_effect_settings("temp_offset_drift", {{"reference_c", 22}}, "t"),
@@ -122,6 +124,18 @@ TEST(TwinFile, BadFilesAreNamedWithTheFieldAndRange) {
       << load_error(R"({"noise": {"voltage_std_v": 0.1, "rounding_lsb_v": 0.5}})");
   EXPECT_NE(load_error(R"({"noise": {"rounding_lsb_v": -0.1}})").find("noise.rounding_lsb_v"),
             std::string::npos);
+  // A volts lag: each value within its range, the weights summing to 1.
+  EXPECT_NE(load_error(R"({"effects": [{"name": "thermal_lag_volts", "params": {"tau_2_s": 0}}]})")
+                .find("bad.json: effects[0]: tau_2_s = 0 is outside its valid range [1, 3600] s"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"effects": [{"name": "thermal_lag_volts", "params": {"v_per_c": 2}}]})")
+                .find("bad.json: effects[0]: v_per_c = 2 is outside its valid range [-1, 1] V/degC"),
+            std::string::npos);
+  const std::string unweighed = load_error(
+      R"({"effects": [{"name": "thermal_lag_volts", "params": {"weight_1": 0.5}}]})");
+  EXPECT_NE(unweighed.find("bad.json: effects[0]: weight_1 + weight_2 + weight_3 = 0.5 must be 1"),
+            std::string::npos)
+      << unweighed;
 }
 
 TEST(TwinFile, ARoundingHeldInTheNoiseIsSavedOnlyWhenSet) {

@@ -24,6 +24,12 @@ using LibraryFitter = EffectFit (*)(const std::string& name, const TwinReplay& r
                                     const std::vector<double>& real_v,
                                     const std::vector<sim::EffectSettings>& modelled);
 
+// The twin's effect that holds a free shape, with its parameters.
+struct ShapeMember {
+  std::string effect;  // in sim::effect_catalogue()
+  sim::ParamValues params;
+};
+
 struct ClassFit {
   std::string name;  // a class of effect_classes()
   // The library fit over the class's search ranges (or a class's own closed form).
@@ -33,9 +39,10 @@ struct ClassFit {
   std::vector<FreeShapeFamily> families{};
   // A free shape's library member where its summary's keys are not the effect's parameters (a
   // skew's law: the effect's skew_s is its value at the session's start, the summary's the
-  // mid-session one): the parameters, or nothing where the shape does what the effect cannot.
-  // Unset: the summary's keys (improved_twin/improved_twin.cpp, library_member).
-  std::optional<sim::ParamValues> (*member_of_shape)(const FreeShapeFit& shape) = nullptr;
+  // mid-session one) or the member is another effect of the twin (a lag in volts): the effect
+  // and its parameters, or nothing where the shape does what the twin cannot. Unset: the class's
+  // own effect with the summary's keys (improved_twin/improved_twin.cpp, library_member).
+  std::optional<ShapeMember> (*member_of_shape)(const FreeShapeFit& shape) = nullptr;
 };
 
 // The entry of class `name`; a class without one (fitted by nothing: the signature classes and

@@ -177,13 +177,24 @@ EffectClass tabulated() {
   };
 }
 
+// Not a class the diagnosis looks for either: the effect an improved twin holds a thermal lag's
+// free shape in volts with (candidates/free_shapes/lag_family.h, VoltsLagFamily), found and
+// named as thermal_lag. It stands in the table so that a twin holding it can be replayed.
+EffectClass thermal_lag_volts() {
+  return {
+      .name = "thermal_lag_volts",
+      .identification = Identification::kBySignature,
+      .follows = "the temperature's rate of change",
+  };
+}
+
 }  // namespace
 
 const std::vector<EffectClass>& effect_classes() {
   static const std::vector<EffectClass> classes = {
       temp_gain_drift(), temp_offset_drift(), nonlinearity(), range_compression(),
       thermal_lag(),     channel_skew(),      ageing_drift(), mains_pickup(),
-      vibration(),       adc_quantization(),  tabulated()};
+      vibration(),       adc_quantization(),  tabulated(),         thermal_lag_volts()};
   return classes;
 }
 

@@ -69,27 +69,28 @@ bool shapes_follow_age(const Selection& selection) {
   });
 }
 
-// A free shape whose summary gives every parameter of its class's library effect (a lag's mean
-// delay), or whose class says which member it is (a skew's law, ClassFit::member_of_shape):
-// that library member, or nothing when the shape lies beyond what the effect does.
+// A free shape whose summary gives every parameter of its class's library effect, or whose class
+// says which member it is (a lag's mean delay or its mix in volts, a skew's law:
+// ClassFit::member_of_shape): that library member, or nothing when the shape lies beyond what the
+// twin's effects do.
 std::optional<sim::EffectSettings> library_member(const Pick& pick) {
   const FreeShapeFit& shape = *pick.chosen().free_shape;
-  const sim::EffectSpec& spec =
-      sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(pick.finding.name))];
-  sim::ParamValues values;
+  ShapeMember member{pick.finding.name, {}};
   if (const auto member_of = class_fit(pick.finding.name).member_of_shape) {
-    const std::optional<sim::ParamValues> member = member_of(shape);
-    if (!member) return std::nullopt;
-    values = *member;
+    const std::optional<ShapeMember> of_shape = member_of(shape);
+    if (!of_shape) return std::nullopt;
+    member = *of_shape;
   } else {
+    const sim::EffectSpec& spec =
+        sim::effect_catalogue()[static_cast<std::size_t>(sim::catalogue_index(member.effect))];
     for (const sim::ParamSpec& param : spec.params) {
       const auto value = shape.params.find(param.key);
       if (value == shape.params.end()) return std::nullopt;
-      values[param.key] = value->second;
+      member.params[param.key] = value->second;
     }
   }
   try {
-    return sim::make_effect_settings(spec.name, values, "improved twin");
+    return sim::make_effect_settings(member.effect, member.params, "improved twin");
   } catch (const sim::BadArgument&) {
     return std::nullopt;
   }
@@ -120,8 +121,8 @@ void add_library_members(const Parts& parts, const Selection& selection, Improve
                          std::vector<double>& cal_left, std::vector<double>& ho_left) {
   for (const Pick& pick : selection.picks) {
     if (pick.modelled_index >= 0 || !pick.chosen().free_shape) continue;
-    if (class_held(out.twin.effects, pick.finding.name)) continue;
     if (effect_class(pick.finding.name).lines_of_each_session) {
+      if (class_held(out.twin.effects, pick.finding.name)) continue;
       const std::optional<sim::EffectSettings> member = session_lines_member(pick);
       if (!member) continue;
       // The table takes none of the lines: the twin holds them as the session's own.
@@ -133,7 +134,7 @@ void add_library_members(const Parts& parts, const Selection& selection, Improve
       continue;
     }
     const std::optional<sim::EffectSettings> member = library_member(pick);
-    if (!member) continue;
+    if (!member || class_held(out.twin.effects, member->name)) continue;
     const std::vector<sim::EffectSettings> before = replayed_effects(out.twin.effects);
     std::vector<sim::EffectSettings> after = before;
     after.push_back(*member);

@@ -82,7 +82,8 @@ std::string not_held_in_table(double misfit_v, double allowed_v) {
 
 std::string held_as_member_and_table(double misfit_v) {
   return fmt::format(
-      "its free shape's summary as the library effect (a lag's mean delay, a skew's law), and "
+      "its free shape's summary as the library effect (a lag's mean delay or its mix in volts, a "
+      "skew's law), and "
       "what that leaves of the shape, with the other free shapes, in the tabulated effect "
       "(reproduced to {:.2g} V RMS on the worse part)",
       misfit_v);

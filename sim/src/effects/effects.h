@@ -14,6 +14,7 @@ EffectSpec temp_gain_drift_effect();    // kSensor
 EffectSpec temp_offset_drift_effect();  // kSensor
 EffectSpec ageing_drift_effect();       // kSensor
 EffectSpec range_compression_effect();  // kSensor
+EffectSpec thermal_lag_volts_effect();  // kSensor, after the sensor's other effects
 EffectSpec mains_pickup_effect();       // kWiring
 EffectSpec channel_skew_effect();       // kAcquisition
 EffectSpec tabulated_effect();          // kAcquisition, before the converter

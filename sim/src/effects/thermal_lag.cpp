@@ -6,44 +6,28 @@
 #include <cmath>
 
 #include "effects.h"
+#include "first_order_lag.h"
 
 namespace flange::sim {
 namespace {
 
 class ThermalLag final : public Effect {
  public:
-  explicit ThermalLag(double tau_s) : tau_s_(tau_s) {}
+  explicit ThermalLag(double tau_s) : tau_s_(tau_s), lag_(std::abs(tau_s)) {}
 
   void apply(ChainSample& sample) override {
     if (tau_s_ == 0.0) return;
-    const double input = sample.ambient_c;
-    if (!started_) {
-      lagged_c_ = input;  // the record starts in thermal equilibrium
-      started_ = true;
-    } else {
-      // Exact for an input that is linear between samples (first-order hold), so a ramp lags
-      // by exactly |tau_s| whatever the sample rate.
-      const double tau = std::abs(tau_s_);
-      const double dt = sample.t_s - last_t_s_;
-      const double decay = std::exp(-dt / tau);
-      const double slope = dt > 0.0 ? (input - last_input_c_) / dt : 0.0;
-      lagged_c_ = input - tau * slope + decay * (lagged_c_ - last_input_c_ + tau * slope);
-    }
-    last_t_s_ = sample.t_s;
-    last_input_c_ = input;
+    const double lagged_c = lag_.step(sample.t_s, sample.ambient_c);
     if (tau_s_ > 0.0) {
-      sample.coil_c = lagged_c_;
+      sample.coil_c = lagged_c;
     } else {
-      sample.thermocouple_c = lagged_c_;
+      sample.thermocouple_c = lagged_c;
     }
   }
 
  private:
   double tau_s_;
-  bool started_ = false;
-  double lagged_c_ = 0.0;
-  double last_t_s_ = 0.0;
-  double last_input_c_ = 0.0;
+  FirstOrderLag lag_;
 };
 
 }  // namespace

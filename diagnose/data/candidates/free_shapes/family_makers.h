@@ -24,6 +24,8 @@ std::unique_ptr<Family> make_compression_surface(const RecordedPart& calibration
 std::unique_ptr<Family> make_moving_knee(const RecordedPart& calibration);
 // A mix of lags and advances of the temperature (lag_family.h).
 std::unique_ptr<Family> make_lag(const RecordedPart& calibration);
+// Lags of the temperature in volts of their own (lag_family.h).
+std::unique_ptr<Family> make_volts_lag(const RecordedPart& calibration);
 // A skew of the voltage channel that drifts (skew_family.h).
 std::unique_ptr<Family> make_skew(const RecordedPart& calibration);
 // A periodic curve of the clearance (ripple_family.h).

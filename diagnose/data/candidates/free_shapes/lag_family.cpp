@@ -3,16 +3,18 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "family_makers.h"
+#include "first_order_lag.h"
 #include "ridge_solve.h"
 
 namespace flange::diagnose::free_shapes {
 
 std::vector<std::string> LagFamily::names() const {
   std::vector<std::string> out;
-  for (double tau : kLags) out.push_back(fmt::format("weight_lag_{:g}s", tau));
+  for (double tau : kLags) out.push_back(lag_weight_name(tau));
   for (double lead : kLeads) out.push_back(fmt::format("weight_advance_{:g}s", lead));
   return out;
 }
@@ -70,6 +72,74 @@ double LagFamily::mean_delay_s(const Eigen::VectorXd& beta) const {
   return delay;
 }
 
+std::string LagFamily::lag_weight_name(double tau_s) {
+  return fmt::format("weight_lag_{:g}s", tau_s);
+}
+
 std::unique_ptr<Family> make_lag(const RecordedPart&) { return std::make_unique<LagFamily>(); }
+
+namespace {
+
+double median_magnitude(std::vector<double> x) {
+  if (x.empty()) return 0.0;
+  for (double& v : x) v = std::abs(v);
+  const auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
+  std::nth_element(x.begin(), mid, x.end());
+  return *mid;
+}
+
+}  // namespace
+
+VoltsLagFamily::VoltsLagFamily(const RecordedPart& calibration)
+    : volts_per_c_scale_(median_magnitude(calibration.replay.temperature_sensitivity_v_per_c())) {}
+
+std::vector<std::string> VoltsLagFamily::names() const {
+  std::vector<std::string> out;
+  for (double tau : LagFamily::kLags) out.push_back(LagFamily::lag_weight_name(tau));
+  return out;
+}
+
+Eigen::MatrixXd VoltsLagFamily::columns(const RecordedPart& part) const {
+  const std::vector<double>& t = part.series.t_s;
+  const std::vector<double>& temp = part.series.temp_c;
+  const std::size_t n = t.size();
+  Eigen::MatrixXd a = matrix(n, LagFamily::kLags.size());
+  for (std::size_t k = 0; k < LagFamily::kLags.size(); ++k) {
+    sim::FirstOrderLag lag(LagFamily::kLags[k]);
+    for (std::size_t i = 0; i < n; ++i) {
+      a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) =
+          volts_per_c_scale_ * (lag.step(t[i], temp[i]) - temp[i]);
+    }
+  }
+  return a;
+}
+
+std::map<std::string, double> VoltsLagFamily::summary(const Eigen::VectorXd& beta) const {
+  double sum = 0.0, moment = 0.0;
+  for (std::size_t k = 0; k < LagFamily::kLags.size(); ++k) {
+    sum += beta(static_cast<Eigen::Index>(k));
+    moment += beta(static_cast<Eigen::Index>(k)) * LagFamily::kLags[k];
+  }
+  std::map<std::string, double> out{{"v_per_c", volts_per_c_scale_ * sum}};
+  if (sum != 0.0) out["delay_s"] = moment / sum;
+  return out;
+}
+
+void VoltsLagFamily::summarise(const Eigen::VectorXd& beta, const RecordedPart&,
+                               std::map<std::string, double>& params) const {
+  for (const auto& [key, value] : summary(beta)) params[key] = value;
+}
+
+std::string VoltsLagFamily::describe(const Eigen::VectorXd& beta) const {
+  const std::map<std::string, double> s = summary(beta);
+  return fmt::format(
+      "a voltage of {:.4f} V per degC of the recorded temperature's lead over a free mix of its "
+      "lags (mean delay {:.0f} s)",
+      s.at("v_per_c"), s.count("delay_s") ? s.at("delay_s") : 0.0);
+}
+
+std::unique_ptr<Family> make_volts_lag(const RecordedPart& calibration) {
+  return std::make_unique<VoltsLagFamily>(calibration);
+}
 
 }  // namespace flange::diagnose::free_shapes
