@@ -4,8 +4,9 @@
 # hold"): fleets simulated from seeds the method was never fitted on, each read back by
 # `flange wear --truth`, and the per-wheel checks pooled into one table by wheel kind (healthy,
 # reprofiled, drifting sensor) for the rate and the dates of the warning and critical limits, at
-# 95 % and 80 %; then the rate, reprofiling and drift checks summed over the fleets
-# (bench/wear_coverage_table.py). bench/wear_coverage_alt.sh does the same on the second reality.
+# 95 % and 80 %, each share with its 90 % range from a bootstrap over whole locomotives (whose
+# wheels share their km per day); then the rate, reprofiling and drift checks summed over the
+# fleets (bench/wear_coverage_table.py). bench/wear_coverage_alt.sh does the same on the second reality.
 #   bash bench/wear_coverage.sh [SEEDS] [LOCOMOTIVES] [DAYS] [FLANGE]
 #   (defaults: "9101 9102 9103 9104 9105", 5, 90, build/flange: 300 wheels)
 # Leaves every seed's store, wear outputs and truth_check.json in

@@ -4,11 +4,20 @@ each fleet's truth_check.json (with its wear.json beside it) in one table by whe
 rate and the dates of the warning and critical limits at 95 % and 80 %; then the rate,
 reprofiling and drift checks summed over the fleets and the 95 % intervals' widths.
     python3 bench/wear_coverage_table.py FLEET/wear/truth_check.json ...
+Each share comes with a 90 % range from a bootstrap over locomotives: the wheels of a locomotive
+share its km per day (the dates) and its route, season and sensors' installation (the rate), so
+their checks are not independent draws. The locomotives of all fleets are resampled whole, with
+replacement, kBootstrapDraws times (from a fixed seed), and the 5th and 95th percentiles of the
+share that holds are printed in brackets: a share whose range covers the level is within what the
+fleets' own scatter gives.
 Used by bench/wear_coverage.sh and bench/wear_coverage_alt.sh."""
 import json
 import os
+import random
 import statistics
 import sys
+
+kBootstrapDraws = 2000
 
 checks = [json.load(open(path)) for path in sys.argv[1:]]
 estimates = [json.load(open(os.path.join(os.path.dirname(path), "wear.json")))
@@ -19,21 +28,59 @@ kinds = ["healthy", "reprofiled", "drifting sensor"]
 kinds += [k for k in dict.fromkeys(w["kind"] for w in wheels) if k not in kinds] + ["all"]
 quantities = [("rate", "rate_coverage"), ("warning date", "warning_coverage"),
               ("critical date", "critical_coverage")]
-print(f"\n{len(checks)} fleets, {len(wheels)} wheels\n")
+# The checks of each locomotive (fleet index, name), for the bootstrap.
+locomotives = {}
+for f, check in enumerate(checks):
+    for w in check["wheels"]:
+        locomotives.setdefault((f, w["locomotive"]), []).append(w)
+clusters = list(locomotives.values())
+cells = [(kind, name, field) for kind in kinds for name, field in quantities]
+
+
+def cell_counts(wheel_list, kind, field):
+    """(checked, held at 95 %, held at 80 %) among `wheel_list`."""
+    known = [w[field] for w in wheel_list
+             if (kind == "all" or w["kind"] == kind) and w[field] is not None]
+    return (len(known), sum(1 for c in known if c["95"]), sum(1 for c in known if c["80"]))
+
+
+# Per cell, per locomotive: its counts; then the share over each bootstrap draw of locomotives.
+per_cluster = {cell: [cell_counts(c, cell[0], cell[2]) for c in clusters] for cell in cells}
+draws = random.Random(20470).choices
+shares = {cell: ([], []) for cell in cells}
+for _ in range(kBootstrapDraws):
+    chosen = draws(range(len(clusters)), k=len(clusters))
+    for cell in cells:
+        counts = per_cluster[cell]
+        checked = sum(counts[i][0] for i in chosen)
+        if checked == 0:
+            continue
+        for level in (0, 1):
+            shares[cell][level].append(sum(counts[i][1 + level] for i in chosen) / checked)
+
+
+def share_range(values):
+    if not values:
+        return ""
+    values = sorted(values)
+    low, high = values[int(0.05 * len(values))], values[int(0.95 * len(values)) - 1]
+    return f" [{100.0 * low:.1f}, {100.0 * high:.1f}]"
+
+
+print(f"\n{len(checks)} fleets, {len(clusters)} locomotives, {len(wheels)} wheels\n")
 print("| wheels | interval of | checked | holds the truth at 95 % | at 80 % |")
 print("|---|---|---|---|---|")
-for kind in kinds:
-    chosen = [w for w in wheels if kind == "all" or w["kind"] == kind]
-    for name, field in quantities:
-        known = [w[field] for w in chosen if w[field] is not None]
-        if not known:
-            print(f"| {kind} | {name} | 0 | - | - |")
-            continue
-        cells = []
-        for level in ("95", "80"):
-            held = sum(1 for c in known if c[level])
-            cells.append(f"{held} ({100.0 * held / len(known):.1f} %)")
-        print(f"| {kind} | {name} | {len(known)} | {cells[0]} | {cells[1]} |")
+for cell in cells:
+    kind, name, field = cell
+    checked, held95, held80 = cell_counts(wheels, kind, field)
+    if not checked:
+        print(f"| {kind} | {name} | 0 | - | - |")
+        continue
+    text = [f"{held} ({100.0 * held / checked:.1f} %){share_range(shares[cell][level])}"
+            for level, held in enumerate((held95, held80))]
+    print(f"| {kind} | {name} | {checked} | {text[0]} | {text[1]} |")
+print(f"\n[low, high]: the 5th and 95th percentiles of the share over {kBootstrapDraws} draws of "
+      f"the {len(clusters)} locomotives, resampled whole")
 total = lambda key: sum(c[key] for c in checks)
 errors = [abs(w["relative_error"]) for w in wheels if w["relative_error"] is not None]
 print(f"\nrates within 10 % or inside the interval: {total('rates_ok')} of {len(wheels)} "
