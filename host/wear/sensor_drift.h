@@ -9,7 +9,10 @@
 // per km and a drift m_k (g tau + g2 tau^2) (wear_line_fit.h), m_k the slope of the left or of
 // the right sensor, from each candidate onset: the creep is linear in volts, and the square term
 // takes what the slope at the day's reading misses (the reading itself moves with the creep).
-// Each new flange (a lathe pass, a moved wheelset) has a rate of its own (new_flange_rates.h).
+// Each new flange (a lathe pass, a moved wheelset) has a rate of its own (new_flange_rates.h),
+// and a drift must fit its series better as a change in days than the wear's own change in km
+// fits it, both on top of each flange's bend (wear_change_in_km.h): a drift grows with days,
+// depot days included, wear with km.
 // The onset (and slope) with the smallest residual wins; the drift by the last run is a fault
 // when it is both significant and large enough to matter, and it belongs to the sensor whose
 // own series carries it more strongly (the other's has only what the two share).
