@@ -260,7 +260,8 @@ DriftCandidates axle_drift_candidates(const AxlePair& pair, const AxleSeries& bo
         shaped(without_common_mode(series_of(pair.left, pair.yl, sensitivity), pair.run_id,
                                    side_common_mode(common, true))),
         shaped(without_common_mode(series_of(pair.right, pair.yr, sensitivity), pair.run_id,
-                                   side_common_mode(common, false))));
+                                   side_common_mode(common, false))),
+        pair.new_flanges);
   } catch (const std::invalid_argument&) {
     return {};
   }

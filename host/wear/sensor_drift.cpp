@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "sensor_drift.h"
 
+#include "wear_change_in_km.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -63,13 +65,22 @@ double own_drift_t(const WearSeries& series, double onset_day) {
 // sum), whatever its size.
 std::optional<DriftFinding> best_drift_in(const WearSeries& difference,
                                           const WearSeries& left_series,
-                                          const WearSeries& right_series) {
+                                          const WearSeries& right_series,
+                                          const std::set<std::size_t>& flange_starts) {
   const std::optional<Candidate> best = best_candidate(difference, left_series, right_series);
   if (!best) return std::nullopt;
   const WearSeries& fitted_side = best->left ? left_series : right_series;
   const DriftValue drift = drift_at(best->fit, difference.day.back(), last_scale(fitted_side));
   const double se = drift.se * correlation_widening(best->fit.residuals);
   DriftFinding finding;
+  // A change in days, not the wear's in km (wear_change_in_km.h)?
+  WearSeries fitted = difference;
+  fitted.drift_scale = fitted_side.drift_scale;
+  const auto change_rss = [&](ChangeIn in) {
+    return best_change_rss(fitted, flange_starts, in, kDriftDegree, kMinRunsBeforeOnset,
+                           kMinRunsAfterOnset);
+  };
+  finding.grows_with_days = change_rss(ChangeIn::days) < change_rss(ChangeIn::km);
   // The faulty sensor: the one whose own series carries the drift more strongly (the other's
   // own series has only what the two share).
   finding.left = std::abs(own_drift_t(left_series, best->onset_day)) >
@@ -85,7 +96,10 @@ std::optional<DriftFinding> best_drift_in(const WearSeries& difference,
 }
 
 bool flagged(const std::optional<DriftFinding>& finding, const LocomotiveBar& bar) {
-  if (!finding || !finding->moved_other || finding->size_mm < kMinDriftMm) return false;
+  if (!finding || !finding->moved_other || !finding->grows_with_days ||
+      finding->size_mm < kMinDriftMm) {
+    return false;
+  }
   const double t = std::abs(finding->difference_t);
   return t >= kDriftTStatistic && (t >= bar.t || finding->size_mm >= bar.size_mm);
 }
@@ -113,12 +127,13 @@ bool moves_other(const DriftFinding& found, const WearSeries& other,
 }  // namespace
 
 DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries& left_series,
-                                 const WearSeries& right_series) {
+                                 const WearSeries& right_series,
+                                 const std::set<std::size_t>& flange_starts) {
   WearSeries sum = difference;
   for (std::size_t k = 0; k < sum.y.size(); ++k) sum.y[k] = left_series.y[k] + right_series.y[k];
   DriftCandidates candidates;
-  candidates.in_difference = best_drift_in(difference, left_series, right_series);
-  candidates.in_sum = best_drift_in(sum, left_series, right_series);
+  candidates.in_difference = best_drift_in(difference, left_series, right_series, flange_starts);
+  candidates.in_sum = best_drift_in(sum, left_series, right_series, flange_starts);
   if (candidates.in_difference) {
     candidates.in_difference->moved_other =
         moves_other(*candidates.in_difference, sum, left_series, right_series);

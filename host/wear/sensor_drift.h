@@ -9,7 +9,10 @@
 // per km and a drift m_k (g tau + g2 tau^2) (wear_line_fit.h), m_k the slope of the left or of
 // the right sensor, from each candidate onset: the creep is linear in volts, and the square term
 // takes what the slope at the day's reading misses (the reading itself moves with the creep).
-// Each new flange (a lathe pass, a moved wheelset) has a rate of its own (new_flange_rates.h).
+// Each new flange (a lathe pass, a moved wheelset) has a rate of its own (new_flange_rates.h),
+// and a drift must fit its series better as a change in days than the wear's own change in km
+// fits it, both on top of each flange's bend (wear_change_in_km.h): a drift grows with days,
+// depot days included, wear with km.
 // The onset (and slope) with the smallest residual wins; the drift by the last run is a fault
 // when it is both significant and large enough to matter, and it belongs to the sensor whose
 // own series carries it more strongly (the other's has only what the two share).
@@ -35,6 +38,7 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "wear_line_fit.h"
@@ -83,6 +87,8 @@ struct DriftFinding {
   double size_mm = 0.0;          // |the difference's drift by the last run|
   bool in_sum = false;           // found in the axle's sum (else in its difference)
   bool moved_other = true;       // the other combination moved by at least half as much
+  bool grows_with_days = true;   // its series is fitted better by a change in days than by
+                                 // one in km (wear_change_in_km.h)
 };
 
 // The best drift-like fit of each combination of the two wheels, before any threshold: its t
@@ -94,8 +100,12 @@ struct DriftCandidates {
 
 // `difference`, `left_series` and `right_series` share km, day and segments (their y: right -
 // left, left, right); the side series carry their sensor's slope as drift_scale.
+// `flange_starts`: the first run of each flange after the first (a lathe pass, a moved
+// wheelset): each flange's bend is part of the wear a drift must explain better than
+// (wear_change_in_km.h).
 DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries& left_series,
-                                 const WearSeries& right_series);
+                                 const WearSeries& right_series,
+                                 const std::set<std::size_t>& flange_starts = {});
 
 // What a drift must reach on one locomotive to stand out from its axles: a t or a size.
 struct LocomotiveBar {

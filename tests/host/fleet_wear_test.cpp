@@ -25,6 +25,8 @@ struct Truth {
   // new flange, another wheelset: its own rate).
   double left_rate_after = 1.0, right_rate_after = 1.0;
   std::optional<int> moved_day;  // the depot moved another wheelset in that day (recorded)
+  // A flange wearing faster as it thins: each wheel's rate times exp(this x its wear in mm).
+  double speedup_per_mm = 0.0;
 };
 
 // One axle's 90 days: depot days every 6th, 150-750 km on the others, 0.005 mm of noise per run.
@@ -60,8 +62,8 @@ std::vector<WheelHistory> axle_history(const Truth& truth, std::uint32_t seed) {
     right.runs.push_back({day, "", t, odometer, 2.0 + wear_right + drift + noise(random)});
     const double km = km_of_day(random);
     odometer += km;
-    wear_left += rate_left * km / 1000.0;
-    wear_right += rate_right * km / 1000.0;
+    wear_left += rate_left * std::exp(truth.speedup_per_mm * wear_left) * km / 1000.0;
+    wear_right += rate_right * std::exp(truth.speedup_per_mm * wear_right) * km / 1000.0;
   }
   return {left, right};
 }
@@ -173,6 +175,29 @@ TEST(FleetWear, ANewFlangesOwnRateIsNoDriftButADriftJustAfterALathePassIs) {
   Truth drift = lathe;
   drift.drift_from_day = 48;
   for (const std::uint32_t seed : {11u, 12u, 13u}) {
+    const FleetWear fleet = estimate_fleet_wear(axle_history(drift, seed), {});
+    EXPECT_TRUE(side(fleet, "right").sensor_fault.has_value()) << "seed " << seed;
+    EXPECT_FALSE(side(fleet, "left").sensor_fault.has_value()) << "seed " << seed;
+  }
+}
+
+// A flange wearing faster as it thins (6 % faster per mm of wear) bends its clearance upward in
+// km over the flange's life, which the drift's terms in days take for a drift where the km per
+// day are steady (seed 22: the left sensor, at t > 6, without wear_change_in_km.h's comparison);
+// a change in km fits it better than one in days. A drift on such an axle grows with days, depot
+// days included, and is still flagged.
+TEST(FleetWear, AFlangeWearingFasterAsItThinsIsNoDriftButADriftOnItIs) {
+  Truth thinning;
+  thinning.speedup_per_mm = 0.06;
+  for (const std::uint32_t seed : {21u, 22u, 23u}) {
+    const FleetWear fleet = estimate_fleet_wear(axle_history(thinning, seed), {});
+    for (const WheelWear& w : fleet.wheels) {
+      EXPECT_FALSE(w.sensor_fault.has_value()) << "seed " << seed << " " << w.wheel.side;
+    }
+  }
+  Truth drift = thinning;
+  drift.drift_from_day = 45;
+  for (std::uint32_t seed = 21; seed <= 28; ++seed) {
     const FleetWear fleet = estimate_fleet_wear(axle_history(drift, seed), {});
     EXPECT_TRUE(side(fleet, "right").sensor_fault.has_value()) << "seed " << seed;
     EXPECT_FALSE(side(fleet, "left").sensor_fault.has_value()) << "seed " << seed;
