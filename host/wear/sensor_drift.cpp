@@ -73,14 +73,6 @@ std::optional<DriftFinding> best_drift_in(const WearSeries& difference,
   const DriftValue drift = drift_at(best->fit, difference.day.back(), last_scale(fitted_side));
   const double se = drift.se * correlation_widening(best->fit.residuals);
   DriftFinding finding;
-  // A change in days, not the wear's in km (wear_change_in_km.h)?
-  WearSeries fitted = difference;
-  fitted.drift_scale = fitted_side.drift_scale;
-  const auto change_rss = [&](ChangeIn in) {
-    return best_change_rss(fitted, flange_starts, in, kDriftDegree, kMinRunsBeforeOnset,
-                           kMinRunsAfterOnset);
-  };
-  finding.grows_with_days = change_rss(ChangeIn::days) < change_rss(ChangeIn::km);
   // The faulty sensor: the one whose own series carries the drift more strongly (the other's
   // own series has only what the two share).
   finding.left = std::abs(own_drift_t(left_series, best->onset_day)) >
@@ -89,6 +81,18 @@ std::optional<DriftFinding> best_drift_in(const WearSeries& difference,
   finding.onset_day = best->onset_day;
   finding.difference_t = se > 0.0 ? drift.mm / se : 0.0;
   finding.size_mm = std::abs(drift.mm);
+  // A change in days, not the wear's in km (wear_change_in_km.h)? Two more onset searches, so
+  // asked only of a drift that passes the thresholds no locomotive's bar lowers: on most axles
+  // the search's best fit is far below them and the answer could change nothing.
+  if (finding.size_mm >= kMinDriftMm && std::abs(finding.difference_t) >= kDriftTStatistic) {
+    WearSeries fitted = difference;
+    fitted.drift_scale = fitted_side.drift_scale;
+    const auto change_rss = [&](ChangeIn in) {
+      return best_change_rss(fitted, flange_starts, in, kDriftDegree, kMinRunsBeforeOnset,
+                             kMinRunsAfterOnset);
+    };
+    finding.grows_with_days = change_rss(ChangeIn::days) < change_rss(ChangeIn::km);
+  }
   const DriftValue own_drift = drift_at(fit_wear_line(own, best->onset_day, kDriftDegree),
                                         own.day.back(), last_scale(own));
   finding.rate_mm_per_day = own_drift.mm / (own.day.back() - best->onset_day);

@@ -88,7 +88,8 @@ struct DriftFinding {
   bool in_sum = false;           // found in the axle's sum (else in its difference)
   bool moved_other = true;       // the other combination moved by at least half as much
   bool grows_with_days = true;   // its series is fitted better by a change in days than by
-                                 // one in km (wear_change_in_km.h)
+                                 // one in km (wear_change_in_km.h); compared only when its
+                                 // size and t reach kMinDriftMm and kDriftTStatistic
 };
 
 // The best drift-like fit of each combination of the two wheels, before any threshold: its t
