@@ -116,18 +116,16 @@ double upper_median(std::vector<double> values) {
 }
 
 // Whether `other` (the axle's other combination), fitted with the found onset and slope, has
-// moved by at least half the found drift, at a t of kDriftTStatistic or more (its standard
-// error widened as the found drift's is): one sensor's drift moves the sum and the difference
+// moved by at least half the found drift: one sensor's drift moves the sum and the difference
 // by as much (see the header).
 bool moves_other(const DriftFinding& found, const WearSeries& other,
                  const WearSeries& left_series, const WearSeries& right_series) {
   const WearSeries& side = found.left ? left_series : right_series;
   WearSeries series = other;
   series.drift_scale = side.drift_scale;
-  const WearLineFit fit = fit_wear_line(series, found.onset_day, kDriftDegree);
-  const DriftValue moved = drift_at(fit, other.day.back(), last_scale(side));
-  const double se = moved.se * correlation_widening(fit.residuals);
-  return std::abs(moved.mm) >= 0.5 * found.size_mm && std::abs(moved.mm) >= kDriftTStatistic * se;
+  const DriftValue moved = drift_at(fit_wear_line(series, found.onset_day, kDriftDegree),
+                                    other.day.back(), last_scale(side));
+  return std::abs(moved.mm) >= 0.5 * found.size_mm;
 }
 
 }  // namespace

@@ -25,16 +25,7 @@
 // so a drift found in either must have moved the other (fitted with the same onset and slope)
 // by at least half as much: a change both wheels share (a small lathe pass the data did not show
 // as a jump) moves the sum alone, and where the wheelset runs between the rails the difference
-// alone. And it must have moved it by a t of kDriftTStatistic or more (its standard error
-// widened alike), the bound the found drift meets: fitted at an onset its own data do not
-// choose, the other combination of a healthy axle takes a drift term as large as its scatter
-// and its bends allow, which passes the half on its size alone. On the second
-// fleet reality's 30 development fleets 9201-9255 the healthy sensors flagged on a whole-history
-// read go from 13 to 5 of 1770 with it (each of the 8 had the other combination at t 3.1-5.7),
-// the drifts flagged from 28 to 27 of 30 (9224's A02 axle 1 left: its sum's best fit starts 19
-// days before the drift, where the difference reaches t 4.8); nothing changes on the first
-// reality's 9101-9105, 9301-9305, 9311-9315 (19 of 20 drifts, no healthy sensor); docs/fleet.md,
-// step 4.
+// alone.
 //
 // What a drift is judged against. The series come with what every axle of the locomotive shares
 // taken away (locomotive_common_mode.h). What is left still wanders slowly in a real fleet (a
@@ -95,8 +86,7 @@ struct DriftFinding {
                                  // series it was found in (the difference or the sum)
   double size_mm = 0.0;          // |the difference's drift by the last run|
   bool in_sum = false;           // found in the axle's sum (else in its difference)
-  bool moved_other = true;       // the other combination moved by at least half as much, at a
-                                 // t of kDriftTStatistic or more
+  bool moved_other = true;       // the other combination moved by at least half as much
   bool grows_with_days = true;   // its series is fitted better by a change in days than by
                                  // one in km (wear_change_in_km.h); compared only when its
                                  // size and t reach kMinDriftMm and kDriftTStatistic
