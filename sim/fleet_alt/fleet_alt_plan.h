@@ -113,7 +113,7 @@ struct LocomotiveHistory {
 struct FleetAltTruth {
   FleetAltSettings settings;
   std::vector<RouteTrack> routes;
-  std::vector<double> ambient_c;  // per day of the period
+  std::vector<double> ambient_c;        // per day of the period
   std::vector<double> ambient_after_c;  // per day after it, to kTruthHorizonDays
   std::vector<LocomotiveHistory> locomotives;
   std::vector<DepotEvent> events;  // in day order

@@ -113,8 +113,7 @@ FleetTruth read_fleet_truth(const std::filesystem::path& path) {
                                           truth.settings.start_day);
         }
         wheel.warning_day = optional_day(w, "true_warning_date", truth.settings.start_day, where);
-        wheel.critical_day =
-            optional_day(w, "true_critical_date", truth.settings.start_day, where);
+        wheel.critical_day = optional_day(w, "true_critical_date", truth.settings.start_day, where);
         loco.wheels.push_back(wheel);
       }
       truth.locomotives.push_back(loco);

@@ -229,8 +229,9 @@ TEST(FleetAltLimits, TheKmToADateAgreeWithTheWearLawIntegrated) {
         km_before = km;
         km += day_km;
         if (day_km == 0.0) continue;
-        const double r = wear_rate_mm_per_1000km(truth.routes[route].kind, axle, side, base, 0.0,
-                                                 ambient) / 1000.0;
+        const double r =
+            wear_rate_mm_per_1000km(truth.routes[route].kind, axle, side, base, 0.0, ambient) /
+            1000.0;
         r_low = std::min(r_low, r);
         r_high = std::max(r_high, r);
       }
