@@ -2,7 +2,8 @@
 """How often `flange wear`'s intervals hold the truth, pooled over fleets: the per-wheel checks of
 each fleet's truth_check.json (with its wear.json beside it) in one table by wheel kind, for the
 rate and the dates of the warning and critical limits at 95 % and 80 %; then the rate,
-reprofiling and drift checks summed over the fleets and the 95 % intervals' widths.
+reprofiling and drift checks summed over the fleets, the 95 % intervals' widths and which way
+the dates' intervals miss (true days over forecast days, misses before and after).
     python3 bench/wear_coverage_table.py FLEET/wear/truth_check.json ...
 Each share comes with a 90 % range from a bootstrap over locomotives: the wheels of a locomotive
 share its km per day (the dates) and its route, season and sensors' installation (the rate), so
@@ -11,7 +12,9 @@ replacement, kBootstrapDraws times (from a fixed seed), and the 5th and 95th per
 share that holds are printed in brackets: a share whose range covers the level is within what the
 fleets' own scatter gives.
 Used by bench/wear_coverage.sh and bench/wear_coverage_alt.sh."""
+import datetime
 import json
+import math
 import os
 import random
 import statistics
@@ -107,6 +110,43 @@ if rate_widths:
           f"{sorted(rate_widths)[int(0.9 * len(rate_widths))]:.2f} %)" +
           (f", warning date +- {statistics.median(date_widths):.1f} days (median of "
            f"{len(date_widths)})" if date_widths else ""))
+# Which way a date's 95 % interval misses, and how far the truth lies from the forecast: per limit,
+# the wheels whose true date is before the interval and after it (a true date past the truth's
+# horizon counts as after), and the median of the true days to the limit over the forecast's
+# (from the last run's day to the middle of the true date's day).
+def day_number(text):
+    return (datetime.date.fromisoformat(text[:10]) - datetime.date(1970, 1, 1)).days
+
+
+def run_day(at):
+    stamp = datetime.datetime.fromisoformat(at.replace("Z", "+00:00"))
+    return stamp.timestamp() / 86400.0
+
+
+for limit in ("warning", "critical"):
+    early, late, ratios = 0, 0, []
+    for check, estimate in zip(checks, estimates):
+        estimated = {(w["locomotive"], w["axle"], w["side"]): w for w in estimate["wheels"]}
+        for truth in check["wheels"]:
+            held = truth[limit + "_coverage"]
+            if held is None:
+                continue
+            w = estimated[(truth["locomotive"], truth["axle"], truth["side"])]
+            forecast, true_date = w[limit], truth["true_" + limit + "_date"]
+            last = math.floor(run_day(w["runs"][-1]["at"]))
+            if true_date and forecast["days"] and not forecast["reached"]:
+                ratios.append((day_number(true_date) - last + 0.5) / forecast["days"])
+            if held["95"]:
+                continue
+            low = forecast["date_low"]
+            if true_date and low and not low.startswith("after") and \
+                    day_number(true_date) < day_number(low):
+                early += 1
+            else:
+                late += 1
+    if ratios:
+        print(f"{limit} date: true over forecast days {statistics.median(ratios):.3f} (median of "
+              f"{len(ratios)}); 95 % misses: {early} before the interval, {late} after it")
 # Why an interval holds more or less often than it says: each wheel's rate error over its
 # standard error, |T| = |rate - truth| / se, against the Student t the interval takes it for (its
 # quantiles in closed form at 2 degrees of freedom, which every history of up to about 20 weeks

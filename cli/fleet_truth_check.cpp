@@ -126,6 +126,28 @@ void check_dates(WheelCheck& check, const host::WheelWear& w, const host::FleetW
       date_coverage(w, wear.critical_clearance_mm, check.true_critical_day, horizon);
 }
 
+// A truth file's own dates (another reality's), when they are for the estimate's limits.
+void check_stated_dates(WheelCheck& check, const host::WheelWear& w, const host::FleetWear& wear,
+                        const sim::FleetTruth& truth, const sim::WheelTruth& wheel) {
+  const sim::TruthLimitDates& limits = *truth.limit_dates;
+  const int start = truth.settings.start_day;
+  const auto day = [&](const std::optional<int>& offset) -> std::optional<int> {
+    return offset ? std::optional(start + *offset) : std::nullopt;
+  };
+  const double horizon = start + limits.horizon_days;
+  constexpr double kSameMm = 1e-9;
+  if (std::abs(limits.warning_clearance_mm - wear.warning_clearance_mm) < kSameMm) {
+    check.true_warning_day = day(wheel.warning_day);
+    check.warning_coverage =
+        date_coverage(w, wear.warning_clearance_mm, check.true_warning_day, horizon);
+  }
+  if (std::abs(limits.critical_clearance_mm - wear.critical_clearance_mm) < kSameMm) {
+    check.true_critical_day = day(wheel.critical_day);
+    check.critical_coverage =
+        date_coverage(w, wear.critical_clearance_mm, check.true_critical_day, horizon);
+  }
+}
+
 WheelCheck check_wheel(const host::WheelWear* w, const sim::FleetTruth& truth, int l,
                        const sim::WheelTruth& wheel) {
   const sim::WheelPosition position = sim::wheel_position(wheel.channel);
@@ -171,6 +193,8 @@ TruthCheck check_against_truth(const host::FleetWear& wear, const sim::FleetTrut
       WheelCheck check = check_wheel(w, truth, static_cast<int>(l), wheel);
       if (w != nullptr && w->fit && future) {
         check_dates(check, *w, wear, *future, static_cast<int>(l), wheel.channel);
+      } else if (w != nullptr && w->fit && truth.limit_dates) {
+        check_stated_dates(check, *w, wear, truth, wheel);
       }
       result.rates_ok += check.rate_ok ? 1 : 0;
       result.reprofilings += check.true_reprofilings;

@@ -8,8 +8,9 @@
 // each of kCoverageLevels, and whether the true dates of the warning and the critical limit do.
 // A true date is the day the wheel's true wear, going on at its true rate from its last run over
 // the km its locomotive runs after the period (the scenario's own draws of those days, without a
-// reprofiling), reaches the limit; it is known only when the truth file is the fleet scenario's
-// (its days replanned from its seed give its km).
+// reprofiling), reaches the limit; it is known when the truth file is the fleet scenario's (its
+// days replanned from its seed give its km), or when the file states its own dates for the
+// estimate's limits (the second reality's: sim/fleet_alt/fleet_alt_limits.h).
 #pragma once
 
 #include <array>

@@ -37,7 +37,7 @@ host::WheelEstimateRecord estimate_record(const host::WheelWear& wheel) {
   e.km_per_day = wheel.km_per_day;
   const host::ForecastInput& f = wheel.forecast_input;
   e.km_per_day_se = f.km_per_day_se;
-  e.day_km_sd = f.day_km_sd;
+  e.day_km_sd = f.day_km_long_run_sd;
   e.km_per_day_dof = f.km_per_day_dof;
   e.clearance_now_se_mm = f.clearance_now_se_mm;
   e.clearance_rate_covariance = f.clearance_rate_covariance;

@@ -143,7 +143,7 @@ ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread)
   input.clearance_rate_covariance = spread.inflation * (cov[a][r] + lever * cov[r][r]);
   input.dof = spread.dof;
   input.km_per_day_se = distance.se;
-  input.day_km_sd = distance.day_sd;
+  input.day_km_long_run_sd = distance.long_run_sd;
   input.km_per_day_dof = distance.dof;
   return input;
 }

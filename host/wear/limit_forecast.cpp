@@ -35,7 +35,8 @@ RelativeSpread relative_spread(const ForecastInput& input, double gap_mm) {
   spread.km = std::sqrt(std::max(0.0, km_variance)) / gap_mm;
   if (input.km_per_day > 0.0) {
     const double mean_term = input.km_per_day_se / input.km_per_day;
-    const double future_term = input.day_km_sd * input.day_km_sd / (input.km_per_day * ratio);
+    const double future_term =
+        input.day_km_long_run_sd * input.day_km_long_run_sd / (input.km_per_day * ratio);
     const double line = spread.km * spread.km, mean = mean_term * mean_term;
     spread.days = std::sqrt(line + mean + future_term);
     const double parts =

@@ -6,16 +6,17 @@
 // The interval holds three uncertainties, combined to first order (delta method) as a relative
 // standard deviation of the distance K = (limit - c) / r and of the days T = K / mu:
 //   (sd K / K)^2 = (var c + (G/r)^2 var r + 2 (G/r) cov(c, r)) / G^2,  G = limit - c
-//   (sd T / T)^2 = (sd K / K)^2 + (se mu / mu)^2 + sigma^2 / (mu K)
+//   (sd T / T)^2 = (sd K / K)^2 + (se mu / mu)^2 + lambda^2 / (mu K)
 // the fitted clearance now and the rate (their covariance from the wear line, which allows
 // errors correlated from run to run, so it holds the reference of a flange reprofiled a few runs
 // ago), the mean km per day estimated from the history (se mu) and the km the locomotive has
-// yet to run, a sum of days that scatter by sigma each (the first-passage time of a walk with
-// drift mu, whose variance is K sigma^2 / mu^3). The bounds are K / (1 +- q sd K / K) and the
+// yet to run, a sum of days whose long-run standard deviation is lambda (the first-passage time
+// of a walk with drift mu, whose variance is K lambda^2 / mu^3; lambda and se mu allow for days
+// correlated over weeks, daily_distance.h). The bounds are K / (1 +- q sd K / K) and the
 // same for T: as for a rate interval, the slow end is unbounded when the ratio reaches 1 (the
 // rate's interval reaches 0). q is Student t's: for K at the wear line's degrees of freedom,
-// for T at the Welch-Satterthwaite degrees of freedom of its three parts (the line's, the
-// history's days less one for mu, and none lost for the days to come, which are a sum of many).
+// for T at the Welch-Satterthwaite degrees of freedom of its three parts (the line's, those of
+// se mu, and none lost for the days to come, which are a sum of many).
 #pragma once
 
 #include <optional>
@@ -46,8 +47,8 @@ struct ForecastInput {
   double clearance_rate_covariance = 0.0;  // mm^2 / km
   int dof = 0;                             // Student t's for the line's part
   double km_per_day_se = 0.0;              // of the mean km per day
-  double day_km_sd = 0.0;                  // one calendar day's km about the mean
-  int km_per_day_dof = 0;                  // the history's days less one
+  double day_km_long_run_sd = 0.0;         // lambda: the long-run sd of a day's km
+  int km_per_day_dof = 0;                  // of km_per_day_se
 };
 
 // The 95 % interval.

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "fleet_alt_limits.h"
 #include "fleet_alt_recording.h"
 
 namespace flange::fleet_alt {
@@ -90,6 +91,12 @@ std::string position_kind(const FleetAltTruth& truth, int l, int channel) {
   return reprofiled.empty() ? "healthy" : "reprofiled";
 }
 
+// A limit date, or null when it is past the horizon.
+ordered_json date_json(const FleetAltTruth& truth, const std::optional<int>& day) {
+  if (!day) return nullptr;
+  return date_text(truth.settings.start_day + *day);
+}
+
 ordered_json locomotive_json(const FleetAltTruth& truth, int l) {
   const LocomotiveHistory& loco = truth.locomotives[static_cast<std::size_t>(l)];
   ordered_json wheels = ordered_json::array();
@@ -105,7 +112,9 @@ ordered_json locomotive_json(const FleetAltTruth& truth, int l) {
                       {"wear_rate_mm_per_1000km", position_rate_mm_per_1000km(loco, c)},
                       {"initial_wear_mm", position.initial_wear_mm},
                       {"reprofiled", days},
-                      {"kind", position_kind(truth, l, c)}});
+                      {"kind", position_kind(truth, l, c)},
+                      {"true_warning_date", date_json(truth, position.warning_day)},
+                      {"true_critical_date", date_json(truth, position.critical_day)}});
   }
   ordered_json day_km = ordered_json::array();
   for (const LocomotiveDay& day : loco.days) day_km.push_back(day.km);
@@ -133,6 +142,10 @@ void write_truth(const FleetAltTruth& truth, const fs::path& dir, const std::str
                               {{"fs_hz", s.fs_hz},
                                {"duration_s", s.recording_s},
                                {"new_flange_clearance_mm", kNewFlangeClearanceMm}}},
+                             {"limit_dates",
+                              {{"warning_clearance_mm", kWarningClearanceMm},
+                               {"critical_clearance_mm", kCriticalClearanceMm},
+                               {"horizon", date_text(s.start_day + kTruthHorizonDays)}}},
                              {"locomotives", locomotives},
                              {"drifting_sensors", drifts}};
   const fs::path path = dir / "fleet_truth.json";

@@ -9,6 +9,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "fleet_alt_limits.h"
+
 namespace flange::fleet_alt {
 namespace {
 
@@ -78,8 +80,9 @@ LocoState initial_state(const std::string& name, FleetRandom& random) {
   return state;
 }
 
-// Ambient (degC) on each day: two annual harmonics of its own and weather that persists.
-std::vector<double> draw_ambient(const FleetAltSettings& settings) {
+// Ambient (degC) on each of `count` days from day 0: two annual harmonics of its own and weather
+// that persists (one stream: a longer count leaves the first days as they were).
+std::vector<double> draw_ambient(const FleetAltSettings& settings, int count) {
   FleetRandom random(settings.seed, kWeatherStream);
   using namespace std::chrono;
   const year_month_day date{sys_days{days{settings.start_day}}};
@@ -88,7 +91,7 @@ std::vector<double> draw_ambient(const FleetAltSettings& settings) {
   std::vector<double> ambient;
   double weather = 0.0;
   const double w = 2.0 * std::numbers::pi / 365.25;
-  for (int d = 0; d < settings.days; ++d) {
+  for (int d = 0; d < count; ++d) {
     const double doy = first_doy + d;
     weather = 0.75 * weather + 1.7 * random.normal();
     ambient.push_back(21.0 + 8.5 * std::cos(w * (doy - 196.0)) +
@@ -97,14 +100,18 @@ std::vector<double> draw_ambient(const FleetAltSettings& settings) {
   return ambient;
 }
 
-double wear_rate(const RouteKind& route, int axle, int side, double base, double wear_mm,
-                 double ambient_c) {
+}  // namespace
+
+double wear_rate_mm_per_1000km(const RouteKind& route, int axle, int side, double base,
+                               double wear_mm, double ambient_c) {
   const double hand = side == 0 ? route.right_hand_share : 1.0 - route.right_hand_share;
   const double mid_radius = 0.5 * (route.radius_low_m + route.radius_high_m);
   const double route_factor = 0.45 + 2.2 * route.curve_share * hand * 600.0 / mid_radius;
   return base * kAxleWearShare.at(static_cast<std::size_t>(axle - 1)) * route_factor *
          (1.0 + 0.015 * (ambient_c - 22.0)) * std::exp(0.06 * wear_mm);
 }
+
+namespace {
 
 // The depot's scheduled events (one of each kind) and the drifting sensor, for the fleet.
 void schedule_events(FleetAltTruth& truth) {
@@ -205,7 +212,8 @@ void wear_day(FleetAltTruth& truth, int l, int day, double km, LocoState& state)
     Wheelset& set = state.wheelsets[static_cast<std::size_t>(state.at_axle[c / 2])];
     double& wear = set.wear_mm[static_cast<std::size_t>(side)];
     const double base = set.base[static_cast<std::size_t>(side)];
-    const double gained = wear_rate(route, axle, side, base, wear, ambient) * km / 1000.0;
+    const double gained =
+        wear_rate_mm_per_1000km(route, axle, side, base, wear, ambient) * km / 1000.0;
     wear += gained;
     loco.positions[static_cast<std::size_t>(c)].accrued_mm.push_back(gained);
     loco.positions[static_cast<std::size_t>(c)].base_rate.push_back(base);
@@ -248,6 +256,17 @@ void run_locomotive(FleetAltTruth& truth, int l, std::vector<DepotEvent>& done) 
     loco.days.push_back(record);
     wear_day(truth, l, day, record.km, state);
     state.odometer_km += record.km;
+  }
+  // After the period, from the same stream (the recorded days' draws stay as they were): the
+  // roster's route changes and the depot days, and nothing else.
+  for (int day = s.days; day < kTruthHorizonDays; ++day) {
+    if (day % 7 == 0 && random.chance(kRouteChangeChance)) {
+      state.route = (state.route + 1 + random.index(routes - 1)) % routes;
+    }
+    const RouteKind& route = truth.routes[static_cast<std::size_t>(state.route)].kind;
+    const bool depot = random.chance(kDepotChance);
+    loco.days_after.push_back(
+        {state.route, depot ? 0.0 : random.uniform(route.day_km_low, route.day_km_high)});
   }
 }
 
@@ -293,9 +312,11 @@ FleetAltTruth plan_fleet_alt(const FleetAltSettings& settings) {
   for (const RouteKind& kind : route_kinds()) {
     truth.routes.push_back(draw_route_track(kind, route_random));
   }
-  truth.ambient_c = draw_ambient(settings);
+  truth.ambient_c = draw_ambient(settings, kTruthHorizonDays);
+  truth.ambient_after_c.assign(truth.ambient_c.begin() + settings.days, truth.ambient_c.end());
+  truth.ambient_c.resize(static_cast<std::size_t>(settings.days));
   for (int l = 0; l < settings.locomotives; ++l) {
-    truth.locomotives.push_back({fmt::format("A{:02d}", l + 1), {}, {}});
+    truth.locomotives.push_back({fmt::format("A{:02d}", l + 1), {}, {}, {}});
   }
   schedule_events(truth);
   std::vector<DepotEvent> done;
@@ -304,6 +325,7 @@ FleetAltTruth plan_fleet_alt(const FleetAltSettings& settings) {
     return a.day != b.day ? a.day < b.day : a.locomotive < b.locomotive;
   });
   truth.events = std::move(done);
+  date_limits(truth);
   return truth;
 }
 

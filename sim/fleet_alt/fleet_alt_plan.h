@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,10 @@ inline constexpr int kMaxLocomotives = 50;
 inline constexpr int kMinDays = 21;  // room for every depot event before and after it
 inline constexpr int kMaxDays = 1095;
 inline constexpr double kNewFlangeClearanceMm = 2.0;  // the sensor's setting over a new flange
+// How far the world goes on after the recorded period for the truth's limit dates: ten years from
+// day 0, the calendar the fleet scenario's own true dates run over; a flange that reaches a limit
+// only later has no date (fleet_alt_limits.h).
+inline constexpr int kTruthHorizonDays = 3650;
 
 struct FleetAltSettings {
   int locomotives = 4;  // 1 to kMaxLocomotives
@@ -80,6 +85,17 @@ struct PositionTruth {
   std::vector<int> reprofiled_days;
   std::vector<double> accrued_mm;  // per day: the wear the position's flange gained
   std::vector<double> base_rate;   // per day: the base rate of the wheel that ran there
+  // The days (from day 0) on which the flange that ran here on the locomotive's last recorded
+  // day reaches the warning and the critical limit (fleet_alt_limits.h); none within
+  // kTruthHorizonDays.
+  std::optional<int> warning_day, critical_day;
+};
+
+// A day after the recorded period, drawn on from the locomotive's own stream: its route and km
+// (0: in the depot). Nothing is recorded and the depot turns, moves and refits nothing.
+struct DayAfter {
+  int route = 0;
+  double km = 0.0;
 };
 
 struct DriftTruth {
@@ -91,12 +107,14 @@ struct LocomotiveHistory {
   std::string name;  // "A01", "A02", ...
   std::vector<LocomotiveDay> days;
   std::array<PositionTruth, kWheels> positions;
+  std::vector<DayAfter> days_after;  // from the period's end to kTruthHorizonDays
 };
 
 struct FleetAltTruth {
   FleetAltSettings settings;
   std::vector<RouteTrack> routes;
-  std::vector<double> ambient_c;  // per day
+  std::vector<double> ambient_c;        // per day of the period
+  std::vector<double> ambient_after_c;  // per day after it, to kTruthHorizonDays
   std::vector<LocomotiveHistory> locomotives;
   std::vector<DepotEvent> events;  // in day order
   DriftTruth drift;
@@ -108,6 +126,10 @@ FleetAltTruth plan_fleet_alt(const FleetAltSettings& settings);
 // The wear rate (mm per 1000 km) of the position's flanges between its first and last recorded
 // days: the wear they gained over the km run in between (the flange there may change).
 double position_rate_mm_per_1000km(const LocomotiveHistory& loco, int channel);
+
+// The wear law above (mm per 1000 km) of the wheel on `axle` (1-6), `side` (0 left, 1 right).
+double wear_rate_mm_per_1000km(const RouteKind& route, int axle, int side, double base,
+                               double wear_mm, double ambient_c);
 
 // "YYYY-MM-DD" of `day` days since 1970-01-01.
 std::string date_text(int day);

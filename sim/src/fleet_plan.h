@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,17 @@ struct WheelTruth {
   double wear_rate_mm_per_1000km = 0.0;
   double initial_wear_mm = 0.0;      // at the start of day 0
   std::vector<int> reprofiled_days;  // days (from 0) on which the depot reprofiled it
+  // Read from a truth file that states them (another reality's, whose days cannot be drawn
+  // again here): the days (from 0) its flange reaches TruthLimitDates' limits; none within the
+  // horizon. The fleet scenario's own are worked out from its seed instead (fleet_truth_check.h).
+  std::optional<int> warning_day, critical_day;
+};
+
+// The limits a truth file's own dates are for, and how far they were looked for.
+struct TruthLimitDates {
+  double warning_clearance_mm = 0.0;
+  double critical_clearance_mm = 0.0;
+  int horizon_days = 0;  // from day 0: a date past it is not known
 };
 
 struct LocomotiveTruth {
@@ -71,6 +83,7 @@ struct FleetTruth {
   std::vector<double> ambient_c;  // per day
   std::vector<LocomotiveTruth> locomotives;
   std::vector<SensorDrift> drifts;
+  std::optional<TruthLimitDates> limit_dates;  // read from a file that states its dates
 };
 
 // Draws the fleet. Throws BadArgument naming the setting and its valid range.

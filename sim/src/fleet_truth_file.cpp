@@ -46,6 +46,13 @@ int day_number(const std::string& date, const std::string& where) {
           .count());
 }
 
+// A wheel's stated date (days from day 0), when the file has it and it is not null.
+std::optional<int> optional_day(const nlohmann::json& wheel, const char* field, int start_day,
+                                const std::string& where) {
+  if (!wheel.contains(field) || wheel.at(field).is_null()) return std::nullopt;
+  return day_number(wheel.at(field).get<std::string>(), where) - start_day;
+}
+
 }  // namespace
 
 void write_fleet_truth(const std::filesystem::path& path, const FleetTruth& truth,
@@ -105,9 +112,20 @@ FleetTruth read_fleet_truth(const std::filesystem::path& path) {
           wheel.reprofiled_days.push_back(day_number(d.get<std::string>(), where) -
                                           truth.settings.start_day);
         }
+        wheel.warning_day = optional_day(w, "true_warning_date", truth.settings.start_day, where);
+        wheel.critical_day = optional_day(w, "true_critical_date", truth.settings.start_day, where);
         loco.wheels.push_back(wheel);
       }
       truth.locomotives.push_back(loco);
+    }
+    if (json.contains("limit_dates")) {
+      const nlohmann::json& limits = json.at("limit_dates");
+      TruthLimitDates dates;
+      dates.warning_clearance_mm = limits.at("warning_clearance_mm").get<double>();
+      dates.critical_clearance_mm = limits.at("critical_clearance_mm").get<double>();
+      dates.horizon_days =
+          day_number(limits.at("horizon").get<std::string>(), where) - truth.settings.start_day;
+      truth.limit_dates = dates;
     }
     for (const nlohmann::json& d : json.at("drifting_sensors")) {
       SensorDrift drift;

@@ -28,8 +28,8 @@ namespace flange::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::FlangeOutcome;
 using testing::command_text;
+using testing::FlangeOutcome;
 using testing::run_flange_captured;
 using testing::StoreBackendUnderTest;
 
@@ -153,6 +153,21 @@ TEST_P(FleetAltService, WearThroughTheServicePathAgainstTheTruth) {
   EXPECT_EQ(check["healthy_flagged"], 0);
   EXPECT_TRUE(check["passed"].get<bool>());
   EXPECT_EQ(outcome.status, 0);
+  // The truth file's own limit dates (sim/fleet_alt/fleet_alt_limits.h) are the ones checked: each
+  // wheel with a fitted rate has its dates' coverage, and its true dates are the file's.
+  const nlohmann::json truth = nlohmann::json::parse(std::ifstream(depot / "fleet_truth.json"));
+  int dated = 0;
+  for (const nlohmann::json& w : check["wheels"]) {
+    for (const nlohmann::json& loco : truth["locomotives"]) {
+      if (loco["name"] != w["locomotive"]) continue;
+      const nlohmann::json& wheel =
+          loco["wheels"][2 * (w["axle"].get<int>() - 1) + (w["side"] == "left" ? 0 : 1)];
+      EXPECT_EQ(w["true_warning_date"], wheel["true_warning_date"]);
+      EXPECT_EQ(w["true_critical_date"], wheel["true_critical_date"]);
+    }
+    if (!w["warning_coverage"].is_null() && !w["critical_coverage"].is_null()) ++dated;
+  }
+  EXPECT_EQ(dated, 24);
 }
 
 // A small depot's folder and a store with its calibration: for the refusals below.

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "fleet_alt_folder.h"
+#include "fleet_alt_limits.h"
 #include "fleet_alt_plan.h"
 #include "fleet_alt_recording.h"
 #include "fleet_alt_sensor.h"
@@ -151,6 +152,99 @@ TEST(FleetAltPlan, AThinnerFlangeWearsFaster) {
   EXPECT_GT(thin / thin_n, thick / thick_n);
 }
 
+// Every position's flange gets its limit dates: after the locomotive's last recorded day (the
+// flanges are under the lathe's 4.6 mm, short of the warning's 6 mm of wear), the critical one
+// after the warning one, and within the ten years for all but the slowest.
+TEST(FleetAltLimits, EveryFlangeReachesItsLimitsAfterThePeriod) {
+  const FleetAltTruth truth = plan_fleet_alt(small_settings());
+  int dated = 0, wheels = 0;
+  for (const LocomotiveHistory& loco : truth.locomotives) {
+    const int last = last_recorded_day(loco);
+    ASSERT_GT(last, 40);
+    EXPECT_EQ(static_cast<int>(loco.days.size() + loco.days_after.size()), kTruthHorizonDays);
+    for (const PositionTruth& position : loco.positions) {
+      ++wheels;
+      if (!position.warning_day || !position.critical_day) continue;
+      ++dated;
+      EXPECT_GT(*position.warning_day, last);
+      EXPECT_GT(*position.critical_day, *position.warning_day);
+      EXPECT_LT(*position.critical_day, kTruthHorizonDays);
+    }
+  }
+  EXPECT_GE(dated, wheels - 2);
+}
+
+// Whether the flange at position c from the start of day `from` to that of `to` is one: its wear
+// grew by what it gained (no lathe pass or wheelset move in between).
+bool unchanged_flange(const LocomotiveHistory& loco, int c, int from, int to) {
+  double gained = 0.0;
+  for (int d = from; d < to; ++d) gained += loco.positions[c].accrued_mm[d];
+  return std::abs(loco.days[from].wheels[c].wear_mm + gained - loco.days[to].wheels[c].wear_mm) <
+         1e-12;
+}
+
+// A limit reached inside the period lands on the day the recorded wear passes it: the walk is
+// the wear law the period's days were worn by (the same sums, so the tolerance is rounding's).
+TEST(FleetAltLimits, ALimitInsideThePeriodFallsOnTheDayTheRecordedWearPassesIt) {
+  const FleetAltTruth truth = plan_fleet_alt(small_settings());
+  int checked = 0;
+  for (int l = 0; l < static_cast<int>(truth.locomotives.size()); ++l) {
+    const LocomotiveHistory& loco = truth.locomotives[static_cast<std::size_t>(l)];
+    for (int c = 0; c < kWheels; ++c) {
+      // From day 1 to day 40, on a position whose flange was neither turned nor moved.
+      if (!unchanged_flange(loco, c, 1, 40)) continue;
+      int day = 39;
+      while (day > 1 && loco.days[day].km == 0.0) --day;  // the last day that wore it before 40
+      const double limit = loco.days[40].wheels[c].wear_mm - 1e-9;
+      EXPECT_EQ(limit_day(truth, l, c, 1, limit), day) << loco.name << " channel " << c;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 10);
+}
+
+// After the period the km to a date agree with the wear law integrated in closed form: with
+// dw/dx = r exp(0.06 w), x = (exp(-0.06 w0) - exp(-0.06 w1)) / (0.06 r). The route and the
+// season make r vary from day to day, so the km lie between the integral at the largest and at
+// the smallest r of the days walked (a bracket the law itself gives, not a fitted tolerance),
+// and the day before the date falls short of the km at the largest r.
+TEST(FleetAltLimits, TheKmToADateAgreeWithTheWearLawIntegrated) {
+  const FleetAltTruth truth = plan_fleet_alt(small_settings());
+  const double limit = kCriticalClearanceMm - kNewFlangeClearanceMm;
+  int checked = 0;
+  for (const LocomotiveHistory& loco : truth.locomotives) {
+    const auto from = static_cast<std::size_t>(last_recorded_day(loco));
+    for (int c = 0; c < kWheels; ++c) {
+      const PositionTruth& position = loco.positions[static_cast<std::size_t>(c)];
+      if (!position.critical_day) continue;
+      const int axle = c / 2 + 1, side = c % 2;
+      const double base = position.base_rate[from];
+      double km = 0.0, km_before = 0.0, r_low = 1e9, r_high = 0.0;
+      for (auto d = from; d <= static_cast<std::size_t>(*position.critical_day); ++d) {
+        const bool after = d >= loco.days.size();
+        const int route = after ? loco.days_after[d - loco.days.size()].route : loco.days[d].route;
+        const double day_km = after ? loco.days_after[d - loco.days.size()].km : loco.days[d].km;
+        const double ambient =
+            after ? truth.ambient_after_c[d - loco.days.size()] : truth.ambient_c[d];
+        km_before = km;
+        km += day_km;
+        if (day_km == 0.0) continue;
+        const double r =
+            wear_rate_mm_per_1000km(truth.routes[route].kind, axle, side, base, 0.0, ambient) /
+            1000.0;
+        r_low = std::min(r_low, r);
+        r_high = std::max(r_high, r);
+      }
+      const double w0 = loco.days[from].wheels[c].wear_mm;
+      const double integral = std::exp(-0.06 * w0) - std::exp(-0.06 * limit);
+      EXPECT_GE(km, integral / (0.06 * r_high)) << loco.name << " channel " << c;
+      EXPECT_LT(km_before, integral / (0.06 * r_low)) << loco.name << " channel " << c;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20);
+}
+
 TEST(FleetAltPlan, RefusesSettingsOutOfRange) {
   FleetAltSettings settings = small_settings();
   settings.days = 5;
@@ -194,6 +288,20 @@ TEST(FleetAltFolder, WritesWhatTheServicePathReads) {
   EXPECT_EQ(read.drifts.size(), 1u);
   for (const sim::WheelTruth& wheel : read.locomotives[0].wheels) {
     EXPECT_GT(wheel.wear_rate_mm_per_1000km, 0.0);
+  }
+  // The limit dates, for the limits the estimate's defaults mean, as `flange wear --truth` reads
+  // them.
+  ASSERT_TRUE(read.limit_dates.has_value());
+  EXPECT_EQ(read.limit_dates->warning_clearance_mm, 8.0);
+  EXPECT_EQ(read.limit_dates->critical_clearance_mm, 10.0);
+  EXPECT_EQ(read.limit_dates->horizon_days, kTruthHorizonDays);
+  for (std::size_t l = 0; l < truth.locomotives.size(); ++l) {
+    for (int c = 0; c < kWheels; ++c) {
+      EXPECT_EQ(read.locomotives[l].wheels[c].warning_day,
+                truth.locomotives[l].positions[c].warning_day);
+      EXPECT_EQ(read.locomotives[l].wheels[c].critical_day,
+                truth.locomotives[l].positions[c].critical_day);
+    }
   }
   EXPECT_TRUE(fs::exists(dir / "bench" / "bench_3.csv"));
   EXPECT_TRUE(fs::exists(dir / "maintenance.csv"));
