@@ -50,6 +50,19 @@ inline constexpr double kFreeShapeMustGainOverFormula = kScoreResolution;
 // explains the held-out gap alike; the pick stands and the reasons say the two are confounded.
 // Test: SelectionRules.AnotherClassWithinTheMarginIsConfounded.
 inline constexpr double kConfoundingMargin = kScoreResolution;
+
+// Screening a library round: each candidate is fitted with the picks before it held, and only
+// the kRefittedCandidatesOfARound with the least held-out mean square, with any other within
+// kRefitAlsoWithin of sigma^2 of the least, are fitted again with those picks refitted around
+// them (backfit). The refit hands back what an earlier pick soaked up of the candidate, which
+// moves a candidate's score but seldom past three others; refitting every candidate cost
+// (picks + 2) searches each, so the library pass grew with every pick (4.3 s of CPU for a
+// 100 Hz pair's third round). Candidates the data cannot order against the best one
+// (kConfoundingMargin) are all refitted, so the screen never decides between them.
+// Test: SelectionRules.TheScreenRefitsTheBestThreeAndThoseAlikeToTheBest,
+// SelectionRules.AScreenedRoundChoosesAsTheFullyRefittedRoundDoes.
+inline constexpr int kRefittedCandidatesOfARound = 3;
+inline constexpr double kRefitAlsoWithin = kConfoundingMargin;
 // Ties at zero noise: where the noise estimate is zero (a recording whose voltage repeats exactly),
 // ties and confounding are judged against a thousandth of the held-out gap's RMS the round starts
 // from instead: the fits stop at a relative change of 1e-10 in the mean square, far finer, but
