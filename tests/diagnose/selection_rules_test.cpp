@@ -503,27 +503,35 @@ TEST(SelectionRules, AtMostThreePicks) {
   EXPECT_TRUE(significant(next, criteria::kLeastGainOfAPick * kVar));
 }
 
-TEST(SelectionRules, TheScreenRefitsTheBestThreeAndThoseAlikeToTheBest) {
+TEST(SelectionRules, TheScreenRefitsTheBestOnEitherPartAndThoseAlikeToTheBest) {
   static_assert(criteria::kRefittedCandidatesOfARound == 3);
   static_assert(criteria::kRefitAlsoWithin == criteria::kConfoundingMargin);
   const auto in_var = [](std::vector<double> shares) {
     for (double& v : shares) v *= kVar;
     return shares;
   };
+  // The calibration part ranking as the held-out part does adds nothing.
+  const auto refit = [&](const std::vector<double>& heldout, double noise_v) {
+    return candidates_to_refit(in_var(heldout), in_var(heldout), noise_v);
+  };
   // The best three however far apart, and no other.
-  EXPECT_EQ(candidates_to_refit(in_var({5.0, 1.0, 3.0, 9.0, 2.0}), kSigma),
-            (std::vector<std::size_t>{1, 2, 4}));
+  EXPECT_EQ(refit({5.0, 1.0, 3.0, 9.0, 2.0}, kSigma), (std::vector<std::size_t>{1, 2, 4}));
   // Beyond the three, those within 2 % of sigma^2 of the best (10.019 is, 10.5 is not).
-  EXPECT_EQ(candidates_to_refit(in_var({12.0, 10.01, 10.5, 13.0, 10.0, 11.0, 10.015, 10.019}),
-                                kSigma),
+  EXPECT_EQ(refit({12.0, 10.01, 10.5, 13.0, 10.0, 11.0, 10.015, 10.019}, kSigma),
             (std::vector<std::size_t>{1, 4, 6, 7}));
   // Equals are taken in candidate order; every equal of the best is refitted; fewer than three
   // candidates are all refitted.
-  EXPECT_EQ(candidates_to_refit(in_var({1.0, 3.0, 3.0, 3.0}), 0.0),
+  EXPECT_EQ(refit({1.0, 3.0, 3.0, 3.0}, 0.0), (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(refit({4.0, 4.0, 4.0, 4.0}, 0.0), (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_EQ(refit({7.0, 6.0}, kSigma), (std::vector<std::size_t>{0, 1}));
+  // A candidate last on the held-out part but first on the calibration part is refitted, as are
+  // the calibration part's next two; each candidate once.
+  EXPECT_EQ(candidates_to_refit(in_var({2.0, 1.0, 3.0, 4.0, 9.0, 5.0}),
+                                in_var({6.0, 5.0, 7.0, 2.0, 1.0, 8.0}), kSigma),
+            (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(candidates_to_refit(in_var({2.0, 1.0, 3.0, 4.0, 9.0, 5.0}),
+                                in_var({2.0, 1.0, 3.0, 8.0, 9.0, 7.0}), kSigma),
             (std::vector<std::size_t>{0, 1, 2}));
-  EXPECT_EQ(candidates_to_refit(in_var({4.0, 4.0, 4.0, 4.0}), 0.0),
-            (std::vector<std::size_t>{0, 1, 2, 3}));
-  EXPECT_EQ(candidates_to_refit(in_var({7.0, 6.0}), kSigma), (std::vector<std::size_t>{0, 1}));
 }
 
 TEST(SelectionRules, AScreenedRoundChoosesAsTheFullyRefittedRoundDoes) {
@@ -580,7 +588,9 @@ TEST(SelectionRules, AScreenedRoundChoosesAsTheFullyRefittedRoundDoes) {
   // Not every candidate was refitted: the screen saved searches.
   std::vector<double> screened_ms;
   for (const Candidate& c : screened) screened_ms.push_back(std::pow(rms_of(c.heldout_error), 2));
-  EXPECT_LT(candidates_to_refit(screened_ms, kSigma).size(), names.size());
+  std::vector<double> calibration_ms;
+  for (const Candidate& c : screened) calibration_ms.push_back(c.fit.rms_v * c.fit.rms_v);
+  EXPECT_LT(candidates_to_refit(screened_ms, calibration_ms, kSigma).size(), names.size());
 }
 
 }  // namespace

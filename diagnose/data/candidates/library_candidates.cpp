@@ -30,9 +30,13 @@ std::vector<Candidate> fit_library_candidates(const Parts& parts,
   std::vector<Candidate> candidates = screen_library_candidates(parts, round);
   if (round.modelled.size() <= round.first_selected) return candidates;  // no picks to refit
   // The best of the screen scored with the picks before them refitted around them.
-  std::vector<double> screened_ms;
-  for (const Candidate& c : candidates) screened_ms.push_back(std::pow(rms_of(c.heldout_error), 2));
-  const std::vector<std::size_t> refitted = candidates_to_refit(screened_ms, round.noise_v);
+  std::vector<double> screened_ms, calibration_ms;
+  for (const Candidate& c : candidates) {
+    screened_ms.push_back(std::pow(rms_of(c.heldout_error), 2));
+    calibration_ms.push_back(c.fit.rms_v * c.fit.rms_v);
+  }
+  const std::vector<std::size_t> refitted =
+      candidates_to_refit(screened_ms, calibration_ms, round.noise_v);
   std::vector<Candidate> refits = parallel_map<Candidate>(refitted.size(), [&](std::size_t k) {
     Candidate c = candidates[refitted[k]];
     backfit(c.with, round.first_selected, parts.cal_replay, round.cal_v);
@@ -70,21 +74,30 @@ std::vector<Candidate> library_candidates(const Parts& parts, LibraryRounds& rou
   return candidates;
 }
 
-std::vector<std::size_t> candidates_to_refit(const std::vector<double>& screened_ms,
+std::vector<std::size_t> candidates_to_refit(const std::vector<double>& heldout_ms,
+                                             const std::vector<double>& calibration_ms,
                                              double noise_v) {
-  std::vector<std::size_t> order(screened_ms.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return screened_ms[a] < screened_ms[b]; });
+  const auto ascending = [](const std::vector<double>& ms) {
+    std::vector<std::size_t> order(ms.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return ms[a] < ms[b]; });
+    return order;
+  };
+  const std::vector<std::size_t> by_heldout = ascending(heldout_ms);
+  const std::vector<std::size_t> by_calibration = ascending(calibration_ms);
   const double alike = criteria::kRefitAlsoWithin * noise_v * noise_v;
+  const auto best = static_cast<std::size_t>(criteria::kRefittedCandidatesOfARound);
   std::vector<std::size_t> refitted;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const bool among_the_best = k < static_cast<std::size_t>(criteria::kRefittedCandidatesOfARound);
-    if (among_the_best || screened_ms[order[k]] <= screened_ms[order[0]] + alike) {
-      refitted.push_back(order[k]);
-    }
+  for (std::size_t k = 0; k < by_heldout.size(); ++k) {
+    const std::size_t i = by_heldout[k];
+    if (k < best || heldout_ms[i] <= heldout_ms[by_heldout[0]] + alike) refitted.push_back(i);
+  }
+  for (std::size_t k = 0; k < std::min(best, by_calibration.size()); ++k) {
+    refitted.push_back(by_calibration[k]);
   }
   std::sort(refitted.begin(), refitted.end());
+  refitted.erase(std::unique(refitted.begin(), refitted.end()), refitted.end());
   return refitted;
 }
 

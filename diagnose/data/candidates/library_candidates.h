@@ -67,11 +67,13 @@ void backfit(std::vector<sim::EffectSettings>& modelled, std::size_t first,
 std::vector<Candidate> library_candidates(const Parts& parts, LibraryRounds& rounds,
                                           LibraryRounds::Key round);
 
-// Which of a round's candidates, screened with the picks before them held (`screened_ms`: each
-// one's held-out mean square), are refitted: the criteria::kRefittedCandidatesOfARound with the
-// least mean square (the first of equals) and every other within criteria::kRefitAlsoWithin of
-// noise_v^2 of the least; in ascending order.
-std::vector<std::size_t> candidates_to_refit(const std::vector<double>& screened_ms,
+// Which of a round's candidates, screened with the picks before them held, are refitted: the
+// criteria::kRefittedCandidatesOfARound with the least held-out mean square (`heldout_ms`), every
+// other within criteria::kRefitAlsoWithin of noise_v^2 of that least, and the
+// criteria::kRefittedCandidatesOfARound that fit the calibration part best (`calibration_ms`),
+// the first of equals each time; in ascending order, each once.
+std::vector<std::size_t> candidates_to_refit(const std::vector<double>& heldout_ms,
+                                             const std::vector<double>& calibration_ms,
                                              double noise_v);
 
 }  // namespace flange::diagnose
