@@ -26,6 +26,7 @@
 #include "parts.h"
 #include "series_statistics.h"
 #include "scoring.h"
+#include "series_arithmetic.h"
 #include "selection.h"
 #include "sensor_twin.h"
 #include "two_passes.h"
@@ -452,7 +453,8 @@ void keep_rounds(const Parts& parts, LibraryRounds& rounds, const std::vector<do
       candidates.push_back(std::move(c));
     }
     rounds.keep(
-        {names, modelled, 0, parts.calibration.voltage_v, parts.heldout.voltage_v}, candidates);
+        {names, modelled, 0, parts.calibration.voltage_v, parts.heldout.voltage_v, kSigma},
+        candidates);
     modelled.push_back(sim::make_effect_settings(taken, {}, "selection_rules_test"));
     for (double& v : left) v -= offset * kSigma;
     std::erase(names, taken);
@@ -494,10 +496,101 @@ TEST(SelectionRules, AtMostThreePicks) {
   std::vector<std::string> untaken = bias_classes_in_catalogue_order();
   for (std::size_t k = 0; k < 3; ++k) std::erase(untaken, four_offsets()[k].first);
   const std::vector<Candidate> fourth =
-      library_candidates(parts, rounds, {untaken, selection.modelled, 0, cal.voltage_v, ho.voltage_v});
+      library_candidates(
+      parts, rounds, {untaken, selection.modelled, 0, cal.voltage_v, ho.voltage_v, kSigma});
   const Choice next = best_candidate(fourth, round_score(selection), false);
   EXPECT_EQ(fourth[next.best].fit.settings.name, "thermal_lag");
   EXPECT_TRUE(significant(next, criteria::kLeastGainOfAPick * kVar));
+}
+
+TEST(SelectionRules, TheScreenRefitsTheBestOnEitherPartAndThoseAlikeToTheBest) {
+  static_assert(criteria::kRefittedCandidatesOfARound == 3);
+  static_assert(criteria::kRefitAlsoWithin == criteria::kConfoundingMargin);
+  const auto in_var = [](std::vector<double> shares) {
+    for (double& v : shares) v *= kVar;
+    return shares;
+  };
+  // The calibration part ranking as the held-out part does adds nothing.
+  const auto refit = [&](const std::vector<double>& heldout, double noise_v) {
+    return candidates_to_refit(in_var(heldout), in_var(heldout), noise_v);
+  };
+  // The best three however far apart, and no other.
+  EXPECT_EQ(refit({5.0, 1.0, 3.0, 9.0, 2.0}, kSigma), (std::vector<std::size_t>{1, 2, 4}));
+  // Beyond the three, those within 2 % of sigma^2 of the best (10.019 is, 10.5 is not).
+  EXPECT_EQ(refit({12.0, 10.01, 10.5, 13.0, 10.0, 11.0, 10.015, 10.019}, kSigma),
+            (std::vector<std::size_t>{1, 4, 6, 7}));
+  // Equals are taken in candidate order; every equal of the best is refitted; fewer than three
+  // candidates are all refitted.
+  EXPECT_EQ(refit({1.0, 3.0, 3.0, 3.0}, 0.0), (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(refit({4.0, 4.0, 4.0, 4.0}, 0.0), (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_EQ(refit({7.0, 6.0}, kSigma), (std::vector<std::size_t>{0, 1}));
+  // A candidate last on the held-out part but first on the calibration part is refitted, as are
+  // the calibration part's next two; each candidate once.
+  EXPECT_EQ(candidates_to_refit(in_var({2.0, 1.0, 3.0, 4.0, 9.0, 5.0}),
+                                in_var({6.0, 5.0, 7.0, 2.0, 1.0, 8.0}), kSigma),
+            (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(candidates_to_refit(in_var({2.0, 1.0, 3.0, 4.0, 9.0, 5.0}),
+                                in_var({2.0, 1.0, 3.0, 8.0, 9.0, 7.0}), kSigma),
+            (std::vector<std::size_t>{0, 1, 2}));
+}
+
+TEST(SelectionRules, AScreenedRoundChoosesAsTheFullyRefittedRoundDoes) {
+  // A pair with two effects on the twin, an offset drift with temperature and a gain drift, and
+  // noise. The first round's pick soaks up part of the second effect; in the second round the
+  // screen refits only its best candidates. Refitted, a candidate is the one the full round makes
+  // (the same searches in the same order), and the best of the full round is among those the
+  // screen refits: the round chooses the same candidate with the same fits and held-out gap.
+  const std::size_t n = 300;
+  BenchPair bench(n);
+  const Parts& parts = bench.parts;
+  const std::vector<sim::EffectSettings> truth = {
+      sim::make_effect_settings("temp_offset_drift", {{"offset_v_per_c", 4e-3}}, "test"),
+      sim::make_effect_settings("temp_gain_drift", {}, "test")};
+  bench.cal.voltage_v = plus(parts.cal_replay.voltage(truth), white_noise(n, 11));
+  bench.ho.voltage_v = plus(parts.ho_replay.voltage(truth), white_noise(n, 12));
+  const std::vector<double>& cal_v = bench.cal.voltage_v;
+  const std::vector<double>& ho_v = bench.ho.voltage_v;
+  std::vector<std::string> names = bias_classes_in_catalogue_order();
+  const BlockResamples resamples(n, kRounds, 3);
+
+  LibraryRounds rounds;
+  const std::vector<Candidate> first =
+      library_candidates(parts, rounds, {names, {}, 0, cal_v, ho_v, kSigma});
+  const std::vector<double> gap = minus(ho_v, parts.ho_replay.voltage({}));
+  const Choice first_choice = best_candidate(first, {gap, resamples, kSigma}, false);
+  const std::vector<sim::EffectSettings> modelled = {first[first_choice.best].fit.settings};
+  std::erase(names, modelled[0].name);
+
+  const std::vector<Candidate> screened =
+      library_candidates(parts, rounds, {names, modelled, 0, cal_v, ho_v, kSigma});
+  std::vector<Candidate> full;
+  for (const std::string& name : names) {
+    Candidate c;
+    c.fit = fit_effect(name, parts.cal_replay, cal_v, modelled);
+    c.with = modelled;
+    c.with.push_back(c.fit.settings);
+    backfit(c.with, 0, parts.cal_replay, cal_v);
+    c.heldout_error = minus(ho_v, parts.ho_replay.voltage(c.with));
+    full.push_back(std::move(c));
+  }
+  const std::vector<double> now = first[first_choice.best].heldout_error;
+  const RoundScore score{now, resamples, kSigma};
+  const Choice by_screen = best_candidate(screened, score, false);
+  const Choice by_full = best_candidate(full, score, false);
+  ASSERT_EQ(by_screen.best, by_full.best);
+  EXPECT_EQ(screened[by_screen.best].heldout_error, full[by_full.best].heldout_error);
+  ASSERT_EQ(screened[by_screen.best].with.size(), full[by_full.best].with.size());
+  for (std::size_t k = 0; k < full[by_full.best].with.size(); ++k) {
+    EXPECT_EQ(screened[by_screen.best].with[k].params, full[by_full.best].with[k].params);
+  }
+  EXPECT_EQ(by_screen.gain, by_full.gain);
+  EXPECT_GT(by_screen.gain, criteria::kLeastGainOfAPick * kVar);  // a real second pick
+  // Not every candidate was refitted: the screen saved searches.
+  std::vector<double> screened_ms;
+  for (const Candidate& c : screened) screened_ms.push_back(std::pow(rms_of(c.heldout_error), 2));
+  std::vector<double> calibration_ms;
+  for (const Candidate& c : screened) calibration_ms.push_back(c.fit.rms_v * c.fit.rms_v);
+  EXPECT_LT(candidates_to_refit(screened_ms, calibration_ms, kSigma).size(), names.size());
 }
 
 }  // namespace

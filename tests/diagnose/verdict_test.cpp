@@ -210,8 +210,15 @@ TEST(Verdict, AGapOnlyBeyondTheTwinsFitsIsNone) {
             Decision::kUnexplained);
   EXPECT_EQ(decide_continued_with([](VerdictFigures& f) { f.share_within = 0.24; }),
             Decision::kUnexplained);
-  // Picks that explain the whole session still do.
+  // Picks that explain the whole session were fitted where the twin leaves only noise: they
+  // change how its curves continue, which these data cannot check.
   EXPECT_EQ(decide_continued_with([](VerdictFigures& f) { f.rms_after = 1.05; }),
+            Decision::kNoneWithinTwinFits);
+  // Without the twin's fits beyond, the same picks explain the session.
+  EXPECT_EQ(decide_continued_with([](VerdictFigures& f) {
+              f.rms_after = 1.05;
+              f.beyond_past_twin_fits = false;
+            }),
             Decision::kExplained);
 }
 

@@ -50,6 +50,25 @@ inline constexpr double kFreeShapeMustGainOverFormula = kScoreResolution;
 // explains the held-out gap alike; the pick stands and the reasons say the two are confounded.
 // Test: SelectionRules.AnotherClassWithinTheMarginIsConfounded.
 inline constexpr double kConfoundingMargin = kScoreResolution;
+
+// Screening a library round: each candidate is fitted with the picks before it held, and only
+// the kRefittedCandidatesOfARound with the least held-out mean square (with any other within
+// kRefitAlsoWithin of sigma^2 of the least) and the kRefittedCandidatesOfARound that fit the
+// calibration part best are fitted again with those picks refitted around them (backfit).
+// Refitting every candidate cost (picks + 2) searches each, so the library pass grew with every
+// pick (4.3 s of CPU for a 100 Hz pair's third round). The refit hands back what an earlier pick
+// soaked up of the candidate: it seldom moves a candidate past three others on the held-out
+// part, but where the pick and the candidate trade against each other (an ageing line and an
+// offset that follows the temperature) the candidate held against the pick extrapolates badly
+// to the held-out part and ranks last there, while its fit of the calibration part, which the
+// refit only improves, already ranks it first; so both rankings choose. Candidates the data
+// cannot order against the best one (kConfoundingMargin) are all refitted, so the screen never
+// decides between them.
+// Test: SelectionRules.TheScreenRefitsTheBestOnEitherPartAndThoseAlikeToTheBest,
+// SelectionRules.AScreenedRoundChoosesAsTheFullyRefittedRoundDoes,
+// DiagnoseSelftest.AStepAtTheSameTimeInBothSessionsIsNotTakenForAgeing.
+inline constexpr int kRefittedCandidatesOfARound = 3;
+inline constexpr double kRefitAlsoWithin = kConfoundingMargin;
 // Ties at zero noise: where the noise estimate is zero (a recording whose voltage repeats exactly),
 // ties and confounding are judged against a thousandth of the held-out gap's RMS the round starts
 // from instead: the fits stop at a relative change of 1e-10 in the mean square, far finer, but

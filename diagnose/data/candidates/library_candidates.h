@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The library's candidates of a round: each class's formula fitted on the calibration part with
-// the picks before it refitted around it, and scored on the held-out part.
+// the picks before it held, the best of them again with those picks refitted around them, and
+// scored on the held-out part.
 #pragma once
 
 #include <mutex>
@@ -26,6 +27,7 @@ class LibraryRounds {
     std::vector<sim::EffectSettings> modelled;
     std::size_t first_selected = 0;
     std::vector<double> cal_v, ho_v;  // the calibration and held-out targets
+    double noise_v = 0.0;             // the round's noise level (which candidates are refitted)
     bool operator==(const Key&) const = default;
   };
 
@@ -56,11 +58,22 @@ void backfit(std::vector<sim::EffectSettings>& modelled, std::size_t first,
              const TwinReplay& replay, const std::vector<double>& real_v);
 
 // The library's candidates of a round (`round`: their names, the effects modelled and the
-// targets), each fitted on the calibration part, refitted with the picks before it and scored on
-// the held-out part, in the order of round.names. Found in `rounds` when the other
-// pass weighed the same round; else fitted (each in its own thread: the replays are read-only;
-// the results are taken in order, so the outcome does not depend on the threads) and kept there.
+// targets), in the order of round.names, each fitted on the calibration part with the picks before
+// it held and scored on the held-out part; those candidates_to_refit names are then fitted again
+// with the picks before them refitted around them (backfit) and scored again. Found in `rounds`
+// when the other pass weighed the same round; else fitted (each in its own thread: the replays are
+// read-only; the results are taken in order, so the outcome does not depend on the threads) and
+// kept there.
 std::vector<Candidate> library_candidates(const Parts& parts, LibraryRounds& rounds,
                                           LibraryRounds::Key round);
+
+// Which of a round's candidates, screened with the picks before them held, are refitted: the
+// criteria::kRefittedCandidatesOfARound with the least held-out mean square (`heldout_ms`), every
+// other within criteria::kRefitAlsoWithin of noise_v^2 of that least, and the
+// criteria::kRefittedCandidatesOfARound that fit the calibration part best (`calibration_ms`),
+// the first of equals each time; in ascending order, each once.
+std::vector<std::size_t> candidates_to_refit(const std::vector<double>& heldout_ms,
+                                             const std::vector<double>& calibration_ms,
+                                             double noise_v);
 
 }  // namespace flange::diagnose

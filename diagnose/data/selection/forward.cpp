@@ -97,7 +97,9 @@ std::vector<Candidate> round_candidates(const Parts& parts, LibraryRounds& round
     if (!class_taken(name, selection)) names.push_back(name);
   }
   std::vector<Candidate> candidates = library_candidates(
-      parts, rounds, {names, modelled, selection.first_selected, cal_v, ho_target(parts, selection)});
+      parts, rounds,
+      {names, modelled, selection.first_selected, cal_v, ho_target(parts, selection),
+       selection.noise_v});
   if (!selection.free_shapes) return candidates;
   const std::vector<double> cal_gap = minus(cal_v, parts.cal_replay.voltage(modelled));
   std::vector<FreeShapeFamily> families;

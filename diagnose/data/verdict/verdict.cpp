@@ -194,8 +194,8 @@ Decision decide(const VerdictFigures& f) {
   const bool within_reach =
       left_within_reach(f) && f.within_before_v > criteria::kGapRatio * f.noise_v &&
       f.beyond_share_taken >= std::max(criteria::kLeastShareTakenBeyondReach, 1.0 - f.share_within);
-  if (f.any_findings && overall && locally) return Decision::kExplained;
   if (f.gap_before_picks && none_within_twin_fits(f)) return Decision::kNoneWithinTwinFits;
+  if (f.any_findings && overall && locally) return Decision::kExplained;
   if (f.any_findings && within_reach) return Decision::kExplainedWithinReach;
   if (f.any_findings && partly_share(f) >= criteria::kPartlyExplainedShare) {
     return Decision::kPartlyExplained;

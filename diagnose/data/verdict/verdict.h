@@ -63,13 +63,15 @@ enum class Decision {
 // - none, too, where there was no gap before the picks and the picks, none of them found by a
 //   signature, take less than criteria::kLeastShareOfNoGapTaken of the gap above the noise: a fit
 //   of the noise's residue, not a finding;
-// - none within the twin's fits (reported as none), unless the picks explain the whole session:
-//   before any pick the gap is within criteria::kExplainedRatio of the noise on the held-out
-//   samples within the calibration's ranges (at least criteria::kLeastShareWithinReach of them)
-//   and within the window allowance in every window there, and every sample beyond those ranges
-//   lies beyond the ranges an effect of the twin was fitted on. There the twin continues its
-//   curves as the diagnosis that fitted them said it would ("explained within reach"); data that
-//   do not reach further cannot say more.
+// - none within the twin's fits (reported as none), whatever the picks leave: before any pick
+//   the gap is within criteria::kExplainedRatio of the noise on the held-out samples within the
+//   calibration's ranges (at least criteria::kLeastShareWithinReach of them) and within the
+//   window allowance in every window there, and every sample beyond those ranges lies beyond the
+//   ranges an effect of the twin was fitted on. There the twin continues its curves as the
+//   diagnosis that fitted them said it would ("explained within reach"); data that do not reach
+//   further cannot say more. Picks, fitted where the twin leaves only noise, change only how the
+//   curves continue there: even where they explain the whole session, they are a guess the
+//   held-out part chose among, not a finding (a reason names them).
 Decision decide(const VerdictFigures& f);
 
 // The status a decision reports (a scope says "within reach").
