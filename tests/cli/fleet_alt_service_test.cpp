@@ -86,6 +86,25 @@ void run_days(const fs::path& depot, const std::string& store) {
   }
 }
 
+// The truth file's own limit dates (sim/fleet_alt/fleet_alt_limits.h) are the ones checked: each
+// wheel with a fitted rate has its dates' coverage, and its true dates are the file's.
+void expect_the_truths_own_dates_checked(const nlohmann::json& check, const fs::path& truth_file,
+                                         int wheels) {
+  const nlohmann::json truth = nlohmann::json::parse(std::ifstream(truth_file));
+  int dated = 0;
+  for (const nlohmann::json& w : check["wheels"]) {
+    for (const nlohmann::json& loco : truth["locomotives"]) {
+      if (loco["name"] != w["locomotive"]) continue;
+      const nlohmann::json& wheel =
+          loco["wheels"][2 * (w["axle"].get<int>() - 1) + (w["side"] == "left" ? 0 : 1)];
+      EXPECT_EQ(w["true_warning_date"], wheel["true_warning_date"]);
+      EXPECT_EQ(w["true_critical_date"], wheel["true_critical_date"]);
+    }
+    if (!w["warning_coverage"].is_null() && !w["critical_coverage"].is_null()) ++dated;
+  }
+  EXPECT_EQ(dated, wheels);
+}
+
 class FleetAltService : public ::testing::TestWithParam<StoreBackendUnderTest> {};
 
 TEST_P(FleetAltService, WearThroughTheServicePathAgainstTheTruth) {
@@ -153,21 +172,7 @@ TEST_P(FleetAltService, WearThroughTheServicePathAgainstTheTruth) {
   EXPECT_EQ(check["healthy_flagged"], 0);
   EXPECT_TRUE(check["passed"].get<bool>());
   EXPECT_EQ(outcome.status, 0);
-  // The truth file's own limit dates (sim/fleet_alt/fleet_alt_limits.h) are the ones checked: each
-  // wheel with a fitted rate has its dates' coverage, and its true dates are the file's.
-  const nlohmann::json truth = nlohmann::json::parse(std::ifstream(depot / "fleet_truth.json"));
-  int dated = 0;
-  for (const nlohmann::json& w : check["wheels"]) {
-    for (const nlohmann::json& loco : truth["locomotives"]) {
-      if (loco["name"] != w["locomotive"]) continue;
-      const nlohmann::json& wheel =
-          loco["wheels"][2 * (w["axle"].get<int>() - 1) + (w["side"] == "left" ? 0 : 1)];
-      EXPECT_EQ(w["true_warning_date"], wheel["true_warning_date"]);
-      EXPECT_EQ(w["true_critical_date"], wheel["true_critical_date"]);
-    }
-    if (!w["warning_coverage"].is_null() && !w["critical_coverage"].is_null()) ++dated;
-  }
-  EXPECT_EQ(dated, 24);
+  expect_the_truths_own_dates_checked(check, depot / "fleet_truth.json", 24);
 }
 
 // A small depot's folder and a store with its calibration: for the refusals below.
