@@ -146,19 +146,27 @@ ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread,
   input.km_per_day_se = distance.se;
   input.day_km_long_run_sd = distance.long_run_sd;
   input.km_per_day_dof = distance.dof;
-  // With the fleet's b the clearance and rate at the last run are the line refitted to
-  // y - b q (wear_acceleration.h); b = 0 leaves them as they are.
-  const double b = acceleration.used();
+  // With the fleet's b and gamma the clearance and rate at the last run are the line refitted
+  // to y - b q - gamma p (wear_acceleration.h); a b within 0 leaves them as they are.
+  if (!acceleration.significant) return input;
+  const double b = acceleration.estimate, gamma = acceleration.trend;
   const AccelerationEvidence& bend = wheel.acceleration_evidence;
-  input.clearance_now_mm -= b * bend.clearance_gradient;
-  input.rate_mm_per_km -= b * bend.rate_gradient;
-  input.rate_low_mm_per_km -= b * bend.rate_gradient;
-  input.rate_high_mm_per_km -= b * bend.rate_gradient;
+  const double clearance_shift =
+      b * bend.clearance_gradient + gamma * bend.clearance_trend_gradient;
+  const double rate_shift = b * bend.rate_gradient + gamma * bend.rate_trend_gradient;
+  input.clearance_now_mm -= clearance_shift;
+  input.rate_mm_per_km -= rate_shift;
+  input.rate_low_mm_per_km -= rate_shift;
+  input.rate_high_mm_per_km -= rate_shift;
   input.acceleration_per_mm = b;
-  input.acceleration_se = acceleration.used_se();
-  input.acceleration_dof = acceleration.dof;
   input.clearance_per_acceleration = -bend.clearance_gradient;
   input.rate_per_acceleration = -bend.rate_gradient;
+  input.clearance_per_trend = -bend.clearance_trend_gradient;
+  input.rate_per_trend = -bend.rate_trend_gradient;
+  input.acceleration_se = acceleration.se;
+  input.trend_se = acceleration.trend_se;
+  input.acceleration_trend_covariance = acceleration.covariance;
+  input.acceleration_dof = acceleration.dof;
   return input;
 }
 
@@ -354,7 +362,7 @@ void finish_wheels(FleetWear& fleet) {
                           : moderated_spread(wheel.own_spread, prior, wheel.fit->rate_se));
     if (!wheel.sensor_fault) {
       samples.push_back({wheel.wheel.locomotive, wheel.acceleration_evidence,
-                         spreads.back().inflation});
+                         spreads.back().inflation, spreads.back().dof});
     }
   }
   fleet.acceleration = pool_acceleration(samples);

@@ -48,13 +48,18 @@ RelativeSpread relative_spread(const ForecastInput& input, double gap_mm) {
   const double per_b = accelerated_gap_per_b(gap_mm, b) / r +
                        per_clearance * input.clearance_per_acceleration +
                        per_rate * input.rate_per_acceleration;
+  const double per_trend =
+      per_clearance * input.clearance_per_trend + per_rate * input.rate_per_trend;
   const double line_variance =
       per_clearance * per_clearance * input.clearance_now_se_mm * input.clearance_now_se_mm +
       per_rate * per_rate * input.rate_se_mm_per_km * input.rate_se_mm_per_km +
       2.0 * per_clearance * per_rate * input.clearance_rate_covariance;
   const double line = std::max(0.0, line_variance) / (km * km);
-  const double acceleration_sd = per_b * input.acceleration_se / km;
-  const double acceleration = acceleration_sd * acceleration_sd;
+  const double acceleration =
+      std::max(0.0, per_b * per_b * input.acceleration_se * input.acceleration_se +
+                        per_trend * per_trend * input.trend_se * input.trend_se +
+                        2.0 * per_b * per_trend * input.acceleration_trend_covariance) /
+      (km * km);
   RelativeSpread spread;
   spread.km = std::sqrt(line + acceleration);
   const double line_part = line * line / std::max(1, input.dof);
