@@ -124,5 +124,31 @@ TEST(WearAcceleration, ALinearFleetKeepsTheStraightLinesForecast) {
   }
 }
 
+TEST(LimitForecast, AnAcceleratingFlangesKmToTheLimitFollowTheThinningLaw) {
+  ForecastInput input{5.0, 0.05e-3, 0.04e-3, 0.06e-3, 300.0, 20000.0};
+  input.clearance_now_se_mm = 0.02;
+  input.rate_se_mm_per_km = 0.002e-3;
+  input.dof = 8;
+  const LimitForecast straight = forecast_limit(input, 8.0);
+  ASSERT_TRUE(straight.km.has_value());
+  EXPECT_NEAR(*straight.km, 3.0 / 0.05e-3, 1e-6);
+  // b -> 0: the straight line's km and interval.
+  input.acceleration_per_mm = 1e-12;
+  const LimitForecast barely = forecast_limit(input, 8.0);
+  EXPECT_NEAR(*barely.km, *straight.km, 1e-6 * *straight.km);
+  EXPECT_NEAR(*barely.km_high, *straight.km_high, 1e-6 * *straight.km_high);
+  // b = 0.06 per mm: (1 - exp(-b G)) / (b r), G = 3 mm; b's own uncertainty widens the interval.
+  input.acceleration_per_mm = 0.06;
+  const LimitForecast faster = forecast_limit(input, 8.0);
+  EXPECT_NEAR(*faster.km, -std::expm1(-0.18) / (0.06 * 0.05e-3), 1e-6 * *faster.km);
+  EXPECT_LT(*faster.km, *straight.km);
+  input.acceleration_se = 0.02;
+  input.acceleration_dof = 4;
+  const LimitForecast uncertain = forecast_limit(input, 8.0);
+  EXPECT_NEAR(*uncertain.km, *faster.km, 1e-9 * *faster.km);
+  EXPECT_LT(*uncertain.km_low, *faster.km_low);
+  EXPECT_GT(*uncertain.km_high, *faster.km_high);
+}
+
 }  // namespace
 }  // namespace flange::host
