@@ -147,8 +147,11 @@ ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread,
   input.day_km_long_run_sd = distance.long_run_sd;
   input.km_per_day_dof = distance.dof;
   // With the fleet's b and gamma the clearance and rate at the last run are the line refitted
-  // to y - b q - gamma p (wear_acceleration.h); a b within 0 leaves them as they are.
-  if (!acceleration.significant) return input;
+  // to y - b q - gamma p (wear_acceleration.h); a b within 0 leaves them as they are, and so
+  // does a drift fitted out: its terms in days take up a bend of any cause (a quadratic drift is
+  // all but q on a wheel's own history), so the refit would move its clearance by its drift's
+  // uncertainty, not by the wear's bend.
+  if (!acceleration.significant || wheel.sensor_fault) return input;
   const double b = acceleration.estimate, gamma = acceleration.trend;
   const AccelerationEvidence& bend = wheel.acceleration_evidence;
   const double clearance_shift =
