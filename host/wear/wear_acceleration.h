@@ -32,7 +32,8 @@
 // less b and gamma times q's and p's own fits (clearance now c - b g_c - gamma h_c, rate
 // r - b g_r - gamma h_r; limit_forecast.h). The calendar trend is not carried forward: the
 // months to a limit span seasons the history has not seen, so the rate ahead is the history's
-// mean season's.
+// mean season's. A wheel with a drift fitted out neither gives evidence nor takes the fleet's
+// terms (fleet_wear.cpp): its drift terms in days take up a bend of any cause.
 #pragma once
 
 #include <string>
