@@ -264,7 +264,8 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
   const host::FleetAcceleration& bend = wear.acceleration;
   if (bend.dof > 0) {
     said << fmt::format(
-        "  wear per km x exp(b wear) (1 + g day): b = {:.4f} per mm (se {:.4f}), g = {:.5f} per day "
+        "  wear per km x exp(b wear) (1 + g day): b = {:.4f} per mm (se {:.4f}), g = {:.5f} per "
+        "day "
         "(se {:.5f}), {} dof: {}\n",
         bend.estimate, bend.se, bend.trend, bend.trend_se, bend.dof,
         bend.significant ? "in the dates" : "not in the dates (within 0 at 95 %)");

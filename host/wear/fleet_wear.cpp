@@ -342,11 +342,11 @@ void estimate_lone_wheel(FleetWear& fleet, const WheelHistory& history) {
   fleet.wheels.push_back(std::move(wheel));
 }
 
-// Every wheel's interval and forecasts, its jackknife moderated by the fleet's (moderated_spread.h):
-// the prior from the wheels whose line is wear alone. A wheel with a drift fitted out keeps its
-// own jackknife: its drift terms lean on the late runs in a way the others' lines do not. The
-// same wheels whose line is wear alone give the fleet's acceleration (wear_acceleration.h), each
-// weighted by its moderated inflation.
+// Every wheel's interval and forecasts, its jackknife moderated by the fleet's
+// (moderated_spread.h): the prior from the wheels whose line is wear alone. A wheel with a drift
+// fitted out keeps its own jackknife: its drift terms lean on the late runs in a way the others'
+// lines do not. The same wheels whose line is wear alone give the fleet's acceleration
+// (wear_acceleration.h), each weighted by its moderated inflation.
 void finish_wheels(FleetWear& fleet) {
   std::vector<SerialSpread> plain;
   for (const WheelWear& wheel : fleet.wheels) {

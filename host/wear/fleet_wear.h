@@ -19,10 +19,10 @@
 #include "block_jackknife.h"
 #include "limit_forecast.h"
 #include "sensor_drift.h"
-#include "wear_acceleration.h"
 #include "sensor_flag_latch.h"
 #include "sensor_sensitivity.h"
 #include "thresholds.h"
+#include "wear_acceleration.h"
 #include "wear_line_fit.h"
 #include "wheel_history.h"
 

@@ -74,7 +74,8 @@ RelativeSpread relative_spread(const ForecastInput& input, double gap_mm) {
         input.day_km_long_run_sd * input.day_km_long_run_sd / (input.km_per_day * km);
     const double mean = mean_term * mean_term;
     spread.days = std::sqrt(line + acceleration + mean + future_term);
-    const double parts = line_part + acceleration_part + mean * mean / std::max(1, input.km_per_day_dof);
+    const double parts =
+        line_part + acceleration_part + mean * mean / std::max(1, input.km_per_day_dof);
     spread.days_dof = parts > 0.0 ? std::pow(spread.days, 4.0) / parts : 1e9;
   }
   return spread;

@@ -28,7 +28,7 @@ AccelerationEvidence acceleration_evidence(const WearSeries& series, const WearL
     bend.y[k] = u * u / 2.0;
     if (k > 0) {
       trend.y[k] = trend.y[k - 1] + fit.rate_mm_per_km * (series.day[k - 1] - mean_day) *
-                                         (series.km[k] - series.km[k - 1]);
+                                        (series.km[k] - series.km[k - 1]);
     }
   }
   const WearLineFit bend_fit = fit_wear_line(bend, fit.drift_onset_day, drift_degree);

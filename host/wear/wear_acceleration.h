@@ -20,11 +20,12 @@
 // straight line's is). A wheel's evidence is the straight line's residuals e and q, p less what
 // the line explains (Frisch-Waugh: q_perp, p_perp), each weighted by 1 / (s^2 inflation), its
 // run-to-run scatter widened for errors correlated in time as its rate's, s^2 its residuals'
-// about the fleet's bend (remade from the pooled b and gamma kAccelerationReweightings times). The fleet's (b, gamma)
-// solve the pooled 2 x 2 normal equations; their covariance is the larger (for b) of a sandwich
-// clustered by locomotive (wheels on one locomotive share their routes and days; locomotives - 1
-// degrees of freedom) and the weights' own inverse (at the Welch-Satterthwaite degrees of freedom
-// of the wheels' variances, (sum w)^2 / sum (w^2 / dof), at most kMaxModeratedDof).
+// about the fleet's bend (remade from the pooled b and gamma kAccelerationReweightings times). The
+// fleet's (b, gamma) solve the pooled 2 x 2 normal equations; their covariance is the larger (for
+// b) of a sandwich clustered by locomotive (wheels on one locomotive share their routes and days;
+// locomotives - 1 degrees of freedom) and the weights' own inverse (at the Welch-Satterthwaite
+// degrees of freedom of the wheels' variances, (sum w)^2 / sum (w^2 / dof), at most
+// kMaxModeratedDof).
 //
 // The forecast uses them only when b differs from 0 at kAccelerationTestLevel: a fleet whose wear
 // is a straight line in km keeps the straight line's forecast unchanged. Given them, the line
@@ -58,12 +59,12 @@ inline constexpr int kAccelerationReweightings = 3;
 // One wheel's evidence about b and gamma, from its straight line (fit_wear_line of the same
 // series).
 struct AccelerationEvidence {
-  double qq = 0.0, qp = 0.0, pp = 0.0;  // q_perp . q_perp, q_perp . p_perp, p_perp . p_perp
-  double qe = 0.0, pe = 0.0;            // q_perp . e, p_perp . e
-  double rss = 0.0;                     // the straight line's residual sum of squares (mm^2)
-  int dof = 0;                          // and its degrees of freedom
-  double clearance_gradient = 0.0;      // g_c: q's fit at the last run (mm^2)
-  double rate_gradient = 0.0;           // g_r: q's fitted slope (mm^2 per km)
+  double qq = 0.0, qp = 0.0, pp = 0.0;    // q_perp . q_perp, q_perp . p_perp, p_perp . p_perp
+  double qe = 0.0, pe = 0.0;              // q_perp . e, p_perp . e
+  double rss = 0.0;                       // the straight line's residual sum of squares (mm^2)
+  int dof = 0;                            // and its degrees of freedom
+  double clearance_gradient = 0.0;        // g_c: q's fit at the last run (mm^2)
+  double rate_gradient = 0.0;             // g_r: q's fitted slope (mm^2 per km)
   double clearance_trend_gradient = 0.0;  // h_c: p's fit at the last run (mm day)
   double rate_trend_gradient = 0.0;       // h_r: p's fitted slope (mm day per km)
 };
@@ -79,11 +80,11 @@ struct AccelerationSample {
 };
 
 struct FleetAcceleration {
-  double estimate = 0.0;  // b per mm of wear
-  double trend = 0.0;     // gamma per day
+  double estimate = 0.0;                              // b per mm of wear
+  double trend = 0.0;                                 // gamma per day
   double se = 0.0, trend_se = 0.0, covariance = 0.0;  // of (b, gamma)
-  int dof = 0;                // of se (0: not estimated)
-  bool significant = false;   // |b| / se beyond Student t at kAccelerationTestLevel
+  int dof = 0;                                        // of se (0: not estimated)
+  bool significant = false;  // |b| / se beyond Student t at kAccelerationTestLevel
 };
 
 // Wheels with no leverage or no residual scatter carry no weight; fewer than two locomotives

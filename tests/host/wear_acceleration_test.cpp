@@ -86,7 +86,8 @@ SyntheticFleet synthetic_fleet(double b, std::uint32_t seed) {
   return fleet;
 }
 
-// The median of the true km (a wheel's position: its locomotive's number and channel) to the warning over the forecast's, over the fleet's wheels.
+// The median of the true km (a wheel's position: its locomotive's number and channel) to the
+// warning over the forecast's, over the fleet's wheels.
 double median_true_over_forecast(const SyntheticFleet& truth, const FleetWear& fleet) {
   std::vector<double> ratios;
   for (const WheelWear& w : fleet.wheels) {
