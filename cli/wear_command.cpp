@@ -261,6 +261,15 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
   said << fmt::format("wear: {} wheels from {}, by days to the warning clearance ({} mm)\n",
                       wear.wheels.size(), store->name(), wear.warning_clearance_mm);
   said << host::fleet_wear_text(wear);
+  const host::FleetAcceleration& bend = wear.acceleration;
+  if (bend.dof > 0) {
+    said << fmt::format(
+        "  wear per km x exp(b wear) (1 + g day): b = {:.4f} per mm (se {:.4f}), g = {:.5f} per "
+        "day "
+        "(se {:.5f}), {} dof: {}\n",
+        bend.estimate, bend.se, bend.trend, bend.trend_se, bend.dof,
+        bend.significant ? "in the dates" : "not in the dates (within 0 at 95 %)");
+  }
   const bool truth_ok = !options.truth || compare_with_truth(options, wear, said);
   said << "  wrote " << (options.out / "index.html").string() << ", wear.json and wear.csv\n";
   keep_estimates(*store, wear, marks, said);

@@ -121,7 +121,8 @@ WearSeries series_of(const WheelWear& wheel, const std::vector<double>& y,
 
 // What the forecast is made from: the line at the last run with its uncertainties (the
 // least-squares covariance widened by the jackknife's inflation) and the km per day.
-ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread) {
+ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread,
+                             const FleetAcceleration& acceleration) {
   const WearLineFit& fit = *wheel.fit;
   const std::vector<WearObservation>& runs = wheel.runs;
   const DailyDistance distance = daily_distance(runs);
@@ -145,6 +146,30 @@ ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread)
   input.km_per_day_se = distance.se;
   input.day_km_long_run_sd = distance.long_run_sd;
   input.km_per_day_dof = distance.dof;
+  // With the fleet's b and gamma the clearance and rate at the last run are the line refitted
+  // to y - b q - gamma p (wear_acceleration.h); a b within 0 leaves them as they are, and so
+  // does a drift fitted out: its terms in days take up a bend of any cause (a quadratic drift is
+  // all but q on a wheel's own history), so the refit would move its clearance by its drift's
+  // uncertainty, not by the wear's bend.
+  if (!acceleration.significant || wheel.sensor_fault) return input;
+  const double b = acceleration.estimate, gamma = acceleration.trend;
+  const AccelerationEvidence& bend = wheel.acceleration_evidence;
+  const double clearance_shift =
+      b * bend.clearance_gradient + gamma * bend.clearance_trend_gradient;
+  const double rate_shift = b * bend.rate_gradient + gamma * bend.rate_trend_gradient;
+  input.clearance_now_mm -= clearance_shift;
+  input.rate_mm_per_km -= rate_shift;
+  input.rate_low_mm_per_km -= rate_shift;
+  input.rate_high_mm_per_km -= rate_shift;
+  input.acceleration_per_mm = b;
+  input.clearance_per_acceleration = -bend.clearance_gradient;
+  input.rate_per_acceleration = -bend.rate_gradient;
+  input.clearance_per_trend = -bend.clearance_trend_gradient;
+  input.rate_per_trend = -bend.rate_trend_gradient;
+  input.acceleration_se = acceleration.se;
+  input.trend_se = acceleration.trend_se;
+  input.acceleration_trend_covariance = acceleration.covariance;
+  input.acceleration_dof = acceleration.dof;
   return input;
 }
 
@@ -162,6 +187,7 @@ void fit_wheel(WheelWear& wheel, std::optional<double> drift_onset,
   }
   wheel.own_spread = jackknife_rate(series, drift_onset, kDriftDegree, *wheel.fit,
                                     drift_onset ? kDriftBlockDays : kBlockDays);
+  wheel.acceleration_evidence = acceleration_evidence(series, *wheel.fit, kDriftDegree);
 }
 
 // The rate's interval and the forecasts from `spread` (the wheel's jackknife, moderated).
@@ -174,7 +200,7 @@ void finish_wheel(WheelWear& wheel, const FleetWear& fleet, const SerialSpread& 
   std::tie(wheel.rate_low, wheel.rate_high) = rate_interval(wheel, 0.95);
   wheel.clearance_now_mm = wear_line_at(fit, wheel.segment.back(), runs.back().odometer_km);
   wheel.wear_now_mm = wheel.clearance_now_mm - fleet.thresholds.sensor_gap_mm;
-  wheel.forecast_input = forecast_input(wheel, spread);
+  wheel.forecast_input = forecast_input(wheel, spread, fleet.acceleration);
   wheel.km_per_day = wheel.forecast_input.km_per_day;
   wheel.warning = forecast_limit(wheel.forecast_input, fleet.warning_clearance_mm);
   wheel.critical = forecast_limit(wheel.forecast_input, fleet.critical_clearance_mm);
@@ -316,21 +342,37 @@ void estimate_lone_wheel(FleetWear& fleet, const WheelHistory& history) {
   fleet.wheels.push_back(std::move(wheel));
 }
 
-// Every wheel's interval and forecasts, its jackknife moderated by the fleet's (moderated_spread.h):
-// the prior from the wheels whose line is wear alone. A wheel with a drift fitted out keeps its
-// own jackknife: its drift terms lean on the late runs in a way the others' lines do not.
+// Every wheel's interval and forecasts, its jackknife moderated by the fleet's
+// (moderated_spread.h): the prior from the wheels whose line is wear alone. A wheel with a drift
+// fitted out keeps its own jackknife: its drift terms lean on the late runs in a way the others'
+// lines do not. The same wheels whose line is wear alone give the fleet's acceleration
+// (wear_acceleration.h), each weighted by its moderated inflation.
 void finish_wheels(FleetWear& fleet) {
   std::vector<SerialSpread> plain;
   for (const WheelWear& wheel : fleet.wheels) {
     if (wheel.fit && !wheel.sensor_fault) plain.push_back(wheel.own_spread);
   }
   const InflationPrior prior = inflation_prior(plain);
-  for (WheelWear& wheel : fleet.wheels) {
+  std::vector<SerialSpread> spreads;
+  std::vector<AccelerationSample> samples;
+  for (const WheelWear& wheel : fleet.wheels) {
+    if (!wheel.fit) {
+      spreads.emplace_back();
+      continue;
+    }
+    spreads.push_back(wheel.sensor_fault
+                          ? wheel.own_spread
+                          : moderated_spread(wheel.own_spread, prior, wheel.fit->rate_se));
+    if (!wheel.sensor_fault) {
+      samples.push_back({wheel.wheel.locomotive, wheel.acceleration_evidence,
+                         spreads.back().inflation, spreads.back().dof});
+    }
+  }
+  fleet.acceleration = pool_acceleration(samples);
+  for (std::size_t i = 0; i < fleet.wheels.size(); ++i) {
+    WheelWear& wheel = fleet.wheels[i];
     if (!wheel.fit) continue;
-    finish_wheel(wheel, fleet,
-                 wheel.sensor_fault
-                     ? wheel.own_spread
-                     : moderated_spread(wheel.own_spread, prior, wheel.fit->rate_se));
+    finish_wheel(wheel, fleet, spreads[i]);
     mark_negative_rate(wheel);
   }
 }

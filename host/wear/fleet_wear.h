@@ -6,7 +6,9 @@
 // reprofiling); a drift of one sensor away from its partner (sensor_drift.h) is a sensor fault and
 // is fitted out of that wheel's series rather than read as wear; each wheel's line
 // (wear_line_fit.h) gives its rate per 1000 km with a 95 % interval and the forecast of when its
-// current flange reaches the warning and the critical clearance (limit_forecast.h).
+// current flange reaches the warning and the critical clearance (limit_forecast.h), allowing
+// wear that speeds up or slows as the flange thins when the fleet's wheels show it
+// (wear_acceleration.h).
 #pragma once
 
 #include <optional>
@@ -20,6 +22,7 @@
 #include "sensor_flag_latch.h"
 #include "sensor_sensitivity.h"
 #include "thresholds.h"
+#include "wear_acceleration.h"
 #include "wear_line_fit.h"
 #include "wheel_history.h"
 
@@ -50,6 +53,8 @@ struct WheelWear {
   double rate_se = 0.0;
   int rate_dof = 0;
   SerialSpread own_spread;  // the wheel's own jackknife, before the moderation
+  // What its line says about wear speeding up as the flange thins (wear_acceleration.h).
+  AccelerationEvidence acceleration_evidence;
   double clearance_now_mm = 0.0;    // the fitted line at the last run (drift fitted out)
   double wear_now_mm = 0.0;         // clearance_now_mm - the sensor gap on a new flange
   LimitForecast warning, critical;  // 95 % intervals
@@ -66,6 +71,8 @@ struct FleetWear {
   double warning_clearance_mm = 0.0;
   double critical_clearance_mm = 0.0;
   std::vector<WheelWear> wheels;  // by days to the warning clearance, soonest first
+  // b pooled over the wheels whose line is wear alone; the forecasts use it when significant.
+  FleetAcceleration acceleration;
 };
 
 // `sensitivity`: the sensors' slope (mm/V) by clearance, from the calibration they ran with;

@@ -13,34 +13,69 @@
 namespace flange::host {
 namespace {
 
-std::optional<double> km_at(double gap_mm, double rate_mm_per_km) {
+// (1 - exp(-b G)) / b: the wear-to-distance factor (G as b -> 0), and its derivative in b.
+double accelerated_gap(double gap_mm, double b) {
+  const double x = b * gap_mm;
+  if (std::abs(x) < 1e-8) return gap_mm * (1.0 - x / 2.0);
+  return -std::expm1(-x) / b;
+}
+
+double accelerated_gap_per_b(double gap_mm, double b) {
+  const double x = b * gap_mm;
+  if (std::abs(x) < 1e-6) return -gap_mm * gap_mm * (0.5 - x / 3.0);
+  return (x * std::exp(-x) + std::expm1(-x)) / (b * b);
+}
+
+std::optional<double> km_at(double gap_mm, double rate_mm_per_km, double b) {
   if (!(rate_mm_per_km > 0.0)) return std::nullopt;
-  return gap_mm / rate_mm_per_km;
+  return accelerated_gap(gap_mm, b) / rate_mm_per_km;
 }
 
 // Relative standard deviations of the distance left and of the days to it (see the header),
-// and the degrees of freedom of the days' (Welch-Satterthwaite).
+// and the degrees of freedom of each (Welch-Satterthwaite).
 struct RelativeSpread {
   double km = 0.0, days = 0.0;
-  double days_dof = 0.0;
+  double km_dof = 0.0, days_dof = 0.0;
 };
 
 RelativeSpread relative_spread(const ForecastInput& input, double gap_mm) {
   const double r = input.rate_mm_per_km;
-  const double ratio = gap_mm / r;  // G / r = K
-  const double km_variance = input.clearance_now_se_mm * input.clearance_now_se_mm +
-                             ratio * ratio * input.rate_se_mm_per_km * input.rate_se_mm_per_km +
-                             2.0 * ratio * input.clearance_rate_covariance;
+  const double b = input.acceleration_per_mm;
+  const double km = accelerated_gap(gap_mm, b) / r;
+  // K's derivatives in the clearance now, the rate and b (through all three).
+  const double per_clearance = -std::exp(-b * gap_mm) / r;
+  const double per_rate = -km / r;
+  const double per_b = accelerated_gap_per_b(gap_mm, b) / r +
+                       per_clearance * input.clearance_per_acceleration +
+                       per_rate * input.rate_per_acceleration;
+  const double per_trend =
+      per_clearance * input.clearance_per_trend + per_rate * input.rate_per_trend;
+  const double line_variance =
+      per_clearance * per_clearance * input.clearance_now_se_mm * input.clearance_now_se_mm +
+      per_rate * per_rate * input.rate_se_mm_per_km * input.rate_se_mm_per_km +
+      2.0 * per_clearance * per_rate * input.clearance_rate_covariance;
+  const double line = std::max(0.0, line_variance) / (km * km);
+  const double acceleration =
+      std::max(0.0, per_b * per_b * input.acceleration_se * input.acceleration_se +
+                        per_trend * per_trend * input.trend_se * input.trend_se +
+                        2.0 * per_b * per_trend * input.acceleration_trend_covariance) /
+      (km * km);
   RelativeSpread spread;
-  spread.km = std::sqrt(std::max(0.0, km_variance)) / gap_mm;
+  spread.km = std::sqrt(line + acceleration);
+  const double line_part = line * line / std::max(1, input.dof);
+  const double acceleration_part =
+      acceleration > 0.0 ? acceleration * acceleration / std::max(1, input.acceleration_dof) : 0.0;
+  spread.km_dof = acceleration > 0.0 && line_part + acceleration_part > 0.0
+                      ? std::pow(spread.km, 4.0) / (line_part + acceleration_part)
+                      : static_cast<double>(input.dof);
   if (input.km_per_day > 0.0) {
     const double mean_term = input.km_per_day_se / input.km_per_day;
     const double future_term =
-        input.day_km_long_run_sd * input.day_km_long_run_sd / (input.km_per_day * ratio);
-    const double line = spread.km * spread.km, mean = mean_term * mean_term;
-    spread.days = std::sqrt(line + mean + future_term);
+        input.day_km_long_run_sd * input.day_km_long_run_sd / (input.km_per_day * km);
+    const double mean = mean_term * mean_term;
+    spread.days = std::sqrt(line + acceleration + mean + future_term);
     const double parts =
-        line * line / std::max(1, input.dof) + mean * mean / std::max(1, input.km_per_day_dof);
+        line_part + acceleration_part + mean * mean / std::max(1, input.km_per_day_dof);
     spread.days_dof = parts > 0.0 ? std::pow(spread.days, 4.0) / parts : 1e9;
   }
   return spread;
@@ -53,8 +88,8 @@ std::pair<std::optional<double>, std::optional<double>> bounds(double value, dou
   return {value / (1.0 + q_spread), high};
 }
 
-int days_dof_of(const RelativeSpread& spread) {
-  return static_cast<int>(std::min(1e6, std::max(1.0, std::floor(spread.days_dof))));
+int dof_of(double welch_satterthwaite) {
+  return static_cast<int>(std::min(1e6, std::max(1.0, std::floor(welch_satterthwaite))));
 }
 
 }  // namespace
@@ -78,16 +113,17 @@ LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_
   forecast.limit_clearance_mm = limit_clearance_mm;
   const double gap_mm = std::max(0.0, limit_clearance_mm - input.clearance_now_mm);
   forecast.reached = gap_mm == 0.0;
-  forecast.km = km_at(gap_mm, input.rate_mm_per_km);
+  const double b = input.acceleration_per_mm;
+  forecast.km = km_at(gap_mm, input.rate_mm_per_km, b);
   const bool spread_known = input.dof > 0 && forecast.km && !forecast.reached;
-  const double q = spread_known ? t_quantile(level, input.dof) : 0.0;
   const RelativeSpread spread = spread_known ? relative_spread(input, gap_mm) : RelativeSpread{};
-  const double q_days = spread_known ? t_quantile(level, days_dof_of(spread)) : 0.0;
+  const double q = spread_known ? t_quantile(level, dof_of(spread.km_dof)) : 0.0;
+  const double q_days = spread_known ? t_quantile(level, dof_of(spread.days_dof)) : 0.0;
   if (spread_known) {
     std::tie(forecast.km_low, forecast.km_high) = bounds(*forecast.km, q * spread.km);
   } else {
-    forecast.km_low = km_at(gap_mm, input.rate_high_mm_per_km);
-    forecast.km_high = km_at(gap_mm, input.rate_low_mm_per_km);
+    forecast.km_low = km_at(gap_mm, input.rate_high_mm_per_km, b);
+    forecast.km_high = km_at(gap_mm, input.rate_low_mm_per_km, b);
   }
   if (forecast.reached) forecast.km = forecast.km_low = forecast.km_high = 0.0;
   if (!(input.km_per_day > 0.0)) return forecast;

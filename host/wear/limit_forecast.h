@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: MIT
 // When a wheel reaches a clearance limit: the fitted line of its current flange (the segment
 // since the last reprofiling) extended from its last run at the fitted rate; days from distance
-// at the locomotive's mean km per calendar day over its history (depot days included).
+// at the locomotive's mean km per calendar day over its history (depot days included). With the
+// fleet's acceleration b (wear_acceleration.h: dw/dkm = r exp(b (w - w_now))) the km to a gap G
+// are K = (1 - exp(-b G)) / (b r), G / r as b -> 0, from the clearance and rate at the last run
+// corrected for b and the history's calendar trend (c - b g_c - gamma h_c, r - b g_r - gamma h_r).
 //
 // The interval holds three uncertainties, combined to first order (delta method) as a relative
 // standard deviation of the distance K = (limit - c) / r and of the days T = K / mu:
 //   (sd K / K)^2 = (var c + (G/r)^2 var r + 2 (G/r) cov(c, r)) / G^2,  G = limit - c
 //   (sd T / T)^2 = (sd K / K)^2 + (se mu / mu)^2 + lambda^2 / (mu K)
+// (with b: the partial derivatives of K in c and r, and the variance of the fleet's b and
+// gamma through K's total derivatives in them, their dof in Welch-Satterthwaite's)
 // the fitted clearance now and the rate (their covariance from the wear line, which allows
 // errors correlated from run to run, so it holds the reference of a flange reprofiled a few runs
 // ago), the mean km per day estimated from the history (se mu) and the km the locomotive has
@@ -49,6 +54,19 @@ struct ForecastInput {
   double km_per_day_se = 0.0;              // of the mean km per day
   double day_km_long_run_sd = 0.0;         // lambda: the long-run sd of a day's km
   int km_per_day_dof = 0;                  // of km_per_day_se
+  // The fleet's acceleration b per mm of wear (wear_acceleration.h; 0: a straight line), how
+  // the clearance now and the rate above move with b and with the calendar trend gamma
+  // (d c / d b = -g_c, d r / d b = -g_r; d c / d gamma = -h_c, d r / d gamma = -h_r), and the
+  // covariance of (b, gamma) with its degrees of freedom.
+  double acceleration_per_mm = 0.0;
+  double clearance_per_acceleration = 0.0;  // mm^2
+  double rate_per_acceleration = 0.0;       // mm^2 per km
+  double clearance_per_trend = 0.0;         // mm day
+  double rate_per_trend = 0.0;              // mm day per km
+  double acceleration_se = 0.0;
+  double trend_se = 0.0;
+  double acceleration_trend_covariance = 0.0;
+  int acceleration_dof = 0;
 };
 
 // The 95 % interval.

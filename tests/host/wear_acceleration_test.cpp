@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: MIT
+// Wear that speeds up as the flange thins, pooled over a fleet (wear_acceleration.h): on synthetic
+// fleets whose wear per km is r exp(b wear) the fleet's b is found and the km to the warning
+// clearance hold their level; on fleets that wear linearly the forecast is the straight line's.
+#include "wear_acceleration.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "fleet_wear.h"
+#include "limit_forecast.h"
+
+namespace flange::host {
+namespace {
+
+constexpr double kGapMm = 2.0;          // the clearance of a new flange (the sensor's setting)
+constexpr double kWarningWearMm = 6.0;  // the default warning clearance (8 mm) less the gap
+
+struct SyntheticFleet {
+  std::vector<WheelHistory> histories;
+  // Each wheel's true km from its last run to the warning clearance, by its position.
+  std::vector<double> true_km_to_warning;
+};
+
+// Five locomotives of six axles over 120 days: depot days every 6th, 150-750 km on the others,
+// 0.01 mm of noise per run; each wheel its own rate at no wear (0.03-0.12 mm per 1000 km) times
+// exp(b wear), starting at 0.5-4.4 mm of wear; an axle whose worse flange passes 4.6 mm is turned
+// back to 0.05 mm (recorded).
+SyntheticFleet synthetic_fleet(double b, std::uint32_t seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> km_of_day(150.0, 750.0), base_rate(0.03, 0.12),
+      start_wear(0.5, 4.4);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  SyntheticFleet fleet;
+  for (int loco = 1; loco <= 5; ++loco) {
+    const std::string name = "L0" + std::to_string(loco);
+    std::vector<WheelHistory> wheels;
+    std::vector<double> wear, rate, wear_at_last_run;
+    for (int axle = 1; axle <= 6; ++axle) {
+      for (const char* side : {"left", "right"}) {
+        wheels.push_back({{name, axle, side, static_cast<int>(wheels.size())}, {}, {}});
+        wear.push_back(start_wear(random));
+        wear_at_last_run.push_back(wear.back());
+        rate.push_back(base_rate(random) / 1000.0);
+      }
+    }
+    double odometer = 0.0;
+    for (int day = 0; day < 120; ++day) {
+      const double t = 20454.0 + day + 0.25;
+      for (std::size_t w = 0; w < wheels.size(); w += 2) {
+        if (std::max(wear[w], wear[w + 1]) <= 4.6) continue;
+        for (std::size_t s = w; s < w + 2; ++s) {
+          wear[s] = 0.05;
+          wheels[s].maintenance.push_back({"", t - 0.1, odometer, "reprofile"});
+        }
+      }
+      if (day % 6 == 5) continue;
+      for (std::size_t w = 0; w < wheels.size(); ++w) {
+        wheels[w].runs.push_back(
+            {loco * 1000 + day, "", t, odometer, kGapMm + wear[w] + noise(random)});
+        wear_at_last_run[w] = wear[w];
+      }
+      const double km = km_of_day(random);
+      odometer += km;
+      // The day's km in small steps, so the wear law is followed closely.
+      for (std::size_t w = 0; w < wheels.size(); ++w) {
+        for (int step = 0; step < 10; ++step) {
+          wear[w] += rate[w] * std::exp(b * wear[w]) * km / 10.0;
+        }
+      }
+    }
+    // The km from the last run to the warning wear, from the wear at that run.
+    for (std::size_t w = 0; w < wheels.size(); ++w) {
+      const double gap = kWarningWearMm - wear_at_last_run[w];
+      const double r_now = rate[w] * std::exp(b * wear_at_last_run[w]);
+      fleet.true_km_to_warning.push_back(b == 0.0 ? gap / r_now
+                                                  : -std::expm1(-b * gap) / (b * r_now));
+    }
+    fleet.histories.insert(fleet.histories.end(), wheels.begin(), wheels.end());
+  }
+  return fleet;
+}
+
+// The median of the true km (a wheel's position: its locomotive's number and channel) to the
+// warning over the forecast's, over the fleet's wheels.
+double median_true_over_forecast(const SyntheticFleet& truth, const FleetWear& fleet) {
+  std::vector<double> ratios;
+  for (const WheelWear& w : fleet.wheels) {
+    if (!w.warning.km || w.warning.reached) continue;
+    const int position = (std::stoi(w.wheel.locomotive.substr(1)) - 1) * 12 + w.wheel.channel;
+    ratios.push_back(truth.true_km_to_warning[static_cast<std::size_t>(position)] / *w.warning.km);
+  }
+  std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+  return ratios[ratios.size() / 2];
+}
+
+TEST(WearAcceleration, AFleetWearingFasterAsItThinsIsFoundAndItsDatesHoldTheirLevel) {
+  for (const std::uint32_t seed : {1u, 2u, 3u}) {
+    const SyntheticFleet truth = synthetic_fleet(0.06, seed);
+    const FleetWear fleet = estimate_fleet_wear(truth.histories, {});
+    EXPECT_TRUE(fleet.acceleration.significant) << "seed " << seed;
+    EXPECT_NEAR(fleet.acceleration.estimate, 0.06, 3.0 * fleet.acceleration.se) << "seed " << seed;
+    // The straight line's km run about 15 % long here; with b the median is within 3 %.
+    EXPECT_NEAR(median_true_over_forecast(truth, fleet), 1.0, 0.03) << "seed " << seed;
+  }
+}
+
+TEST(WearAcceleration, ALinearFleetKeepsTheStraightLinesForecast) {
+  for (const std::uint32_t seed : {1u, 2u, 3u}) {
+    const SyntheticFleet truth = synthetic_fleet(0.0, seed);
+    const FleetWear fleet = estimate_fleet_wear(truth.histories, {});
+    EXPECT_FALSE(fleet.acceleration.significant) << "seed " << seed;
+    EXPECT_NEAR(median_true_over_forecast(truth, fleet), 1.0, 0.03) << "seed " << seed;
+    for (const WheelWear& w : fleet.wheels) {
+      if (!w.warning.km || w.warning.reached) continue;
+      const double straight =
+          (fleet.warning_clearance_mm - w.clearance_now_mm) / (w.rate_mm_per_1000km / 1000.0);
+      EXPECT_NEAR(*w.warning.km, straight, 1e-9 * straight) << "seed " << seed;
+    }
+  }
+}
+
+TEST(LimitForecast, AnAcceleratingFlangesKmToTheLimitFollowTheThinningLaw) {
+  ForecastInput input{5.0, 0.05e-3, 0.04e-3, 0.06e-3, 300.0, 20000.0};
+  input.clearance_now_se_mm = 0.02;
+  input.rate_se_mm_per_km = 0.002e-3;
+  input.dof = 8;
+  const LimitForecast straight = forecast_limit(input, 8.0);
+  ASSERT_TRUE(straight.km.has_value());
+  EXPECT_NEAR(*straight.km, 3.0 / 0.05e-3, 1e-6);
+  // b -> 0: the straight line's km and interval.
+  input.acceleration_per_mm = 1e-12;
+  const LimitForecast barely = forecast_limit(input, 8.0);
+  EXPECT_NEAR(*barely.km, *straight.km, 1e-6 * *straight.km);
+  EXPECT_NEAR(*barely.km_high, *straight.km_high, 1e-6 * *straight.km_high);
+  // b = 0.06 per mm: (1 - exp(-b G)) / (b r), G = 3 mm; b's own uncertainty widens the interval.
+  input.acceleration_per_mm = 0.06;
+  const LimitForecast faster = forecast_limit(input, 8.0);
+  EXPECT_NEAR(*faster.km, -std::expm1(-0.18) / (0.06 * 0.05e-3), 1e-6 * *faster.km);
+  EXPECT_LT(*faster.km, *straight.km);
+  input.acceleration_se = 0.02;
+  input.acceleration_dof = 4;
+  const LimitForecast uncertain = forecast_limit(input, 8.0);
+  EXPECT_NEAR(*uncertain.km, *faster.km, 1e-9 * *faster.km);
+  EXPECT_LT(*uncertain.km_low, *faster.km_low);
+  EXPECT_GT(*uncertain.km_high, *faster.km_high);
+}
+
+}  // namespace
+}  // namespace flange::host
