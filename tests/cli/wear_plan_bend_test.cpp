@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "host/synthetic_accelerating_fleet.h"
+#include "limit_forecast.h"
 #include "reprofiling_plan.h"
 #include "store_test_fixture.h"
 #include "store_test_records.h"
@@ -35,8 +36,15 @@ void expect_same_plan(const host::ReprofilingPlan& a, const host::ReprofilingPla
 class WearPlanBend : public StoreTest {};
 
 TEST_P(WearPlanBend, TheStoredEstimatesPlanIsTheFreshOneOnAnAcceleratingFleet) {
-  const host::FleetWear fleet = host::estimate_fleet_wear(
-      testing::synthetic_accelerating_fleet(0.06, 1).histories, {});
+  // The runs' times as a store keeps them (the stored plan needs the wheel's last run's).
+  std::vector<host::WheelHistory> histories =
+      testing::synthetic_accelerating_fleet(0.06, 1).histories;
+  for (host::WheelHistory& history : histories) {
+    for (host::WearObservation& run : history.runs) {
+      run.at = host::date_of_day(run.day) + "T06:00:00Z";  // every run is at 06:00
+    }
+  }
+  const host::FleetWear fleet = host::estimate_fleet_wear(histories, {});
   ASSERT_TRUE(fleet.acceleration.significant);
   auto store = open();
   for (int loco = 1; loco <= 5; ++loco) {
