@@ -155,8 +155,8 @@ std::vector<std::string> migration_7() {
 // Migration N is migrations()[N - 1]; kStoreSchemaVersion is their count.
 const std::vector<std::vector<std::string>>& migrations() {
   static const std::vector<std::vector<std::string>> steps = {
-      migration_1(), migration_2(), migration_3(), migration_4(), migration_5(), migration_6(),
-      migration_7()};
+      migration_1(), migration_2(), migration_3(), migration_4(),
+      migration_5(), migration_6(), migration_7()};
   return steps;
 }
 

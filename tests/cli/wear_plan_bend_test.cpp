@@ -48,8 +48,8 @@ TEST_P(WearPlanBend, TheStoredEstimatesPlanIsTheFreshOneOnAnAcceleratingFleet) {
   ASSERT_TRUE(fleet.acceleration.significant);
   auto store = open();
   for (int loco = 1; loco <= 5; ++loco) {
-    store->record_run(testing::test_run("L0" + std::to_string(loco), testing::test_time(0), 100.0,
-                                        0.2));
+    store->record_run(
+        testing::test_run("L0" + std::to_string(loco), testing::test_time(0), 100.0, 0.2));
   }
   store->write_wear_estimates(wear_estimate_set(fleet, store->marks(), "2026-06-01T00:00:00Z"));
   const auto stored = open()->wear_estimates();
