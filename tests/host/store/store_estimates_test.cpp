@@ -135,8 +135,8 @@ TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
   EXPECT_GT(store->marks().last_run_id, before.last_run_id);
 }
 
-// A version 5 store's estimates (no sensor flags) open at version 6 with their rows and no flag,
-// and keep the flags written from then on.
+// A version 5 store's estimates (no sensor flags) open at the current version with their rows and
+// no flag, and keep the flags written from then on.
 TEST_P(StoreTest, AVersion5StoresEstimatesOpenWithNoSensorFlagAndKeepTheFlagsWrittenThen) {
   host::WearEstimateSet set;
   set.made_at = "2026-03-02T01:00:00Z";
