@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The wear estimates `flange wear` keeps (schema version 4: wear_estimates, one row: when and
-// with which settings; wheel_estimates, one row per wheel), and the store's marks that say
+// with which settings; wheel_estimates, one row per wheel; version 6 adds its sensor flag, 7 the
+// forecast's bend), and the store's marks that say
 // whether they are current. Written whole in one transaction; read in two queries.
 #include <fmt/format.h>
 
@@ -56,7 +57,17 @@ const std::vector<std::pair<std::string, std::string>>& flag_columns() {
   return columns;
 }
 
-void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e, bool with_flags) {
+// ... and the forecast's bend, from schema version 7 on.
+const std::vector<std::pair<std::string, std::string>>& bend_columns() {
+  static const std::vector<std::pair<std::string, std::string>> columns = {
+      {"forecast_clearance_now_mm", "DOUBLE PRECISION"},
+      {"forecast_rate", "DOUBLE PRECISION"},
+      {"acceleration_per_mm", "DOUBLE PRECISION"}};
+  return columns;
+}
+
+void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e, bool with_flags,
+             bool with_bend) {
   rows.add(wheel_id);
   rows.add(e.status);
   rows.add(static_cast<long long>(e.has_fit));
@@ -82,6 +93,12 @@ void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e
     rows.add(e.sensor_flag_first);
     rows.add(e.sensor_flag_confirmed);
   }
+  if (with_bend) {
+    for (const double value :
+         {e.forecast_clearance_now_mm, e.forecast_rate_mm_per_1000km, e.acceleration_per_mm}) {
+      rows.add(value);
+    }
+  }
 }
 
 // A nullable REAL read into a double: NaN for NULL.
@@ -95,10 +112,11 @@ struct Real {
 
 // Every wheel's row, by locomotive, axle, side.
 void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& wheels,
-                          bool with_flags) {
+                          bool with_flags, bool with_bend) {
   WheelEstimateRecord e;
   int has_fit = 0, reached = 0;
   Real day, rate, low, high, se, clearance, wear, km, km_se, day_sd, clearance_se, covariance;
+  Real forecast_clearance, forecast_rate, acceleration;
   soci::statement query =
       (sql.prepare << "SELECT l.name, w.axle, w.side, w.channel, e.status, e.has_fit,"
                       " e.segment_start, e.last_run_at, e.last_run_day, e.rate, e.rate_low,"
@@ -108,6 +126,9 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
                       " e.critical_reached, e.critical_date, e.warning_date, " +
                           std::string(with_flags ? "e.sensor_flag_first, e.sensor_flag_confirmed"
                                                  : "'', ''") +
+                          (with_bend ? ", e.forecast_clearance_now_mm, e.forecast_rate,"
+                                       " e.acceleration_per_mm"
+                                     : ", NULL, NULL, NULL") +
                           " FROM wheel_estimates e JOIN wheels w ON w.id = e.wheel_id"
                           " JOIN locomotives l ON l.id = w.locomotive_id"
                           " ORDER BY l.name, w.axle, w.side",
@@ -120,7 +141,9 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
        into(day_sd.value, day_sd.present), into(e.km_per_day_dof),
        into(clearance_se.value, clearance_se.present), into(covariance.value, covariance.present),
        into(reached), into(e.critical_date), into(e.warning_date), into(e.sensor_flag_first),
-       into(e.sensor_flag_confirmed));
+       into(e.sensor_flag_confirmed), into(forecast_clearance.value, forecast_clearance.present),
+       into(forecast_rate.value, forecast_rate.present),
+       into(acceleration.value, acceleration.present));
   query.execute();
   while (query.fetch()) {
     e.has_fit = has_fit != 0;
@@ -137,6 +160,9 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
     e.day_km_sd = day_sd.get();
     e.clearance_now_se_mm = clearance_se.get();
     e.clearance_rate_covariance = covariance.get();
+    e.forecast_clearance_now_mm = forecast_clearance.get();
+    e.forecast_rate_mm_per_1000km = forecast_rate.get();
+    e.acceleration_per_mm = acceleration.get();
     wheels.push_back(e);
   }
 }
@@ -168,7 +194,9 @@ void SociStore::write_wear_estimates(const WearEstimateSet& set) {
         use(set.warning_clearance_mm), use(set.critical_clearance_mm), use(set.max_step_mm);
     const bool with_flags = schema_version_ >= kSensorFlagSchemaVersion;
     auto columns = estimate_columns();
+    const bool with_bend = schema_version_ >= kForecastBendSchemaVersion;
     if (with_flags) columns.insert(columns.end(), flag_columns().begin(), flag_columns().end());
+    if (with_bend) columns.insert(columns.end(), bend_columns().begin(), bend_columns().end());
     ColumnBatch rows("wheel_estimates", columns);
     for (const WheelEstimateRecord& wheel : set.wheels) {
       const auto id = ids.find({wheel.wheel.locomotive, wheel.wheel.axle, wheel.wheel.side});
@@ -177,7 +205,7 @@ void SociStore::write_wear_estimates(const WearEstimateSet& set) {
                                      url_.shown, wheel.wheel.locomotive, wheel.wheel.axle,
                                      wheel.wheel.side));
       }
-      add_row(rows, id->second, wheel, with_flags);
+      add_row(rows, id->second, wheel, with_flags, with_bend);
     }
     rows.flush(sql_, url_.backend);
     transaction.commit();
@@ -207,7 +235,8 @@ std::optional<WearEstimateSet> SociStore::wear_estimates() {
         into(set.warning_clearance_mm), into(set.critical_clearance_mm), into(set.max_step_mm);
     if (!sql_.got_data()) return found;
     set.marks = {run, maintenance, calibration};
-    read_wheel_estimates(sql_, set.wheels, schema_version_ >= kSensorFlagSchemaVersion);
+    read_wheel_estimates(sql_, set.wheels, schema_version_ >= kSensorFlagSchemaVersion,
+                         schema_version_ >= kForecastBendSchemaVersion);
     found = std::move(set);
     return found;
   });

@@ -10,7 +10,7 @@
 
 namespace flange::host {
 
-inline constexpr int kStoreSchemaVersion = 6;
+inline constexpr int kStoreSchemaVersion = 7;
 
 // The version whose maintenance events carry a wheelset move's source axle as a column
 // (from_axle); an older one holds it only in the event's note, "from axle N[; note]".
@@ -19,6 +19,11 @@ inline constexpr int kFromAxleSchemaVersion = 5;
 // The version whose wear estimates carry each wheel's sensor flag (sensor_flag_first,
 // sensor_flag_confirmed).
 inline constexpr int kSensorFlagSchemaVersion = 6;
+
+// The version whose wear estimates carry the dates' forecast inputs for the plan
+// (forecast_clearance_now_mm, forecast_rate, acceleration_per_mm); an older one's estimates are
+// planned on the straight line.
+inline constexpr int kForecastBendSchemaVersion = 7;
 
 // Like open_store, but creates or migrates the schema only up to `version` (1 to
 // kStoreSchemaVersion). A store already past `version` is refused as newer.

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -228,6 +229,13 @@ struct WheelEstimateRecord {
   // schema version 6): the wheel's last run at the estimate that first flagged its sensor and
   // at the one that confirmed it ("" when none, or while pending).
   std::string sensor_flag_first, sensor_flag_confirmed;
+  // The clearance now and the rate as the dates' forecast had them and the fleet's acceleration
+  // b per mm it used (host/wear/reprofiling_plan.h, PlanInput; schema version 7), so the plan
+  // from the store bends as the dates do. NaN (NULL) when not kept: an estimate stored before
+  // version 7 is planned on the straight line, as it was then.
+  double forecast_clearance_now_mm = std::numeric_limits<double>::quiet_NaN();
+  double forecast_rate_mm_per_1000km = std::numeric_limits<double>::quiet_NaN();
+  double acceleration_per_mm = std::numeric_limits<double>::quiet_NaN();
 };
 
 // What the store held when a set of estimates was made: a set is current while these are the

@@ -140,10 +140,23 @@ std::vector<std::string> migration_6() {
   };
 }
 
+// 7: what the dates' forecast used, so the plan from the stored estimates bends as they do
+// (host/wear/reprofiling_plan.h, PlanInput): the clearance now and the rate after the fleet's
+// acceleration moved them, and that acceleration b per mm. NULL in the rows written before: the
+// straight line.
+std::vector<std::string> migration_7() {
+  return {
+      "ALTER TABLE wheel_estimates ADD COLUMN forecast_clearance_now_mm {real}",
+      "ALTER TABLE wheel_estimates ADD COLUMN forecast_rate {real}",
+      "ALTER TABLE wheel_estimates ADD COLUMN acceleration_per_mm {real}",
+  };
+}
+
 // Migration N is migrations()[N - 1]; kStoreSchemaVersion is their count.
 const std::vector<std::vector<std::string>>& migrations() {
   static const std::vector<std::vector<std::string>> steps = {
-      migration_1(), migration_2(), migration_3(), migration_4(), migration_5(), migration_6()};
+      migration_1(), migration_2(), migration_3(), migration_4(),
+      migration_5(), migration_6(), migration_7()};
   return steps;
 }
 

@@ -41,12 +41,14 @@ std::optional<PlannedWheel> planned_wheel(const PlanInput& wheel, double critica
   planned.rate_mm_per_1000km = wheel.rate_mm_per_1000km;
   planned.rate_at_risk_mm_per_1000km = rate_at_risk(wheel, risk);
   planned.critical_date = wheel.critical_reached ? "reached" : wheel.critical_date;
+  // The dates' forecast at the rate at risk: the same clearance now and law of wear.
   ForecastInput input;
-  input.clearance_now_mm = wheel.clearance_now_mm;
+  input.clearance_now_mm = wheel.forecast_clearance_now_mm;
   input.rate_mm_per_km = input.rate_low_mm_per_km = input.rate_high_mm_per_km =
       planned.rate_at_risk_mm_per_1000km / 1000.0;
   input.km_per_day = wheel.km_per_day;
   input.last_day = wheel.last_day;
+  input.acceleration_per_mm = wheel.acceleration_per_mm;
   const LimitForecast at_risk = forecast_limit(input, critical_clearance_mm);
   planned.reached = at_risk.reached;
   if (!at_risk.days) return planned;  // never at this rate: due_date stays ""
@@ -109,6 +111,14 @@ PlanInput plan_input(const WheelWear& wheel) {
   input.dof = wheel.rate_dof > 0 ? wheel.rate_dof : (wheel.fit ? wheel.fit->dof : 1);
   input.clearance_now_mm = wheel.clearance_now_mm;
   input.wear_now_mm = wheel.wear_now_mm;
+  input.forecast_clearance_now_mm = wheel.clearance_now_mm;
+  input.forecast_rate_mm_per_1000km = wheel.rate_mm_per_1000km;
+  const ForecastInput& forecast = wheel.forecast_input;
+  if (wheel.fit && forecast.acceleration_per_mm != 0.0) {
+    input.forecast_clearance_now_mm = forecast.clearance_now_mm;
+    input.forecast_rate_mm_per_1000km = forecast.rate_mm_per_km * 1000.0;
+    input.acceleration_per_mm = forecast.acceleration_per_mm;
+  }
   input.km_per_day = wheel.km_per_day;
   if (!wheel.runs.empty()) {
     input.last_day = wheel.runs.back().day;
@@ -126,7 +136,7 @@ double rate_at_risk(const PlanInput& wheel, double risk) {
   // interval is not symmetric about the rate).
   const double half = t >= 0.0 ? wheel.rate_high - wheel.rate_mm_per_1000km
                                : wheel.rate_mm_per_1000km - wheel.rate_low;
-  return wheel.rate_mm_per_1000km + t * half / t_stated;
+  return wheel.forecast_rate_mm_per_1000km + t * half / t_stated;
 }
 
 double rate_at_risk(const WheelWear& wheel, double risk) {

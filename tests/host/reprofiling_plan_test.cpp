@@ -2,7 +2,9 @@
 // The reprofiling plan: each wheel's date from its rate at the chosen risk, the wheels due
 // before the horizon soonest first, the bad requests refused, and the risk kept: over many
 // wheels with known rates, the share that reach the critical clearance before their date is
-// the risk asked for.
+// the risk asked for. On a fleet whose wear speeds up as the flange thins the plan follows the
+// dates' bent forecast (at risk 1/2 its date is the critical date); without the fleet's
+// acceleration it is the straight line's to the bit.
 #include "reprofiling_plan.h"
 
 #include <fmt/format.h>
@@ -11,8 +13,12 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <stdexcept>
 
+#include "host/synthetic_accelerating_fleet.h"
 #include "input_error.h"
+#include "limit_forecast.h"
+#include "wear_line_fit.h"
 
 namespace flange::host {
 namespace {
@@ -118,6 +124,84 @@ TEST(ReprofilingPlan, BadRequestsAreRefusedWithTheirRange) {
             std::string::npos);
   for (const char* date : {"2026-13-01", "2026-02-30", "next week", "2026-10-01T00:00Z", ""}) {
     EXPECT_NE(message({date, 0.05}).find("is not a date"), std::string::npos) << date;
+  }
+}
+
+// The plan's date as it was made before the fleet's acceleration reached it: the reported rate's
+// quantile and the fitted clearance on the straight line.
+double straight_line_due_day(const WheelWear& w, double critical_clearance_mm, double risk) {
+  PlanInput input = plan_input(w);
+  input.forecast_clearance_now_mm = input.clearance_now_mm;
+  input.forecast_rate_mm_per_1000km = input.rate_mm_per_1000km;
+  input.acceleration_per_mm = 0.0;
+  const double t = t_one_sided(1.0 - risk, input.dof);
+  const double half =
+      t >= 0.0 ? w.rate_high - w.rate_mm_per_1000km : w.rate_mm_per_1000km - w.rate_low;
+  const double rate = w.rate_mm_per_1000km + t * half / t95(input.dof);
+  EXPECT_EQ(rate, rate_at_risk(input, risk));
+  ForecastInput straight;
+  straight.clearance_now_mm = w.clearance_now_mm;
+  straight.rate_mm_per_km = straight.rate_low_mm_per_km = straight.rate_high_mm_per_km =
+      rate / 1000.0;
+  straight.km_per_day = w.km_per_day;
+  straight.last_day = w.runs.back().day;
+  const LimitForecast at_risk = forecast_limit(straight, critical_clearance_mm);
+  return at_risk.days ? straight.last_day + *at_risk.days : NAN;
+}
+
+const WheelWear& estimated(const FleetWear& fleet, const WheelId& wheel) {
+  for (const WheelWear& e : fleet.wheels) {
+    if (e.wheel == wheel) return e;
+  }
+  throw std::logic_error("no such wheel");
+}
+
+// Wear per km r exp(0.06 wear): the dates bend, and so does the plan. At risk 1/2 the rate at
+// risk is the forecast's, so each wheel's date is its critical date, never after it; the straight
+// line's date (the plan before it followed the bend) falls after the critical date on most wheels.
+TEST(ReprofilingPlan, OnAnAcceleratingFleetTheDateAtEvenRiskIsTheCriticalDate) {
+  for (const std::uint32_t seed : {1u, 2u, 3u}) {
+    const FleetWear fleet =
+        estimate_fleet_wear(testing::synthetic_accelerating_fleet(0.06, seed).histories, {});
+    ASSERT_TRUE(fleet.acceleration.significant) << "seed " << seed;
+    const ReprofilingPlan plan = plan_reprofiling(fleet, {"2200-01-01", 0.5});
+    ASSERT_GE(plan.wheels.size(), 50u) << "seed " << seed;
+    int bent = 0, straight_after_critical = 0;
+    for (const PlannedWheel& w : plan.wheels) {
+      const WheelWear& e = estimated(fleet, w.wheel);
+      if (w.reached) continue;
+      ASSERT_TRUE(e.critical.days.has_value());
+      const double critical_day = e.runs.back().day + *e.critical.days;
+      EXPECT_NEAR(w.due_day, critical_day, 1e-6) << "seed " << seed;
+      EXPECT_LE(w.due_date, e.critical.date) << "seed " << seed;
+      if (e.forecast_input.acceleration_per_mm == 0.0) continue;
+      ++bent;
+      if (straight_line_due_day(e, fleet.critical_clearance_mm, 0.5) > critical_day + 1.0) {
+        ++straight_after_critical;
+      }
+    }
+    EXPECT_GE(bent, 50) << "seed " << seed;
+    EXPECT_GT(straight_after_critical, bent / 2) << "seed " << seed;
+  }
+}
+
+// A fleet that wears linearly: its b is within 0, the dates are the straight line's and so is the
+// plan, to the bit, at any risk.
+TEST(ReprofilingPlan, WithoutTheFleetsAccelerationThePlanIsTheStraightLinesToTheBit) {
+  for (const std::uint32_t seed : {1u, 2u}) {
+    const FleetWear fleet =
+        estimate_fleet_wear(testing::synthetic_accelerating_fleet(0.0, seed).histories, {});
+    ASSERT_FALSE(fleet.acceleration.significant) << "seed " << seed;
+    for (const double risk : {0.01, 0.05, 0.5, 0.9}) {
+      const ReprofilingPlan plan = plan_reprofiling(fleet, {"2200-01-01", risk});
+      ASSERT_GE(plan.wheels.size(), 50u);
+      for (const PlannedWheel& w : plan.wheels) {
+        const WheelWear& e = estimated(fleet, w.wheel);
+        EXPECT_EQ(plan_input(e).acceleration_per_mm, 0.0);
+        EXPECT_EQ(w.due_day, straight_line_due_day(e, fleet.critical_clearance_mm, risk))
+            << "seed " << seed << " risk " << risk;
+      }
+    }
   }
 }
 
