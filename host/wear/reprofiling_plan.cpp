@@ -63,14 +63,11 @@ std::optional<PlannedWheel> planned_wheel(const PlanInput& wheel, double critica
     planned.reached = at_rate.reached;
     days = at_rate.days;
   } else {
-    ForecastInput input = *wheel.forecast;
-    input.km_per_day = wheel.km_per_day;
-    input.last_day = wheel.last_day;
-    planned.reached = forecast_limit(input, critical_clearance_mm).reached;
-    days = critical_days_at_risk(input, critical_clearance_mm, risk);
+    planned.reached = forecast_limit(*wheel.forecast, critical_clearance_mm).reached;
+    days = critical_days_at_risk(*wheel.forecast, critical_clearance_mm, risk);
   }
   if (!days) return planned;  // never at this risk: due_date stays ""
-  planned.due_day = wheel.last_day + *days;
+  planned.due_day = (planned.on_rate_alone ? wheel.last_day : wheel.forecast->last_day) + *days;
   planned.due_date = date_of_day(planned.due_day);
   return planned;
 }

@@ -86,9 +86,10 @@ void check_plan_request(const PlanRequest& request, double last_run_day,
 // The latest run over the histories: (day, ISO time). Histories must not be empty.
 std::pair<double, std::string> last_run(const std::vector<WheelHistory>& histories);
 
-// The rate (mm per 1000 km) that a wheel's true rate exceeds with probability `risk`: the
-// forecast's rate (with b, the rate at the last run as the bend has it) and the stated interval's
-// half-widths (b moves the rate and both ends alike).
+// The rate (mm per 1000 km) that a wheel's true rate exceeds with probability `risk`, its
+// uncertainty alone: the forecast's rate (with b, the rate at the last run as the bend has it)
+// and the stated interval's half-widths (b moves the rate and both ends alike). The plan's date
+// for a wheel without a forecast input; reported beside the date's quantile otherwise.
 double rate_at_risk(const PlanInput& wheel, double risk);
 double rate_at_risk(const WheelWear& wheel, double risk);
 

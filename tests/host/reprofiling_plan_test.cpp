@@ -155,9 +155,9 @@ const WheelWear& estimated(const FleetWear& fleet, const WheelId& wheel) {
   throw std::logic_error("no such wheel");
 }
 
-// Wear per km r exp(0.06 wear): the dates bend, and so does the plan. At risk 1/2 the rate at
-// risk is the forecast's, so each wheel's date is its critical date, never after it; the straight
-// line's date (the plan before it followed the bend) falls after the critical date on most wheels.
+// Wear per km r exp(0.06 wear): the dates bend, and so does the plan. At risk 1/2 each wheel's
+// date is its critical date (the forecast's median), never after it; the straight line's date at
+// the rate's quantile falls after the critical date on most wheels.
 TEST(ReprofilingPlan, OnAnAcceleratingFleetTheDateAtEvenRiskIsTheCriticalDate) {
   for (const std::uint32_t seed : {1u, 2u, 3u}) {
     const FleetWear fleet =
