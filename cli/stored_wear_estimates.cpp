@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "forecast_input_json.h"
 #include "store.h"
 
 namespace flange::cli {
@@ -45,9 +46,7 @@ host::WheelEstimateRecord estimate_record(const host::WheelWear& wheel) {
   e.critical_reached = wheel.critical.reached;
   e.critical_date = wheel.critical.date;
   e.warning_date = wheel.warning.reached ? "reached" : wheel.warning.date;
-  e.forecast_clearance_now_mm = plan.forecast_clearance_now_mm;
-  e.forecast_rate_mm_per_1000km = plan.forecast_rate_mm_per_1000km;
-  e.acceleration_per_mm = plan.acceleration_per_mm;
+  if (plan.forecast) e.forecast = forecast_input_json(*plan.forecast);
   if (wheel.sensor_flag) {
     e.sensor_flag_first = wheel.sensor_flag->first_flagged;
     e.sensor_flag_confirmed = wheel.sensor_flag->confirmed;
@@ -135,15 +134,17 @@ std::vector<host::PlanInput> plan_inputs(const host::WearEstimateSet& stored) {
     input.dof = e.rate_dof > 0 ? e.rate_dof : (e.has_fit ? e.fit_dof : 1);
     input.clearance_now_mm = e.clearance_now_mm;
     input.wear_now_mm = e.wear_now_mm;
-    // The forecast's bend when kept (schema version 7); an estimate stored before: the straight
-    // line, as the plan was then.
-    const bool bend_kept = std::isfinite(e.forecast_clearance_now_mm) &&
-                           std::isfinite(e.forecast_rate_mm_per_1000km) &&
-                           std::isfinite(e.acceleration_per_mm) && e.acceleration_per_mm != 0.0;
-    input.forecast_clearance_now_mm = bend_kept ? e.forecast_clearance_now_mm : e.clearance_now_mm;
-    input.forecast_rate_mm_per_1000km =
-        bend_kept ? e.forecast_rate_mm_per_1000km : e.rate_mm_per_1000km;
-    input.acceleration_per_mm = bend_kept ? e.acceleration_per_mm : 0.0;
+    // The dates' forecast input when kept (schema version 7); an estimate stored before: the
+    // rate's quantile alone, as the plan was then.
+    if (!e.forecast.empty()) {
+      try {
+        input.forecast = forecast_input_of_json(e.forecast);
+      } catch (const std::invalid_argument& error) {
+        throw host::StoreError(fmt::format("wheel_estimates of {} axle {} {}: {}",
+                                           e.wheel.locomotive, e.wheel.axle, e.wheel.side,
+                                           error.what()));
+      }
+    }
     input.km_per_day = e.km_per_day;
     input.last_day = e.last_run_day;
     input.last_at = e.last_run_at;

@@ -57,17 +57,15 @@ const std::vector<std::pair<std::string, std::string>>& flag_columns() {
   return columns;
 }
 
-// ... and the forecast's bend, from schema version 7 on.
-const std::vector<std::pair<std::string, std::string>>& bend_columns() {
+// ... and the dates' forecast input, from schema version 7 on.
+const std::vector<std::pair<std::string, std::string>>& forecast_columns() {
   static const std::vector<std::pair<std::string, std::string>> columns = {
-      {"forecast_clearance_now_mm", "DOUBLE PRECISION"},
-      {"forecast_rate", "DOUBLE PRECISION"},
-      {"acceleration_per_mm", "DOUBLE PRECISION"}};
+      {"forecast", "TEXT"}};
   return columns;
 }
 
 void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e, bool with_flags,
-             bool with_bend) {
+             bool with_forecast) {
   rows.add(wheel_id);
   rows.add(e.status);
   rows.add(static_cast<long long>(e.has_fit));
@@ -93,12 +91,7 @@ void add_row(ColumnBatch& rows, long long wheel_id, const WheelEstimateRecord& e
     rows.add(e.sensor_flag_first);
     rows.add(e.sensor_flag_confirmed);
   }
-  if (with_bend) {
-    for (const double value :
-         {e.forecast_clearance_now_mm, e.forecast_rate_mm_per_1000km, e.acceleration_per_mm}) {
-      rows.add(value);
-    }
-  }
+  if (with_forecast) rows.add(e.forecast);
 }
 
 // A nullable REAL read into a double: NaN for NULL.
@@ -112,11 +105,10 @@ struct Real {
 
 // Every wheel's row, by locomotive, axle, side.
 void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& wheels,
-                          bool with_flags, bool with_bend) {
+                          bool with_flags, bool with_forecast) {
   WheelEstimateRecord e;
   int has_fit = 0, reached = 0;
   Real day, rate, low, high, se, clearance, wear, km, km_se, day_sd, clearance_se, covariance;
-  Real forecast_clearance, forecast_rate, acceleration;
   soci::statement query =
       (sql.prepare << "SELECT l.name, w.axle, w.side, w.channel, e.status, e.has_fit,"
                       " e.segment_start, e.last_run_at, e.last_run_day, e.rate, e.rate_low,"
@@ -126,9 +118,7 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
                       " e.critical_reached, e.critical_date, e.warning_date, " +
                           std::string(with_flags ? "e.sensor_flag_first, e.sensor_flag_confirmed"
                                                  : "'', ''") +
-                          (with_bend ? ", e.forecast_clearance_now_mm, e.forecast_rate,"
-                                       " e.acceleration_per_mm"
-                                     : ", NULL, NULL, NULL") +
+                          (with_forecast ? ", e.forecast" : ", ''") +
                           " FROM wheel_estimates e JOIN wheels w ON w.id = e.wheel_id"
                           " JOIN locomotives l ON l.id = w.locomotive_id"
                           " ORDER BY l.name, w.axle, w.side",
@@ -141,9 +131,7 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
        into(day_sd.value, day_sd.present), into(e.km_per_day_dof),
        into(clearance_se.value, clearance_se.present), into(covariance.value, covariance.present),
        into(reached), into(e.critical_date), into(e.warning_date), into(e.sensor_flag_first),
-       into(e.sensor_flag_confirmed), into(forecast_clearance.value, forecast_clearance.present),
-       into(forecast_rate.value, forecast_rate.present),
-       into(acceleration.value, acceleration.present));
+       into(e.sensor_flag_confirmed), into(e.forecast));
   query.execute();
   while (query.fetch()) {
     e.has_fit = has_fit != 0;
@@ -160,9 +148,6 @@ void read_wheel_estimates(soci::session& sql, std::vector<WheelEstimateRecord>& 
     e.day_km_sd = day_sd.get();
     e.clearance_now_se_mm = clearance_se.get();
     e.clearance_rate_covariance = covariance.get();
-    e.forecast_clearance_now_mm = forecast_clearance.get();
-    e.forecast_rate_mm_per_1000km = forecast_rate.get();
-    e.acceleration_per_mm = acceleration.get();
     wheels.push_back(e);
   }
 }
@@ -194,9 +179,9 @@ void SociStore::write_wear_estimates(const WearEstimateSet& set) {
         use(set.warning_clearance_mm), use(set.critical_clearance_mm), use(set.max_step_mm);
     const bool with_flags = schema_version_ >= kSensorFlagSchemaVersion;
     auto columns = estimate_columns();
-    const bool with_bend = schema_version_ >= kForecastBendSchemaVersion;
+    const bool with_forecast = schema_version_ >= kForecastSchemaVersion;
     if (with_flags) columns.insert(columns.end(), flag_columns().begin(), flag_columns().end());
-    if (with_bend) columns.insert(columns.end(), bend_columns().begin(), bend_columns().end());
+    if (with_forecast) columns.insert(columns.end(), forecast_columns().begin(), forecast_columns().end());
     ColumnBatch rows("wheel_estimates", columns);
     for (const WheelEstimateRecord& wheel : set.wheels) {
       const auto id = ids.find({wheel.wheel.locomotive, wheel.wheel.axle, wheel.wheel.side});
@@ -205,7 +190,7 @@ void SociStore::write_wear_estimates(const WearEstimateSet& set) {
                                      url_.shown, wheel.wheel.locomotive, wheel.wheel.axle,
                                      wheel.wheel.side));
       }
-      add_row(rows, id->second, wheel, with_flags, with_bend);
+      add_row(rows, id->second, wheel, with_flags, with_forecast);
     }
     rows.flush(sql_, url_.backend);
     transaction.commit();
@@ -236,7 +221,7 @@ std::optional<WearEstimateSet> SociStore::wear_estimates() {
     if (!sql_.got_data()) return found;
     set.marks = {run, maintenance, calibration};
     read_wheel_estimates(sql_, set.wheels, schema_version_ >= kSensorFlagSchemaVersion,
-                         schema_version_ >= kForecastBendSchemaVersion);
+                         schema_version_ >= kForecastSchemaVersion);
     found = std::move(set);
     return found;
   });

@@ -20,10 +20,9 @@ inline constexpr int kFromAxleSchemaVersion = 5;
 // sensor_flag_confirmed).
 inline constexpr int kSensorFlagSchemaVersion = 6;
 
-// The version whose wear estimates carry the dates' forecast inputs for the plan
-// (forecast_clearance_now_mm, forecast_rate, acceleration_per_mm); an older one's estimates are
-// planned on the straight line.
-inline constexpr int kForecastBendSchemaVersion = 7;
+// The version whose wear estimates carry the dates' whole forecast input for the plan (forecast,
+// JSON); an older one's estimates are planned on the rate's quantile alone.
+inline constexpr int kForecastSchemaVersion = 7;
 
 // Like open_store, but creates or migrates the schema only up to `version` (1 to
 // kStoreSchemaVersion). A store already past `version` is refused as newer.

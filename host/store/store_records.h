@@ -229,13 +229,11 @@ struct WheelEstimateRecord {
   // schema version 6): the wheel's last run at the estimate that first flagged its sensor and
   // at the one that confirmed it ("" when none, or while pending).
   std::string sensor_flag_first, sensor_flag_confirmed;
-  // The clearance now and the rate as the dates' forecast had them and the fleet's acceleration
-  // b per mm it used (host/wear/reprofiling_plan.h, PlanInput; schema version 7), so the plan
-  // from the store bends as the dates do. NaN (NULL) when not kept: an estimate stored before
-  // version 7 is planned on the straight line, as it was then.
-  double forecast_clearance_now_mm = std::numeric_limits<double>::quiet_NaN();
-  double forecast_rate_mm_per_1000km = std::numeric_limits<double>::quiet_NaN();
-  double acceleration_per_mm = std::numeric_limits<double>::quiet_NaN();
+  // The dates' whole forecast input as JSON (host/wear/limit_forecast.h, ForecastInput; schema
+  // version 7; cli/stored_wear_estimates.cpp writes and reads it), so the plan from the store is
+  // the same quantile of the same forecast. "" when not kept: an estimate stored before version
+  // 7 is planned on the rate's quantile alone, as it was then.
+  std::string forecast;
 };
 
 // What the store held when a set of estimates was made: a set is current while these are the

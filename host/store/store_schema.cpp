@@ -140,15 +140,13 @@ std::vector<std::string> migration_6() {
   };
 }
 
-// 7: what the dates' forecast used, so the plan from the stored estimates bends as they do
-// (host/wear/reprofiling_plan.h, PlanInput): the clearance now and the rate after the fleet's
-// acceleration moved them, and that acceleration b per mm. NULL in the rows written before: the
-// straight line.
+// 7: the dates' whole forecast input, so the plan from the stored estimates is the same
+// quantile of the same forecast (host/wear/reprofiling_plan.h, PlanInput): JSON, written and
+// read by cli/stored_wear_estimates.cpp. '' in the rows written before: planned on the rate's
+// quantile alone, as they were then.
 std::vector<std::string> migration_7() {
   return {
-      "ALTER TABLE wheel_estimates ADD COLUMN forecast_clearance_now_mm {real}",
-      "ALTER TABLE wheel_estimates ADD COLUMN forecast_rate {real}",
-      "ALTER TABLE wheel_estimates ADD COLUMN acceleration_per_mm {real}",
+      "ALTER TABLE wheel_estimates ADD COLUMN forecast TEXT NOT NULL DEFAULT ''",
   };
 }
 

@@ -30,7 +30,21 @@ double day_of_plan_date(const std::string& text) {
                                printable_excerpt(text)));
 }
 
-// The wheel's plan entry from the forecast at its rate at risk; nothing without a forecast.
+// The forecast at the rate at risk alone (a wheel without a usable forecast input): the straight
+// line from the fitted clearance, or the bent forecast's clearance and b when it has them.
+LimitForecast forecast_at_rate(const PlanInput& wheel, double critical_clearance_mm, double rate) {
+  ForecastInput input;
+  const bool bent = wheel.forecast && wheel.forecast->acceleration_per_mm != 0.0;
+  input.clearance_now_mm = bent ? wheel.forecast->clearance_now_mm : wheel.clearance_now_mm;
+  input.acceleration_per_mm = bent ? wheel.forecast->acceleration_per_mm : 0.0;
+  input.rate_mm_per_km = input.rate_low_mm_per_km = input.rate_high_mm_per_km = rate / 1000.0;
+  input.km_per_day = wheel.km_per_day;
+  input.last_day = wheel.last_day;
+  return forecast_limit(input, critical_clearance_mm);
+}
+
+// The wheel's plan entry: its critical date's quantile at the risk, from its forecast input (or
+// its rate's quantile alone without one); nothing without a forecast.
 std::optional<PlannedWheel> planned_wheel(const PlanInput& wheel, double critical_clearance_mm,
                                           double risk) {
   if (!wheel.has_forecast) return std::nullopt;
@@ -41,18 +55,19 @@ std::optional<PlannedWheel> planned_wheel(const PlanInput& wheel, double critica
   planned.rate_mm_per_1000km = wheel.rate_mm_per_1000km;
   planned.rate_at_risk_mm_per_1000km = rate_at_risk(wheel, risk);
   planned.critical_date = wheel.critical_reached ? "reached" : wheel.critical_date;
-  // The dates' forecast at the rate at risk: the same clearance now and law of wear.
-  ForecastInput input;
-  input.clearance_now_mm = wheel.forecast_clearance_now_mm;
-  input.rate_mm_per_km = input.rate_low_mm_per_km = input.rate_high_mm_per_km =
-      planned.rate_at_risk_mm_per_1000km / 1000.0;
-  input.km_per_day = wheel.km_per_day;
-  input.last_day = wheel.last_day;
-  input.acceleration_per_mm = wheel.acceleration_per_mm;
-  const LimitForecast at_risk = forecast_limit(input, critical_clearance_mm);
-  planned.reached = at_risk.reached;
-  if (!at_risk.days) return planned;  // never at this rate: due_date stays ""
-  planned.due_day = input.last_day + *at_risk.days;
+  planned.on_rate_alone = !wheel.forecast || wheel.forecast->dof <= 0;
+  std::optional<double> days;
+  if (planned.on_rate_alone) {
+    const LimitForecast at_rate =
+        forecast_at_rate(wheel, critical_clearance_mm, planned.rate_at_risk_mm_per_1000km);
+    planned.reached = at_rate.reached;
+    days = at_rate.days;
+  } else {
+    planned.reached = forecast_limit(*wheel.forecast, critical_clearance_mm).reached;
+    days = critical_days_at_risk(*wheel.forecast, critical_clearance_mm, risk);
+  }
+  if (!days) return planned;  // never at this risk: due_date stays ""
+  planned.due_day = (planned.on_rate_alone ? wheel.last_day : wheel.forecast->last_day) + *days;
   planned.due_date = date_of_day(planned.due_day);
   return planned;
 }
@@ -111,14 +126,7 @@ PlanInput plan_input(const WheelWear& wheel) {
   input.dof = wheel.rate_dof > 0 ? wheel.rate_dof : (wheel.fit ? wheel.fit->dof : 1);
   input.clearance_now_mm = wheel.clearance_now_mm;
   input.wear_now_mm = wheel.wear_now_mm;
-  input.forecast_clearance_now_mm = wheel.clearance_now_mm;
-  input.forecast_rate_mm_per_1000km = wheel.rate_mm_per_1000km;
-  const ForecastInput& forecast = wheel.forecast_input;
-  if (wheel.fit && forecast.acceleration_per_mm != 0.0) {
-    input.forecast_clearance_now_mm = forecast.clearance_now_mm;
-    input.forecast_rate_mm_per_1000km = forecast.rate_mm_per_km * 1000.0;
-    input.acceleration_per_mm = forecast.acceleration_per_mm;
-  }
+  if (wheel.fit) input.forecast = wheel.forecast_input;
   input.km_per_day = wheel.km_per_day;
   if (!wheel.runs.empty()) {
     input.last_day = wheel.runs.back().day;
@@ -136,7 +144,18 @@ double rate_at_risk(const PlanInput& wheel, double risk) {
   // interval is not symmetric about the rate).
   const double half = t >= 0.0 ? wheel.rate_high - wheel.rate_mm_per_1000km
                                : wheel.rate_mm_per_1000km - wheel.rate_low;
-  return wheel.forecast_rate_mm_per_1000km + t * half / t_stated;
+  // The bent forecast's rate when the fleet's acceleration moved it, else the fitted one.
+  const bool bent = wheel.forecast && wheel.forecast->acceleration_per_mm != 0.0;
+  const double rate = bent ? wheel.forecast->rate_mm_per_km * 1000.0 : wheel.rate_mm_per_1000km;
+  return rate + t * half / t_stated;
+}
+
+std::optional<double> critical_days_at_risk(const ForecastInput& input,
+                                            double critical_clearance_mm, double risk) {
+  if (risk == 0.5) return forecast_limit(input, critical_clearance_mm).days;
+  const LimitForecast bounds =
+      forecast_limit(input, critical_clearance_mm, std::abs(1.0 - 2.0 * risk));
+  return risk < 0.5 ? bounds.days_low : bounds.days_high;
 }
 
 double rate_at_risk(const WheelWear& wheel, double risk) {
@@ -206,9 +225,9 @@ void write_plan_csv(const std::filesystem::path& path, const ReprofilingPlan& pl
 std::string plan_html_section(const ReprofilingPlan& plan) {
   std::string html = fmt::format(
       "<h2>Reprofiling plan before {}</h2>\n<p>{} wheels must be reprofiled before {} for a risk "
-      "of {:g} % of reaching the critical clearance first (each wheel's date: its current "
-      "flange at the critical clearance at the rate it exceeds with that probability, from the "
-      "last run, {}). Soonest first.</p>\n",
+      "of {:g} % of reaching the critical clearance first (each wheel's date: the one its "
+      "critical date falls before with that probability, the dates' forecast's quantile, from "
+      "the last run, {}; the rate at risk is the rate's quantile alone). Soonest first.</p>\n",
       coeffs::html_escape(plan.request.before), plan.wheels.size(),
       coeffs::html_escape(plan.request.before), 100.0 * plan.request.risk,
       coeffs::html_escape(plan.last_run_at));
@@ -226,6 +245,15 @@ std::string plan_html_section(const ReprofilingPlan& plan) {
         w.critical_date.empty() ? "-" : w.critical_date);
   }
   html += "</table>\n";
+  const auto on_rate = std::count_if(plan.wheels.begin(), plan.wheels.end(),
+                                     [](const PlannedWheel& w) { return w.on_rate_alone; });
+  if (on_rate > 0) {
+    html += fmt::format(
+        "<p>{} of these wheels' estimates keep no forecast input (stored before schema version "
+        "7): their dates are the critical clearance at the rate at risk alone, without the km "
+        "per day's uncertainty.</p>\n",
+        on_rate);
+  }
   if (!plan.unplanned.empty()) {
     html += "<p>Not planned (no forecast: too few runs, or no distance run):";
     for (const PlanInput& w : plan.unplanned) {
@@ -242,6 +270,12 @@ std::string plan_summary_text(const ReprofilingPlan& plan) {
   if (!plan.wheels.empty()) {
     text += fmt::format("  first: {} by {}\n", wheel_text(plan.wheels.front().wheel),
                         plan.wheels.front().due_date);
+  }
+  const auto on_rate = std::count_if(plan.wheels.begin(), plan.wheels.end(),
+                                     [](const PlannedWheel& w) { return w.on_rate_alone; });
+  if (on_rate > 0) {
+    text += fmt::format("  {} wheels planned on the rate at risk alone (no forecast input kept)\n",
+                        on_rate);
   }
   if (!plan.unplanned.empty()) {
     text += fmt::format("  {} wheels without a forecast are not planned\n", plan.unplanned.size());

@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: MIT
-// The plan from the estimates a store keeps follows the dates' bent forecast as the plan
-// re-estimated does: on a synthetic fleet whose wear speeds up as the flange thins, the estimates
-// written to the store and read back give the fresh plan, date for date, at three risks; the same
-// rows without the forecast's bend (an estimate kept before schema version 7) give the straight
-// line's plan. On SQLite and on the PostgreSQL server of the StorePostgres fixture.
+// The plan from the estimates a store keeps is the same quantile of the same forecast as the plan
+// re-estimated: on a synthetic fleet whose wear speeds up as the flange thins, the estimates
+// written to the store and read back (the whole forecast input as JSON) give the fresh plan,
+// date for date, at four risks; the same rows without the forecast input (an estimate kept
+// before schema version 7) give the plan on the rate's quantile alone, and the page says so. On
+// SQLite and on the PostgreSQL server of the StorePostgres fixture.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "forecast_input_json.h"
 #include "host/synthetic_accelerating_fleet.h"
 #include "limit_forecast.h"
 #include "reprofiling_plan.h"
@@ -56,9 +58,11 @@ TEST_P(WearPlanBend, TheStoredEstimatesPlanIsTheFreshOneOnAnAcceleratingFleet) {
   ASSERT_TRUE(stored.has_value());
   ASSERT_EQ(stored->wheels.size(), fleet.wheels.size());
   int bent = 0;
-  for (const host::WheelEstimateRecord& e : stored->wheels) bent += e.acceleration_per_mm != 0.0;
+  for (const host::WheelEstimateRecord& e : stored->wheels) {
+    bent += !e.forecast.empty() && forecast_input_of_json(e.forecast).acceleration_per_mm != 0.0;
+  }
   EXPECT_GE(bent, 50);
-  for (const double risk : {0.01, 0.05, 0.5}) {
+  for (const double risk : {0.01, 0.05, 0.5, 0.8}) {
     const host::PlanRequest request{"2200-01-01", risk};
     const host::ReprofilingPlan fresh = host::plan_reprofiling(fleet, request);
     ASSERT_GE(fresh.wheels.size(), 50u);
@@ -66,17 +70,14 @@ TEST_P(WearPlanBend, TheStoredEstimatesPlanIsTheFreshOneOnAnAcceleratingFleet) {
         host::plan_reprofiling(plan_inputs(*stored), stored->critical_clearance_mm, request),
         fresh);
   }
-  // The rows without the bend: the straight line's plan, later on the bent wheels.
+  // The rows without the forecast input: the straight line's plan at the rate at risk, later on
+  // the bent wheels.
   host::WearEstimateSet unbent = *stored;
   std::vector<host::PlanInput> straight;
-  for (host::WheelEstimateRecord& e : unbent.wheels) {
-    e.forecast_clearance_now_mm = e.forecast_rate_mm_per_1000km = e.acceleration_per_mm = NAN;
-  }
+  for (host::WheelEstimateRecord& e : unbent.wheels) e.forecast = "";
   for (const host::WheelWear& w : fleet.wheels) {
     host::PlanInput input = host::plan_input(w);
-    input.forecast_clearance_now_mm = input.clearance_now_mm;
-    input.forecast_rate_mm_per_1000km = input.rate_mm_per_1000km;
-    input.acceleration_per_mm = 0.0;
+    input.forecast.reset();
     straight.push_back(input);
   }
   const host::PlanRequest even{"2200-01-01", 0.5};
@@ -90,6 +91,12 @@ TEST_P(WearPlanBend, TheStoredEstimatesPlanIsTheFreshOneOnAnAcceleratingFleet) {
     return days;
   };
   EXPECT_GT(total_days(unbent_plan), total_days(host::plan_reprofiling(fleet, even)));
+  EXPECT_TRUE(unbent_plan.wheels.at(0).on_rate_alone);
+  EXPECT_NE(host::plan_html_section(unbent_plan).find("stored before schema version 7"),
+            std::string::npos);
+  EXPECT_EQ(host::plan_html_section(host::plan_reprofiling(fleet, even))
+                .find("stored before schema version 7"),
+            std::string::npos);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, WearPlanBend,

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// The reprofiling plan: each wheel's date from its rate at the chosen risk, the wheels due
-// before the horizon soonest first, the bad requests refused, and the risk kept: over many
-// wheels with known rates, the share that reach the critical clearance before their date is
-// the risk asked for. On a fleet whose wear speeds up as the flange thins the plan follows the
-// dates' bent forecast (at risk 1/2 its date is the critical date); without the fleet's
-// acceleration it is the straight line's to the bit.
+// The reprofiling plan: each wheel's date the chosen risk's quantile of its forecast critical date
+// (its rate's quantile alone without a forecast input), the wheels due before the horizon soonest
+// first, the bad requests refused, and the risk kept: over many wheels with known rates and
+// random daily km, the share that reach the critical clearance before their date is the risk
+// asked for. On a fleet whose wear speeds up as the flange thins, and on one that wears
+// linearly, the date is the dates' forecast's quantile (at risk 1/2 the critical date).
 #include "reprofiling_plan.h"
 
 #include <fmt/format.h>
@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -131,9 +132,7 @@ TEST(ReprofilingPlan, BadRequestsAreRefusedWithTheirRange) {
 // quantile and the fitted clearance on the straight line.
 double straight_line_due_day(const WheelWear& w, double critical_clearance_mm, double risk) {
   PlanInput input = plan_input(w);
-  input.forecast_clearance_now_mm = input.clearance_now_mm;
-  input.forecast_rate_mm_per_1000km = input.rate_mm_per_1000km;
-  input.acceleration_per_mm = 0.0;
+  input.forecast.reset();
   const double t = t_one_sided(1.0 - risk, input.dof);
   const double half =
       t >= 0.0 ? w.rate_high - w.rate_mm_per_1000km : w.rate_mm_per_1000km - w.rate_low;
@@ -156,9 +155,9 @@ const WheelWear& estimated(const FleetWear& fleet, const WheelId& wheel) {
   throw std::logic_error("no such wheel");
 }
 
-// Wear per km r exp(0.06 wear): the dates bend, and so does the plan. At risk 1/2 the rate at
-// risk is the forecast's, so each wheel's date is its critical date, never after it; the straight
-// line's date (the plan before it followed the bend) falls after the critical date on most wheels.
+// Wear per km r exp(0.06 wear): the dates bend, and so does the plan. At risk 1/2 each wheel's
+// date is its critical date (the forecast's median), never after it; the straight line's date at
+// the rate's quantile falls after the critical date on most wheels.
 TEST(ReprofilingPlan, OnAnAcceleratingFleetTheDateAtEvenRiskIsTheCriticalDate) {
   for (const std::uint32_t seed : {1u, 2u, 3u}) {
     const FleetWear fleet =
@@ -185,28 +184,66 @@ TEST(ReprofilingPlan, OnAnAcceleratingFleetTheDateAtEvenRiskIsTheCriticalDate) {
   }
 }
 
-// A fleet that wears linearly: its b is within 0, the dates are the straight line's and so is the
-// plan, to the bit, at any risk.
-TEST(ReprofilingPlan, WithoutTheFleetsAccelerationThePlanIsTheStraightLinesToTheBit) {
-  for (const std::uint32_t seed : {1u, 2u}) {
+// The due day at risk P is the P quantile of the dates' forecast of the critical date: the lower
+// bound of its interval at the two-sided level 1 - 2P under 1/2, the upper at 2P - 1 above; at
+// 1/2 the critical date, and there (only) the rate's quantile alone gives the same day on a
+// fleet that wears linearly. On the accelerating fleet (b = 0.06) and the linear one (b = 0).
+TEST(ReprofilingPlan, TheDueDayAtRiskIsTheForecastsCriticalDateQuantile) {
+  for (const double acceleration : {0.06, 0.0}) {
     const FleetWear fleet =
-        estimate_fleet_wear(testing::synthetic_accelerating_fleet(0.0, seed).histories, {});
-    ASSERT_FALSE(fleet.acceleration.significant) << "seed " << seed;
-    for (const double risk : {0.01, 0.05, 0.5, 0.9}) {
+        estimate_fleet_wear(testing::synthetic_accelerating_fleet(acceleration, 1).histories, {});
+    ASSERT_EQ(fleet.acceleration.significant, acceleration > 0.0);
+    for (const double risk : {0.01, 0.05, 0.2, 0.5, 0.8}) {
       const ReprofilingPlan plan = plan_reprofiling(fleet, {"2200-01-01", risk});
       ASSERT_GE(plan.wheels.size(), 50u);
+      int sooner_than_rate_alone = 0;
       for (const PlannedWheel& w : plan.wheels) {
         const WheelWear& e = estimated(fleet, w.wheel);
-        EXPECT_EQ(plan_input(e).acceleration_per_mm, 0.0);
-        EXPECT_EQ(w.due_day, straight_line_due_day(e, fleet.critical_clearance_mm, risk))
-            << "seed " << seed << " risk " << risk;
+        ASSERT_GT(e.forecast_input.dof, 0);
+        EXPECT_FALSE(w.on_rate_alone);
+        const LimitForecast bounds =
+            forecast_limit(e.forecast_input, fleet.critical_clearance_mm, std::abs(1 - 2 * risk));
+        const std::optional<double> days = risk < 0.5    ? bounds.days_low
+                                           : risk > 0.5 ? bounds.days_high
+                                                        : e.critical.days;
+        ASSERT_TRUE(days.has_value());
+        EXPECT_EQ(w.due_day, e.forecast_input.last_day + *days) << "b " << acceleration;
+        const double rate_alone = straight_line_due_day(e, fleet.critical_clearance_mm, risk);
+        if (risk == 0.5 && acceleration == 0.0) {
+          EXPECT_EQ(w.due_day, rate_alone);
+        }
+        sooner_than_rate_alone += w.due_day < rate_alone - 1.0;
+      }
+      // Under 1/2 the km per day's uncertainty moves most dates sooner than the rate's alone.
+      if (risk < 0.5 && acceleration == 0.0) {
+        EXPECT_GT(sooner_than_rate_alone, static_cast<int>(plan.wheels.size()) / 2) << risk;
       }
     }
   }
 }
 
-// Wheels with known rates through the estimator (white noise, as its interval assumes): the
-// share whose true distance to the critical clearance is shorter than the plan's is the risk.
+// The day a wheel at `clearance_mm` on `day` reaches the critical clearance wearing `rate` mm per
+// 1000 km over the locomotive's days to come, each of uniform(150, 750) km as its history's.
+double true_critical_day(double rate, double clearance_mm, double day, double critical_mm,
+                         std::mt19937 future) {
+  std::uniform_real_distribution<double> km_of_day(150.0, 750.0);
+  for (;;) {
+    const double next = clearance_mm + rate * km_of_day(future) / 1000.0;
+    if (next >= critical_mm) return day + (critical_mm - clearance_mm) / (next - clearance_mm);
+    clearance_mm = next;
+    day += 1.0;
+  }
+}
+
+// The days to come of a locomotive: the same at every risk.
+std::mt19937 future_of(const std::string& locomotive) {
+  std::seed_seq seed(locomotive.begin(), locomotive.end());
+  return std::mt19937(seed);
+}
+
+// Wheels with known rates through the estimator (white noise, as its interval assumes) on
+// locomotives whose km per day are random: the share whose true critical day, over their own
+// days to come, is before the plan's is the risk.
 TEST(ReprofilingPlan, TheRiskAskedForIsTheShareThatReachTheLimitFirst) {
   std::mt19937 random(20260216);
   std::uniform_real_distribution<double> rate_of(0.04, 0.1), km_of_day(150.0, 750.0);
@@ -235,13 +272,11 @@ TEST(ReprofilingPlan, TheRiskAskedForIsTheShareThatReachTheLimitFirst) {
     int first = 0;
     for (const PlannedWheel& w : plan.wheels) {
       const auto& [rate, clearance_now] = truth.at(w.wheel.locomotive);
-      const WheelWear* estimated = nullptr;
-      for (const WheelWear& e : fleet.wheels) {
-        if (e.wheel == w.wheel) estimated = &e;
+      const double last_day = estimated(fleet, w.wheel).runs.back().day;
+      if (true_critical_day(rate, clearance_now, last_day, fleet.critical_clearance_mm,
+                            future_of(w.wheel.locomotive)) < w.due_day) {
+        ++first;
       }
-      const double due_km = (w.due_day - estimated->runs.back().day) * estimated->km_per_day;
-      const double true_km = (fleet.critical_clearance_mm - clearance_now) / (rate / 1000.0);
-      if (true_km < due_km) ++first;
     }
     // Binomial(400, risk): within 3.5 standard deviations.
     const double sd = std::sqrt(400.0 * risk * (1.0 - risk));

@@ -3,6 +3,7 @@
 // of 7): read back exactly as written (a number that is not finite as NaN), a new set replacing
 // the last, and the marks that say whether they are current moving with every run, maintenance
 // event and calibration stored; an older store's estimates migrated with what it lacks empty.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,23 +72,13 @@ void expect_same(const host::WheelEstimateRecord& a, const host::WheelEstimateRe
   EXPECT_EQ(a.warning_date, b.warning_date);
   EXPECT_EQ(a.sensor_flag_first, b.sensor_flag_first);
   EXPECT_EQ(a.sensor_flag_confirmed, b.sensor_flag_confirmed);
-  for (const auto& [x, y] :
-       {std::pair{a.forecast_clearance_now_mm, b.forecast_clearance_now_mm},
-        std::pair{a.forecast_rate_mm_per_1000km, b.forecast_rate_mm_per_1000km},
-        std::pair{a.acceleration_per_mm, b.acceleration_per_mm}}) {
-    EXPECT_EQ(std::isnan(x), std::isnan(y));
-    if (!std::isnan(x)) {
-      EXPECT_EQ(x, y);
-    }
-  }
+  EXPECT_EQ(a.forecast, b.forecast);
 }
 
-// The dates' forecast bent by the fleet's acceleration (schema version 7), in digits no decimal
-// rounding keeps.
-void bend(host::WheelEstimateRecord& e, double b) {
-  e.forecast_clearance_now_mm = e.clearance_now_mm - 1.0 / 29.0;
-  e.forecast_rate_mm_per_1000km = e.rate_mm_per_1000km - 1.0 / 3001.0;
-  e.acceleration_per_mm = b;
+// The dates' forecast input kept as text (schema version 7; cli/forecast_input_json.h writes it),
+// with digits and characters no rounding or quoting may change.
+void keep_forecast(host::WheelEstimateRecord& e, double b) {
+  e.forecast = fmt::format(R"({{"acceleration_per_mm":{:.17g},"note":"it's \"kept\""}})", b);
 }
 
 TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
@@ -106,7 +97,7 @@ TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
   set.wheels[0].sensor_flag_first = "2026-02-01T06:00:00Z";  // a latched sensor flag
   set.wheels[0].sensor_flag_confirmed = "2026-02-15T06:00:00Z";
   set.wheels[1].sensor_flag_first = "2026-02-20T06:00:00Z";  // a pending one
-  bend(set.wheels[0], 0.06 + 1.0 / 7919.0);  // a bent forecast; the other wheel's straight: NaN
+  keep_forecast(set.wheels[0], 0.06 + 1.0 / 7919.0);  // the other wheel's none: ''
   store->write_wear_estimates(set);
   const auto read = open()->wear_estimates();
   ASSERT_TRUE(read.has_value());
@@ -165,9 +156,9 @@ TEST_P(StoreTest, AVersion5StoresEstimatesOpenWithNoSensorFlagAndKeepTheFlagsWri
   expect_same(open()->wear_estimates()->wheels.at(1), set.wheels[1]);
 }
 
-// A version 6 store's estimates (no forecast bend) open at version 7 with their rows and no bend
-// (NULL, read as NaN: the straight line), and keep the bend written from then on.
-TEST_P(StoreTest, AVersion6StoresEstimatesOpenWithNoForecastBendAndKeepTheBendWrittenThen) {
+// A version 6 store's estimates (no forecast input) open at version 7 with their rows and no
+// forecast ('': planned on the rate's quantile alone), and keep the forecast written from then on.
+TEST_P(StoreTest, AVersion6StoresEstimatesOpenWithNoForecastAndKeepTheForecastWrittenThen) {
   host::WearEstimateSet set;
   set.made_at = "2026-03-02T01:00:00Z";
   set.warning_clearance_mm = 8.0;
@@ -175,7 +166,7 @@ TEST_P(StoreTest, AVersion6StoresEstimatesOpenWithNoForecastBendAndKeepTheBendWr
   set.max_step_mm = 0.5;
   set.wheels = {estimate("L1", 1, 0.1), estimate("L1", 2, 0.25)};
   set.wheels[0].sensor_flag_first = "2026-02-01T06:00:00Z";
-  bend(set.wheels[1], 0.05);
+  keep_forecast(set.wheels[1], 0.05);
   {
     const auto old = host::open_store_at_schema_version(url(), 6);
     old->record_run(test_run("L1", test_time(0), 100.0, 0.2));
@@ -183,7 +174,7 @@ TEST_P(StoreTest, AVersion6StoresEstimatesOpenWithNoForecastBendAndKeepTheBendWr
     old->write_wear_estimates(set);
     const auto kept = old->wear_estimates();
     ASSERT_EQ(kept->wheels.size(), 2u);
-    EXPECT_TRUE(std::isnan(kept->wheels[1].acceleration_per_mm));  // version 6 has no column
+    EXPECT_EQ(kept->wheels[1].forecast, "");  // version 6 has no column
   }
   auto store = open();
   ASSERT_EQ(store->schema_version(), host::kStoreSchemaVersion);
@@ -191,10 +182,9 @@ TEST_P(StoreTest, AVersion6StoresEstimatesOpenWithNoForecastBendAndKeepTheBendWr
   ASSERT_TRUE(migrated.has_value());
   EXPECT_EQ(migrated->marks, set.marks);
   ASSERT_EQ(migrated->wheels.size(), 2u);
-  host::WearEstimateSet unbent = set;
-  unbent.wheels[1].forecast_clearance_now_mm = unbent.wheels[1].forecast_rate_mm_per_1000km =
-      unbent.wheels[1].acceleration_per_mm = std::nan("");
-  for (std::size_t i = 0; i < 2; ++i) expect_same(migrated->wheels[i], unbent.wheels[i]);
+  host::WearEstimateSet unkept = set;
+  unkept.wheels[1].forecast = "";
+  for (std::size_t i = 0; i < 2; ++i) expect_same(migrated->wheels[i], unkept.wheels[i]);
   store->write_wear_estimates(set);
   expect_same(open()->wear_estimates()->wheels.at(1), set.wheels[1]);
 }
