@@ -12,13 +12,14 @@ namespace flange::cli {
 namespace fs = std::filesystem;
 
 void print_same_diagnosis(const std::vector<fs::path>& paths, double fit_start_utc_s,
-                          double heldout_start_utc_s, std::ostream& out) {
+                          double heldout_start_utc_s, const diagnose::DiagnoseOptions& options,
+                          std::ostream& out) {
   for (const fs::path& path : paths) out << "  wrote " << path.string() << "\n";
   out << fmt::format(
       "  the same diagnosis: flange diagnose --real {} --holdout {} --real-start {} "
-      "--holdout-start {} --out DIR\n",
+      "--holdout-start {} --seed {} --bootstrap {} --out DIR\n",
       paths.at(0).string(), paths.at(1).string(), format_utc_time(fit_start_utc_s),
-      format_utc_time(heldout_start_utc_s));
+      format_utc_time(heldout_start_utc_s), options.seed, options.bootstrap_rounds);
 }
 
 void write_blind_check_files(const fs::path& dir, const nlohmann::json& json,

@@ -33,7 +33,8 @@ void write_alt_files(const SelftestCommandOptions& options, const std::string& h
   if (first.sessions) {
     print_same_diagnosis(alt_reality::write_alt_pair(dir, first.spec, *first.sessions),
                          diagnose::alt_session_start_utc_s(first.spec.fit),
-                         diagnose::alt_session_start_utc_s(first.spec.heldout), out);
+                         diagnose::alt_session_start_utc_s(first.spec.heldout),
+                         diagnose::blind_diagnose_options(first.spec.index, options.run), out);
   }
   write_blind_check_files(dir, diagnose::blind_json(options.run, style, rows, summary),
                           diagnose::blind_markdown(header, style, rows, summary), out);

@@ -32,7 +32,8 @@ void write_third_files(const SelftestCommandOptions& options, const std::string&
   if (first.sessions) {
     print_same_diagnosis(third_reality::write_third_pair(dir, first.spec, *first.sessions),
                          diagnose::third_session_start_utc_s(first.spec.fit),
-                         diagnose::third_session_start_utc_s(first.spec.heldout), out);
+                         diagnose::third_session_start_utc_s(first.spec.heldout),
+                         diagnose::blind_diagnose_options(first.spec.index, options.run), out);
   }
   nlohmann::json j = diagnose::blind_json(options.run, style, rows, summary);
   j["summary"]["third_aims_met"] = diagnose::third_aims(summary).met();

@@ -141,9 +141,9 @@ TEST(AltSelftestCommand, OnePairWritesItsSessionsAndItsTruth) {
   EXPECT_EQ(j["reality"], "alt");
   ASSERT_EQ(j["pairs"].size(), 1u);
   EXPECT_EQ(j["pairs"][0]["kind"], "null");
-  // The sessions diagnose on their own as a user would run them, with the start times the
-  // printed command gives, to the same verdict (the blind run's bootstrap seed is the seed plus
-  // the pair).
+  // The sessions diagnose on their own as a user would run them, with the start times and the
+  // bootstrap the printed command gives (the blind run's bootstrap seed is the seed plus the
+  // pair), to the same verdict.
   const std::string same = "  the same diagnosis: flange diagnose --real ";
   const std::size_t line = o.out.find(same);
   ASSERT_NE(line, std::string::npos) << o.out;
@@ -152,10 +152,12 @@ TEST(AltSelftestCommand, OnePairWritesItsSessionsAndItsTruth) {
   for (std::string word, previous; words >> word; previous = word) option[previous] = word;
   EXPECT_EQ(option["--real"], (dir / "pair_8_fit.csv").string());
   EXPECT_EQ(option["--holdout"], (dir / "pair_8_heldout.csv").string());
+  EXPECT_EQ(option["--seed"], "109");
+  EXPECT_EQ(option["--bootstrap"], "20");
   const testing::FlangeOutcome again = testing::run_flange_captured(
       {"diagnose", "--real", option["--real"], "--holdout", option["--holdout"], "--real-start",
-       option["--real-start"], "--holdout-start", option["--holdout-start"], "--bootstrap", "20",
-       "--seed", "109", "--out", (dir / "diag").string()});
+       option["--real-start"], "--holdout-start", option["--holdout-start"], "--bootstrap",
+       option["--bootstrap"], "--seed", option["--seed"], "--out", (dir / "diag").string()});
   EXPECT_EQ(again.status, 0) << again.err;
   EXPECT_EQ(again.out.rfind("verdict: " + j["pairs"][0]["verdict"].get<std::string>(), 0), 0u)
       << again.out;

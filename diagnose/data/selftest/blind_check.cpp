@@ -189,12 +189,17 @@ BlindSummary summarise_blind(const std::vector<BlindRow>& rows, const BlindAims&
   return s;
 }
 
-void diagnose_blind(const BlindSessions& sessions, int index, const SelftestOptions& options,
-                    BlindOutcome& outcome) {
+DiagnoseOptions blind_diagnose_options(int index, const SelftestOptions& options) {
   DiagnoseOptions diagnose_options;  // blind: the default twin, noise estimated
   diagnose_options.bootstrap_rounds = options.bootstrap_rounds;
   diagnose_options.seed = options.seed + static_cast<std::uint64_t>(index);
-  DiagnosisResult detailed = diagnose_in_detail(sessions.fit, sessions.heldout, diagnose_options);
+  return diagnose_options;
+}
+
+void diagnose_blind(const BlindSessions& sessions, int index, const SelftestOptions& options,
+                    BlindOutcome& outcome) {
+  DiagnosisResult detailed = diagnose_in_detail(sessions.fit, sessions.heldout,
+                                                blind_diagnose_options(index, options));
   outcome.diagnosis = std::move(detailed.diagnosis);
   outcome.partial = std::move(detailed.detail.partial);
 }

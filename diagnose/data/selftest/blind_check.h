@@ -144,7 +144,13 @@ struct BlindSessions {
   RecordingSeries fit, heldout;
 };
 
-// Diagnoses case `index`'s sessions blind (the default twin, noise estimated) into `outcome`.
+// The options case `index` is diagnosed with: the default twin, noise estimated, the run's
+// bootstrap rounds, and a bootstrap seed of its own (the run's seed + index), so that a case run
+// alone (--case) is diagnosed as in its table and its sessions' files can be diagnosed again the
+// same way (`flange diagnose ... --seed S --bootstrap B`).
+DiagnoseOptions blind_diagnose_options(int index, const SelftestOptions& options);
+
+// Diagnoses case `index`'s sessions blind (blind_diagnose_options) into `outcome`.
 void diagnose_blind(const BlindSessions& sessions, int index, const SelftestOptions& options,
                     BlindOutcome& outcome);
 
