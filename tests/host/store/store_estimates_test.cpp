@@ -44,6 +44,18 @@ host::WheelEstimateRecord estimate(const std::string& locomotive, int axle, doub
   return e;
 }
 
+// An estimate of two wheels of L1 (rates 0.1 and 0.25) with the limits they were made at; the
+// store's marks are the caller's.
+host::WearEstimateSet two_wheel_estimates() {
+  host::WearEstimateSet set;
+  set.made_at = "2026-03-02T01:00:00Z";
+  set.warning_clearance_mm = 8.0;
+  set.critical_clearance_mm = 10.0;
+  set.max_step_mm = 0.5;
+  set.wheels = {estimate("L1", 1, 0.1), estimate("L1", 2, 0.25)};
+  return set;
+}
+
 void expect_same(const host::WheelEstimateRecord& a, const host::WheelEstimateRecord& b) {
   EXPECT_EQ(a.wheel.locomotive, b.wheel.locomotive);
   EXPECT_EQ(a.wheel.axle, b.wheel.axle);
@@ -87,13 +99,9 @@ TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
   EXPECT_EQ(store->marks(), host::StoreMarks{});
   const auto first = store->record_run(test_run("L1", test_time(0), 100.0, 0.2));
   EXPECT_EQ(store->marks().last_run_id, first);
-  host::WearEstimateSet set;
-  set.made_at = "2026-03-02T01:00:00Z";
+  host::WearEstimateSet set = two_wheel_estimates();
   set.marks = store->marks();
-  set.warning_clearance_mm = 8.0;
-  set.critical_clearance_mm = 10.0;
-  set.max_step_mm = 0.5;
-  set.wheels = {estimate("L1", 1, 0.1 + 1e-13), estimate("L1", 2, 0.25)};
+  set.wheels[0] = estimate("L1", 1, 0.1 + 1e-13);
   set.wheels[0].sensor_flag_first = "2026-02-01T06:00:00Z";  // a latched sensor flag
   set.wheels[0].sensor_flag_confirmed = "2026-02-15T06:00:00Z";
   set.wheels[1].sensor_flag_first = "2026-02-20T06:00:00Z";  // a pending one
@@ -129,12 +137,7 @@ TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
 // A version 5 store's estimates (no sensor flags) open at the current version with their rows and
 // no flag, and keep the flags written from then on.
 TEST_P(StoreTest, AVersion5StoresEstimatesOpenWithNoSensorFlagAndKeepTheFlagsWrittenThen) {
-  host::WearEstimateSet set;
-  set.made_at = "2026-03-02T01:00:00Z";
-  set.warning_clearance_mm = 8.0;
-  set.critical_clearance_mm = 10.0;
-  set.max_step_mm = 0.5;
-  set.wheels = {estimate("L1", 1, 0.1), estimate("L1", 2, 0.25)};
+  host::WearEstimateSet set = two_wheel_estimates();
   {
     const auto old = host::open_store_at_schema_version(url(), 5);
     old->record_run(test_run("L1", test_time(0), 100.0, 0.2));
@@ -159,12 +162,7 @@ TEST_P(StoreTest, AVersion5StoresEstimatesOpenWithNoSensorFlagAndKeepTheFlagsWri
 // A version 6 store's estimates (no forecast input) open at version 7 with their rows and no
 // forecast ('': planned on the rate's quantile alone), and keep the forecast written from then on.
 TEST_P(StoreTest, AVersion6StoresEstimatesOpenWithNoForecastAndKeepTheForecastWrittenThen) {
-  host::WearEstimateSet set;
-  set.made_at = "2026-03-02T01:00:00Z";
-  set.warning_clearance_mm = 8.0;
-  set.critical_clearance_mm = 10.0;
-  set.max_step_mm = 0.5;
-  set.wheels = {estimate("L1", 1, 0.1), estimate("L1", 2, 0.25)};
+  host::WearEstimateSet set = two_wheel_estimates();
   set.wheels[0].sensor_flag_first = "2026-02-01T06:00:00Z";
   keep_forecast(set.wheels[1], 0.05);
   {
