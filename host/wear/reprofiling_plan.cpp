@@ -30,11 +30,22 @@ double day_of_plan_date(const std::string& text) {
                                printable_excerpt(text)));
 }
 
+// Whether the wheel's forecast moved its clearance and rate by the fleet's acceleration.
+bool bent_by_acceleration(const PlanInput& wheel) {
+  return wheel.forecast && wheel.forecast->acceleration_per_mm != 0.0;
+}
+
+// How many of the plan's wheels are dated on their rate's quantile alone (no forecast input).
+long wheels_on_rate_alone(const ReprofilingPlan& plan) {
+  return static_cast<long>(std::count_if(plan.wheels.begin(), plan.wheels.end(),
+                                         [](const PlannedWheel& w) { return w.on_rate_alone; }));
+}
+
 // The forecast at the rate at risk alone (a wheel without a usable forecast input): the straight
 // line from the fitted clearance, or the bent forecast's clearance and b when it has them.
 LimitForecast forecast_at_rate(const PlanInput& wheel, double critical_clearance_mm, double rate) {
   ForecastInput input;
-  const bool bent = wheel.forecast && wheel.forecast->acceleration_per_mm != 0.0;
+  const bool bent = bent_by_acceleration(wheel);
   input.clearance_now_mm = bent ? wheel.forecast->clearance_now_mm : wheel.clearance_now_mm;
   input.acceleration_per_mm = bent ? wheel.forecast->acceleration_per_mm : 0.0;
   input.rate_mm_per_km = input.rate_low_mm_per_km = input.rate_high_mm_per_km = rate / 1000.0;
@@ -145,7 +156,7 @@ double rate_at_risk(const PlanInput& wheel, double risk) {
   const double half = t >= 0.0 ? wheel.rate_high - wheel.rate_mm_per_1000km
                                : wheel.rate_mm_per_1000km - wheel.rate_low;
   // The bent forecast's rate when the fleet's acceleration moved it, else the fitted one.
-  const bool bent = wheel.forecast && wheel.forecast->acceleration_per_mm != 0.0;
+  const bool bent = bent_by_acceleration(wheel);
   const double rate = bent ? wheel.forecast->rate_mm_per_km * 1000.0 : wheel.rate_mm_per_1000km;
   return rate + t * half / t_stated;
 }
@@ -245,8 +256,7 @@ std::string plan_html_section(const ReprofilingPlan& plan) {
         w.critical_date.empty() ? "-" : w.critical_date);
   }
   html += "</table>\n";
-  const auto on_rate = std::count_if(plan.wheels.begin(), plan.wheels.end(),
-                                     [](const PlannedWheel& w) { return w.on_rate_alone; });
+  const long on_rate = wheels_on_rate_alone(plan);
   if (on_rate > 0) {
     html += fmt::format(
         "<p>{} of these wheels' estimates keep no forecast input (stored before schema version "
@@ -271,8 +281,7 @@ std::string plan_summary_text(const ReprofilingPlan& plan) {
     text += fmt::format("  first: {} by {}\n", wheel_text(plan.wheels.front().wheel),
                         plan.wheels.front().due_date);
   }
-  const auto on_rate = std::count_if(plan.wheels.begin(), plan.wheels.end(),
-                                     [](const PlannedWheel& w) { return w.on_rate_alone; });
+  const long on_rate = wheels_on_rate_alone(plan);
   if (on_rate > 0) {
     text += fmt::format("  {} wheels planned on the rate at risk alone (no forecast input kept)\n",
                         on_rate);
