@@ -105,7 +105,7 @@ TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
   set.wheels[0].sensor_flag_first = "2026-02-01T06:00:00Z";  // a latched sensor flag
   set.wheels[0].sensor_flag_confirmed = "2026-02-15T06:00:00Z";
   set.wheels[1].sensor_flag_first = "2026-02-20T06:00:00Z";  // a pending one
-  keep_forecast(set.wheels[0], 0.06 + 1.0 / 7919.0);  // the other wheel's none: ''
+  keep_forecast(set.wheels[0], 0.06 + 1.0 / 7919.0);         // the other wheel's none: ''
   store->write_wear_estimates(set);
   const auto read = open()->wear_estimates();
   ASSERT_TRUE(read.has_value());
