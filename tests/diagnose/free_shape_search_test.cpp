@@ -240,6 +240,41 @@ TEST(AgeingSearch, ChoosesAKnownSettling) {
   EXPECT_EQ(straight.settling_tau_days(), 0.0);
 }
 
+// A level that moved by 10 mV between a half-hour calibration session and a held-out session
+// five days on (a rate of 2 mV/day: 0.04 mV over the calibration session, under its 5 mV noise):
+// the held-out part chooses the rate. The same level at 1 V asks for a rate the calibration
+// session rejects (its sum of squares would grow by far more than kSettlingLeeway sigma^2), so it
+// is taken only as far as the calibration allows; with no step the held-out part takes none, nor
+// after a pick, whose own carry-over the held-out level may be.
+TEST(AgeingSearch, TheHeldOutLevelChoosesARateTheCalibrationLeavesOpen) {
+  const SyntheticBench bench;
+  const RecordedPart later{bench.series(), bench.replay(), 5.0 * 86400.0};
+  const std::vector<double> noise = white_noise(bench.size(), 0.005, 7);
+  const auto heldout_level = [&](double step_v, bool before_any_pick = true) {
+    std::vector<double> heldout = white_noise(bench.size(), 0.005, 8);
+    for (double& v : heldout) v += step_v;
+    AgeingFamily ageing;
+    ageing.search(bench.part(), noise);
+    const FreeShapeFit fit =
+        ageing.fit({bench.part(), later, noise, heldout, false, before_any_pick});
+    double mean = 0.0;
+    for (double v : fit.heldout_voltage_v) mean += v / static_cast<double>(bench.size());
+    return std::pair{mean, fit.heldout_values};
+  };
+  const auto [moved, moved_values] = heldout_level(0.010);
+  EXPECT_NEAR(moved, 0.010, 0.001);
+  EXPECT_EQ(moved_values, 2);
+  const auto [far, far_values] = heldout_level(1.0);
+  EXPECT_GT(far, 0.01);
+  EXPECT_LT(far, 0.2);
+  EXPECT_EQ(far_values, 2);
+  const auto [none, none_values] = heldout_level(0.0);
+  EXPECT_NEAR(none, 0.0, 0.001);
+  const auto [after_a_pick, after_a_pick_values] = heldout_level(0.010, false);
+  EXPECT_NEAR(after_a_pick, 0.0, 0.001);
+  EXPECT_EQ(after_a_pick_values, 1);
+}
+
 // The coil's temperature a first-order lag of 240 s behind the recorded one (one of the family's
 // own lags), and the reading 120 s behind the coil's (an advance of the recorded temperature).
 TEST(LagSearch, TheMeanDelayHasTheKnownSignAndSize) {

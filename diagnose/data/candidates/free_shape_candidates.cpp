@@ -10,7 +10,8 @@ namespace flange::diagnose {
 Candidate free_shape_candidate(const FreeShapeFamily& family, const FreeShapeRound& round) {
   Candidate c;
   c.free_shape = fit_free_shape(family, {round.calibration, round.heldout, round.cal_gap_v,
-                                         round.ho_gap_v, round.heldout_age_unknown});
+                                         round.ho_gap_v, round.heldout_age_unknown,
+                                         round.before_any_pick});
   c.fit.settings = sim::make_effect_settings(c.free_shape->family.effect, {}, "diagnose free shape");
   c.fit.rms_v = rms_of(minus(round.cal_gap_v, c.free_shape->cal_voltage_v));
   c.with = round.modelled;

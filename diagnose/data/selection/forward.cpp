@@ -110,7 +110,8 @@ std::vector<Candidate> round_candidates(const Parts& parts, LibraryRounds& round
   }
   const CoilParts coil(parts, modelled);
   const FreeShapeRound round{coil.calibration(),      coil.heldout(), cal_gap,
-                             selection.current_error, modelled,       parts.heldout_age_unknown};
+                             selection.current_error, modelled,       parts.heldout_age_unknown,
+                             selection.picks.empty()};
   for (Candidate& c : free_shape_candidates(families, round)) candidates.push_back(std::move(c));
   return candidates;
 }

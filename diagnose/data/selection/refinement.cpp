@@ -59,7 +59,8 @@ void give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
     families.push_back(family);
   }
   const FreeShapeRound round{coil.calibration(), coil.heldout(), cal_gap,
-                             ho_gap,             others,         parts.heldout_age_unknown};
+                             ho_gap,             others,         parts.heldout_age_unknown,
+                             selection.picks.size() == 1};
   std::optional<Candidate> best =
       best_of_class(free_shape_candidates(families, round), name, variance,
                     now * now - criteria::kRefinementAcceptance * variance);

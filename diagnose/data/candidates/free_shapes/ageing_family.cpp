@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "family_makers.h"
 #include "grid_search.h"
@@ -15,9 +16,10 @@
 namespace flange::diagnose::free_shapes {
 namespace {
 
-// How much more of the calibration gap's sum of squares, in its noise variance, a settling the
-// held-out part chooses may leave than the calibration's own best: the 5 % point of a chi-square
-// of one value is 3.8, so a settling within 4 sigma^2 is one the calibration part cannot reject.
+// How much more of the calibration gap's sum of squares, in its noise variance, a settling or a
+// rate the held-out part chooses may leave than the calibration's own best: the 5 % point of a
+// chi-square of one value is 3.8, so a settling or rate within 4 sigma^2 is one the calibration
+// part cannot reject.
 constexpr double kSettlingLeeway = 4.0;
 
 }  // namespace
@@ -54,17 +56,74 @@ std::map<std::string, std::string> AgeingFamily::search_edges() const {
   return {};
 }
 
-int AgeingFamily::choose_on_heldout(const RecordedPart& calibration,
-                                    const std::vector<double>& cal_gap, const RecordedPart& heldout,
-                                    const std::vector<double>& ho_gap, std::string& how) {
+AgeingFamily::Profile AgeingFamily::profile(const std::vector<double>& cal_gap) const {
+  // Centred least squares of the gap on [1, column]: its rate, the sum of squares it leaves and
+  // how fast that grows away from the rate (the column's spread), with the offset profiled.
+  const std::vector<double> column = column_of(cal_ages_);
+  const double n = static_cast<double>(column.size());
+  double mean_c = 0.0, mean_g = 0.0;
+  for (std::size_t i = 0; i < column.size(); ++i) {
+    mean_c += column[i] / n;
+    mean_g += cal_gap[i] / n;
+  }
+  double scc = 0.0, scg = 0.0, sgg = 0.0;
+  for (std::size_t i = 0; i < column.size(); ++i) {
+    scc += (column[i] - mean_c) * (column[i] - mean_c);
+    scg += (column[i] - mean_c) * (cal_gap[i] - mean_g);
+    sgg += (cal_gap[i] - mean_g) * (cal_gap[i] - mean_g);
+  }
+  Profile p{mean_c, mean_g, scc, 0.0, sgg};
+  if (scc > 0.0) {
+    p.rate = scg / scc;
+    p.least_sse = std::max(sgg - scg * scg / scc, 0.0);
+  }
+  return p;
+}
+
+std::vector<double> AgeingFamily::column_of(const std::vector<double>& ages) const {
+  std::vector<double> column(ages.size());
+  for (std::size_t i = 0; i < ages.size(); ++i) {
+    column[i] = tau_days_ == 0.0 ? ages[i] : std::log1p(ages[i] / tau_days_);
+  }
+  return column;
+}
+
+AgeingFamily::Trial AgeingFamily::heldout_trial(const Profile& p, double cal_bound,
+                                                const std::vector<double>& ho_gap) const {
+  // The rate the held-out level asks for, kept where the calibration part does not reject it:
+  // its sum of squares grows by (rate - p.rate)^2 p.spread away from its own best.
+  const std::vector<double> column = column_of(ho_ages_);
+  double sdd = 0.0, srd = 0.0;
+  for (std::size_t i = 0; i < column.size(); ++i) {
+    const double d = column[i] - p.mean_column;
+    sdd += d * d;
+    srd += d * (ho_gap[i] - p.mean_gap);
+  }
+  double rate = sdd > 0.0 ? srd / sdd : p.rate;
+  if (p.spread > 0.0) {
+    const double reach = std::sqrt(std::max(cal_bound - p.least_sse, 0.0) / p.spread);
+    rate = std::clamp(rate, p.rate - reach, p.rate + reach);
+  }
+  Trial t{tau_days_, rate, p.mean_gap - rate * p.mean_column, 0.0, 0.0};
+  t.cal_sse = p.least_sse + (rate - p.rate) * (rate - p.rate) * p.spread;
+  for (std::size_t i = 0; i < column.size(); ++i) {
+    const double e = ho_gap[i] - t.offset - rate * column[i];
+    t.ho_sse += e * e;
+  }
+  return t;
+}
+
+int AgeingFamily::choose_settling(const RecordedPart& calibration,
+                                  const std::vector<double>& cal_gap, const RecordedPart& heldout,
+                                  const std::vector<double>& ho_gap, std::string& how) {
   const Eigen::Map<const Eigen::VectorXd> cal(cal_gap.data(),
                                               static_cast<Eigen::Index>(cal_gap.size()));
   const Eigen::Map<const Eigen::VectorXd> ho(ho_gap.data(),
                                              static_cast<Eigen::Index>(ho_gap.size()));
-  struct Trial {
+  struct SettlingTrial {
     double tau, cal_sse, ho_sse;
   };
-  std::vector<Trial> trials;
+  std::vector<SettlingTrial> trials;
   double least_cal = std::numeric_limits<double>::infinity();
   for (double tau : taus()) {
     tau_days_ = tau;
@@ -76,8 +135,8 @@ int AgeingFamily::choose_on_heldout(const RecordedPart& calibration,
   }
   const double variance =
       least_cal / static_cast<double>(std::max<Eigen::Index>(cal.size() - 3, 1));
-  const Trial* best = nullptr;
-  for (const Trial& trial : trials) {
+  const SettlingTrial* best = nullptr;
+  for (const SettlingTrial& trial : trials) {
     if (trial.cal_sse > least_cal + kSettlingLeeway * variance) continue;
     if (!best || trial.ho_sse < best->ho_sse ||
         (trial.ho_sse == best->ho_sse && trial.tau == chosen_)) {
@@ -85,14 +144,60 @@ int AgeingFamily::choose_on_heldout(const RecordedPart& calibration,
     }
   }
   tau_days_ = best->tau;
-  if (tau_days_ != chosen_) {
-    how = fmt::format(
-        "; its curvature, which the calibration session leaves open, chosen on the held-out "
-        "session's level ({} where the calibration part alone took {})",
-        describe_tau(tau_days_), describe_tau(chosen_));
-  }
+  how = curvature_note();
   chosen_ = tau_days_;
   return 1;
+}
+
+int AgeingFamily::choose_on_heldout(const RecordedPart& calibration,
+                                    const std::vector<double>& cal_gap, const RecordedPart& heldout,
+                                    const std::vector<double>& ho_gap, bool before_any_pick,
+                                    std::string& how) {
+  heldout_level_.reset();
+  if (!before_any_pick) return choose_settling(calibration, cal_gap, heldout, ho_gap, how);
+  cal_ages_ = age_days(calibration);
+  ho_ages_ = age_days(heldout);
+  std::vector<Profile> profiles;
+  double least_cal = std::numeric_limits<double>::infinity();
+  for (double tau : taus()) {
+    tau_days_ = tau;
+    profiles.push_back(profile(cal_gap));
+    least_cal = std::min(least_cal, profiles.back().least_sse);
+  }
+  const double variance =
+      least_cal / static_cast<double>(std::max<std::size_t>(cal_gap.size(), 4) - 3);
+  const double cal_bound = least_cal + kSettlingLeeway * variance;
+  std::optional<Trial> best;
+  const std::vector<double> searched = taus();
+  for (std::size_t k = 0; k < searched.size(); ++k) {
+    tau_days_ = searched[k];
+    if (profiles[k].least_sse > cal_bound) continue;
+    const Trial trial = heldout_trial(profiles[k], cal_bound, ho_gap);
+    if (!best || trial.ho_sse < best->ho_sse ||
+        (trial.ho_sse == best->ho_sse && trial.tau == chosen_)) {
+      best = trial;
+    }
+  }
+  tau_days_ = best->tau;
+  heldout_level_ = Eigen::Vector2d(best->offset, best->rate);
+  const double calibration_rate = profiles[static_cast<std::size_t>(
+      std::find(searched.begin(), searched.end(), best->tau) - searched.begin())].rate;
+  const bool rate_moved = best->rate != calibration_rate;
+  how = curvature_note();
+  if (rate_moved) {
+    how += fmt::format(
+        "; its {} the calibration session leaves open, chosen on the held-out session's level "
+        "({:.3g} where the calibration part alone took {:.3g})",
+        tau_days_ == 0.0 ? "rate (V/day), which" : "size (V), which", best->rate,
+        calibration_rate);
+  }
+  chosen_ = tau_days_;
+  return rate_moved ? 2 : 1;
+}
+
+std::optional<Eigen::VectorXd> AgeingFamily::values_chosen_on_heldout() const {
+  if (!heldout_level_) return std::nullopt;
+  return Eigen::VectorXd(*heldout_level_);
 }
 
 std::vector<std::string> AgeingFamily::names() const {
@@ -121,6 +226,14 @@ std::string AgeingFamily::describe(const Eigen::VectorXd& beta) const {
   }
   return fmt::format("a settling in the sensor's age: {:.3g} V + {:.3g} V ln(1 + age / {:.3g} d)",
                      beta(0), beta(1), tau_days_);
+}
+
+std::string AgeingFamily::curvature_note() const {
+  if (tau_days_ == chosen_) return "";
+  return fmt::format(
+      "; its curvature, which the calibration session leaves open, chosen on the held-out "
+      "session's level ({} where the calibration part alone took {})",
+      describe_tau(tau_days_), describe_tau(chosen_));
 }
 
 std::string AgeingFamily::describe_tau(double tau_days) {

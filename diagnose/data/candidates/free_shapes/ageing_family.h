@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,10 +21,17 @@ class AgeingFamily : public LinearFamily {
   // settling's curvature decides the level there, and the calibration part barely shows it. The
   // calibration part keeps the settlings it does not reject (a sum of squares within
   // kSettlingLeeway sigma^2 of its best); of those, the one whose carried-on level fits the
-  // held-out gap best is taken: one value fitted there.
+  // held-out gap best is taken: one value fitted there. Its rate (or size) likewise: a session
+  // of an hour barely shows a rate that moves the level by the noise over days, so the rate the
+  // held-out level asks for is taken as far as the calibration part allows it (its sum of
+  // squares within the same leeway): a second value fitted there. Only before any pick: after
+  // effects fitted on the calibration part, a level left on the held-out part is as likely their
+  // error carried beyond the calibration session (a temperature law continued to other
+  // temperatures) as a change between the sessions, and the held-out part cannot tell them apart.
   int choose_on_heldout(const RecordedPart& calibration, const std::vector<double>& cal_gap,
                         const RecordedPart& heldout, const std::vector<double>& ho_gap,
-                        std::string& how) override;
+                        bool before_any_pick, std::string& how) override;
+  std::optional<Eigen::VectorXd> values_chosen_on_heldout() const override;
   std::vector<std::string> names() const override;
   // The settling time, when its search ended on the longest or the shortest one searched.
   std::map<std::string, std::string> search_edges() const override;
@@ -41,9 +49,28 @@ class AgeingFamily : public LinearFamily {
   static std::vector<double> taus();
 
  private:
+  // The calibration gap's least squares on [1, column] at the present settling.
+  struct Profile {
+    double mean_column, mean_gap, spread, rate, least_sse;
+  };
+  // A settling's rate chosen on the held-out level, its offset from the calibration part.
+  struct Trial {
+    double tau, rate, offset, cal_sse, ho_sse;
+  };
   static std::string describe_tau(double tau_days);
+  // The description's note on a settling chosen on the held-out level ("" for the calibration's).
+  std::string curvature_note() const;
+  // The settling alone chosen on the held-out level, each one's values the calibration part's.
+  int choose_settling(const RecordedPart& calibration, const std::vector<double>& cal_gap,
+                      const RecordedPart& heldout, const std::vector<double>& ho_gap,
+                      std::string& how);
+  std::vector<double> column_of(const std::vector<double>& ages) const;
+  Profile profile(const std::vector<double>& cal_gap) const;
+  Trial heldout_trial(const Profile& p, double cal_bound, const std::vector<double>& ho_gap) const;
 
   double tau_days_ = 0.0, chosen_ = 0.0;
+  std::vector<double> cal_ages_, ho_ages_;
+  std::optional<Eigen::Vector2d> heldout_level_;  // offset and rate chosen on the held-out part
 };
 
 }  // namespace flange::diagnose::free_shapes

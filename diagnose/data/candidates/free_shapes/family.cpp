@@ -12,12 +12,14 @@ FreeShapeFit LinearFamily::fit(const FreeShapeInputs& in) {
   const int heldout_values = in.heldout_age_unknown
                                  ? 0
                                  : choose_on_heldout(in.calibration, in.cal_gap_v, in.heldout,
-                                                     in.ho_gap_v, chosen_on_heldout);
+                                                     in.ho_gap_v, in.before_any_pick,
+                                                     chosen_on_heldout);
   const Eigen::MatrixXd cal = columns(in.calibration);
   const Eigen::Map<const Eigen::VectorXd> gap(in.cal_gap_v.data(),
                                               static_cast<Eigen::Index>(in.cal_gap_v.size()));
   const Eigen::MatrixXd gram = cal.transpose() * cal;
-  const Eigen::VectorXd beta = ridge_solve_normal(gram, cal.transpose() * gap);
+  const Eigen::VectorXd beta =
+      values_chosen_on_heldout().value_or(ridge_solve_normal(gram, cal.transpose() * gap));
   FreeShapeFit fit;
   const std::vector<std::string> value_names = names();
   const Eigen::VectorXd sensitivity = compensated_sensitivity(gram, cal.rows());

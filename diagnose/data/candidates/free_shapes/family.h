@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,12 +65,17 @@ class LinearFamily : public Family {
   // Families whose shape the calibration part leaves open where the held-out part lies choose it
   // there, after search(): returns how many values that fitted on the held-out part, with a
   // phrase for the description.
+  // `before_any_pick`: FreeShapeInputs::before_any_pick.
   virtual int choose_on_heldout(const RecordedPart& /*calibration*/,
                                 const std::vector<double>& /*cal_gap*/,
                                 const RecordedPart& /*heldout*/,
-                                const std::vector<double>& /*ho_gap*/, std::string& /*how*/) {
+                                const std::vector<double>& /*ho_gap*/, bool /*before_any_pick*/,
+                                std::string& /*how*/) {
     return 0;
   }
+  // The free values themselves where choose_on_heldout chose them (in names() order) rather
+  // than the calibration part's least squares.
+  virtual std::optional<Eigen::VectorXd> values_chosen_on_heldout() const { return std::nullopt; }
   // Whether the shape is a curve of the sensor's age: where the held-out clock does not say the
   // held-out part's age, it is placed where the curve fits it (heldout_age.h).
   virtual bool follows_the_sensors_age() const { return false; }

@@ -100,6 +100,10 @@ struct FreeShapeInputs {
   const std::vector<double>& cal_gap_v;
   const std::vector<double>& ho_gap_v;
   bool heldout_age_unknown = false;
+  // Whether no effect has been picked yet, so that the held-out gap is the twin's own: a level
+  // there that the calibration session does not show can then only be a change between the
+  // sessions (AgeingFamily::choose_on_heldout).
+  bool before_any_pick = false;
 };
 
 // Fits `family` to `in.cal_gap_v` (the calibration gap the modelled effects leave);
