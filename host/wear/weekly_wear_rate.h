@@ -14,15 +14,17 @@
 // the median over the wheels (a day whose wheelset centring moved one wheel, or one bad wheel,
 // does not move it) is the locomotive's wear in km at a rate of one. Over each whole week counted
 // back from the last run (at least kMinRunsPerWeek runs), its least-squares slope on the odometer
-// is the week's relative rate R_j (1: the wheels' history mean). As for the km per day, the weeks
-// are an AR(1): phi their lag-1 autocorrelation held to [0, kMaxWeekCorrelation], and
-//   lambda_R^2 = 7 var(R) (1 + phi) / (1 - phi),
+// is the week's relative rate R_j (1: the wheels' history mean). A week's slope also carries the
+// runs' own scatter, which the rate's interval holds already: its least-squares variance s_j^2
+// (from the week's residuals) is taken away, var_d = var(R) - mean(s_j^2), and nothing is left
+// when that is not positive (a duty that does not move the rate). As for the km per day, the
+// weeks are an AR(1): phi the lag-1 autocovariance over var_d (white scatter has none), held to
+// [0, kMaxWeekCorrelation], and
+//   lambda_R^2 = 7 var_d (1 + phi) / (1 - phi),
 // the long-run relative variance of a day's rate, with the weeks' effective number less one as
 // its degrees of freedom; with fewer than kMinWeeksForCorrelation weeks there is none. The mean
 // rate over the D days to come then has the relative variance lambda_R^2 / D (limit_forecast.h).
-// The week's slope also carries the runs' own scatter, so lambda_R errs wide, the more so the
-// noisier the sensors against a week's wear; on a fleet whose duty does not move the rate it is
-// that scatter alone, small against a few months to a limit.
+// A duty that changes the km per day as well moves both; the two are taken as independent.
 #pragma once
 
 #include <vector>
