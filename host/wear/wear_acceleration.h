@@ -34,8 +34,9 @@
 // less b and gamma times q's and p's own fits (clearance now c - b g_c - gamma h_c, rate
 // r - b g_r - gamma h_r; limit_forecast.h). The calendar trend is not carried forward: the
 // months to a limit span seasons the history has not seen, so the rate ahead is the history's
-// mean season's. A wheel with a drift fitted out neither gives evidence nor takes the fleet's
-// terms (fleet_wear.cpp): its drift terms in days take up a bend of any cause.
+// mean season's, and how far the season to come may stand from it is in the date's interval
+// (season_to_come.h). A wheel with a drift fitted out neither gives evidence nor takes the
+// fleet's b (fleet_wear.cpp): its drift terms in days take up a bend of any cause.
 #pragma once
 
 #include <string>
