@@ -16,6 +16,8 @@
 #include "negative_rate.h"
 #include "new_flange_rates.h"
 #include "reprofiling_search.h"
+#include "season_to_come.h"
+#include "weekly_wear_rate.h"
 
 namespace flange::host {
 namespace {
@@ -119,10 +121,42 @@ WearSeries series_of(const WheelWear& wheel, const std::vector<double>& y,
   return series;
 }
 
+// The fleet's b and gamma in a wheel's forecast (wear_acceleration.h): how its clearance now and
+// rate move with them, and their covariance. A significant b moves the clearance and rate to the
+// line refitted to y - b q - gamma p; one within 0 leaves the straight line's, and the interval
+// then holds b's and gamma's second moments about the 0 it used (the b it did not use).
+void with_fleet_bend(ForecastInput& input, const AccelerationEvidence& bend,
+                     const FleetAcceleration& acceleration) {
+  const double b = acceleration.estimate, gamma = acceleration.trend;
+  input.clearance_per_acceleration = -bend.clearance_gradient;
+  input.rate_per_acceleration = -bend.rate_gradient;
+  input.clearance_per_trend = -bend.clearance_trend_gradient;
+  input.rate_per_trend = -bend.rate_trend_gradient;
+  input.acceleration_dof = acceleration.dof;
+  if (!acceleration.significant) {
+    input.acceleration_se = std::hypot(b, acceleration.se);
+    input.trend_se = std::hypot(gamma, acceleration.trend_se);
+    input.acceleration_trend_covariance = b * gamma + acceleration.covariance;
+    return;
+  }
+  const double clearance_shift =
+      b * bend.clearance_gradient + gamma * bend.clearance_trend_gradient;
+  const double rate_shift = b * bend.rate_gradient + gamma * bend.rate_trend_gradient;
+  input.clearance_now_mm -= clearance_shift;
+  input.rate_mm_per_km -= rate_shift;
+  input.rate_low_mm_per_km -= rate_shift;
+  input.rate_high_mm_per_km -= rate_shift;
+  input.acceleration_per_mm = b;
+  input.acceleration_se = acceleration.se;
+  input.trend_se = acceleration.trend_se;
+  input.acceleration_trend_covariance = acceleration.covariance;
+}
+
 // What the forecast is made from: the line at the last run with its uncertainties (the
-// least-squares covariance widened by the jackknife's inflation) and the km per day.
+// least-squares covariance widened by the jackknife's inflation), the km per day and the rate to
+// come: the season (season_to_come.h) and the locomotive's duties (weekly_wear_rate.h).
 ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread,
-                             const FleetAcceleration& acceleration) {
+                             const FleetAcceleration& acceleration, const WeeklyWearRate& duty) {
   const WearLineFit& fit = *wheel.fit;
   const std::vector<WearObservation>& runs = wheel.runs;
   const DailyDistance distance = daily_distance(runs);
@@ -146,30 +180,15 @@ ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread,
   input.km_per_day_se = distance.se;
   input.day_km_long_run_sd = distance.long_run_sd;
   input.km_per_day_dof = distance.dof;
-  // With the fleet's b and gamma the clearance and rate at the last run are the line refitted
-  // to y - b q - gamma p (wear_acceleration.h); a b within 0 leaves them as they are, and so
-  // does a drift fitted out: its terms in days take up a bend of any cause (a quadratic drift is
-  // all but q on a wheel's own history), so the refit would move its clearance by its drift's
-  // uncertainty, not by the wear's bend.
-  if (!acceleration.significant || wheel.sensor_fault) return input;
-  const double b = acceleration.estimate, gamma = acceleration.trend;
-  const AccelerationEvidence& bend = wheel.acceleration_evidence;
-  const double clearance_shift =
-      b * bend.clearance_gradient + gamma * bend.clearance_trend_gradient;
-  const double rate_shift = b * bend.rate_gradient + gamma * bend.rate_trend_gradient;
-  input.clearance_now_mm -= clearance_shift;
-  input.rate_mm_per_km -= rate_shift;
-  input.rate_low_mm_per_km -= rate_shift;
-  input.rate_high_mm_per_km -= rate_shift;
-  input.acceleration_per_mm = b;
-  input.clearance_per_acceleration = -bend.clearance_gradient;
-  input.rate_per_acceleration = -bend.rate_gradient;
-  input.clearance_per_trend = -bend.clearance_trend_gradient;
-  input.rate_per_trend = -bend.rate_trend_gradient;
-  input.acceleration_se = acceleration.se;
-  input.trend_se = acceleration.trend_se;
-  input.acceleration_trend_covariance = acceleration.covariance;
+  input.rate_long_run_variance = duty.long_run_variance;
+  input.rate_long_run_dof = duty.dof;
+  if (acceleration.dof == 0) return input;
   input.acceleration_dof = acceleration.dof;
+  input.season_variance = season_to_come_variance(acceleration, runs);
+  // A drift fitted out keeps the straight line and no b or gamma: its terms in days take up a
+  // bend of any cause (a quadratic drift is all but q on a wheel's own history), so the refit
+  // would move its clearance by its drift's uncertainty, not by the wear's bend.
+  if (!wheel.sensor_fault) with_fleet_bend(input, wheel.acceleration_evidence, acceleration);
   return input;
 }
 
@@ -191,7 +210,8 @@ void fit_wheel(WheelWear& wheel, std::optional<double> drift_onset,
 }
 
 // The rate's interval and the forecasts from `spread` (the wheel's jackknife, moderated).
-void finish_wheel(WheelWear& wheel, const FleetWear& fleet, const SerialSpread& spread) {
+void finish_wheel(WheelWear& wheel, const FleetWear& fleet, const SerialSpread& spread,
+                  const WeeklyWearRate& duty) {
   const WearLineFit& fit = *wheel.fit;
   const std::vector<WearObservation>& runs = wheel.runs;
   wheel.rate_mm_per_1000km = fit.rate_mm_per_km * 1000.0;
@@ -200,7 +220,7 @@ void finish_wheel(WheelWear& wheel, const FleetWear& fleet, const SerialSpread& 
   std::tie(wheel.rate_low, wheel.rate_high) = rate_interval(wheel, 0.95);
   wheel.clearance_now_mm = wear_line_at(fit, wheel.segment.back(), runs.back().odometer_km);
   wheel.wear_now_mm = wheel.clearance_now_mm - fleet.thresholds.sensor_gap_mm;
-  wheel.forecast_input = forecast_input(wheel, spread, fleet.acceleration);
+  wheel.forecast_input = forecast_input(wheel, spread, fleet.acceleration, duty);
   wheel.km_per_day = wheel.forecast_input.km_per_day;
   wheel.warning = forecast_limit(wheel.forecast_input, fleet.warning_clearance_mm);
   wheel.critical = forecast_limit(wheel.forecast_input, fleet.critical_clearance_mm);
@@ -342,6 +362,19 @@ void estimate_lone_wheel(FleetWear& fleet, const WheelHistory& history) {
   fleet.wheels.push_back(std::move(wheel));
 }
 
+// How each locomotive's wear per km moves from week to week (weekly_wear_rate.h), from its fitted
+// wheels.
+std::map<std::string, WeeklyWearRate> locomotive_duties(const std::vector<WheelWear>& wheels) {
+  std::map<std::string, std::vector<WeeklyWearWheel>> by_locomotive;
+  for (const WheelWear& wheel : wheels) {
+    auto& list = by_locomotive[wheel.wheel.locomotive];
+    if (wheel.fit) list.push_back({&wheel.runs, &wheel.segment, &*wheel.fit});
+  }
+  std::map<std::string, WeeklyWearRate> duties;
+  for (const auto& [locomotive, list] : by_locomotive) duties[locomotive] = weekly_wear_rate(list);
+  return duties;
+}
+
 // Every wheel's interval and forecasts, its jackknife moderated by the fleet's
 // (moderated_spread.h): the prior from the wheels whose line is wear alone. A wheel with a drift
 // fitted out keeps its own jackknife: its drift terms lean on the late runs in a way the others'
@@ -369,10 +402,11 @@ void finish_wheels(FleetWear& fleet) {
     }
   }
   fleet.acceleration = pool_acceleration(samples);
+  const std::map<std::string, WeeklyWearRate> duties = locomotive_duties(fleet.wheels);
   for (std::size_t i = 0; i < fleet.wheels.size(); ++i) {
     WheelWear& wheel = fleet.wheels[i];
     if (!wheel.fit) continue;
-    finish_wheel(wheel, fleet, spreads[i]);
+    finish_wheel(wheel, fleet, spreads[i], duties.at(wheel.wheel.locomotive));
     mark_negative_rate(wheel);
   }
 }

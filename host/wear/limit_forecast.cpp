@@ -60,22 +60,29 @@ RelativeSpread relative_spread(const ForecastInput& input, double gap_mm) {
                         per_trend * per_trend * input.trend_se * input.trend_se +
                         2.0 * per_b * per_trend * input.acceleration_trend_covariance) /
       (km * km);
+  // The fleet's terms: b and gamma in the line, the season to come; at the fleet's dof. The
+  // duties to come over the days to K (when they are known).
+  const double fleet = acceleration + std::max(0.0, input.season_variance);
+  const double duty = input.km_per_day > 0.0
+                          ? std::max(0.0, input.rate_long_run_variance) * input.km_per_day / km
+                          : 0.0;
   RelativeSpread spread;
-  spread.km = std::sqrt(line + acceleration);
+  spread.km = std::sqrt(line + fleet + duty);
   const double line_part = line * line / std::max(1, input.dof);
   const double acceleration_part =
-      acceleration > 0.0 ? acceleration * acceleration / std::max(1, input.acceleration_dof) : 0.0;
-  spread.km_dof = acceleration > 0.0 && line_part + acceleration_part > 0.0
-                      ? std::pow(spread.km, 4.0) / (line_part + acceleration_part)
+      fleet > 0.0 ? fleet * fleet / std::max(1, input.acceleration_dof) : 0.0;
+  const double duty_part = duty > 0.0 ? duty * duty / std::max(1, input.rate_long_run_dof) : 0.0;
+  const double km_parts = line_part + acceleration_part + duty_part;
+  spread.km_dof = (fleet > 0.0 || duty > 0.0) && km_parts > 0.0
+                      ? std::pow(spread.km, 4.0) / km_parts
                       : static_cast<double>(input.dof);
   if (input.km_per_day > 0.0) {
     const double mean_term = input.km_per_day_se / input.km_per_day;
     const double future_term =
         input.day_km_long_run_sd * input.day_km_long_run_sd / (input.km_per_day * km);
     const double mean = mean_term * mean_term;
-    spread.days = std::sqrt(line + acceleration + mean + future_term);
-    const double parts =
-        line_part + acceleration_part + mean * mean / std::max(1, input.km_per_day_dof);
+    spread.days = std::sqrt(line + fleet + duty + mean + future_term);
+    const double parts = km_parts + mean * mean / std::max(1, input.km_per_day_dof);
     spread.days_dof = parts > 0.0 ? std::pow(spread.days, 4.0) / parts : 1e9;
   }
   return spread;

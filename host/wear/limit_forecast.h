@@ -10,6 +10,8 @@
 // standard deviation of the distance K = (limit - c) / r and of the days T = K / mu:
 //   (sd K / K)^2 = (var c + (G/r)^2 var r + 2 (G/r) cov(c, r)) / G^2,  G = limit - c
 //   (sd T / T)^2 = (sd K / K)^2 + (se mu / mu)^2 + lambda^2 / (mu K)
+// (sd K / K)^2 also holds the rate to come's relative variance: the season the history has not
+// seen (season_to_come.h) and the duties of the days to come, lambda_R^2 / T (weekly_wear_rate.h)
 // (with b: the partial derivatives of K in c and r, and the variance of the fleet's b and
 // gamma through K's total derivatives in them, their dof in Welch-Satterthwaite's)
 // the fitted clearance now and the rate (their covariance from the wear line, which allows
@@ -67,6 +69,13 @@ struct ForecastInput {
   double trend_se = 0.0;
   double acceleration_trend_covariance = 0.0;
   int acceleration_dof = 0;
+  // The rate to come's relative variance from the season the history has not seen
+  // (season_to_come.h), at acceleration_dof degrees of freedom; 0: none.
+  double season_variance = 0.0;
+  // The long-run relative variance of a day's wear per km (weekly_wear_rate.h; per day): the
+  // mean rate over the D days to come scatters by rate_long_run_variance / D; 0: none.
+  double rate_long_run_variance = 0.0;
+  int rate_long_run_dof = 0;
 };
 
 // The 95 % interval.

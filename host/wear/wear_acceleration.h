@@ -27,14 +27,16 @@
 // degrees of freedom of the wheels' variances, (sum w)^2 / sum (w^2 / dof), at most
 // kMaxModeratedDof).
 //
-// The forecast uses them only when b differs from 0 at kAccelerationTestLevel: a fleet whose wear
-// is a straight line in km keeps the straight line's forecast unchanged. Given them, the line
+// The forecast's date uses them only when b differs from 0 at kAccelerationTestLevel: a fleet
+// whose wear is a straight line in km keeps the straight line's date; its interval then holds b's
+// and gamma's second moments about the 0 it used (fleet_wear.cpp). Given them, the line
 // refitted to y - b q - gamma p has the same design, so its parameters are the straight line's
 // less b and gamma times q's and p's own fits (clearance now c - b g_c - gamma h_c, rate
 // r - b g_r - gamma h_r; limit_forecast.h). The calendar trend is not carried forward: the
 // months to a limit span seasons the history has not seen, so the rate ahead is the history's
-// mean season's. A wheel with a drift fitted out neither gives evidence nor takes the fleet's
-// terms (fleet_wear.cpp): its drift terms in days take up a bend of any cause.
+// mean season's, and how far the season to come may stand from it is in the date's interval
+// (season_to_come.h). A wheel with a drift fitted out neither gives evidence nor takes the
+// fleet's b (fleet_wear.cpp): its drift terms in days take up a bend of any cause.
 #pragma once
 
 #include <string>
@@ -44,8 +46,12 @@
 
 namespace flange::host {
 
-// The level at which the fleet's b must differ from 0 before the forecast uses it: below it the
-// straight line's forecast stands (a fleet wearing linearly gets the dates it had without b).
+// The level at which the fleet's b must differ from 0 before the forecast's date uses it: below it
+// the straight line's date stands (a fleet wearing linearly gets the dates it had without b). The
+// b not used is no less uncertain, so the date's interval then takes b and gamma at their second
+// moments about the 0 used (b^2 + se(b)^2, gamma^2 + se(gamma)^2, b gamma + cov): on the second
+// reality's development fleets a b of 0.02-0.04 per mm at 4 degrees of freedom fails the test,
+// and there the straight line's dates missed most (docs/fleet.md, step 6).
 inline constexpr double kAccelerationTestLevel = 0.95;
 // The fleet's terms (b and gamma): a wheel's residual variance is taken over its line's degrees
 // of freedom less these.

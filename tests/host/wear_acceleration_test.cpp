@@ -63,6 +63,30 @@ TEST(WearAcceleration, ALinearFleetKeepsTheStraightLinesForecast) {
   }
 }
 
+TEST(WearAcceleration, ABWithinZeroStaysInTheDatesIntervalByItsSecondMoment) {
+  const SyntheticFleet truth = synthetic_fleet(0.0, 1);
+  const FleetWear fleet = estimate_fleet_wear(truth.histories, {});
+  ASSERT_FALSE(fleet.acceleration.significant);
+  ASSERT_GT(fleet.acceleration.dof, 0);
+  const double b = fleet.acceleration.estimate, gamma = fleet.acceleration.trend;
+  int widened = 0;
+  for (const WheelWear& w : fleet.wheels) {
+    if (!w.warning.km || w.warning.reached || w.sensor_fault) continue;
+    const ForecastInput& input = w.forecast_input;
+    EXPECT_EQ(input.acceleration_per_mm, 0.0);  // the straight line's date
+    EXPECT_NEAR(input.acceleration_se, std::hypot(b, fleet.acceleration.se), 1e-15);
+    EXPECT_NEAR(input.trend_se, std::hypot(gamma, fleet.acceleration.trend_se), 1e-15);
+    EXPECT_NEAR(input.acceleration_trend_covariance, b * gamma + fleet.acceleration.covariance,
+                1e-15);
+    ForecastInput without = input;
+    without.acceleration_se = without.trend_se = without.acceleration_trend_covariance = 0.0;
+    const LimitForecast plain = forecast_limit(without, fleet.warning_clearance_mm);
+    EXPECT_NEAR(*w.warning.km, *plain.km, 1e-9 * *plain.km);
+    widened += *w.warning.km_low < *plain.km_low ? 1 : 0;
+  }
+  EXPECT_GT(widened, 0);
+}
+
 TEST(LimitForecast, AnAcceleratingFlangesKmToTheLimitFollowTheThinningLaw) {
   ForecastInput input{5.0, 0.05e-3, 0.04e-3, 0.06e-3, 300.0, 20000.0};
   input.clearance_now_se_mm = 0.02;
