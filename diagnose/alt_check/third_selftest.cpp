@@ -139,10 +139,13 @@ ThirdAims third_aims(const BlindSummary& s) {
     if (row.effects == 1) {
       a.singles += row.cases;
       a.singles_top += row.top_correct;
+      a.singles_top_among += row.top_among_indistinguishable;
     } else {
       a.multiples += row.cases;
       a.multiples_top += row.top_correct;
       a.multiples_all += row.all_found;
+      a.multiples_top_among += row.top_among_indistinguishable;
+      a.multiples_all_among += row.all_among_indistinguishable;
     }
     a.explained_bias += row.explained_bias_cases;
     shrink_sum += row.mean_explained_excess_shrink_pct * row.explained_bias_cases;

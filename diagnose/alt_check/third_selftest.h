@@ -43,6 +43,9 @@ std::vector<ThirdPairResult> run_third_selftest(const SelftestOptions& options);
 struct ThirdAims {
   int singles = 0, singles_top = 0;
   int multiples = 0, multiples_top = 0, multiples_all = 0;
+  // The same counts where a finding stands for the classes it cannot be told from too
+  // (BlindScore::top_among_indistinguishable): reported beside the aims, not in them.
+  int singles_top_among = 0, multiples_top_among = 0, multiples_all_among = 0;
   int controls = 0, controls_quiet = 0;  // null and outside pairs; those that claim nothing
   int explained_bias = 0;
   double explained_excess_shrink_pct = 0.0;

@@ -77,6 +77,11 @@ std::vector<std::string> third_aims_lines(const ThirdAims& a) {
                   share(a.multiples_top, a.multiples), met(a.multiples_top_met)),
       fmt::format("aim: every true class named on >= 85 % of two- and three-effect pairs: {}, {}",
                   share(a.multiples_all, a.multiples), met(a.multiples_all_met)),
+      fmt::format("with a finding standing for the classes it names as indistinguishable from it: "
+                  "right class first on {} of single-effect and {} of two- and three-effect "
+                  "pairs, every true class among them on {}",
+                  share(a.singles_top_among, a.singles), share(a.multiples_top_among, a.multiples),
+                  share(a.multiples_all_among, a.multiples)),
       fmt::format("aim: nothing claimed on >= 95 % of null and outside pairs: {}, {}",
                   share(a.controls_quiet, a.controls), met(a.controls_met)),
       fmt::format("aim: held-out gap above the noise shrunk >= 80 % on explained bias-type pairs: "

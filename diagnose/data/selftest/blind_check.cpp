@@ -13,6 +13,38 @@ bool holds(const BlindTruth& truth, const std::string& name) {
   return std::find(truth.classes.begin(), truth.classes.end(), name) != truth.classes.end();
 }
 
+// Each finding's class and the classes it names as indistinguishable from it.
+std::vector<std::vector<std::string>> claimed_sets(const Diagnosis& diagnosis,
+                                                   const ClassOfFinding& class_of) {
+  std::vector<std::vector<std::string>> sets;
+  for (const EffectFinding& f : diagnosis.effects) {
+    std::vector<std::string> set{class_of(f)};
+    for (const std::string& other : f.indistinguishable_from) {
+      EffectFinding alike;
+      alike.name = other;
+      set.push_back(class_of(alike));
+    }
+    sets.push_back(std::move(set));
+  }
+  return sets;
+}
+
+void score_among_indistinguishable(const BlindTruth& truth,
+                                   const std::vector<std::vector<std::string>>& sets,
+                                   BlindScore& score) {
+  const auto in_set = [](const std::vector<std::string>& set, const std::string& c) {
+    return std::find(set.begin(), set.end(), c) != set.end();
+  };
+  score.top_among_indistinguishable =
+      !sets.empty() && std::any_of(sets.front().begin(), sets.front().end(),
+                                   [&](const std::string& c) { return holds(truth, c); });
+  score.all_among_indistinguishable =
+      std::all_of(truth.classes.begin(), truth.classes.end(), [&](const std::string& c) {
+        return std::any_of(sets.begin(), sets.end(),
+                           [&](const auto& set) { return in_set(set, c); });
+      });
+}
+
 void score_in_library(const BlindTruth& truth, const Diagnosis& diagnosis, BlindScore& score) {
   score.verdict_correct = diagnosis.status == Status::kExplained;
   score.top_correct = !score.claimed.empty() && holds(truth, score.claimed.front());
@@ -105,6 +137,8 @@ std::vector<BlindEffectsRow> effects_rows(const std::vector<BlindRow>& rows) {
     line->explained += row.outcome->diagnosis.status == Status::kExplained ? 1 : 0;
     line->top_correct += score.top_correct ? 1 : 0;
     line->all_found += score.all_found ? 1 : 0;
+    line->top_among_indistinguishable += score.top_among_indistinguishable ? 1 : 0;
+    line->all_among_indistinguishable += score.all_among_indistinguishable ? 1 : 0;
     if (score.bias_type) {
       // A running mean, so the row needs no sum kept beside it.
       ++line->bias_cases;
@@ -149,6 +183,9 @@ BlindScore score_blind(const BlindTruth& truth, const Diagnosis& diagnosis,
   }
   if (in_library(truth.kind)) {
     score_in_library(truth, diagnosis, score);
+    if (!score.claimed.empty()) {
+      score_among_indistinguishable(truth, claimed_sets(diagnosis, class_of), score);
+    }
   } else {
     score.verdict_correct =
         diagnosis.status == (truth.kind == BlindKind::kNull ? Status::kNone : Status::kUnexplained);

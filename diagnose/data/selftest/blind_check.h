@@ -44,6 +44,11 @@ struct BlindScore {
   bool verdict_correct = false;      // in-library: explained; null: none; outside: unexplained
   bool top_correct = false;          // in-library: the first effect named is a true one
   bool all_found = false;            // in-library: every true effect is named
+  // The same two where a finding stands for the classes it names as indistinguishable from it
+  // too ("nonlinearity or range_compression: these data cannot tell them apart"): the answer the
+  // diagnosis gives where the data cannot separate them (docs/diagnose.md, "Identify").
+  bool top_among_indistinguishable = false;
+  bool all_among_indistinguishable = false;
   bool nearest_correct = false;      // in-library and unexplained: the nearest is a true one
   int spurious = 0;                  // effects named that are not true ones
   bool bias_type = false;            // in-library: BlindTruth::bias_type
@@ -99,6 +104,7 @@ struct BlindClassRow {
 struct BlindEffectsRow {
   int effects = 0;  // true classes per case
   int cases = 0, explained = 0, top_correct = 0, all_found = 0;
+  int top_among_indistinguishable = 0, all_among_indistinguishable = 0;  // BlindScore's
   int bias_cases = 0;                           // of them, cases whose every class is bias-type
   double mean_excess_shrink_pct = 0;            // over those
   int explained_bias_cases = 0;                 // of those, cases explained

@@ -167,6 +167,8 @@ nlohmann::json case_json(const BlindStyle& style, const BlindRow& row) {
   if (in_library(row.truth.kind)) {
     j["top_correct"] = score.top_correct;
     j["all_found"] = score.all_found;
+    j["top_among_indistinguishable"] = score.top_among_indistinguishable;
+    j["all_among_indistinguishable"] = score.all_among_indistinguishable;
     j["spurious"] = score.spurious;
     j["bias_type"] = score.bias_type;
     if (style.shows_nearest) j["nearest_correct"] = score.nearest_correct;
@@ -231,6 +233,8 @@ nlohmann::json summary_json(const BlindStyle& style, const BlindSummary& s) {
          {"explained", row.explained},
          {"top_correct", row.top_correct},
          {"all_found", row.all_found},
+         {"top_among_indistinguishable", row.top_among_indistinguishable},
+         {"all_among_indistinguishable", row.all_among_indistinguishable},
          {"bias_cases", row.bias_cases},
          {"mean_excess_shrink_pct", row.mean_excess_shrink_pct},
          {"explained_bias_cases", row.explained_bias_cases},
