@@ -31,8 +31,8 @@ BlindScore scored(const std::vector<std::string>& truth, const std::vector<Effec
 }
 
 TEST(BlindScore, AFindingIndistinguishableFromTheTrueClassIsRightOnlyAmongThem) {
-  const BlindScore both = scored({"range_compression"},
-                                 {finding("nonlinearity", {"range_compression"})});
+  const BlindScore both =
+      scored({"range_compression"}, {finding("nonlinearity", {"range_compression"})});
   EXPECT_FALSE(both.top_correct);
   EXPECT_FALSE(both.all_found);
   EXPECT_TRUE(both.top_among_indistinguishable);

@@ -49,11 +49,11 @@ struct BlindScore {
   // diagnosis gives where the data cannot separate them (docs/diagnose.md, "Identify").
   bool top_among_indistinguishable = false;
   bool all_among_indistinguishable = false;
-  bool nearest_correct = false;      // in-library and unexplained: the nearest is a true one
-  int spurious = 0;                  // effects named that are not true ones
-  bool bias_type = false;            // in-library: BlindTruth::bias_type
-  double shrink_pct = 0.0;           // held-out gap RMS, before -> after the named effects
-  double excess_shrink_pct = 0.0;    // the part of the held-out gap RMS above the noise
+  bool nearest_correct = false;    // in-library and unexplained: the nearest is a true one
+  int spurious = 0;                // effects named that are not true ones
+  bool bias_type = false;          // in-library: BlindTruth::bias_type
+  double shrink_pct = 0.0;         // held-out gap RMS, before -> after the named effects
+  double excess_shrink_pct = 0.0;  // the part of the held-out gap RMS above the noise
 };
 
 // The name a reality's truth gives the effect of a finding ("" for one it has no name for).

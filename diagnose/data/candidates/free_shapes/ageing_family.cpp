@@ -180,16 +180,15 @@ int AgeingFamily::choose_on_heldout(const RecordedPart& calibration,
   }
   tau_days_ = best->tau;
   heldout_level_ = Eigen::Vector2d(best->offset, best->rate);
-  const double calibration_rate = profiles[static_cast<std::size_t>(
-      std::find(searched.begin(), searched.end(), best->tau) - searched.begin())].rate;
+  const auto chosen = std::find(searched.begin(), searched.end(), best->tau) - searched.begin();
+  const double calibration_rate = profiles[static_cast<std::size_t>(chosen)].rate;
   const bool rate_moved = best->rate != calibration_rate;
   how = curvature_note();
   if (rate_moved) {
     how += fmt::format(
         "; its {} the calibration session leaves open, chosen on the held-out session's level "
         "({:.3g} where the calibration part alone took {:.3g})",
-        tau_days_ == 0.0 ? "rate (V/day), which" : "size (V), which", best->rate,
-        calibration_rate);
+        tau_days_ == 0.0 ? "rate (V/day), which" : "size (V), which", best->rate, calibration_rate);
   }
   chosen_ = tau_days_;
   return rate_moved ? 2 : 1;

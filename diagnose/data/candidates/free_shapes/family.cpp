@@ -9,11 +9,11 @@ namespace flange::diagnose::free_shapes {
 
 FreeShapeFit LinearFamily::fit(const FreeShapeInputs& in) {
   std::string chosen_on_heldout;
-  const int heldout_values = in.heldout_age_unknown
-                                 ? 0
-                                 : choose_on_heldout(in.calibration, in.cal_gap_v, in.heldout,
-                                                     in.ho_gap_v, in.before_any_pick,
-                                                     chosen_on_heldout);
+  const int heldout_values =
+      in.heldout_age_unknown
+          ? 0
+          : choose_on_heldout(in.calibration, in.cal_gap_v, in.heldout, in.ho_gap_v,
+                              in.before_any_pick, chosen_on_heldout);
   const Eigen::MatrixXd cal = columns(in.calibration);
   const Eigen::Map<const Eigen::VectorXd> gap(in.cal_gap_v.data(),
                                               static_cast<Eigen::Index>(in.cal_gap_v.size()));
