@@ -12,6 +12,7 @@
 #include "grid_search.h"
 #include "ridge_solve.h"
 #include "sensor_age.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose::free_shapes {
 namespace {
@@ -56,26 +57,21 @@ std::map<std::string, std::string> AgeingFamily::search_edges() const {
   return {};
 }
 
-AgeingFamily::Profile AgeingFamily::profile(const std::vector<double>& cal_gap) const {
+AgeingFamily::Profile AgeingFamily::profile(const std::vector<double>& column,
+                                            const std::vector<double>& cal_gap) {
   // Centred least squares of the gap on [1, column]: its rate, the sum of squares it leaves and
   // how fast that grows away from the rate (the column's spread), with the offset profiled.
-  const std::vector<double> column = column_of(cal_ages_);
-  const double n = static_cast<double>(column.size());
-  double mean_c = 0.0, mean_g = 0.0;
+  Profile p{mean_of(column), mean_of(cal_gap), 0.0, 0.0, 0.0};
+  double cross = 0.0;
   for (std::size_t i = 0; i < column.size(); ++i) {
-    mean_c += column[i] / n;
-    mean_g += cal_gap[i] / n;
+    const double c = column[i] - p.mean_column, g = cal_gap[i] - p.mean_gap;
+    p.spread += c * c;
+    cross += c * g;
+    p.least_sse += g * g;
   }
-  double scc = 0.0, scg = 0.0, sgg = 0.0;
-  for (std::size_t i = 0; i < column.size(); ++i) {
-    scc += (column[i] - mean_c) * (column[i] - mean_c);
-    scg += (column[i] - mean_c) * (cal_gap[i] - mean_g);
-    sgg += (cal_gap[i] - mean_g) * (cal_gap[i] - mean_g);
-  }
-  Profile p{mean_c, mean_g, scc, 0.0, sgg};
-  if (scc > 0.0) {
-    p.rate = scg / scc;
-    p.least_sse = std::max(sgg - scg * scg / scc, 0.0);
+  if (p.spread > 0.0) {
+    p.rate = cross / p.spread;
+    p.least_sse = std::max(p.least_sse - cross * p.rate, 0.0);
   }
   return p;
 }
@@ -89,13 +85,13 @@ std::vector<double> AgeingFamily::column_of(const std::vector<double>& ages) con
 }
 
 AgeingFamily::Trial AgeingFamily::heldout_trial(const Profile& p, double cal_bound,
+                                                const std::vector<double>& ho_column,
                                                 const std::vector<double>& ho_gap) const {
   // The rate the held-out level asks for, kept where the calibration part does not reject it:
   // its sum of squares grows by (rate - p.rate)^2 p.spread away from its own best.
-  const std::vector<double> column = column_of(ho_ages_);
   double sdd = 0.0, srd = 0.0;
-  for (std::size_t i = 0; i < column.size(); ++i) {
-    const double d = column[i] - p.mean_column;
+  for (std::size_t i = 0; i < ho_column.size(); ++i) {
+    const double d = ho_column[i] - p.mean_column;
     sdd += d * d;
     srd += d * (ho_gap[i] - p.mean_gap);
   }
@@ -104,10 +100,9 @@ AgeingFamily::Trial AgeingFamily::heldout_trial(const Profile& p, double cal_bou
     const double reach = std::sqrt(std::max(cal_bound - p.least_sse, 0.0) / p.spread);
     rate = std::clamp(rate, p.rate - reach, p.rate + reach);
   }
-  Trial t{tau_days_, rate, p.mean_gap - rate * p.mean_column, 0.0, 0.0};
-  t.cal_sse = p.least_sse + (rate - p.rate) * (rate - p.rate) * p.spread;
-  for (std::size_t i = 0; i < column.size(); ++i) {
-    const double e = ho_gap[i] - t.offset - rate * column[i];
+  Trial t{tau_days_, rate, p.rate, p.mean_gap - rate * p.mean_column, 0.0};
+  for (std::size_t i = 0; i < ho_column.size(); ++i) {
+    const double e = ho_gap[i] - t.offset - rate * ho_column[i];
     t.ho_sse += e * e;
   }
   return t;
@@ -155,24 +150,23 @@ int AgeingFamily::choose_on_heldout(const RecordedPart& calibration,
                                     std::string& how) {
   heldout_level_.reset();
   if (!before_any_pick) return choose_settling(calibration, cal_gap, heldout, ho_gap, how);
-  cal_ages_ = age_days(calibration);
-  ho_ages_ = age_days(heldout);
+  const std::vector<double> cal_ages = age_days(calibration), ho_ages = age_days(heldout);
+  const std::vector<double> searched = taus();
   std::vector<Profile> profiles;
   double least_cal = std::numeric_limits<double>::infinity();
-  for (double tau : taus()) {
+  for (double tau : searched) {
     tau_days_ = tau;
-    profiles.push_back(profile(cal_gap));
+    profiles.push_back(profile(column_of(cal_ages), cal_gap));
     least_cal = std::min(least_cal, profiles.back().least_sse);
   }
   const double variance =
       least_cal / static_cast<double>(std::max<std::size_t>(cal_gap.size(), 4) - 3);
   const double cal_bound = least_cal + kSettlingLeeway * variance;
   std::optional<Trial> best;
-  const std::vector<double> searched = taus();
   for (std::size_t k = 0; k < searched.size(); ++k) {
     tau_days_ = searched[k];
     if (profiles[k].least_sse > cal_bound) continue;
-    const Trial trial = heldout_trial(profiles[k], cal_bound, ho_gap);
+    const Trial trial = heldout_trial(profiles[k], cal_bound, column_of(ho_ages), ho_gap);
     if (!best || trial.ho_sse < best->ho_sse ||
         (trial.ho_sse == best->ho_sse && trial.tau == chosen_)) {
       best = trial;
@@ -180,15 +174,14 @@ int AgeingFamily::choose_on_heldout(const RecordedPart& calibration,
   }
   tau_days_ = best->tau;
   heldout_level_ = Eigen::Vector2d(best->offset, best->rate);
-  const auto chosen = std::find(searched.begin(), searched.end(), best->tau) - searched.begin();
-  const double calibration_rate = profiles[static_cast<std::size_t>(chosen)].rate;
-  const bool rate_moved = best->rate != calibration_rate;
+  const bool rate_moved = best->rate != best->calibration_rate;
   how = curvature_note();
   if (rate_moved) {
     how += fmt::format(
         "; its {} the calibration session leaves open, chosen on the held-out session's level "
         "({:.3g} where the calibration part alone took {:.3g})",
-        tau_days_ == 0.0 ? "rate (V/day), which" : "size (V), which", best->rate, calibration_rate);
+        tau_days_ == 0.0 ? "rate (V/day), which" : "size (V), which", best->rate,
+        best->calibration_rate);
   }
   chosen_ = tau_days_;
   return rate_moved ? 2 : 1;

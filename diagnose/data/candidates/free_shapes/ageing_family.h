@@ -53,9 +53,10 @@ class AgeingFamily : public LinearFamily {
   struct Profile {
     double mean_column, mean_gap, spread, rate, least_sse;
   };
-  // A settling's rate chosen on the held-out level, its offset from the calibration part.
+  // A settling's rate chosen on the held-out level (beside the calibration part's own), its
+  // offset from the calibration part.
   struct Trial {
-    double tau, rate, offset, cal_sse, ho_sse;
+    double tau, rate, calibration_rate, offset, ho_sse;
   };
   static std::string describe_tau(double tau_days);
   // The description's note on a settling chosen on the held-out level ("" for the calibration's).
@@ -65,11 +66,11 @@ class AgeingFamily : public LinearFamily {
                       const RecordedPart& heldout, const std::vector<double>& ho_gap,
                       std::string& how);
   std::vector<double> column_of(const std::vector<double>& ages) const;
-  Profile profile(const std::vector<double>& cal_gap) const;
-  Trial heldout_trial(const Profile& p, double cal_bound, const std::vector<double>& ho_gap) const;
+  static Profile profile(const std::vector<double>& column, const std::vector<double>& cal_gap);
+  Trial heldout_trial(const Profile& p, double cal_bound, const std::vector<double>& ho_column,
+                      const std::vector<double>& ho_gap) const;
 
   double tau_days_ = 0.0, chosen_ = 0.0;
-  std::vector<double> cal_ages_, ho_ages_;
   std::optional<Eigen::Vector2d> heldout_level_;  // offset and rate chosen on the held-out part
 };
 
