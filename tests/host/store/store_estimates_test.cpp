@@ -93,6 +93,19 @@ void keep_forecast(host::WheelEstimateRecord& e, double b) {
   e.forecast = fmt::format(R"({{"acceleration_per_mm":{:.17g},"note":"it's \"kept\""}})", b);
 }
 
+// The two wheels' estimates a store written at an older schema version holds once opened at the
+// present one, with the marks `set` was written with; empty when it holds none.
+std::vector<host::WheelEstimateRecord> migrated_wheels(host::Store& store,
+                                                       const host::WearEstimateSet& set) {
+  const auto migrated = store.wear_estimates();
+  if (!migrated.has_value()) {
+    ADD_FAILURE() << "no estimates once opened at schema version " << store.schema_version();
+    return {};
+  }
+  EXPECT_EQ(migrated->marks, set.marks);
+  return migrated->wheels;
+}
+
 TEST_P(StoreTest, KeepsTheWearEstimatesExactlyAndTheMarksMoveWithEveryWrite) {
   auto store = open();
   EXPECT_FALSE(store->wear_estimates().has_value());
@@ -147,12 +160,10 @@ TEST_P(StoreTest, AVersion5StoresEstimatesOpenWithNoSensorFlagAndKeepTheFlagsWri
   }
   auto store = open();
   ASSERT_EQ(store->schema_version(), host::kStoreSchemaVersion);
-  const auto migrated = store->wear_estimates();
-  ASSERT_TRUE(migrated.has_value());
-  EXPECT_EQ(migrated->marks, set.marks);
-  ASSERT_EQ(migrated->wheels.size(), 2u);
-  for (std::size_t i = 0; i < 2; ++i) expect_same(migrated->wheels[i], set.wheels[i]);
-  EXPECT_EQ(migrated->wheels[0].sensor_flag_first, "");
+  const std::vector<host::WheelEstimateRecord> migrated = migrated_wheels(*store, set);
+  ASSERT_EQ(migrated.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) expect_same(migrated[i], set.wheels[i]);
+  EXPECT_EQ(migrated[0].sensor_flag_first, "");
   set.wheels[1].sensor_flag_first = "2026-02-01T06:00:00Z";
   set.wheels[1].sensor_flag_confirmed = "2026-02-15T06:00:00Z";
   store->write_wear_estimates(set);
@@ -176,13 +187,11 @@ TEST_P(StoreTest, AVersion6StoresEstimatesOpenWithNoForecastAndKeepTheForecastWr
   }
   auto store = open();
   ASSERT_EQ(store->schema_version(), host::kStoreSchemaVersion);
-  const auto migrated = store->wear_estimates();
-  ASSERT_TRUE(migrated.has_value());
-  EXPECT_EQ(migrated->marks, set.marks);
-  ASSERT_EQ(migrated->wheels.size(), 2u);
+  const std::vector<host::WheelEstimateRecord> migrated = migrated_wheels(*store, set);
+  ASSERT_EQ(migrated.size(), 2u);
   host::WearEstimateSet unkept = set;
   unkept.wheels[1].forecast = "";
-  for (std::size_t i = 0; i < 2; ++i) expect_same(migrated->wheels[i], unkept.wheels[i]);
+  for (std::size_t i = 0; i < 2; ++i) expect_same(migrated[i], unkept.wheels[i]);
   store->write_wear_estimates(set);
   expect_same(open()->wear_estimates()->wheels.at(1), set.wheels[1]);
 }
