@@ -37,16 +37,19 @@ std::vector<std::pair<const char*, double host::ForecastInput::*>> real_fields()
 // ... and every integer one.
 std::vector<std::pair<const char*, int host::ForecastInput::*>> integer_fields() {
   using F = host::ForecastInput;
-  return {{"dof", &F::dof}, {"km_per_day_dof", &F::km_per_day_dof},
+  return {{"dof", &F::dof},
+          {"km_per_day_dof", &F::km_per_day_dof},
           {"acceleration_dof", &F::acceleration_dof}};
 }
 
-// The rate to come's (host/wear/season_to_come.h, weekly_wear_rate.h): absent from the estimates
-// kept before it was in the dates, and read as 0 then.
+// The rate to come's (host/wear/season_to_come.h, weekly_wear_rate.h) and the season carried
+// forward: absent from the estimates kept before they were in the dates, and read as 0 then.
 std::vector<std::pair<const char*, double host::ForecastInput::*>> rate_to_come_fields() {
   using F = host::ForecastInput;
   return {{"season_variance", &F::season_variance},
-          {"rate_long_run_variance", &F::rate_long_run_variance}};
+          {"rate_long_run_variance", &F::rate_long_run_variance},
+          {"season_trend_per_day", &F::season_trend_per_day},
+          {"season_departure_days", &F::season_departure_days}};
 }
 
 }  // namespace
@@ -72,7 +75,7 @@ host::ForecastInput forecast_input_of_json(const std::string& text) {
     }
     input.*field = value->is_null() ? NAN : value->get<double>();
   }
-  // Kept before the rate to come was in the dates: none.
+  // Kept before the rate to come or the season carried forward was in the dates: none.
   for (const auto& [name, field] : rate_to_come_fields()) {
     const auto value = json.find(name);
     if (value != json.end() && value->is_number()) input.*field = value->get<double>();

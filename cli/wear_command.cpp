@@ -268,7 +268,8 @@ int run_wear_command(const WearOptions& options, const std::vector<std::string>&
         "day "
         "(se {:.5f}), {} dof: {}\n",
         bend.estimate, bend.se, bend.trend, bend.trend_se, bend.dof,
-        bend.significant ? "in the dates" : "not in the dates (within 0 at 95 %)");
+        bend.significant ? "differs from 0 at 95 %"
+                         : "within 0 at 95 %, weighed down in the dates");
   }
   const bool truth_ok = !options.truth || compare_with_truth(options, wear, said);
   said << "  wrote " << (options.out / "index.html").string() << ", wear.json and wear.csv\n";

@@ -121,24 +121,17 @@ WearSeries series_of(const WheelWear& wheel, const std::vector<double>& y,
   return series;
 }
 
-// The fleet's b and gamma in a wheel's forecast (wear_acceleration.h): how its clearance now and
-// rate move with them, and their covariance. A significant b moves the clearance and rate to the
-// line refitted to y - b q - gamma p; one within 0 leaves the straight line's, and the interval
-// then holds b's and gamma's second moments about the 0 it used (the b it did not use).
+// The fleet's b and gamma in a wheel's forecast (wear_acceleration.h): the clearance and rate
+// moved to the line refitted to y - b q - gamma p (b as acceleration_in_dates weighs it), how
+// they move with b and gamma, and their covariance.
 void with_fleet_bend(ForecastInput& input, const AccelerationEvidence& bend,
                      const FleetAcceleration& acceleration) {
-  const double b = acceleration.estimate, gamma = acceleration.trend;
+  const double b = acceleration_in_dates(acceleration), gamma = acceleration.trend;
   input.clearance_per_acceleration = -bend.clearance_gradient;
   input.rate_per_acceleration = -bend.rate_gradient;
   input.clearance_per_trend = -bend.clearance_trend_gradient;
   input.rate_per_trend = -bend.rate_trend_gradient;
   input.acceleration_dof = acceleration.dof;
-  if (!acceleration.significant) {
-    input.acceleration_se = std::hypot(b, acceleration.se);
-    input.trend_se = std::hypot(gamma, acceleration.trend_se);
-    input.acceleration_trend_covariance = b * gamma + acceleration.covariance;
-    return;
-  }
   const double clearance_shift =
       b * bend.clearance_gradient + gamma * bend.clearance_trend_gradient;
   const double rate_shift = b * bend.rate_gradient + gamma * bend.rate_trend_gradient;
@@ -154,7 +147,8 @@ void with_fleet_bend(ForecastInput& input, const AccelerationEvidence& bend,
 
 // What the forecast is made from: the line at the last run with its uncertainties (the
 // least-squares covariance widened by the jackknife's inflation), the km per day and the rate to
-// come: the season (season_to_come.h) and the locomotive's duties (weekly_wear_rate.h).
+// come: the season, carried forward and in the interval (season_to_come.h), and the locomotive's
+// duties (weekly_wear_rate.h).
 ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread,
                              const FleetAcceleration& acceleration, const WeeklyWearRate& duty) {
   const WearLineFit& fit = *wheel.fit;
@@ -185,6 +179,8 @@ ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread,
   if (acceleration.dof == 0) return input;
   input.acceleration_dof = acceleration.dof;
   input.season_variance = season_to_come_variance(acceleration, runs);
+  input.season_trend_per_day = acceleration.trend;
+  input.season_departure_days = runs.back().day - km_weighted_mean_day(runs);
   // A drift fitted out keeps the straight line and no b or gamma: its terms in days take up a
   // bend of any cause (a quadratic drift is all but q on a wheel's own history), so the refit
   // would move its clearance by its drift's uncertainty, not by the wear's bend.

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <utility>
 
+#include "season_to_come.h"
 #include "wear_line_fit.h"
 
 namespace flange::host {
@@ -99,6 +100,32 @@ int dof_of(double welch_satterthwaite) {
   return static_cast<int>(std::min(1e6, std::max(1.0, std::floor(welch_satterthwaite))));
 }
 
+// The days to the limit at the history's mean season (K / mu, with the days' interval at
+// q sd T / T when known, else the km's bounds'), then each as the season to come moves the rate
+// (seasonal_days), and the km with them: mu times the days at the mean season they make.
+void with_days(LimitForecast& forecast, const ForecastInput& input,
+               std::optional<double> q_days_spread) {
+  const double mu = input.km_per_day;
+  const auto flat_days = [&](const std::optional<double>& km) -> std::optional<double> {
+    if (!km) return std::nullopt;
+    return *km / mu;
+  };
+  const std::optional<double> days = flat_days(forecast.km);
+  std::optional<double> days_low = flat_days(forecast.km_low),
+                        days_high = flat_days(forecast.km_high);
+  if (q_days_spread) std::tie(days_low, days_high) = bounds(*days, *q_days_spread);
+  const auto seasonal = [&](const std::optional<double>& flat) -> std::optional<double> {
+    if (!flat) return std::nullopt;
+    return seasonal_days(*flat, input.season_trend_per_day, input.season_departure_days);
+  };
+  for (std::optional<double>* km : {&forecast.km, &forecast.km_low, &forecast.km_high}) {
+    if (*km) *km = mu * *seasonal(flat_days(*km));
+  }
+  forecast.days = seasonal(days);
+  forecast.days_low = seasonal(days_low);
+  forecast.days_high = seasonal(days_high);
+}
+
 }  // namespace
 
 std::string date_of_day(double day) {
@@ -134,17 +161,7 @@ LimitForecast forecast_limit(const ForecastInput& input, double limit_clearance_
   }
   if (forecast.reached) forecast.km = forecast.km_low = forecast.km_high = 0.0;
   if (!(input.km_per_day > 0.0)) return forecast;
-  const auto to_days = [&](const std::optional<double>& km) -> std::optional<double> {
-    if (!km) return std::nullopt;
-    return *km / input.km_per_day;
-  };
-  forecast.days = to_days(forecast.km);
-  if (spread_known) {
-    std::tie(forecast.days_low, forecast.days_high) = bounds(*forecast.days, q_days * spread.days);
-  } else {
-    forecast.days_low = to_days(forecast.km_low);
-    forecast.days_high = to_days(forecast.km_high);
-  }
+  with_days(forecast, input, spread_known ? std::optional(q_days * spread.days) : std::nullopt);
   const auto to_date = [&](const std::optional<double>& days) {
     return days ? date_of_day(input.last_day + *days) : std::string();
   };

@@ -72,6 +72,10 @@ struct ForecastInput {
   // The rate to come's relative variance from the season the history has not seen
   // (season_to_come.h), at acceleration_dof degrees of freedom; 0: none.
   double season_variance = 0.0;
+  // The season carried forward (season_to_come.h, seasonal_days): the fleet's trend gamma and
+  // the last run's day less the history's km-weighted mean day; gamma 0: the mean season's.
+  double season_trend_per_day = 0.0;
+  double season_departure_days = 0.0;
   // The long-run relative variance of a day's wear per km (weekly_wear_rate.h; per day): the
   // mean rate over the D days to come scatters by rate_long_run_variance / D; 0: none.
   double rate_long_run_variance = 0.0;

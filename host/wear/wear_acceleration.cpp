@@ -129,4 +129,10 @@ FleetAcceleration pool_acceleration(const std::vector<AccelerationSample>& sampl
   return fleet;
 }
 
+double acceleration_in_dates(const FleetAcceleration& fleet) {
+  const double b = fleet.estimate;
+  const double square = b * b + fleet.se * fleet.se;
+  return square > 0.0 ? b * b * b / square : 0.0;
+}
+
 }  // namespace flange::host

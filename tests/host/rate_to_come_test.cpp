@@ -69,6 +69,41 @@ TEST(ForecastSeasonToCome, TheSeasonSeenInTheHistoryWidensTheDatesUntilAYearOfIt
   EXPECT_LT(*with.km_low, *without.km_low);
 }
 
+// The season carried forward: the cycle's sinusoid whose slope at the history's mean day is the
+// fleet's trend. With the rate rising at the last run (60 days past the mean day, gamma 0.002 per
+// day: A = 0.116) the mean season's 100 days of wear come sooner; over a whole cycle the season
+// averages out; the wear over the days found is the mean season's; a trend the sinusoid cannot
+// hold with a positive rate, or none, leaves the mean season's days.
+TEST(ForecastSeasonToCome, TheSeasonIsCarriedForwardAsTheCyclesSinusoid) {
+  const double omega = 2.0 * std::acos(-1.0) / kSeasonCycleDays;
+  const double gamma = 0.002, departure = 60.0, amplitude = gamma / omega;
+  const double days = seasonal_days(100.0, gamma, departure);
+  EXPECT_LT(days, 100.0 / 1.05);
+  double worn = 0.0;  // int_0^days (1 + A sin(omega (departure + t))) dt, by the midpoint rule
+  const int steps = 100000;
+  for (int k = 0; k < steps; ++k) {
+    const double t = (k + 0.5) * days / steps;
+    worn += (1.0 + amplitude * std::sin(omega * (departure + t))) * days / steps;
+  }
+  EXPECT_NEAR(worn, 100.0, 1e-6);
+  EXPECT_NEAR(seasonal_days(kSeasonCycleDays, gamma, departure), kSeasonCycleDays, 1e-6);
+  EXPECT_GT(seasonal_days(100.0, gamma, -departure), 100.0);  // a rate falling at the last run
+  EXPECT_EQ(seasonal_days(100.0, 0.0, departure), 100.0);
+  EXPECT_EQ(seasonal_days(100.0, 1.2 * omega, departure), 100.0);
+
+  // In the forecast: the days, their bounds and the km as the season moves the rate.
+  ForecastInput input = plain_input();
+  const LimitForecast mean_season = forecast_limit(input, 8.0);
+  input.season_trend_per_day = gamma;
+  input.season_departure_days = departure;
+  const LimitForecast seasonal = forecast_limit(input, 8.0);
+  EXPECT_NEAR(*seasonal.days, seasonal_days(*mean_season.days, gamma, departure), 1e-9);
+  EXPECT_NEAR(*seasonal.days_low, seasonal_days(*mean_season.days_low, gamma, departure), 1e-9);
+  EXPECT_NEAR(*seasonal.days_high, seasonal_days(*mean_season.days_high, gamma, departure), 1e-9);
+  EXPECT_NEAR(*seasonal.km, input.km_per_day * *seasonal.days, 1e-6);
+  EXPECT_LT(*seasonal.days, *mean_season.days);
+}
+
 // Six wheels of one locomotive over 16 weeks, a run every day at 400 km, each wheel its own rate;
 // the locomotive's duty multiplies them all by duty[week]; noise_mm of white scatter per run.
 WeeklyWearRate duty_estimate(const std::vector<double>& duty, double noise_mm,

@@ -186,8 +186,10 @@ TEST(ReprofilingPlan, OnAnAcceleratingFleetTheDateAtEvenRiskIsTheCriticalDate) {
 
 // The due day at risk P is the P quantile of the dates' forecast of the critical date: the lower
 // bound of its interval at the two-sided level 1 - 2P under 1/2, the upper at 2P - 1 above; at
-// 1/2 the critical date, and there (only) the rate's quantile alone gives the same day on a
-// fleet that wears linearly. On the accelerating fleet (b = 0.06) and the linear one (b = 0).
+// 1/2 the critical date, and there (only) the rate's quantile alone gives about the same day on
+// a fleet that wears linearly (within 1 % of the days to come: its b within 0 and its season are
+// in the date, weighed down; wear_acceleration.h). On the accelerating fleet (b = 0.06) and the
+// linear one (b = 0).
 TEST(ReprofilingPlan, TheDueDayAtRiskIsTheForecastsCriticalDateQuantile) {
   for (const double acceleration : {0.06, 0.0}) {
     const FleetWear fleet =
@@ -210,7 +212,7 @@ TEST(ReprofilingPlan, TheDueDayAtRiskIsTheForecastsCriticalDateQuantile) {
         EXPECT_EQ(w.due_day, e.forecast_input.last_day + *days) << "b " << acceleration;
         const double rate_alone = straight_line_due_day(e, fleet.critical_clearance_mm, risk);
         if (risk == 0.5 && acceleration == 0.0) {
-          EXPECT_EQ(w.due_day, rate_alone);
+          EXPECT_NEAR(w.due_day, rate_alone, 0.01 * (rate_alone - e.forecast_input.last_day));
         }
         sooner_than_rate_alone += w.due_day < rate_alone - 1.0;
       }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Wear that speeds up as the flange thins, pooled over a fleet (wear_acceleration.h): on synthetic
 // fleets whose wear per km is r exp(b wear) the fleet's b is found and the km to the warning
-// clearance hold their level; on fleets that wear linearly the forecast is the straight line's.
+// clearance hold their level; on fleets that wear linearly the b found, within 0, is the dates'.
 #include "wear_acceleration.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +14,7 @@
 #include "fleet_wear.h"
 #include "host/synthetic_accelerating_fleet.h"
 #include "limit_forecast.h"
+#include "season_to_come.h"
 
 namespace flange::host {
 namespace {
@@ -48,43 +49,47 @@ TEST(WearAcceleration, AFleetWearingFasterAsItThinsIsFoundAndItsDatesHoldTheirLe
   }
 }
 
-TEST(WearAcceleration, ALinearFleetKeepsTheStraightLinesForecast) {
+// A fleet that wears linearly: its b is within 0 and is in the dates all the same, weighed by
+// how well it is known (acceleration_in_dates: b^3 / (b^2 + se^2)), with its own uncertainty in
+// the interval; the dates hold their level.
+TEST(WearAcceleration, ABWithinZeroIsInTheDatesWeighedByItsUncertainty) {
   for (const std::uint32_t seed : {1u, 2u, 3u}) {
     const SyntheticFleet truth = synthetic_fleet(0.0, seed);
     const FleetWear fleet = estimate_fleet_wear(truth.histories, {});
-    EXPECT_FALSE(fleet.acceleration.significant) << "seed " << seed;
+    const FleetAcceleration& bend = fleet.acceleration;
+    EXPECT_FALSE(bend.significant) << "seed " << seed;
+    ASSERT_GT(bend.dof, 0);
     EXPECT_NEAR(median_true_over_forecast(truth, fleet), 1.0, 0.03) << "seed " << seed;
     for (const WheelWear& w : fleet.wheels) {
-      if (!w.warning.km || w.warning.reached) continue;
-      const double straight =
-          (fleet.warning_clearance_mm - w.clearance_now_mm) / (w.rate_mm_per_1000km / 1000.0);
-      EXPECT_NEAR(*w.warning.km, straight, 1e-9 * straight) << "seed " << seed;
+      if (!w.warning.km || w.warning.reached || w.sensor_fault) continue;
+      const ForecastInput& input = w.forecast_input;
+      EXPECT_EQ(input.acceleration_per_mm, acceleration_in_dates(bend));
+      EXPECT_NE(input.acceleration_per_mm, 0.0);
+      EXPECT_EQ(input.acceleration_se, bend.se);
+      EXPECT_EQ(input.trend_se, bend.trend_se);
+      EXPECT_EQ(input.acceleration_trend_covariance, bend.covariance);
+      // The season carried forward from the fleet's trend (season_to_come.h).
+      EXPECT_EQ(input.season_trend_per_day, bend.trend);
+      EXPECT_NEAR(input.season_departure_days, w.runs.back().day - km_weighted_mean_day(w.runs),
+                  1e-9);
     }
   }
 }
 
-TEST(WearAcceleration, ABWithinZeroStaysInTheDatesIntervalByItsSecondMoment) {
-  const SyntheticFleet truth = synthetic_fleet(0.0, 1);
-  const FleetWear fleet = estimate_fleet_wear(truth.histories, {});
-  ASSERT_FALSE(fleet.acceleration.significant);
-  ASSERT_GT(fleet.acceleration.dof, 0);
-  const double b = fleet.acceleration.estimate, gamma = fleet.acceleration.trend;
-  int widened = 0;
-  for (const WheelWear& w : fleet.wheels) {
-    if (!w.warning.km || w.warning.reached || w.sensor_fault) continue;
-    const ForecastInput& input = w.forecast_input;
-    EXPECT_EQ(input.acceleration_per_mm, 0.0);  // the straight line's date
-    EXPECT_NEAR(input.acceleration_se, std::hypot(b, fleet.acceleration.se), 1e-15);
-    EXPECT_NEAR(input.trend_se, std::hypot(gamma, fleet.acceleration.trend_se), 1e-15);
-    EXPECT_NEAR(input.acceleration_trend_covariance, b * gamma + fleet.acceleration.covariance,
-                1e-15);
-    ForecastInput without = input;
-    without.acceleration_se = without.trend_se = without.acceleration_trend_covariance = 0.0;
-    const LimitForecast plain = forecast_limit(without, fleet.warning_clearance_mm);
-    EXPECT_NEAR(*w.warning.km, *plain.km, 1e-9 * *plain.km);
-    widened += *w.warning.km_low < *plain.km_low ? 1 : 0;
-  }
-  EXPECT_GT(widened, 0);
+// The b in the dates: the least-mean-square-error multiple of the estimate, b^2 / (b^2 + se^2),
+// at the estimate: a b known well kept, one within its se of 0 taken down, 0 nothing.
+TEST(WearAcceleration, TheDatesBIsTheEstimateWeighedByHowWellItIsKnown) {
+  FleetAcceleration fleet;
+  fleet.estimate = 0.06;
+  fleet.se = 0.0015;
+  EXPECT_NEAR(acceleration_in_dates(fleet), 0.06 * 0.0036 / (0.0036 + 0.0015 * 0.0015), 1e-15);
+  EXPECT_GT(acceleration_in_dates(fleet), 0.0599);
+  fleet.estimate = -0.003;
+  fleet.se = 0.012;
+  EXPECT_NEAR(acceleration_in_dates(fleet), -0.003 * 0.003 * 0.003 / (0.000009 + 0.000144), 1e-15);
+  EXPECT_GT(acceleration_in_dates(fleet), -0.0002);
+  fleet.estimate = fleet.se = 0.0;
+  EXPECT_EQ(acceleration_in_dates(fleet), 0.0);
 }
 
 TEST(LimitForecast, AnAcceleratingFlangesKmToTheLimitFollowTheThinningLaw) {
