@@ -71,7 +71,8 @@ struct FleetWear {
   double warning_clearance_mm = 0.0;
   double critical_clearance_mm = 0.0;
   std::vector<WheelWear> wheels;  // by days to the warning clearance, soonest first
-  // b pooled over the wheels whose line is wear alone; the forecasts use it when significant.
+  // b pooled over the wheels whose line is wear alone; the forecasts use it weighed by how well
+  // it is known (acceleration_in_dates), and its calendar trend as the season to come.
   FleetAcceleration acceleration;
 };
 

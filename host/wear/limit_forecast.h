@@ -5,6 +5,9 @@
 // fleet's acceleration b (wear_acceleration.h: dw/dkm = r exp(b (w - w_now))) the km to a gap G
 // are K = (1 - exp(-b G)) / (b r), G / r as b -> 0, from the clearance and rate at the last run
 // corrected for b and the history's calendar trend (c - b g_c - gamma h_c, r - b g_r - gamma h_r).
+// The days K / mu are the history's mean season's; the season to come then moves them, and their
+// bounds, as the cycle's sinusoid through the fleet's trend does (season_to_come.h), the km with
+// them (mu times the days).
 //
 // The interval holds three uncertainties, combined to first order (delta method) as a relative
 // standard deviation of the distance K = (limit - c) / r and of the days T = K / mu:

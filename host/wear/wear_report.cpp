@@ -137,8 +137,8 @@ void write_wear_report(const std::filesystem::path& dir, const FleetWear& fleet,
        << " mm; critical " << fleet.critical_clearance_mm
        << " mm), soonest first. Rates and dates with their 95 % intervals; days from the "
           "locomotive's mean km per day; the intervals allow errors correlated from day to day "
-          "and the km the locomotive has yet to run, the dates' also the season the history "
-          "has not seen and the duties to come. A sensor drifting away from its axle "
+          "and the km the locomotive has yet to run, the dates' also the season to come (carried "
+          "forward from the history's) and the duties to come. A sensor drifting away from its axle "
           "partner is a sensor fault (red): its drift is fitted out of its wear. A rate whose "
           "interval lies below zero is no wear (wear only opens the clearance): a sensor fault "
           "when a drift explains it better, a missed reprofiling (red) when a step does. How "

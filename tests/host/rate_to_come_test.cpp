@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The rate to come in the dates' interval: the season the history has not seen
 // (season_to_come.h) and a locomotive's duties from week to week (weekly_wear_rate.h), each from
-// what the history shows, and each widening the forecast's interval (limit_forecast.h).
+// what the history shows, and each widening the forecast's interval (limit_forecast.h); and the
+// season carried forward in the dates (seasonal_days).
 #include <gtest/gtest.h>
 
 #include <cmath>
