@@ -46,10 +46,10 @@
 namespace flange::host {
 
 // The level at which `flange wear` reports the fleet's b as differing from 0 (FleetAcceleration::
-// significant). The dates no longer wait for it: a b of 0.02-0.04 per mm at 4 degrees of freedom
-// fails it on the second reality's development fleets, whose wear does speed up, and there the
-// straight line's dates came early (healthy wheels' warning dates 86 % at 95 %; docs/fleet.md,
-// step 6); acceleration_in_dates weighs b instead.
+// significant). The dates no longer wait for it: a b of 0.02-0.06 per mm at 4 degrees of freedom
+// fails it on 8 of the second reality's 30 development fleets, whose wear does speed up (0.06),
+// and there the straight line's dates came early (healthy wheels' warning dates 86 % at 95 %;
+// docs/fleet.md, step 6); acceleration_in_dates weighs b instead.
 inline constexpr double kAccelerationTestLevel = 0.95;
 // The fleet's terms (b and gamma): a wheel's residual variance is taken over its line's degrees
 // of freedom less these.
@@ -95,8 +95,9 @@ struct FleetAcceleration {
 // c = b^2 / (b^2 + se^2), at the estimate (b^3 / (b^2 + se^2)). A well-known b is used as it is
 // (0.06 +- 0.0015: c = 0.9994); one within its own se of 0 counts for little, so a fleet that
 // wears linearly keeps nearly the straight line's dates instead of taking its noise (on 400
-// linear wheels, b = 0.0024 +- 0.013, the plan's share reaching the limit first at risk 0.3 fell
-// to 84 of 400 with b as estimated; 99 weighed). Its uncertainty stays se in the interval.
+// linear wheels, b = 0.0024 +- 0.013, the plan's share reaching the limit first at risk 0.3,
+// 120 of 400 due, was 84 with b as estimated, 99 weighed: reprofiling_plan_test.cpp). Its
+// uncertainty stays se in the interval.
 double acceleration_in_dates(const FleetAcceleration& fleet);
 
 // Wheels with no leverage or no residual scatter carry no weight; fewer than two locomotives
