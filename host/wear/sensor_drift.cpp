@@ -93,8 +93,7 @@ std::optional<DriftFinding> best_drift_in(const WearSeries& difference,
                              kMinRunsAfterOnset);
     };
     finding.grows_with_days = change_rss(ChangeIn::days) < change_rss(ChangeIn::km);
-    finding.onset_kink_t =
-        onset_kink_t(fitted, best->fit, correlation_widening(best->fit.residuals));
+    finding.onset_kink = onset_kink(fitted, best->fit);
   }
   const DriftValue own_drift = drift_at(fit_wear_line(own, best->onset_day, kDriftDegree),
                                         own.day.back(), last_scale(own));
@@ -169,7 +168,7 @@ LocomotiveBar locomotive_bar(const std::vector<DriftCandidates>& axles) {
   }
   bar.t = std::max(kDriftTStatistic, kDriftTOverTypical * upper_median(ts));
   bar.size_mm = std::max(kMinDriftMm, kDriftSizeOverTypical * upper_median(sizes));
-  bar.onset_kink_t = kOnsetKinkT;
+  bar.onset_kink = kOnsetKinkRatio;
   return bar;
 }
 
@@ -180,8 +179,8 @@ namespace {
 bool starts_with_a_kink(const DriftCandidates& candidates, double bar) {
   bool judged = false;
   for (const auto& finding : {candidates.in_difference, candidates.in_sum}) {
-    if (!finding || !finding->onset_kink_t) continue;
-    if (*finding->onset_kink_t >= bar) return true;
+    if (!finding || !finding->onset_kink) continue;
+    if (*finding->onset_kink >= bar) return true;
     judged = true;
   }
   return !judged;
@@ -191,7 +190,7 @@ bool starts_with_a_kink(const DriftCandidates& candidates, double bar) {
 
 std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates,
                                           const LocomotiveBar& bar) {
-  if (!starts_with_a_kink(candidates, bar.onset_kink_t)) return std::nullopt;
+  if (!starts_with_a_kink(candidates, bar.onset_kink)) return std::nullopt;
   const bool in_difference = flagged(candidates.in_difference, bar);
   const bool in_sum = flagged(candidates.in_sum, bar);
   if (in_sum && (!in_difference || std::abs(candidates.in_sum->difference_t) >

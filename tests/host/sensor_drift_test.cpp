@@ -3,9 +3,10 @@
 // locomotive's other axles show, a drift that moved only one of the axle's two combinations is
 // no sensor's, and an axle's drift must start with a kink (onset_kink.h).
 #include "sensor_drift.h"
-#include "onset_kink.h"
 
 #include <gtest/gtest.h>
+
+#include "onset_kink.h"
 
 namespace flange::host {
 namespace {
@@ -55,8 +56,8 @@ TEST(SensorDrift, AFlaggedDriftStandsOutByItsTOrByItsSize) {
   EXPECT_FALSE(flagged_drift({finding(8.0, 0.5), std::nullopt}, bar).has_value());  // neither
   // Never below kDriftTStatistic or kMinDriftMm, and only when the other combination moved.
   EXPECT_FALSE(flagged_drift({finding(5.0, 3.0), std::nullopt}, bar).has_value());
-  EXPECT_FALSE(flagged_drift({finding(30.0, 0.5 * kMinDriftMm), std::nullopt}, LocomotiveBar{})
-                   .has_value());
+  EXPECT_FALSE(
+      flagged_drift({finding(30.0, 0.5 * kMinDriftMm), std::nullopt}, LocomotiveBar{}).has_value());
   EXPECT_FALSE(flagged_drift({finding(20.0, 1.0, false), std::nullopt}, bar).has_value());
   // Of two, the larger t; a negative drift counts by its size.
   DriftCandidates both{finding(-19.0, 1.0), finding(25.0, 1.0)};
@@ -68,17 +69,17 @@ TEST(SensorDrift, AFlaggedDriftStandsOutByItsTOrByItsSize) {
 
 TEST(SensorDrift, ADriftWithoutAKinkAtItsOnsetIsNoSensorFault) {
   // A locomotive asks for the kink; an axle alone (nothing to stand out from) does not.
-  EXPECT_DOUBLE_EQ(locomotive_bar(axles({{1.0, 0.1}, {2.0, 0.1}, {3.0, 0.1}})).onset_kink_t,
-                   kOnsetKinkT);
-  EXPECT_DOUBLE_EQ(locomotive_bar(axles({{1.0, 0.1}})).onset_kink_t, 0.0);
-  const LocomotiveBar bar{18.0, 1.0, kOnsetKinkT};
+  EXPECT_DOUBLE_EQ(locomotive_bar(axles({{1.0, 0.1}, {2.0, 0.1}, {3.0, 0.1}})).onset_kink,
+                   kOnsetKinkRatio);
+  EXPECT_DOUBLE_EQ(locomotive_bar(axles({{1.0, 0.1}})).onset_kink, 0.0);
+  const LocomotiveBar bar{18.0, 1.0, kOnsetKinkRatio};
   DriftCandidates smooth{finding(20.0, 1.5), finding(19.0, 1.4)};
-  smooth.in_difference->onset_kink_t = 0.9 * kOnsetKinkT;
-  smooth.in_sum->onset_kink_t = 0.5 * kOnsetKinkT;
+  smooth.in_difference->onset_kink = 0.9 * kOnsetKinkRatio;
+  smooth.in_sum->onset_kink = 0.5 * kOnsetKinkRatio;
   EXPECT_FALSE(flagged_drift(smooth, bar).has_value());
   // A kink in either combination is the axle's: the difference's drift is flagged.
   DriftCandidates kinked = smooth;
-  kinked.in_sum->onset_kink_t = kOnsetKinkT;
+  kinked.in_sum->onset_kink = kOnsetKinkRatio;
   const auto chosen = flagged_drift(kinked, bar);
   ASSERT_TRUE(chosen.has_value());
   EXPECT_FALSE(chosen->in_sum);
