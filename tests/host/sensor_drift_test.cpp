@@ -56,8 +56,8 @@ TEST(SensorDrift, AFlaggedDriftStandsOutByItsTOrByItsSize) {
   EXPECT_FALSE(flagged_drift({finding(8.0, 0.5), std::nullopt}, bar).has_value());  // neither
   // Never below kDriftTStatistic or kMinDriftMm, and only when the other combination moved.
   EXPECT_FALSE(flagged_drift({finding(5.0, 3.0), std::nullopt}, bar).has_value());
-  EXPECT_FALSE(
-      flagged_drift({finding(30.0, 0.5 * kMinDriftMm), std::nullopt}, LocomotiveBar{}).has_value());
+  EXPECT_FALSE(flagged_drift({finding(30.0, 0.5 * kMinDriftMm), std::nullopt}, LocomotiveBar{})
+                   .has_value());
   EXPECT_FALSE(flagged_drift({finding(20.0, 1.0, false), std::nullopt}, bar).has_value());
   // Of two, the larger t; a negative drift counts by its size.
   DriftCandidates both{finding(-19.0, 1.0), finding(25.0, 1.0)};
