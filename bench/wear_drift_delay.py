@@ -68,7 +68,8 @@ def migrated_base(fleet, db_name, flange):
 
 
 def weekly_flags(fleet, db_name, truth, flange):
-    """Per cut: (cut, wheels the search flags, wheels latched, every wheel)."""
+    """Per cut: (cut, wheels the search flags or whose rate cannot be told from no wear for a
+    drift, status "sensor fault", wheels latched, every wheel)."""
     work = migrated_base(fleet, db_name, flange)
     previous, seen = None, []
     for k, cut in enumerate(cut_dates(truth)):
@@ -77,7 +78,8 @@ def weekly_flags(fleet, db_name, truth, flange):
                         os.path.join(work, str(k), "wear")], check=True, stdout=subprocess.DEVNULL)
         wear = json.load(open(os.path.join(work, str(k), "wear", "wear.json")))
         key = lambda w: (w["locomotive"], w["axle"], w["side"])
-        found = {key(w) for w in wear["wheels"] if w["sensor_fault"] is not None}
+        found = {key(w) for w in wear["wheels"]
+                 if w["sensor_fault"] is not None or w["status"] == "sensor fault"}
         latched = {key(w) for w in wear["wheels"] if w["sensor_flag"] and w["sensor_flag"]["latched"]}
         seen.append((cut, found, latched, {key(w) for w in wear["wheels"]}))
         if previous:

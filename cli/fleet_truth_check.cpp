@@ -166,7 +166,9 @@ WheelCheck check_wheel(const host::WheelWear* w, const sim::FleetTruth& truth, i
       w->fit && (std::abs(check.relative_error) <= kRateTolerance ||
                  (check.true_rate >= check.rate_low && check.true_rate <= check.rate_high));
   check.latched = w->sensor_flag && w->sensor_flag->latched();
-  check.flagged = w->sensor_fault.has_value() || check.latched;
+  // Flagged: the page calls the sensor faulty, by this estimate's drift search, a flag the latch
+  // kept, or a rate that cannot be told from no wear whose cause is a drift (negative_rate.h).
+  check.flagged = w->sensor_fault.has_value() || check.latched || w->status == "sensor fault";
   count_reprofilings(check, *w, wheel.reprofiled_days, truth.settings.start_day);
   check.kind = check.drifting                ? "drifting sensor"
                : check.true_reprofilings > 0 ? "reprofiled"

@@ -46,7 +46,7 @@ struct WheelCheck {
   int true_reprofilings = 0;   // with a run after them
   int found_reprofilings = 0;  // of those, found in the data
   bool drifting = false;       // the truth
-  bool flagged = false;        // the estimate: this search, or a flag latched by earlier ones
+  bool flagged = false;  // the estimate: this search, a flag latched by earlier ones, or "sensor fault"
   bool latched = false;        // a sensor flag confirmed by earlier estimates (still held)
   std::string kind;            // "healthy", "reprofiled" (with a run after it) or "drifting sensor"
   Coverage rate_coverage, warning_coverage, critical_coverage;

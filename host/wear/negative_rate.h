@@ -13,6 +13,13 @@ namespace flange::host {
 
 enum class NegativeRateCause { kMissedReprofiling, kSensorFault };
 
+// A rate whose interval reaches zero while the fleet's wheels wear more than it allows is no wear
+// seen (fleet_wear.cpp) only over a history of at least this many days: earlier, a slow flange's
+// interval reaches zero because it is still wide. On the second reality's development fleets
+// (9201-9255) run weekly, healthy sensors' intervals reached zero beside the fleet's usual wear
+// up to seven weeks in (7 of 1770 sensors); from eight weeks on only drifting sensors' did.
+inline constexpr double kNoWearSeenDays = 56.0;
+
 // `series` as the wear line fits it; at least 2 runs either side of a step or onset tried.
 // A series too short for either fit is taken for a sensor fault.
 NegativeRateCause negative_rate_cause(const WearSeries& series);

@@ -269,6 +269,45 @@ TEST(FleetWear, ARateBelowZeroIsASensorFaultWhenADriftExplainsIt) {
   EXPECT_EQ(fleet.wheels[0].status, "sensor fault");
 }
 
+// A lone wheel (no partner to hold a drift against) whose sensor drifts down from the first day
+// about as fast as its flange wears (0.02 mm per 1000 km at 150-750 km on five days of six): it
+// reads as a flange that does not wear, its rate's interval around zero. Beside a locomotive
+// whose wheels wear at 0.04 and 0.08 that is no wear seen where wear should show; alone, its
+// interval is all the fleet says.
+TEST(FleetWear, ARateThatCannotBeToldFromNoWearBesideWheelsThatWearIsNeverOk) {
+  Truth truth;
+  truth.rate_right = 0.02;
+  truth.drift_from_day = 0;
+  truth.drift_mm_per_day = -0.0072;
+  const WheelHistory lone = axle_history(truth, 6)[1];
+  std::vector<WheelHistory> fleet_wheels = axle_history({}, 2);
+  for (WheelHistory& wheel : fleet_wheels) wheel.wheel.locomotive = "L02";
+  fleet_wheels.push_back(lone);
+  const FleetWear fleet = estimate_fleet_wear(fleet_wheels, {});
+  ASSERT_EQ(fleet.wheels.size(), 3u);
+  for (const WheelWear& w : fleet.wheels) {
+    if (w.wheel.locomotive == "L02") {
+      EXPECT_EQ(w.status, "ok") << w.wheel.side;
+      continue;
+    }
+    EXPECT_LE(w.rate_low, 0.0);
+    EXPECT_GT(w.rate_high, 0.0);
+    EXPECT_EQ(w.status, "sensor fault");
+  }
+  const FleetWear alone = estimate_fleet_wear({lone}, {});
+  EXPECT_EQ(alone.wheels[0].status, "ok");
+  // Its first six weeks: too short a history to call a slow flange's wear none.
+  for (WheelHistory& wheel : fleet_wheels) {
+    std::erase_if(wheel.runs, [](const WearObservation& run) { return run.day > 20454.0 + 42.0; });
+  }
+  const FleetWear short_history = estimate_fleet_wear(fleet_wheels, {});
+  for (const WheelWear& w : short_history.wheels) {
+    EXPECT_EQ(w.status, "ok") << w.wheel.locomotive << " " << w.wheel.side << ": rate "
+                              << w.rate_mm_per_1000km << " [" << w.rate_low << ", " << w.rate_high
+                              << "]";
+  }
+}
+
 TEST(FleetWear, TheWarningForecastFollowsTheRate) {
   const FleetWear fleet = estimate_fleet_wear(axle_history({}, 4), {});
   const WheelWear& w = side(fleet, "left");
