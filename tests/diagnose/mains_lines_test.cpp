@@ -147,6 +147,19 @@ TEST(MainsFamilySearch, OnlyTheLinesOwnMainsPutsAHarmonicOnZeroHertz) {
   EXPECT_EQ(fit.params.count("dc_harmonic_hz"), 0u);
 }
 
+// A logger that drops one row in 50 at 100 Hz: the rate is the clock's (its median step), not
+// the rows over the duration (98 Hz, where 60 Hz would alias to 38 Hz, out of the search's reach
+// of the line at 40 Hz).
+TEST(MainsFamilySearch, RowsTheLoggerDroppedDoNotMoveTheAliases) {
+  const SyntheticBench bench(100.0, 300.0, 0.0, 50);
+  const std::vector<double>& t = bench.series().t_s;
+  const std::vector<double> gap = with_tones(white_noise(t.size(), 0.02, 16), t, {{60.0, 0.05}});
+  MainsFamily mains;
+  mains.search(bench.part(), gap);
+  ASSERT_EQ(mains.lines(), 1u) << ::testing::PrintToString(mains.calibration_lines_hz());
+  EXPECT_TRUE(has_line_near(mains.calibration_lines_hz(), 40.0, 0.006));
+}
+
 TEST(MainsFamilySearch, NothingOnPureNoise) {
   const SyntheticBench bench;
   const std::vector<double> gap = white_noise(bench.size(), 0.02, 14);

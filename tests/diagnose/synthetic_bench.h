@@ -19,8 +19,10 @@ namespace flange::diagnose {
 
 class SyntheticBench {
  public:
-  explicit SyntheticBench(double fs_hz = 6.0, double duration_s = 1800.0, double phase_s = 0.0)
-      : series_(make_series(fs_hz, duration_s, phase_s)), replay_(series_, nominal()) {}
+  // `drop_one_in`: a logger that loses every that many-th row (0: none lost).
+  explicit SyntheticBench(double fs_hz = 6.0, double duration_s = 1800.0, double phase_s = 0.0,
+                          int drop_one_in = 0)
+      : series_(make_series(fs_hz, duration_s, phase_s, drop_one_in)), replay_(series_, nominal()) {}
   SyntheticBench(const SyntheticBench&) = delete;
   SyntheticBench& operator=(const SyntheticBench&) = delete;
 
@@ -44,10 +46,12 @@ class SyntheticBench {
   }
 
  private:
-  static RecordingSeries make_series(double fs_hz, double duration_s, double phase_s) {
+  static RecordingSeries make_series(double fs_hz, double duration_s, double phase_s,
+                                     int drop_one_in) {
     const sim::PolynomialSensorModel model = nominal();
     RecordingSeries s;
     for (int i = 0; i <= static_cast<int>(duration_s * fs_hz); ++i) {
+      if (drop_one_in > 0 && i % drop_one_in == drop_one_in - 1) continue;
       const double t = i / fs_hz;
       s.t_s.push_back(t);
       s.clearance_mm.push_back(clearance_at(t, phase_s));

@@ -12,6 +12,7 @@
 #include "class_fits.h"
 #include "effect_classes.h"
 #include "recording_series.h"
+#include "series_arithmetic.h"
 #include "series_statistics.h"
 
 namespace flange::diagnose {
@@ -201,7 +202,7 @@ void remove_ageing_line(std::vector<double>& gap, const std::vector<double>& t_s
 // to DC (60 Hz at 6 Hz) is an offset, not a tone, and is left to the offset effects.
 std::vector<double> mains_standards_hz(const TwinReplay& replay) {
   const std::vector<double>& t = replay.times();
-  const double fs_hz = static_cast<double>(t.size() - 1) / (t.back() - t.front());
+  const double fs_hz = rate_of_median_step(t);
   std::vector<double> standards;
   for (const double f : {50.0, 60.0}) {
     if (std::abs(f - fs_hz * std::round(f / fs_hz)) > 0.01 * fs_hz) standards.push_back(f);

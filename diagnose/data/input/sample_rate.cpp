@@ -34,16 +34,13 @@ double sample_rate_hz(const RecordingSeries& series) {
   if (series.size() < 2) {
     throw InputError(fmt::format("{}: fewer than 2 rows: no sample rate", series.path));
   }
-  std::vector<double> steps;
   for (std::size_t i = 1; i < series.size(); ++i) {
-    const double step = series.t_s[i] - series.t_s[i - 1];
-    if (!(step > 0.0)) {
+    if (!(series.t_s[i] - series.t_s[i - 1] > 0.0)) {
       throw InputError(fmt::format("{}: row {}: t_s = {} does not increase (previous {})",
                                    series.path, i + 1, series.t_s[i], series.t_s[i - 1]));
     }
-    steps.push_back(step);
   }
-  return 1.0 / quantile(steps, 0.5);
+  return rate_of_median_step(series.t_s);
 }
 
 double shared_sample_rate_hz(const RecordingSeries& calibration, const RecordingSeries& heldout) {

@@ -10,13 +10,14 @@
 #include "family_makers.h"
 #include "line_source.h"
 #include "mains_lines.h"
+#include "series_arithmetic.h"
 
 namespace flange::diagnose::free_shapes {
 
 void MainsFamily::search(const RecordedPart& calibration, const std::vector<double>& gap_v) {
   const std::vector<double>& t = calibration.series.t_s;
   if (t.size() < 2) return;
-  const double fs_hz = static_cast<double>(t.size() - 1) / (t.back() - t.front());
+  const double fs_hz = rate_of_median_step(t);
   const MainsAliases aliases = mains_aliases(fs_hz);
   // The aliases with a line on the calibration part, unless the lines are motion.
   cal_lines_ = find_lines(t, gap_v, aliases.distinct_hz);
