@@ -32,11 +32,19 @@ namespace flange::host {
 // one of their axle's two combinations, and the first reality's drifts (9101-9105) at least
 // 2.23: two is between them (1.9 leaves one healthy sensor flagged, 2.2 loses a drift).
 inline constexpr double kOnsetKinkRatio = 2.0;
+// A drift whose onset comes within this many days of the series' first run has too few runs
+// before it for a bend from the first run to be told from it: such a drift is not judged on its
+// kink (the flag's other bars still hold). The first reality draws its drifts' starts over the
+// first third of the period; asked of those starting in its first week, the kink cost its
+// held-out fleets 9341-9365 seven of their 42 drifts (docs/fleet.md, "Held-out figures"). The
+// price: on the second reality's development fleets four of the 13 healthy sensors the kink
+// cleared are flagged again, wanders the search starts in their first two weeks.
+inline constexpr double kLeastDaysBeforeAKink = 14.0;
 
 // rss_smooth / rss: `from_onset` is `series` fitted with a drift from its onset
 // (wear_line_fit.h), rss_smooth the same fit with the drift's terms and one more power from the
-// series' first run. Infinity when the smooth fit has too few runs or the drift fits exactly;
-// 0 without an onset.
+// series' first run. Infinity when the smooth fit has too few runs, the onset comes within
+// kLeastDaysBeforeAKink of the first run, or the drift fits exactly; 0 without an onset.
 double onset_kink(const WearSeries& series, const WearLineFit& from_onset);
 
 }  // namespace flange::host

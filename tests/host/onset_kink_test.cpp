@@ -55,5 +55,16 @@ TEST(OnsetKink, ASmoothBendFromTheStartHasNone) {
   EXPECT_EQ(onset_kink(flat, fit_wear_line(flat, std::nullopt)), 0.0);
 }
 
+// A drift from day 3 leaves too few runs before its onset for a bend from the first run to be
+// told from it: it is not judged on its kink (infinity passes any bar).
+TEST(OnsetKink, ADriftFromTheFirstDaysIsNotJudgedOnItsKink) {
+  for (const std::uint32_t seed : {1u, 2u, 3u}) {
+    const WearSeries early =
+        series_with([](int day) { return day > 3 ? 0.01 * (day - 3) : 0.0; }, seed);
+    EXPECT_TRUE(std::isinf(onset_kink(early, fit_wear_line(early, 20454.0 + 3.0, 2))))
+        << "seed " << seed;
+  }
+}
+
 }  // namespace
 }  // namespace flange::host
