@@ -65,11 +65,11 @@ class LinearFamily : public Family {
   // Families whose shape the calibration part leaves open where the held-out part lies choose it
   // there, after search(): returns how many values that fitted on the held-out part, with a
   // phrase for the description.
-  // `before_any_pick`: FreeShapeInputs::before_any_pick.
+  // `no_level_carried`: FreeShapeInputs::no_level_carried.
   virtual int choose_on_heldout(const RecordedPart& /*calibration*/,
                                 const std::vector<double>& /*cal_gap*/,
                                 const RecordedPart& /*heldout*/,
-                                const std::vector<double>& /*ho_gap*/, bool /*before_any_pick*/,
+                                const std::vector<double>& /*ho_gap*/, bool /*no_level_carried*/,
                                 std::string& /*how*/) {
     return 0;
   }
