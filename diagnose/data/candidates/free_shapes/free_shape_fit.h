@@ -26,7 +26,9 @@
 //   ageing_drift       a trend in the sensor's age, carried across sessions by their start times:
 //                      continuing (an offset and a line or a logarithmic settling, its curvature
 //                      chosen on the held-out level where the calibration leaves it open), or
-//                      settled (any curve of age over the calibration session, held after it)
+//                      settled (any curve of age over the calibration session, held after it),
+//                      or a line over the calibration session held after it and a level between
+//                      the sessions chosen on the held-out part
 // Curves of one variable are piecewise linear between knots spread evenly over the calibration
 // part's range (held constant beyond it). Each family is one file of this folder (family.h says
 // what a family does); the classes' fits (candidates/class_fits.cpp) say which family stands for
