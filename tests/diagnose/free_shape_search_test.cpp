@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ageing_family.h"
+#include "ageing_level_family.h"
 #include "compression_surface_family.h"
 #include "curve_family.h"
 #include "family_makers.h"
@@ -305,6 +306,13 @@ TEST(AgeingSearch, ALevelBetweenTheSessionsThatNoSettlingReachesIsTaken) {
   };
   EXPECT_LT(least_heldout_rms(true), 1.1 * 0.005);
   EXPECT_GT(least_heldout_rms(false), 2.0 * 0.005);
+  // The level, which the calibration part does not move at all, is told by the held-out part:
+  // a volt of it moves the fitted voltage there (over both parts, by about 1 / sqrt 2 V RMS).
+  AgeingLevelFamily level;
+  level.search(bench.part(), calibration);
+  const FreeShapeFit fit = level.fit({bench.part(), later, calibration, heldout, false, true});
+  EXPECT_NEAR(fit.params.at("level_between_sessions_v"), 0.081 - 0.03 - 1800.0 / 86400.0, 0.002);
+  EXPECT_GT(fit.value_sensitivity_v.at("level_between_sessions_v"), 0.3);
 }
 
 // The coil's temperature a first-order lag of 240 s behind the recorded one (one of the family's

@@ -30,6 +30,7 @@ class AgeingLevelFamily : public LinearFamily {
   std::vector<std::string> names() const override;
   Eigen::MatrixXd columns(const RecordedPart& part) const override;
   std::string describe(const Eigen::VectorXd& beta) const override;
+  bool values_told_by_heldout() const override { return true; }
   bool follows_the_sensors_age() const override { return true; }
 
  private:

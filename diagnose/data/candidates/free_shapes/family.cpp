@@ -22,11 +22,9 @@ FreeShapeFit LinearFamily::fit(const FreeShapeInputs& in) {
       values_chosen_on_heldout().value_or(ridge_solve_normal(gram, cal.transpose() * gap));
   FreeShapeFit fit;
   const std::vector<std::string> value_names = names();
-  // Values chosen on the held-out part are told by it too (a level between the sessions by it
-  // alone): their sensitivity is over both parts.
   Eigen::MatrixXd told_by = gram;
   Eigen::Index rows = cal.rows();
-  if (values_chosen_on_heldout()) {
+  if (values_chosen_on_heldout() && values_told_by_heldout()) {
     const Eigen::MatrixXd ho = columns(in.heldout);
     told_by += ho.transpose() * ho;
     rows += ho.rows();

@@ -81,7 +81,8 @@ struct FreeShapeFit {
   int free_values = 0;
   // For each free value of a linear family: how far the calibration part's fitted voltage moves
   // per unit of it once the family's other values compensate, V RMS (identify/
-  // compensated_sensitivity.h), over both parts where values were chosen on the held-out part;
+  // compensated_sensitivity.h), over both parts where the held-out part told them
+  // (LinearFamily::values_told_by_heldout);
   // 0 for a value nothing in the data moves with (a knot at a temperature never visited). Empty
   // for the mains' lines.
   std::map<std::string, double> value_sensitivity_v;
