@@ -22,7 +22,12 @@ class AgeingLevelFamily : public LinearFamily {
   // Where the start times place the held-out session after the calibration session, and no pick
   // can carry a level (the reason is AgeingFamily::choose_on_heldout's: after effects fitted on
   // the calibration part a held-out level may be their carry-over), the level between the sessions
-  // is the held-out gap's mean less the line's end: one value fitted on the held-out part.
+  // is the held-out gap's mean less the line's end: one value fitted on the held-out part. The
+  // mean is over the held-out samples within the calibration part's clearance and temperature
+  // ranges when a quarter or more lie there (criteria::kLeastShareWithinReach, the verdict's
+  // share): beyond them the other effects' curves are held or continued, and what they miss
+  // there is no change between the sessions
+  // (AltSelftest.AGapExplainedWithinReachIsLeftOnlyBeyondTheTwinsFits).
   int choose_on_heldout(const RecordedPart& calibration, const std::vector<double>& cal_gap,
                         const RecordedPart& heldout, const std::vector<double>& ho_gap,
                         bool no_level_carried, std::string& how) override;
