@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ageing_family.h"
+#include "ageing_level_family.h"
 #include "compression_surface_family.h"
 #include "curve_family.h"
 #include "family_makers.h"
@@ -250,13 +251,13 @@ TEST(AgeingSearch, TheHeldOutLevelChoosesARateTheCalibrationLeavesOpen) {
   const SyntheticBench bench;
   const RecordedPart later{bench.series(), bench.replay(), 5.0 * 86400.0};
   const std::vector<double> noise = white_noise(bench.size(), 0.005, 7);
-  const auto heldout_level = [&](double step_v, bool before_any_pick = true) {
+  const auto heldout_level = [&](double step_v, bool no_level_carried = true) {
     std::vector<double> heldout = white_noise(bench.size(), 0.005, 8);
     for (double& v : heldout) v += step_v;
     AgeingFamily ageing;
     ageing.search(bench.part(), noise);
     const FreeShapeFit fit =
-        ageing.fit({bench.part(), later, noise, heldout, false, before_any_pick});
+        ageing.fit({bench.part(), later, noise, heldout, false, no_level_carried});
     double mean = 0.0;
     for (double v : fit.heldout_voltage_v) mean += v / static_cast<double>(bench.size());
     return std::pair{mean, fit.heldout_values};
@@ -273,6 +274,45 @@ TEST(AgeingSearch, TheHeldOutLevelChoosesARateTheCalibrationLeavesOpen) {
   const auto [after_a_pick, after_a_pick_values] = heldout_level(0.010, false);
   EXPECT_NEAR(after_a_pick, 0.0, 0.001);
   EXPECT_EQ(after_a_pick_values, 1);
+}
+
+// An ageing that rose by 21 mV over a half-hour calibration session (1 V/day, in 5 mV of noise)
+// and had settled 30 mV higher five days later, faster than any settling the calibration part
+// allows: the continuing family carries the session's slope (or a settling it does not reject)
+// past that level, the settled one stops at the session's end. The level between the sessions
+// (AgeingLevelFamily) is chosen on the held-out part before any pick, and not after one.
+TEST(AgeingSearch, ALevelBetweenTheSessionsThatNoSettlingReachesIsTaken) {
+  const SyntheticBench bench;
+  const RecordedPart later{bench.series(), bench.replay(), 5.0 * 86400.0};
+  std::vector<double> calibration = white_noise(bench.size(), 0.005, 11);
+  for (std::size_t i = 0; i < calibration.size(); ++i) {
+    calibration[i] += 0.03 + 1.0 * bench.series().t_s[i] / 86400.0;
+  }
+  std::vector<double> heldout = white_noise(bench.size(), 0.005, 12);
+  for (double& v : heldout) v += 0.081;
+  const auto least_heldout_rms = [&](bool no_level_carried) {
+    double least = 1e9;
+    for (const FreeShapeFamily& family : free_shape_families()) {
+      if (family.effect != "ageing_drift") continue;
+      const FreeShapeFit fit = fit_free_shape(
+          family, {bench.part(), later, calibration, heldout, false, no_level_carried});
+      double sse = 0.0;
+      for (std::size_t i = 0; i < heldout.size(); ++i) {
+        sse += std::pow(heldout[i] - fit.heldout_voltage_v[i], 2);
+      }
+      least = std::min(least, std::sqrt(sse / static_cast<double>(heldout.size())));
+    }
+    return least;
+  };
+  EXPECT_LT(least_heldout_rms(true), 1.1 * 0.005);
+  EXPECT_GT(least_heldout_rms(false), 2.0 * 0.005);
+  // The level, which the calibration part does not move at all, is told by the held-out part:
+  // a volt of it moves the fitted voltage there (over both parts, by about 1 / sqrt 2 V RMS).
+  AgeingLevelFamily level;
+  level.search(bench.part(), calibration);
+  const FreeShapeFit fit = level.fit({bench.part(), later, calibration, heldout, false, true});
+  EXPECT_NEAR(fit.params.at("level_between_sessions_v"), 0.081 - 0.03 - 1800.0 / 86400.0, 0.002);
+  EXPECT_GT(fit.value_sensitivity_v.at("level_between_sessions_v"), 0.3);
 }
 
 // The coil's temperature a first-order lag of 240 s behind the recorded one (one of the family's

@@ -461,6 +461,26 @@ void keep_rounds(const Parts& parts, LibraryRounds& rounds, const std::vector<do
   }
 }
 
+// A level between the sessions may be chosen on the held-out part while no pick can carry one:
+// none, or a skew (the voltage's rate of change times a delay) and the mains (lines fitted on
+// each session); not after a temperature law, which continued to the held-out temperatures may
+// leave a level of its own there.
+TEST(SelectionRules, ALevelBetweenTheSessionsIsChosenOnlyWhileNoPickCarriesOne) {
+  const auto with_picks = [](const std::vector<std::string>& names) {
+    Selection selection;
+    for (const std::string& name : names) {
+      Pick pick;
+      pick.finding.name = name;
+      selection.picks.push_back(std::move(pick));
+    }
+    return selection;
+  };
+  EXPECT_TRUE(no_level_carried(with_picks({})));
+  EXPECT_TRUE(no_level_carried(with_picks({"channel_skew", "mains_pickup"})));
+  EXPECT_FALSE(no_level_carried(with_picks({"channel_skew", "temp_offset_drift"})));
+  EXPECT_FALSE(no_level_carried(with_picks({"thermal_lag"})));
+}
+
 TEST(SelectionRules, AtMostThreePicks) {
   static_assert(criteria::kMostPicks == 3);
   // A held-out gap of noise plus four offsets, 8, 6, 4 and 3 sigma, each removed by one class.

@@ -193,7 +193,8 @@ inline constexpr std::size_t kLeastLocalWindowSamples = 100;
 inline constexpr double kLocalExplainedRatio = 2.0;
 // A held-out session that goes beyond the calibration's clearance or temperature is explained
 // when what is left within the calibration's ranges is, if at least this share of its samples
-// lies within them ...
+// lies within them (and an ageing's level between the sessions is taken over them:
+// ageing_level_family.h) ...
 // Test: Verdict.ExplainedWithinReachNeedsAQuarterWithin.
 inline constexpr double kLeastShareWithinReach = 0.25;
 // ... and if the picks' continued curves take at least this share of the gap above the noise

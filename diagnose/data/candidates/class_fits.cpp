@@ -77,7 +77,8 @@ const std::vector<ClassFit>& class_fits() {
       {"channel_skew", fit_by_search, {{"channel_skew", "t", fs::make_skew}}, skew_member},
       {"ageing_drift", fit_ageing,
        {{"ageing_drift", "age, continuing", fs::make_continuing_ageing},
-        {"ageing_drift", "age, settled", fs::make_settled_age_curve}}},
+        {"ageing_drift", "age, settled", fs::make_settled_age_curve},
+        {"ageing_drift", "age, a level between sessions", fs::make_ageing_level}}},
       {"mains_pickup", fit_mains, {{"mains_pickup", "aliased lines", fs::make_mains_lines}}},
   };
   return fits;

@@ -11,7 +11,7 @@ Candidate free_shape_candidate(const FreeShapeFamily& family, const FreeShapeRou
   Candidate c;
   c.free_shape = fit_free_shape(family, {round.calibration, round.heldout, round.cal_gap_v,
                                          round.ho_gap_v, round.heldout_age_unknown,
-                                         round.before_any_pick});
+                                         round.no_level_carried});
   c.fit.settings = sim::make_effect_settings(c.free_shape->family.effect, {}, "diagnose free shape");
   c.fit.rms_v = rms_of(minus(round.cal_gap_v, c.free_shape->cal_voltage_v));
   c.with = round.modelled;

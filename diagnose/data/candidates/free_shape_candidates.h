@@ -19,7 +19,7 @@ struct FreeShapeRound {
   const std::vector<double>& ho_gap_v;
   const std::vector<sim::EffectSettings>& modelled;
   bool heldout_age_unknown = false;
-  bool before_any_pick = false;  // FreeShapeInputs::before_any_pick
+  bool no_level_carried = false;  // FreeShapeInputs::no_level_carried
 };
 
 // `family` fitted on `round` as a candidate: named by the class the fitted shape names (a

@@ -94,6 +94,7 @@ EffectClass channel_skew() {
       .name = "channel_skew",
       .search = {{"skew_s", -10, 10}},
       .follows = "the clearance's moves",
+      .carries_no_level = true,
       .channel_delay =
           [](const sim::EffectSettings& e) {
             return ChannelDelay{.skew = {e.params.at("skew_s"), e.params.at("drift_s_per_h"),
@@ -132,6 +133,7 @@ EffectClass mains_pickup() {
       .search = {{"amplitude_v", 0, 1}, {"phase_deg", -180, 180}, {"harmonic_ratio", 0, 1}},
       .follows = "the spectrum",
       .lines_of_each_session = true,
+      .carries_no_level = true,
       .selftest_draw = [](SelftestDraw& d) -> sim::ParamValues {
         return {{"amplitude_v", d.uniform(0.05, 0.3)},
                 {"phase_deg", d.uniform(-180, 180)},

@@ -83,6 +83,12 @@ struct EffectClass {
   // with it: a diagnosis against that twin takes each part's own lines, fitted by the class's
   // free shape, out of its recording (candidates/session_lines.h).
   bool lines_of_each_session = false;
+  // Its effect has no level of its own, so that an error in it carries none from the calibration
+  // session to the held-out one: a skew is the voltage's rate of change times a delay, which
+  // averages out over the micrometer's moves, and the mains' lines are fitted on each session.
+  // A level between the sessions may be chosen on the held-out part beside such picks
+  // (FreeShapeInputs::no_level_carried).
+  bool carries_no_level = false;
   // The channel delays a setting of this class makes.
   ChannelDelay (*channel_delay)(const sim::EffectSettings&) = nullptr;
   // The blind self-test's draw of its parameters: each range's low end moves a bench recording's

@@ -57,6 +57,12 @@ void reestimate_noise(const Parts& parts, const std::optional<AdcGrid>& cal_grid
 
 }  // namespace
 
+bool no_level_carried(const Selection& selection) {
+  return std::all_of(selection.picks.begin(), selection.picks.end(), [](const Pick& pick) {
+    return effect_class(pick.finding.name).carries_no_level;
+  });
+}
+
 std::vector<std::string> confounded_classes(const std::vector<Candidate>& candidates,
                                             const Choice& choice, const RoundScore& round) {
   const Candidate& chosen = candidates[choice.best];
@@ -109,9 +115,9 @@ std::vector<Candidate> round_candidates(const Parts& parts, LibraryRounds& round
     families.push_back(family);
   }
   const CoilParts coil(parts, modelled);
-  const FreeShapeRound round{coil.calibration(),      coil.heldout(), cal_gap,
-                             selection.current_error, modelled,       parts.heldout_age_unknown,
-                             selection.picks.empty()};
+  const FreeShapeRound round{coil.calibration(),         coil.heldout(), cal_gap,
+                             selection.current_error,    modelled,       parts.heldout_age_unknown,
+                             no_level_carried(selection)};
   for (Candidate& c : free_shape_candidates(families, round)) candidates.push_back(std::move(c));
   return candidates;
 }

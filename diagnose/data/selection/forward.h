@@ -26,6 +26,12 @@ std::vector<Candidate> round_candidates(const Parts& parts, LibraryRounds& round
 std::vector<std::string> confounded_classes(const std::vector<Candidate>& candidates,
                                             const Choice& choice, const RoundScore& round);
 
+// Whether no pick so far can carry a level from the calibration session to the held-out one
+// (none, or only classes with EffectClass::carries_no_level): a level between the sessions may
+// then be chosen on the held-out part (FreeShapeInputs::no_level_carried). Public for its test
+// (tests/diagnose/selection_rules_test.cpp).
+bool no_level_carried(const Selection& selection);
+
 // What a round is scored against.
 RoundScore round_score(const Selection& selection);
 

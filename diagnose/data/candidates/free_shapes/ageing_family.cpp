@@ -146,10 +146,10 @@ int AgeingFamily::choose_settling(const RecordedPart& calibration,
 
 int AgeingFamily::choose_on_heldout(const RecordedPart& calibration,
                                     const std::vector<double>& cal_gap, const RecordedPart& heldout,
-                                    const std::vector<double>& ho_gap, bool before_any_pick,
+                                    const std::vector<double>& ho_gap, bool no_level_carried,
                                     std::string& how) {
   heldout_level_.reset();
-  if (!before_any_pick) return choose_settling(calibration, cal_gap, heldout, ho_gap, how);
+  if (!no_level_carried) return choose_settling(calibration, cal_gap, heldout, ho_gap, how);
   const std::vector<double> cal_ages = age_days(calibration), ho_ages = age_days(heldout);
   const std::vector<double> searched = taus();
   std::vector<Profile> profiles;

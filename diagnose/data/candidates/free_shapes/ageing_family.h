@@ -24,13 +24,14 @@ class AgeingFamily : public LinearFamily {
   // held-out gap best is taken: one value fitted there. Its rate (or size) likewise: a session
   // of an hour barely shows a rate that moves the level by the noise over days, so the rate the
   // held-out level asks for is taken as far as the calibration part allows it (its sum of
-  // squares within the same leeway): a second value fitted there. Only before any pick: after
-  // effects fitted on the calibration part, a level left on the held-out part is as likely their
-  // error carried beyond the calibration session (a temperature law continued to other
-  // temperatures) as a change between the sessions, and the held-out part cannot tell them apart.
+  // squares within the same leeway): a second value fitted there. Only while no pick can carry a
+  // level (FreeShapeInputs::no_level_carried): after effects fitted on the calibration part, a
+  // level left on the held-out part is as likely their error carried beyond the calibration
+  // session (a temperature law continued to other temperatures) as a change between the
+  // sessions, and the held-out part cannot tell them apart.
   int choose_on_heldout(const RecordedPart& calibration, const std::vector<double>& cal_gap,
                         const RecordedPart& heldout, const std::vector<double>& ho_gap,
-                        bool before_any_pick, std::string& how) override;
+                        bool no_level_carried, std::string& how) override;
   std::optional<Eigen::VectorXd> values_chosen_on_heldout() const override;
   std::vector<std::string> names() const override;
   // The settling time, when its search ended on the longest or the shortest one searched.

@@ -13,7 +13,7 @@ FreeShapeFit LinearFamily::fit(const FreeShapeInputs& in) {
       in.heldout_age_unknown
           ? 0
           : choose_on_heldout(in.calibration, in.cal_gap_v, in.heldout, in.ho_gap_v,
-                              in.before_any_pick, chosen_on_heldout);
+                              in.no_level_carried, chosen_on_heldout);
   const Eigen::MatrixXd cal = columns(in.calibration);
   const Eigen::Map<const Eigen::VectorXd> gap(in.cal_gap_v.data(),
                                               static_cast<Eigen::Index>(in.cal_gap_v.size()));
@@ -22,7 +22,14 @@ FreeShapeFit LinearFamily::fit(const FreeShapeInputs& in) {
       values_chosen_on_heldout().value_or(ridge_solve_normal(gram, cal.transpose() * gap));
   FreeShapeFit fit;
   const std::vector<std::string> value_names = names();
-  const Eigen::VectorXd sensitivity = compensated_sensitivity(gram, cal.rows());
+  Eigen::MatrixXd told_by = gram;
+  Eigen::Index rows = cal.rows();
+  if (values_chosen_on_heldout() && values_told_by_heldout()) {
+    const Eigen::MatrixXd ho = columns(in.heldout);
+    told_by += ho.transpose() * ho;
+    rows += ho.rows();
+  }
+  const Eigen::VectorXd sensitivity = compensated_sensitivity(told_by, rows);
   for (std::size_t j = 0; j < value_names.size(); ++j) {
     fit.params[value_names[j]] = beta(static_cast<Eigen::Index>(j));
     fit.value_sensitivity_v[value_names[j]] = sensitivity(static_cast<Eigen::Index>(j));

@@ -65,17 +65,22 @@ class LinearFamily : public Family {
   // Families whose shape the calibration part leaves open where the held-out part lies choose it
   // there, after search(): returns how many values that fitted on the held-out part, with a
   // phrase for the description.
-  // `before_any_pick`: FreeShapeInputs::before_any_pick.
+  // `no_level_carried`: FreeShapeInputs::no_level_carried.
   virtual int choose_on_heldout(const RecordedPart& /*calibration*/,
                                 const std::vector<double>& /*cal_gap*/,
                                 const RecordedPart& /*heldout*/,
-                                const std::vector<double>& /*ho_gap*/, bool /*before_any_pick*/,
+                                const std::vector<double>& /*ho_gap*/, bool /*no_level_carried*/,
                                 std::string& /*how*/) {
     return 0;
   }
   // The free values themselves where choose_on_heldout chose them (in names() order) rather
   // than the calibration part's least squares.
   virtual std::optional<Eigen::VectorXd> values_chosen_on_heldout() const { return std::nullopt; }
+  // Whether values chosen on the held-out part are told by it (a level between the sessions, which
+  // the calibration part does not move at all): their sensitivity is then over both parts. A
+  // settling's rate chosen on the held-out level is not: one level cannot tell the rate from the
+  // curvature, and it stays `undetermined`.
+  virtual bool values_told_by_heldout() const { return false; }
   // Whether the shape is a curve of the sensor's age: where the held-out clock does not say the
   // held-out part's age, it is placed where the curve fits it (heldout_age.h).
   virtual bool follows_the_sensors_age() const { return false; }

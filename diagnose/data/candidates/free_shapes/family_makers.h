@@ -32,6 +32,9 @@ std::unique_ptr<Family> make_skew(const RecordedPart& calibration);
 std::unique_ptr<Family> make_clearance_ripple(const RecordedPart& calibration);
 // A trend in the sensor's age that goes on (ageing_family.h).
 std::unique_ptr<Family> make_continuing_ageing(const RecordedPart& calibration);
+// A line in age held after the calibration session and a level between the sessions
+// (ageing_level_family.h).
+std::unique_ptr<Family> make_ageing_level(const RecordedPart& calibration);
 // Lines at the aliases of the mains (mains_family.h).
 std::unique_ptr<Family> make_mains_lines(const RecordedPart& calibration);
 

@@ -26,7 +26,9 @@
 //   ageing_drift       a trend in the sensor's age, carried across sessions by their start times:
 //                      continuing (an offset and a line or a logarithmic settling, its curvature
 //                      chosen on the held-out level where the calibration leaves it open), or
-//                      settled (any curve of age over the calibration session, held after it)
+//                      settled (any curve of age over the calibration session, held after it),
+//                      or a line over the calibration session held after it and a level between
+//                      the sessions chosen on the held-out part
 // Curves of one variable are piecewise linear between knots spread evenly over the calibration
 // part's range (held constant beyond it). Each family is one file of this folder (family.h says
 // what a family does); the classes' fits (candidates/class_fits.cpp) say which family stands for
@@ -79,8 +81,10 @@ struct FreeShapeFit {
   int free_values = 0;
   // For each free value of a linear family: how far the calibration part's fitted voltage moves
   // per unit of it once the family's other values compensate, V RMS (identify/
-  // compensated_sensitivity.h); 0 for a value nothing in the data moves with (a knot at a
-  // temperature never visited). Empty for the mains' lines.
+  // compensated_sensitivity.h), over both parts where the held-out part told them
+  // (LinearFamily::values_told_by_heldout);
+  // 0 for a value nothing in the data moves with (a knot at a temperature never visited). Empty
+  // for the mains' lines.
   std::map<std::string, double> value_sensitivity_v;
   // Summary parameters whose search ended on an edge of its range: key -> "<= x" or ">= x"
   // (LinearFamily::search_edges).
@@ -100,10 +104,12 @@ struct FreeShapeInputs {
   const std::vector<double>& cal_gap_v;
   const std::vector<double>& ho_gap_v;
   bool heldout_age_unknown = false;
-  // Whether no effect has been picked yet, so that the held-out gap is the twin's own: a level
-  // there that the calibration session does not show can then only be a change between the
-  // sessions (AgeingFamily::choose_on_heldout).
-  bool before_any_pick = false;
+  // Whether no effect picked so far can carry a level from the calibration session to the
+  // held-out one (none picked, or only classes whose effect has no level of its own:
+  // EffectClass::carries_no_level), so that a level on the held-out gap that the calibration
+  // session does not show can only be a change between the sessions
+  // (AgeingFamily::choose_on_heldout).
+  bool no_level_carried = false;
 };
 
 // Fits `family` to `in.cal_gap_v` (the calibration gap the modelled effects leave);
