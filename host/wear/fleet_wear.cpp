@@ -229,9 +229,8 @@ void finish_wheel(WheelWear& wheel, const FleetWear& fleet, const SerialSpread& 
 // cannot tell that flange's wear from none and do rule out the wear of a usual one. A sensor that
 // starts drifting down as its flange is new reads so: the drift search, which fits each new
 // flange a rate of its own, cannot tell it from a flange that does not wear. The fleet's median
-// and kNoWearSeenDays keep a short history out, whose interval reaches zero because it is wide:
-// at the second reality's development fleets' weekly cuts, an interval reaching zero alone put
-// "sensor fault" on 271 of 1770 healthy sensors at some cut (none at the whole history's).
+// and kNoWearSeenDays keep a short history out, whose interval reaches zero because it is wide
+// (a slow flange's, a few weeks in).
 void mark_negative_rate(WheelWear& wheel, double fleet_median_rate) {
   if (wheel.status != "ok" || !wheel.fit) return;
   const bool below_zero = wheel.rate_high < 0.0;

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "sensor_drift.h"
 
-#include "onset_kink.h"
 #include "wear_change_in_km.h"
 
 #include <algorithm>
@@ -93,7 +92,6 @@ std::optional<DriftFinding> best_drift_in(const WearSeries& difference,
                              kMinRunsAfterOnset);
     };
     finding.grows_with_days = change_rss(ChangeIn::days) < change_rss(ChangeIn::km);
-    finding.onset_kink = onset_kink(fitted, best->fit);
   }
   const DriftValue own_drift = drift_at(fit_wear_line(own, best->onset_day, kDriftDegree),
                                         own.day.back(), last_scale(own));
@@ -168,29 +166,11 @@ LocomotiveBar locomotive_bar(const std::vector<DriftCandidates>& axles) {
   }
   bar.t = std::max(kDriftTStatistic, kDriftTOverTypical * upper_median(ts));
   bar.size_mm = std::max(kMinDriftMm, kDriftSizeOverTypical * upper_median(sizes));
-  bar.onset_kink = kOnsetKinkRatio;
   return bar;
 }
 
-namespace {
-
-// Whether the axle's drift starts with a kink (onset_kink.h): either candidate whose kink was
-// worked out shows one; an axle with none worked out is not judged on it.
-bool starts_with_a_kink(const DriftCandidates& candidates, double bar) {
-  bool judged = false;
-  for (const auto& finding : {candidates.in_difference, candidates.in_sum}) {
-    if (!finding || !finding->onset_kink) continue;
-    if (*finding->onset_kink >= bar) return true;
-    judged = true;
-  }
-  return !judged;
-}
-
-}  // namespace
-
 std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates,
                                           const LocomotiveBar& bar) {
-  if (!starts_with_a_kink(candidates, bar.onset_kink)) return std::nullopt;
   const bool in_difference = flagged(candidates.in_difference, bar);
   const bool in_sum = flagged(candidates.in_sum, bar);
   if (in_sum && (!in_difference || std::abs(candidates.in_sum->difference_t) >

@@ -27,9 +27,6 @@
 // as a jump) moves the sum alone, and where the wheelset runs between the rails the difference
 // alone.
 //
-// A drift starts at its onset, a wheel's own wander is smooth: on a locomotive, the axle's drift
-// must fit better from its onset than from the first run (onset_kink.h).
-//
 // What a drift is judged against. The series come with what every axle of the locomotive shares
 // taken away (locomotive_common_mode.h). What is left still wanders slowly in a real fleet (a
 // flange's wear speeding up as it thins, a wheel's own reaction to a route), and a drift search
@@ -93,8 +90,6 @@ struct DriftFinding {
   bool grows_with_days = true;   // its series is fitted better by a change in days than by
                                  // one in km (wear_change_in_km.h); compared only when its
                                  // size and t reach kMinDriftMm and kDriftTStatistic
-  // How sharply it starts at its onset (onset_kink.h), worked out on the same condition.
-  std::optional<double> onset_kink;
 };
 
 // The best drift-like fit of each combination of the two wheels, before any threshold: its t
@@ -117,21 +112,18 @@ DriftCandidates drift_candidates(const WearSeries& difference, const WearSeries&
 struct LocomotiveBar {
   double t = kDriftTStatistic;
   double size_mm = kMinDriftMm;
-  // kOnsetKinkRatio with kMinAxlesForTypical axles or more, else 0 (onset_kink.h)
-  double onset_kink = 0.0;
 };
 
 // From each axle's candidates: kDriftTOverTypical times the t half the axles reach (each axle's
 // larger |t| among its candidates of kMinDriftMm or more, 0 without any) and
 // kDriftSizeOverTypical times the size half of them reach (each axle's larger size), each at
-// least kDriftTStatistic and kMinDriftMm, and a kink of kOnsetKinkRatio at the onset; with fewer
-// than kMinAxlesForTypical axles, nothing to stand out from: a t of kDriftTStatistic is enough.
+// least kDriftTStatistic and kMinDriftMm; with fewer than kMinAxlesForTypical axles, nothing to
+// stand out from: a t of kDriftTStatistic is enough.
 LocomotiveBar locomotive_bar(const std::vector<DriftCandidates>& axles);
 
 // The candidate flagged as a sensor fault: its |t| at least kDriftTStatistic, its size at least
 // kMinDriftMm, the other combination moved with it, and its |t| or its size at the bar; of two,
-// the one with the larger t. And the axle's drift must start with a kink: at least one of its
-// candidates with an onset_kink has one of the bar's onset_kink or more (onset_kink.h).
+// the one with the larger t.
 std::optional<DriftFinding> flagged_drift(const DriftCandidates& candidates,
                                           const LocomotiveBar& bar);
 

@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The drift rules on their own (sensor_drift.h): the bar a drift must reach is set by what the
-// locomotive's other axles show, a drift that moved only one of the axle's two combinations is
-// no sensor's, and an axle's drift must start with a kink (onset_kink.h).
+// locomotive's other axles show, and a drift that moved only one of the axle's two
+// combinations is no sensor's.
 #include "sensor_drift.h"
 
 #include <gtest/gtest.h>
-
-#include "onset_kink.h"
 
 namespace flange::host {
 namespace {
@@ -65,25 +63,6 @@ TEST(SensorDrift, AFlaggedDriftStandsOutByItsTOrByItsSize) {
   const auto chosen = flagged_drift(both, bar);
   ASSERT_TRUE(chosen.has_value());
   EXPECT_TRUE(chosen->in_sum);
-}
-
-TEST(SensorDrift, ADriftWithoutAKinkAtItsOnsetIsNoSensorFault) {
-  // A locomotive asks for the kink; an axle alone (nothing to stand out from) does not.
-  EXPECT_DOUBLE_EQ(locomotive_bar(axles({{1.0, 0.1}, {2.0, 0.1}, {3.0, 0.1}})).onset_kink,
-                   kOnsetKinkRatio);
-  EXPECT_DOUBLE_EQ(locomotive_bar(axles({{1.0, 0.1}})).onset_kink, 0.0);
-  const LocomotiveBar bar{18.0, 1.0, kOnsetKinkRatio};
-  DriftCandidates smooth{finding(20.0, 1.5), finding(19.0, 1.4)};
-  smooth.in_difference->onset_kink = 0.9 * kOnsetKinkRatio;
-  smooth.in_sum->onset_kink = 0.5 * kOnsetKinkRatio;
-  EXPECT_FALSE(flagged_drift(smooth, bar).has_value());
-  // A kink in either combination is the axle's: the difference's drift is flagged.
-  DriftCandidates kinked = smooth;
-  kinked.in_sum->onset_kink = kOnsetKinkRatio;
-  const auto chosen = flagged_drift(kinked, bar);
-  ASSERT_TRUE(chosen.has_value());
-  EXPECT_FALSE(chosen->in_sum);
-  EXPECT_TRUE(flagged_drift(smooth, LocomotiveBar{18.0, 1.0}).has_value());
 }
 
 }  // namespace
