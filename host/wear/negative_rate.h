@@ -17,7 +17,7 @@ enum class NegativeRateCause { kMissedReprofiling, kSensorFault };
 // seen (fleet_wear.cpp) only over a history of at least this many days: earlier, a slow flange's
 // interval reaches zero because it is still wide. On the second reality's development fleets
 // (9201-9255) run weekly, healthy sensors' intervals reached zero beside the fleet's usual wear
-// up to seven weeks in (7 of 1770 sensors); from eight weeks on only drifting sensors' did.
+// up to seven weeks in; from eight weeks on only drifting sensors' did.
 inline constexpr double kNoWearSeenDays = 56.0;
 
 // `series` as the wear line fits it; at least 2 runs either side of a step or onset tried.
