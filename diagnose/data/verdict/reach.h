@@ -8,21 +8,11 @@
 #include <span>
 #include <vector>
 
+#include "calibration_reach.h"
 #include "findings.h"
 #include "recording_series.h"
 
 namespace flange::diagnose {
-
-// The held-out samples whose clearance and temperature lie within the calibration part's ranges,
-// in time order, and the others.
-struct CalibrationReach {
-  double temp_lo_c = 0.0, temp_hi_c = 0.0, clearance_lo_mm = 0.0, clearance_hi_mm = 0.0;
-  std::vector<std::size_t> heldout_within;
-  std::vector<std::size_t> heldout_beyond;
-};
-
-CalibrationReach calibration_reach(const RecordingSeries& calibration,
-                                   const RecordingSeries& heldout);
 
 // The held-out window where `error` has the largest RMS. The windows split the held-out samples
 // within the calibration's reach (criteria::kLocalWindows of them, at least

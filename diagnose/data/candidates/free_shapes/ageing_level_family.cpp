@@ -5,31 +5,13 @@
 
 #include <algorithm>
 
+#include "calibration_reach.h"
 #include "criteria.h"
 #include "family_makers.h"
 #include "ridge_solve.h"
 #include "sensor_age.h"
 
 namespace flange::diagnose::free_shapes {
-namespace {
-
-// Whether each held-out sample lies within the calibration part's clearance and temperature.
-std::vector<bool> within_calibration(const RecordingSeries& calibration,
-                                     const RecordingSeries& heldout) {
-  const auto [d_lo, d_hi] =
-      std::minmax_element(calibration.clearance_mm.begin(), calibration.clearance_mm.end());
-  const auto [t_lo, t_hi] =
-      std::minmax_element(calibration.temp_c.begin(), calibration.temp_c.end());
-  std::vector<bool> within(heldout.size());
-  for (std::size_t i = 0; i < within.size(); ++i) {
-    within[i] = heldout.clearance_mm[i] >= *d_lo && heldout.clearance_mm[i] <= *d_hi &&
-                heldout.temp_c[i] >= *t_lo && heldout.temp_c[i] <= *t_hi;
-  }
-  return within;
-}
-
-}  // namespace
-
 void AgeingLevelFamily::search(const RecordedPart& calibration, const std::vector<double>&) {
   const std::vector<double> ages = age_days(calibration);
   end_age_days_ = ages.empty() ? 0.0 : *std::max_element(ages.begin(), ages.end());
@@ -49,15 +31,19 @@ int AgeingLevelFamily::choose_on_heldout(const RecordedPart& calibration,
                                               static_cast<Eigen::Index>(cal_gap.size()));
   Eigen::VectorXd beta = ridge_solve(columns(calibration), cal);
   const Eigen::VectorXd held = columns(heldout) * beta;
-  const std::vector<bool> within = within_calibration(calibration.series, heldout.series);
-  const auto n_within = static_cast<double>(std::count(within.begin(), within.end(), true));
-  const bool enough_within =
-      n_within >= criteria::kLeastShareWithinReach * static_cast<double>(ho_gap.size());
+  const std::vector<std::size_t> within =
+      calibration_reach(calibration.series, heldout.series).heldout_within;
+  const bool enough_within = static_cast<double>(within.size()) >=
+                             criteria::kLeastShareWithinReach * static_cast<double>(ho_gap.size());
   double sum = 0.0, n = 0.0;
-  for (std::size_t i = 0; i < ho_gap.size(); ++i) {
-    if (enough_within && !within[i]) continue;
+  const auto add = [&](std::size_t i) {
     sum += ho_gap[i] - held(static_cast<Eigen::Index>(i));
     n += 1.0;
+  };
+  if (enough_within) {
+    for (std::size_t i : within) add(i);
+  } else {
+    for (std::size_t i = 0; i < ho_gap.size(); ++i) add(i);
   }
   const double level = sum / n;
   beta(2) = level;
