@@ -174,9 +174,10 @@ void select_bias_effects(const Parts& parts, LibraryRounds& rounds, const Diagno
     if (selection.picks.empty() && !selection.noise_type_before_picks) {  // else unused
       selection.first_pick_least_gain = first_pick_least_gain(candidates, score);
     }
-    const Choice choice = prefer_library_formula(
-        candidates, best_candidate(candidates, score, selection.free_shapes), score);
-    if (!significant(choice, least_gain_of_next_pick(selection))) {
+    const double least_gain = least_gain_of_next_pick(selection);
+    const Choice choice =
+        significant_choice(candidates, score, selection.free_shapes, least_gain);
+    if (!significant(choice, least_gain)) {
       // Nothing significant at all: what came nearest is kept for an "unexplained" verdict.
       if (selection.picks.empty()) {
         selection.nearest_unpicked =

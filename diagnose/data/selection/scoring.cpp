@@ -80,6 +80,24 @@ bool significant(const Choice& choice, double least_gain) {
   return choice.gain >= least_gain && choice.lower > 0.0;
 }
 
+Choice significant_choice(const std::vector<Candidate>& candidates, const RoundScore& round,
+                          bool free_shapes_compete, double least_gain) {
+  const Choice best = prefer_library_formula(
+      candidates, best_candidate(candidates, round, free_shapes_compete), round);
+  if (significant(best, least_gain)) return best;
+  std::vector<std::size_t> by_gain(candidates.size());
+  for (std::size_t c = 0; c < by_gain.size(); ++c) by_gain[c] = c;
+  std::stable_sort(by_gain.begin(), by_gain.end(), [&](std::size_t a, std::size_t b) {
+    return gain_of(candidates[a], round) > gain_of(candidates[b], round);
+  });
+  for (const std::size_t c : by_gain) {
+    if (gain_of(candidates[c], round) < least_gain) break;
+    const Choice choice = prefer_library_formula(candidates, choice_of(candidates, c, round), round);
+    if (significant(choice, least_gain)) return choice;
+  }
+  return best;
+}
+
 double first_pick_least_gain(const std::vector<Candidate>& candidates, const RoundScore& round) {
   constexpr std::size_t kShifts = criteria::kChanceShifts;
   const double variance = round.noise_v * round.noise_v;

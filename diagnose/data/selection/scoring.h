@@ -54,6 +54,15 @@ Choice prefer_library_formula(const std::vector<Candidate>& candidates, Choice c
 // above zero.
 bool significant(const Choice& choice, double least_gain);
 
+// The round's choice: best_candidate, preferring the library's formula; when that choice is not
+// significant against `least_gain`, the candidate of the largest gain that is (each again
+// preferring its class's formula), or the unsignificant best when none is. A gain the held-out
+// resamples do not confirm says the candidate's fit leans on a few stretches of the held-out
+// session, not that nothing is there: a candidate that gains less on every stretch is the
+// better-founded pick (criteria::kGainLowerQuantile).
+Choice significant_choice(const std::vector<Candidate>& candidates, const RoundScore& round,
+                          bool free_shapes_compete, double least_gain);
+
 // The least gain a first pick must make, from the data at hand: each candidate's held-out
 // prediction (what it takes off the gap) scored against the held-out gap circularly shifted by
 // criteria::kChanceShifts lags spread over its middle 80 %. Shifted, the gap keeps its own level,
