@@ -175,8 +175,14 @@ void select_bias_effects(const Parts& parts, LibraryRounds& rounds, const Diagno
       selection.first_pick_least_gain = first_pick_least_gain(candidates, score);
     }
     const double least_gain = least_gain_of_next_pick(selection);
+    // The first pick's least gain is what the best of all candidates gains by chance, so any
+    // candidate above it may be taken; a later round's is a flat floor, which the best of many
+    // small confirmed gains would pass by chance: it keeps the best candidate or none.
     const Choice choice =
-        significant_choice(candidates, score, selection.free_shapes, least_gain);
+        selection.picks.empty()
+            ? significant_choice(candidates, score, selection.free_shapes, least_gain)
+            : prefer_library_formula(
+                  candidates, best_candidate(candidates, score, selection.free_shapes), score);
     if (!significant(choice, least_gain)) {
       // Nothing significant at all: what came nearest is kept for an "unexplained" verdict.
       if (selection.picks.empty()) {

@@ -59,7 +59,8 @@ bool significant(const Choice& choice, double least_gain);
 // preferring its class's formula), or the unsignificant best when none is. A gain the held-out
 // resamples do not confirm says the candidate's fit leans on a few stretches of the held-out
 // session, not that nothing is there: a candidate that gains less on every stretch is the
-// better-founded pick (criteria::kGainLowerQuantile).
+// better-founded pick (criteria::kGainLowerQuantile). Only for a first pick, whose least gain is
+// what the best candidate gains by chance (first_pick_least_gain).
 Choice significant_choice(const std::vector<Candidate>& candidates, const RoundScore& round,
                           bool free_shapes_compete, double least_gain);
 
