@@ -107,6 +107,13 @@ class TwinReplay {
   using CoilSamples = std::vector<sim::ChainSample>;
   std::shared_ptr<const CoilSamples> coil_samples(
       const std::vector<sim::EffectSettings>& coil_effects, std::uint64_t seed) const;
+  // The terms of an effect that adds voltages set by the time alone (sim::Effect::time_terms) at
+  // every sample, term k of sample i at k * size() + i: kept once the same settings are replayed
+  // a second time (a search holding mains pickup evaluates its tones at every step otherwise),
+  // null the first time (the effect is applied as it is).
+  using TimeTerms = std::vector<double>;
+  std::shared_ptr<const TimeTerms> time_terms(const sim::EffectSettings& settings,
+                                              std::uint64_t seed, const sim::Effect& effect) const;
   // One row from each block of consecutive rows, and the replay of those rows.
   struct Subset;
   static std::shared_ptr<const Subset> make_subset(const RecordingSeries& series,
@@ -124,6 +131,16 @@ class TwinReplay {
     std::vector<Entry> entries;  // most recently used last
   };
 
+  struct TimeTermCache {
+    struct Entry {
+      sim::EffectSettings settings;
+      std::uint64_t seed = 0;
+      std::shared_ptr<const TimeTerms> terms;  // null: seen once, not kept yet
+    };
+    std::mutex mutex;
+    std::vector<Entry> entries;  // most recently used last
+  };
+
   const RecordingSeries& series_;
   sim::PolynomialSensorModel nominal_;
   double age_offset_s_;
@@ -132,6 +149,7 @@ class TwinReplay {
   std::vector<double> sensitivity_;
   std::vector<double> temperature_sensitivity_;
   std::shared_ptr<CoilCache> coil_cache_ = std::make_shared<CoilCache>();
+  std::shared_ptr<TimeTermCache> time_term_cache_ = std::make_shared<TimeTermCache>();
 };
 
 }  // namespace flange::diagnose
