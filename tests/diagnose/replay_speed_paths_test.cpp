@@ -94,6 +94,24 @@ TEST(ReplaySpeedPaths, KeptMainsTonesGiveWhatAFreshReplayGives) {
   EXPECT_NE(kept.voltage(with_mains(0.1, 0.0)), fresh.voltage(with_mains(0.11, 0.0)));
 }
 
+// The mains harmonics a replay keeps for the mains fit's tone sum are sin(k w t) and cos(k w t)
+// bit for bit, made once per frequency: asked again, the same table.
+TEST(ReplaySpeedPaths, KeptMainsHarmonicsAreTheSinesOfEverySample) {
+  const RecordingSeries series = sweep({}, 100.0, 60.0, 0.0, 3);
+  const TwinReplay replay(series, sim::PolynomialSensorModel::thesis_eq_3_14());
+  const double w = 2.0 * 3.141592653589793 * 60.0;
+  const auto table = replay.harmonics(w, 3);
+  ASSERT_EQ(table->sin_kwt.size(), 3u);
+  for (int k = 1; k <= 3; ++k) {
+    for (std::size_t i = 0; i < series.size(); ++i) {
+      ASSERT_EQ(table->sin_kwt[static_cast<std::size_t>(k - 1)][i], std::sin(k * w * series.t_s[i]));
+      ASSERT_EQ(table->cos_kwt[static_cast<std::size_t>(k - 1)][i], std::cos(k * w * series.t_s[i]));
+    }
+  }
+  EXPECT_EQ(replay.harmonics(w, 3), table);
+  EXPECT_NE(replay.harmonics(2.0 * 3.141592653589793 * 50.0, 3), table);
+}
+
 // Stepping from the last rows finds the rows a binary search finds, forwards, backwards, on a
 // row's own time, between repeated times and beyond either end: the same value, bit for bit.
 TEST(ReplaySpeedPaths, TheSteppingInterpolatorAgreesWithTheBinarySearch) {

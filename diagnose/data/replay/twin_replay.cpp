@@ -2,6 +2,7 @@
 #include "twin_replay.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "effect_catalogue.h"
@@ -25,6 +26,8 @@ constexpr std::size_t kCoilCacheBytes = 24u << 20;
 // 100 Hz part's three mains tones are 6.5 MB).
 constexpr std::size_t kTimeTermSettingsSeen = 16;
 constexpr std::size_t kTimeTermBytes = 32u << 20;
+// Harmonic tables kept per replay: one for each of the two mains standards.
+constexpr std::size_t kHarmonicTablesKept = 2;
 // The half-width of the window an inverted reading lag takes its slope over, as a share of the
 // lag's time constant (local_slopes).
 constexpr double kSlopeWindowOfTau = 0.125;
@@ -307,6 +310,37 @@ std::shared_ptr<const TwinReplay::TimeTerms> TwinReplay::time_terms(
     if (bytes > kTimeTermBytes && e->terms != terms) e->terms.reset();
   }
   return terms;
+}
+
+std::shared_ptr<const TwinReplay::Harmonics> TwinReplay::harmonics(double angular_hz,
+                                                                   int count) const {
+  const auto same = [&](const HarmonicsCache::Entry& e) {
+    return e.angular_hz == angular_hz && e.count == count;
+  };
+  {
+    const std::lock_guard<std::mutex> lock(harmonics_cache_->mutex);
+    const auto& entries = harmonics_cache_->entries;
+    const auto found = std::find_if(entries.begin(), entries.end(), same);
+    if (found != entries.end()) return found->harmonics;
+  }
+  auto made = std::make_shared<Harmonics>();
+  const std::vector<double>& t = series_.t_s;
+  for (int k = 1; k <= count; ++k) {
+    std::vector<double> sin_kwt(t.size()), cos_kwt(t.size());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      sin_kwt[i] = std::sin(k * angular_hz * t[i]);
+      cos_kwt[i] = std::cos(k * angular_hz * t[i]);
+    }
+    made->sin_kwt.push_back(std::move(sin_kwt));
+    made->cos_kwt.push_back(std::move(cos_kwt));
+  }
+  const std::lock_guard<std::mutex> lock(harmonics_cache_->mutex);
+  auto& entries = harmonics_cache_->entries;
+  const auto found = std::find_if(entries.begin(), entries.end(), same);
+  if (found != entries.end()) return found->harmonics;  // made meanwhile by another thread
+  if (entries.size() >= kHarmonicTablesKept) entries.erase(entries.begin());
+  entries.push_back({angular_hz, count, made});
+  return made;
 }
 
 std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& effects,

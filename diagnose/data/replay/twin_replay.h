@@ -94,6 +94,14 @@ class TwinReplay {
   const TwinReplay& lattice_replay() const;
   // `search` (one value per row of this search replay) at the rows of lattice_replay().
   std::vector<double> at_lattice_rows(const std::vector<double>& search) const;
+  // sin(k w t) and cos(k w t) at every sample for k = 1..count (w = angular_hz, rad/s): a search
+  // of mains pickup sums its tones of any amplitude and phase from them (by the angle sum). Made
+  // once per replay and mains frequency: every fit of mains pickup against this replay (each
+  // round's screen, each refit of a mains pick) asks for the same.
+  struct Harmonics {
+    std::vector<std::vector<double>> sin_kwt, cos_kwt;  // [k - 1][sample]
+  };
+  std::shared_ptr<const Harmonics> harmonics(double angular_hz, int count) const;
   double age_offset_s() const { return age_offset_s_; }
   double v_min_v() const { return nominal_.v_min_v(); }
   const sim::PolynomialSensorModel& nominal() const { return nominal_; }
@@ -141,6 +149,16 @@ class TwinReplay {
     std::vector<Entry> entries;  // most recently used last
   };
 
+  struct HarmonicsCache {
+    struct Entry {
+      double angular_hz = 0.0;
+      int count = 0;
+      std::shared_ptr<const Harmonics> harmonics;
+    };
+    std::mutex mutex;
+    std::vector<Entry> entries;  // most recently made last
+  };
+
   const RecordingSeries& series_;
   sim::PolynomialSensorModel nominal_;
   double age_offset_s_;
@@ -150,6 +168,7 @@ class TwinReplay {
   std::vector<double> temperature_sensitivity_;
   std::shared_ptr<CoilCache> coil_cache_ = std::make_shared<CoilCache>();
   std::shared_ptr<TimeTermCache> time_term_cache_ = std::make_shared<TimeTermCache>();
+  std::shared_ptr<HarmonicsCache> harmonics_cache_ = std::make_shared<HarmonicsCache>();
 };
 
 }  // namespace flange::diagnose
