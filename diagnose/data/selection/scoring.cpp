@@ -81,6 +81,44 @@ bool significant(const Choice& choice, double least_gain) {
   return choice.gain >= least_gain && choice.lower > 0.0;
 }
 
+double first_pick_least_gain(const std::vector<Candidate>& candidates, const RoundScore& round) {
+  constexpr std::size_t kShifts = criteria::kChanceShifts;
+  const double variance = round.noise_v * round.noise_v;
+  const std::vector<double>& gap = round.current_error;
+  const std::size_t n = gap.size();
+  if (n < 10 * kShifts) return criteria::kMostLeastGainOfAFirstPick * variance;
+  // Each candidate's gain at every lag on a core of its own, then the best at each lag taken in
+  // candidate order (a maximum, whatever order the cores finish in).
+  const auto gains_at_lags = [&](std::size_t candidate) {
+    const Candidate& c = candidates[candidate];
+    std::vector<double> predicted(n);  // what the candidate takes from the gap
+    for (std::size_t i = 0; i < n; ++i) predicted[i] = gap[i] - c.heldout_error[i];
+    double own = 0.0;  // the prediction's own sum of squares, the same at every lag
+    for (std::size_t i = 0; i < n; ++i) own += std::pow(predicted[i], 2);
+    std::vector<std::size_t> lags(kShifts);
+    for (std::size_t k = 0; k < kShifts; ++k) {
+      lags[k] = n / 10 + k * (8 * n / 10) / (kShifts - 1);
+    }
+    const std::vector<double> dots = shifted_dots(gap, predicted, lags);
+    std::vector<double> gains(kShifts);
+    for (std::size_t k = 0; k < kShifts; ++k) {
+      gains[k] = (2.0 * dots[k] - own) / static_cast<double>(n) - chance_gain(c, round.noise_v);
+    }
+    return gains;
+  };
+  const std::vector<std::vector<double>> gains =
+      parallel_map<std::vector<double>>(candidates.size(), gains_at_lags);
+  std::vector<double> best_at_lag(kShifts, -std::numeric_limits<double>::infinity());
+  for (const std::vector<double>& of_candidate : gains) {
+    for (std::size_t k = 0; k < kShifts; ++k) {
+      best_at_lag[k] = std::max(best_at_lag[k], of_candidate[k]);
+    }
+  }
+  const double chance = *std::max_element(best_at_lag.begin(), best_at_lag.end());
+  return std::clamp(chance, criteria::kLeastLeastGainOfAFirstPick * variance,
+                    criteria::kMostLeastGainOfAFirstPick * variance);
+}
+
 std::vector<double> shifted_dots(const std::vector<double>& gap,
                                  const std::vector<double>& predicted,
                                  const std::vector<std::size_t>& lags) {
@@ -120,44 +158,6 @@ std::vector<double> shifted_dots(const std::vector<double>& gap,
     dots[k] = d;
   }
   return dots;
-}
-
-double first_pick_least_gain(const std::vector<Candidate>& candidates, const RoundScore& round) {
-  constexpr std::size_t kShifts = criteria::kChanceShifts;
-  const double variance = round.noise_v * round.noise_v;
-  const std::vector<double>& gap = round.current_error;
-  const std::size_t n = gap.size();
-  if (n < 10 * kShifts) return criteria::kMostLeastGainOfAFirstPick * variance;
-  // Each candidate's gain at every lag on a core of its own, then the best at each lag taken in
-  // candidate order (a maximum, whatever order the cores finish in).
-  const auto gains_at_lags = [&](std::size_t candidate) {
-    const Candidate& c = candidates[candidate];
-    std::vector<double> predicted(n);  // what the candidate takes from the gap
-    for (std::size_t i = 0; i < n; ++i) predicted[i] = gap[i] - c.heldout_error[i];
-    double own = 0.0;  // the prediction's own sum of squares, the same at every lag
-    for (std::size_t i = 0; i < n; ++i) own += std::pow(predicted[i], 2);
-    std::vector<std::size_t> lags(kShifts);
-    for (std::size_t k = 0; k < kShifts; ++k) {
-      lags[k] = n / 10 + k * (8 * n / 10) / (kShifts - 1);
-    }
-    const std::vector<double> dots = shifted_dots(gap, predicted, lags);
-    std::vector<double> gains(kShifts);
-    for (std::size_t k = 0; k < kShifts; ++k) {
-      gains[k] = (2.0 * dots[k] - own) / static_cast<double>(n) - chance_gain(c, round.noise_v);
-    }
-    return gains;
-  };
-  const std::vector<std::vector<double>> gains =
-      parallel_map<std::vector<double>>(candidates.size(), gains_at_lags);
-  std::vector<double> best_at_lag(kShifts, -std::numeric_limits<double>::infinity());
-  for (const std::vector<double>& of_candidate : gains) {
-    for (std::size_t k = 0; k < kShifts; ++k) {
-      best_at_lag[k] = std::max(best_at_lag[k], of_candidate[k]);
-    }
-  }
-  const double chance = *std::max_element(best_at_lag.begin(), best_at_lag.end());
-  return std::clamp(chance, criteria::kLeastLeastGainOfAFirstPick * variance,
-                    criteria::kMostLeastGainOfAFirstPick * variance);
 }
 
 }  // namespace flange::diagnose
