@@ -36,6 +36,19 @@ TEST(LongestFirst, KindsNeverTimedComeFirstInIndexOrderThenTheLongest) {
   EXPECT_EQ(order, (std::vector<std::size_t>{1, 4, 2, 3, 0, 5}));
 }
 
+TEST(LongestFirst, AKindNeverTimedTakesTheTimeOfTheKindItIsLike) {
+  note_piece_seconds("longest_first_test screen x", 0.5);
+  note_piece_seconds("longest_first_test screen y", 0.1);
+  note_piece_seconds("longest_first_test refit z", 0.3);
+  const std::vector<std::size_t> order = longest_first(
+      {"longest_first_test refit y", "longest_first_test refit z", "longest_first_test refit x",
+       "longest_first_test refit w"},
+      {"longest_first_test screen y", "longest_first_test screen x", "longest_first_test screen x",
+       ""});
+  // y: 0.1 (its screen), z: 0.3 (its own time, not x's screen), x: 0.5 (its screen), w: unknown.
+  EXPECT_EQ(order, (std::vector<std::size_t>{3, 2, 1, 0}));
+}
+
 TEST(LongestFirst, TheNextMapClaimsThePieceThatTookLongestFirst) {
   const WorkerThreads one(1);  // one thread: the claims are the order the pieces run in
   const std::vector<std::string> kinds = {"longest_first_test quick", "longest_first_test slow",

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -38,9 +39,16 @@ void note_piece_seconds(const std::string& kind, double seconds) {
   PieceSeconds::process().note(kind, seconds);
 }
 
-std::vector<std::size_t> longest_first(const std::vector<std::string>& kinds) {
+std::vector<std::size_t> longest_first(const std::vector<std::string>& kinds,
+                                       const std::vector<std::string>& like) {
   std::vector<double> seconds;
-  for (const std::string& kind : kinds) seconds.push_back(PieceSeconds::process().of(kind));
+  for (std::size_t i = 0; i < kinds.size(); ++i) {
+    double last = PieceSeconds::process().of(kinds[i]);
+    if (std::isinf(last) && i < like.size() && !like[i].empty()) {
+      last = PieceSeconds::process().of(like[i]);
+    }
+    seconds.push_back(last);
+  }
   std::vector<std::size_t> order(kinds.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
@@ -48,9 +56,9 @@ std::vector<std::size_t> longest_first(const std::vector<std::string>& kinds) {
   return order;
 }
 
-void run_longest_first(const std::vector<std::string>& kinds,
+void run_longest_first(const std::vector<std::string>& kinds, const std::vector<std::string>& like,
                        const std::function<void(std::size_t)>& work) {
-  const std::vector<std::size_t> order = longest_first(kinds);
+  const std::vector<std::size_t> order = longest_first(kinds, like);
   run_in_parallel(static_cast<int>(order.size()), 0, [&](int claimed) {
     const std::size_t i = order[static_cast<std::size_t>(claimed)];
     const auto start = std::chrono::steady_clock::now();

@@ -39,14 +39,19 @@ std::vector<Candidate> fit_library_candidates(const Parts& parts,
   }
   const std::vector<std::size_t> refitted =
       candidates_to_refit(screened_ms, calibration_ms, round.noise_v);
-  std::vector<std::string> kinds;
-  for (const std::size_t i : refitted) kinds.push_back("library refit " + round.names[i]);
+  // A class's refit not yet timed is claimed as long as its screen took: the classes slow to
+  // screen (a coil or a channel effect replayed at every step) are slow to refit around.
+  std::vector<std::string> kinds, like;
+  for (const std::size_t i : refitted) {
+    kinds.push_back("library refit " + round.names[i]);
+    like.push_back("library screen " + round.names[i]);
+  }
   std::vector<Candidate> refits = parallel_map_longest_first<Candidate>(kinds, [&](std::size_t k) {
     Candidate c = candidates[refitted[k]];
     backfit(c.with, round.first_selected, parts.cal_replay, round.cal_v);
     c.heldout_error = minus(round.ho_v, parts.ho_replay.voltage(c.with));
     return c;
-  });
+  }, like);
   for (std::size_t k = 0; k < refitted.size(); ++k) {
     candidates[refitted[k]] = std::move(refits[k]);
   }
