@@ -53,6 +53,13 @@ class Effect {
   virtual ~Effect() = default;
   // Called once per sample, in time order.
   virtual void apply(ChainSample& sample) = 0;
+  // An effect that only adds voltages set by the sample's time (mains pickup's tones) says how
+  // many terms it adds; apply() then adds time_term(0, t), time_term(1, t), ... in that order and
+  // does nothing else. A replay that applies it to the same instants many times (a search with
+  // it held) keeps the terms rather than evaluating them again, with the same sums. 0: not such
+  // an effect.
+  virtual int time_terms() const { return 0; }
+  virtual double time_term(int /*term*/, double /*t_s*/) const { return 0.0; }
 };
 
 struct EffectSpec {

@@ -67,6 +67,51 @@ TEST(ReplaySpeedPaths, KeptCoilStatesGiveWhatAFreshReplayGives) {
   EXPECT_NE(kept.voltage(late_temperature), kept.voltage({}));
 }
 
+// Mains pickup's tones, kept once the same settings come back (TwinReplay::time_terms), add
+// what the effect itself adds: a replay holding them gives a fresh replay's voltages bit for
+// bit, the first time (the tones evaluated), the second and later times (the kept terms), after
+// other settings pushed them out, and after the rails' clamp with a sensor effect before it.
+TEST(ReplaySpeedPaths, KeptMainsTonesGiveWhatAFreshReplayGives) {
+  const RecordingSeries series = sweep({}, 100.0, 300.0, 0.0, 2);
+  const sim::PolynomialSensorModel nominal = sim::PolynomialSensorModel::thesis_eq_3_14();
+  const TwinReplay kept(series, nominal);
+  const auto with_mains = [](double amplitude_v, double gain) {
+    return std::vector<sim::EffectSettings>{
+        effect("temp_gain_drift", {{"gain_per_c", gain}}),
+        effect("mains_pickup", {{"amplitude_v", amplitude_v}, {"mains_hz", 60.0}})};
+  };
+  std::vector<std::pair<double, double>> asked;
+  for (int k = 0; k < 20; ++k) asked.push_back({0.1 + 0.01 * k, 0.0});  // past what is kept
+  for (const double gain : {1e-4, 2e-4, -1e-4, 3e-4}) asked.push_back({0.1, gain});
+  for (int k = 0; k < 3; ++k) asked.push_back({0.12, 1e-4});
+  for (const auto& [amplitude_v, gain] : asked) {
+    const TwinReplay fresh(series, nominal);
+    ASSERT_EQ(kept.voltage(with_mains(amplitude_v, gain)),
+              fresh.voltage(with_mains(amplitude_v, gain)))
+        << amplitude_v << " " << gain;
+  }
+  const TwinReplay fresh(series, nominal);
+  EXPECT_NE(kept.voltage(with_mains(0.1, 0.0)), fresh.voltage(with_mains(0.11, 0.0)));
+}
+
+// The mains harmonics a replay keeps for the mains fit's tone sum are sin(k w t) and cos(k w t)
+// bit for bit, made once per frequency: asked again, the same table.
+TEST(ReplaySpeedPaths, KeptMainsHarmonicsAreTheSinesOfEverySample) {
+  const RecordingSeries series = sweep({}, 100.0, 60.0, 0.0, 3);
+  const TwinReplay replay(series, sim::PolynomialSensorModel::thesis_eq_3_14());
+  const double w = 2.0 * 3.141592653589793 * 60.0;
+  const auto table = replay.harmonics(w, 3);
+  ASSERT_EQ(table->sin_kwt.size(), 3u);
+  for (int k = 1; k <= 3; ++k) {
+    for (std::size_t i = 0; i < series.size(); ++i) {
+      ASSERT_EQ(table->sin_kwt[static_cast<std::size_t>(k - 1)][i], std::sin(k * w * series.t_s[i]));
+      ASSERT_EQ(table->cos_kwt[static_cast<std::size_t>(k - 1)][i], std::cos(k * w * series.t_s[i]));
+    }
+  }
+  EXPECT_EQ(replay.harmonics(w, 3), table);
+  EXPECT_NE(replay.harmonics(2.0 * 3.141592653589793 * 50.0, 3), table);
+}
+
 // Stepping from the last rows finds the rows a binary search finds, forwards, backwards, on a
 // row's own time, between repeated times and beyond either end: the same value, bit for bit.
 TEST(ReplaySpeedPaths, TheSteppingInterpolatorAgreesWithTheBinarySearch) {

@@ -291,6 +291,25 @@ TEST(SelectionRules, TheFirstPickNeedsWhatChanceGivesWithinItsBounds) {
   }
 }
 
+// The lags summed side by side (kShiftsAtOnce at a time) give each lag's sum in row order, the
+// bits of one running sum per lag, for any number of lags and any lag up to n - 1.
+TEST(SelectionRules, ShiftedDotsAreEachLagsSumInRowOrder) {
+  const std::size_t n = 1001;
+  std::vector<double> gap(n), predicted(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    gap[i] = std::sin(0.37 * static_cast<double>(i)) * (1.0 + 1e-3 * static_cast<double>(i));
+    predicted[i] = std::cos(0.11 * static_cast<double>(i * i % 97)) / 3.0;
+  }
+  std::vector<std::size_t> lags = {0, 1, 100, 999, 1000, 500, 7, 64, 333, 101, 250};
+  const std::vector<double> dots = shifted_dots(gap, predicted, lags);
+  ASSERT_EQ(dots.size(), lags.size());
+  for (std::size_t k = 0; k < lags.size(); ++k) {
+    double dot = 0.0;
+    for (std::size_t i = 0; i < n; ++i) dot += gap[(i + lags[k]) % n] * predicted[i];
+    EXPECT_EQ(dots[k], dot) << lags[k];
+  }
+}
+
 TEST(SelectionRules, AnotherClassWithinTheMarginIsConfounded) {
   // The picks leave 2 sigma^2; the choice, a free nonlinearity curve, leaves 1.90 (gains 0.10).
   // Within kConfoundingMargin = 0.02 of it: the library nonlinearity (0.095, the same class: not

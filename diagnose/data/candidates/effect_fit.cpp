@@ -249,7 +249,7 @@ class GapRms {
 
   double operator()(const std::vector<double>& unit) const {
     std::vector<double>& gap = gap_;  // one buffer for every step of the search
-    if (!mains_tail_.empty()) {
+    if (mains_tail_) {
       gap_with_mains_tail(settings_at(unit), gap);
     } else {
       std::vector<sim::EffectSettings> effects = profile_ageing_ ? held_ : modelled_;
@@ -279,18 +279,8 @@ class GapRms {
     const sim::EffectSettings any = settings_at(std::vector<double>(params_.size(), 0.0));
     const int harmonics = static_cast<int>(any.params.at("harmonics"));
     const double angular_hz = 2.0 * std::numbers::pi * any.params.at("mains_hz");
-    const std::vector<double>& t = replay_.times();
     mains_base_v_ = replay_.voltage(profile_ageing_ ? held_ : modelled_);
-    for (int k = 1; k <= harmonics; ++k) {
-      MainsTone tone;
-      tone.sin_kwt.resize(t.size());
-      tone.cos_kwt.resize(t.size());
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        tone.sin_kwt[i] = std::sin(k * angular_hz * t[i]);
-        tone.cos_kwt[i] = std::cos(k * angular_hz * t[i]);
-      }
-      mains_tail_.push_back(std::move(tone));
-    }
+    mains_tail_ = replay_.harmonics(angular_hz, harmonics);
   }
 
   void gap_with_mains_tail(const sim::EffectSettings& mains, std::vector<double>& gap) const {
@@ -298,21 +288,20 @@ class GapRms {
     gap.resize(real_v_.size());
     for (std::size_t i = 0; i < gap.size(); ++i) gap[i] = real_v_[i] - mains_base_v_[i];
     double amplitude_v = mains.params.at("amplitude_v");
-    for (std::size_t k = 0; k < mains_tail_.size(); ++k) {
+    for (std::size_t k = 0; k < mains_tail_->sin_kwt.size(); ++k) {
       const double kphi = static_cast<double>(k + 1) * phase_rad;
       const double a_sin = amplitude_v * std::cos(kphi), a_cos = amplitude_v * std::sin(kphi);
-      const MainsTone& tone = mains_tail_[k];
+      const std::vector<double>& sin_kwt = mains_tail_->sin_kwt[k];
+      const std::vector<double>& cos_kwt = mains_tail_->cos_kwt[k];
       for (std::size_t i = 0; i < gap.size(); ++i) {
-        gap[i] -= a_sin * tone.sin_kwt[i] + a_cos * tone.cos_kwt[i];
+        gap[i] -= a_sin * sin_kwt[i] + a_cos * cos_kwt[i];
       }
       amplitude_v *= mains.params.at("harmonic_ratio");
     }
   }
 
-  struct MainsTone {
-    std::vector<double> sin_kwt, cos_kwt;
-  };
-  std::vector<MainsTone> mains_tail_;  // empty: every step replays the twin
+  // sin(k w t) and cos(k w t) of the mains (the replay's, made once); null: every step replays
+  std::shared_ptr<const TwinReplay::Harmonics> mains_tail_;
   std::vector<double> mains_base_v_;   // the twin without the tones, when mains_tail_ is used
 
   const std::string& name_;

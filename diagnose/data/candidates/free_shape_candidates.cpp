@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "free_shape_candidates.h"
 
-#include "parallel_work.h"
+#include "longest_first.h"
 #include "series_statistics.h"
 #include "series_arithmetic.h"
 
@@ -21,7 +21,11 @@ Candidate free_shape_candidate(const FreeShapeFamily& family, const FreeShapeRou
 
 std::vector<Candidate> free_shape_candidates(const std::vector<FreeShapeFamily>& families,
                                              const FreeShapeRound& round) {
-  return parallel_map<Candidate>(families.size(), [&](std::size_t i) {
+  std::vector<std::string> kinds;
+  for (const FreeShapeFamily& family : families) {
+    kinds.push_back("free shape " + family.effect + ", " + family.variable);
+  }
+  return parallel_map_longest_first<Candidate>(kinds, [&](std::size_t i) {
     return free_shape_candidate(families[i], round);
   });
 }

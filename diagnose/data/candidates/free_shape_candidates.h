@@ -27,7 +27,8 @@ struct FreeShapeRound {
 // held-out gap less its curve.
 Candidate free_shape_candidate(const FreeShapeFamily& family, const FreeShapeRound& round);
 
-// The candidates of `families`, each fitted in its own thread and taken in their order.
+// The candidates of `families`, each fitted in its own thread and taken in their order (the
+// families that took longest last time started first: longest_first.h).
 std::vector<Candidate> free_shape_candidates(const std::vector<FreeShapeFamily>& families,
                                              const FreeShapeRound& round);
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "criteria.h"
-#include "parallel_work.h"
+#include "longest_first.h"
 #include "series_statistics.h"
 #include "series_arithmetic.h"
 
@@ -15,7 +15,9 @@ namespace {
 // Every candidate fitted with the picks before it held, and scored on the held-out part.
 std::vector<Candidate> screen_library_candidates(const Parts& parts,
                                                  const LibraryRounds::Key& round) {
-  return parallel_map<Candidate>(round.names.size(), [&](std::size_t i) {
+  std::vector<std::string> kinds;
+  for (const std::string& name : round.names) kinds.push_back("library screen " + name);
+  return parallel_map_longest_first<Candidate>(kinds, [&](std::size_t i) {
     Candidate c;
     c.fit = fit_effect(round.names[i], parts.cal_replay, round.cal_v, round.modelled);
     c.with = round.modelled;
@@ -37,12 +39,19 @@ std::vector<Candidate> fit_library_candidates(const Parts& parts,
   }
   const std::vector<std::size_t> refitted =
       candidates_to_refit(screened_ms, calibration_ms, round.noise_v);
-  std::vector<Candidate> refits = parallel_map<Candidate>(refitted.size(), [&](std::size_t k) {
+  // A class's refit not yet timed is claimed as long as its screen took: the classes slow to
+  // screen (a coil or a channel effect replayed at every step) are slow to refit around.
+  std::vector<std::string> kinds, like;
+  for (const std::size_t i : refitted) {
+    kinds.push_back("library refit " + round.names[i]);
+    like.push_back("library screen " + round.names[i]);
+  }
+  std::vector<Candidate> refits = parallel_map_longest_first<Candidate>(kinds, [&](std::size_t k) {
     Candidate c = candidates[refitted[k]];
     backfit(c.with, round.first_selected, parts.cal_replay, round.cal_v);
     c.heldout_error = minus(round.ho_v, parts.ho_replay.voltage(c.with));
     return c;
-  });
+  }, like);
   for (std::size_t k = 0; k < refitted.size(); ++k) {
     candidates[refitted[k]] = std::move(refits[k]);
   }

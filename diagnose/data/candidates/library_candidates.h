@@ -62,8 +62,8 @@ void backfit(std::vector<sim::EffectSettings>& modelled, std::size_t first,
 // it held and scored on the held-out part; those candidates_to_refit names are then fitted again
 // with the picks before them refitted around them (backfit) and scored again. Found in `rounds`
 // when the other pass weighed the same round; else fitted (each in its own thread: the replays are
-// read-only; the results are taken in order, so the outcome does not depend on the threads) and
-// kept there.
+// read-only; the classes that took longest last time start first, longest_first.h; the results
+// are taken in order, so the outcome does not depend on the threads) and kept there.
 std::vector<Candidate> library_candidates(const Parts& parts, LibraryRounds& rounds,
                                           LibraryRounds::Key round);
 

@@ -2,6 +2,7 @@
 #include "twin_replay.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "effect_catalogue.h"
@@ -18,6 +19,15 @@ constexpr double kSecondsPerDay = 86400.0;
 // in each round and each refit (on a 100 Hz pair, three of every four inversions of the lattice).
 constexpr std::size_t kCoilCacheEntries = 6;
 constexpr std::size_t kCoilCacheBytes = 24u << 20;
+// Settings of effects that add voltages set by the time alone (mains pickup) remembered per
+// replay, and the most of them whose terms are kept: a search holds one such effect (or a few,
+// across the threads' candidates) while it varies another, and a pick's settings come back in
+// every candidate of the next round; kTimeTermBytes bounds what the terms hold (a 45-minute
+// 100 Hz part's three mains tones are 6.5 MB).
+constexpr std::size_t kTimeTermSettingsSeen = 16;
+constexpr std::size_t kTimeTermBytes = 32u << 20;
+// Harmonic tables kept per replay: one for each of the two mains standards.
+constexpr std::size_t kHarmonicTablesKept = 2;
 // The half-width of the window an inverted reading lag takes its slope over, as a share of the
 // lag's time constant (local_slopes).
 constexpr double kSlopeWindowOfTau = 0.125;
@@ -258,6 +268,81 @@ std::shared_ptr<const TwinReplay::CoilSamples> TwinReplay::coil_samples(
   return samples;
 }
 
+std::shared_ptr<const TwinReplay::TimeTerms> TwinReplay::time_terms(
+    const sim::EffectSettings& settings, std::uint64_t seed, const sim::Effect& effect) const {
+  {
+    const std::lock_guard<std::mutex> lock(time_term_cache_->mutex);
+    auto& entries = time_term_cache_->entries;
+    const auto found = std::find_if(entries.begin(), entries.end(), [&](const auto& e) {
+      return e.seed == seed && e.settings == settings;
+    });
+    if (found == entries.end()) {  // the first time: remembered, applied as it is
+      if (entries.size() >= kTimeTermSettingsSeen) entries.erase(entries.begin());
+      entries.push_back({settings, seed, nullptr});
+      return nullptr;
+    }
+    std::rotate(found, found + 1, entries.end());
+    if (entries.back().terms) return entries.back().terms;
+  }
+  const std::size_t n = series_.size();
+  const int count = effect.time_terms();
+  auto terms = std::make_shared<TimeTerms>(static_cast<std::size_t>(count) * n);
+  for (int k = 0; k < count; ++k) {
+    double* term = terms->data() + static_cast<std::size_t>(k) * n;
+    for (std::size_t i = 0; i < n; ++i) term[i] = effect.time_term(k, series_.t_s[i]);
+  }
+  const std::lock_guard<std::mutex> lock(time_term_cache_->mutex);
+  auto& entries = time_term_cache_->entries;
+  const auto found = std::find_if(entries.begin(), entries.end(), [&](const auto& e) {
+    return e.seed == seed && e.settings == settings;
+  });
+  if (found != entries.end()) {
+    found->terms = terms;
+  } else {
+    if (entries.size() >= kTimeTermSettingsSeen) entries.erase(entries.begin());
+    entries.push_back({settings, seed, terms});
+  }
+  // The least recently used terms go first while those kept exceed kTimeTermBytes.
+  std::size_t bytes = 0;
+  for (auto e = entries.rbegin(); e != entries.rend(); ++e) {
+    if (!e->terms) continue;
+    bytes += e->terms->size() * sizeof(double);
+    if (bytes > kTimeTermBytes && e->terms != terms) e->terms.reset();
+  }
+  return terms;
+}
+
+std::shared_ptr<const TwinReplay::Harmonics> TwinReplay::harmonics(double angular_hz,
+                                                                   int count) const {
+  const auto same = [&](const HarmonicsCache::Entry& e) {
+    return e.angular_hz == angular_hz && e.count == count;
+  };
+  {
+    const std::lock_guard<std::mutex> lock(harmonics_cache_->mutex);
+    const auto& entries = harmonics_cache_->entries;
+    const auto found = std::find_if(entries.begin(), entries.end(), same);
+    if (found != entries.end()) return found->harmonics;
+  }
+  auto made = std::make_shared<Harmonics>();
+  const std::vector<double>& t = series_.t_s;
+  for (int k = 1; k <= count; ++k) {
+    std::vector<double> sin_kwt(t.size()), cos_kwt(t.size());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      sin_kwt[i] = std::sin(k * angular_hz * t[i]);
+      cos_kwt[i] = std::cos(k * angular_hz * t[i]);
+    }
+    made->sin_kwt.push_back(std::move(sin_kwt));
+    made->cos_kwt.push_back(std::move(cos_kwt));
+  }
+  const std::lock_guard<std::mutex> lock(harmonics_cache_->mutex);
+  auto& entries = harmonics_cache_->entries;
+  const auto found = std::find_if(entries.begin(), entries.end(), same);
+  if (found != entries.end()) return found->harmonics;  // made meanwhile by another thread
+  if (entries.size() >= kHarmonicTablesKept) entries.erase(entries.begin());
+  entries.push_back({angular_hz, count, made});
+  return made;
+}
+
 std::vector<double> TwinReplay::voltage(const std::vector<sim::EffectSettings>& effects,
                                         std::uint64_t seed) const {
   std::vector<double> out;
@@ -291,14 +376,32 @@ void TwinReplay::voltage_into(const std::vector<sim::EffectSettings>& effects, s
   }
   // The effects after the coil, stage by stage and in catalogue order within a stage: those
   // before the rails' clamp (the sensor's) and those after it (wiring, then acquisition).
-  std::vector<std::unique_ptr<sim::Effect>> before_clamp, after_clamp;
+  // An effect of the time alone adds its kept terms where the replay has them (time_terms).
+  struct Applied {
+    std::unique_ptr<sim::Effect> effect;
+    std::shared_ptr<const TimeTerms> terms;
+  };
+  std::vector<Applied> before_clamp, after_clamp;
   for (const ChainStage stage : {ChainStage::kSensor, ChainStage::kWiring, ChainStage::kAcquisition}) {
     for (const sim::EffectSettings* effect : ordered) {
       if (sim::chain_stage_of(effect->name) != stage) continue;
-      (stage == ChainStage::kSensor ? before_clamp : after_clamp)
-          .push_back(sim::make_effect(*effect, nominal_.v_min_v(), nominal_.v_max_v(), seed));
+      Applied applied{sim::make_effect(*effect, nominal_.v_min_v(), nominal_.v_max_v(), seed),
+                      nullptr};
+      if (applied.effect->time_terms() > 0) {
+        applied.terms = time_terms(*effect, seed, *applied.effect);
+      }
+      (stage == ChainStage::kSensor ? before_clamp : after_clamp).push_back(std::move(applied));
     }
   }
+  const std::size_t n = series_.size();
+  const auto apply = [n](const Applied& applied, std::size_t i, sim::ChainSample& sample) {
+    if (!applied.terms) {
+      applied.effect->apply(sample);
+      return;
+    }
+    const std::size_t count = applied.terms->size() / n;
+    for (std::size_t k = 0; k < count; ++k) sample.voltage_v += (*applied.terms)[k * n + i];
+  };
   const std::shared_ptr<const CoilSamples> coil =
       coil_effects.empty() ? nullptr : coil_samples(coil_effects, seed);
   const double v_min = nominal_.v_min_v(), v_max = nominal_.v_max_v();
@@ -314,9 +417,9 @@ void TwinReplay::voltage_into(const std::vector<sim::EffectSettings>& effects, s
       sample.voltage_v = nominal_v_[i];
       sample.clip = nominal_clip_[i];
     }
-    for (const std::unique_ptr<sim::Effect>& effect : before_clamp) effect->apply(sample);
+    for (const Applied& applied : before_clamp) apply(applied, i, sample);
     sample.voltage_v = std::clamp(sample.voltage_v, v_min, v_max);
-    for (const std::unique_ptr<sim::Effect>& effect : after_clamp) effect->apply(sample);
+    for (const Applied& applied : after_clamp) apply(applied, i, sample);
     out[i] = sample.voltage_v;
   }
 }

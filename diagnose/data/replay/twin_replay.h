@@ -94,6 +94,14 @@ class TwinReplay {
   const TwinReplay& lattice_replay() const;
   // `search` (one value per row of this search replay) at the rows of lattice_replay().
   std::vector<double> at_lattice_rows(const std::vector<double>& search) const;
+  // sin(k w t) and cos(k w t) at every sample for k = 1..count (w = angular_hz, rad/s): a search
+  // of mains pickup sums its tones of any amplitude and phase from them (by the angle sum). Made
+  // once per replay and mains frequency: every fit of mains pickup against this replay (each
+  // round's screen, each refit of a mains pick) asks for the same.
+  struct Harmonics {
+    std::vector<std::vector<double>> sin_kwt, cos_kwt;  // [k - 1][sample]
+  };
+  std::shared_ptr<const Harmonics> harmonics(double angular_hz, int count) const;
   double age_offset_s() const { return age_offset_s_; }
   double v_min_v() const { return nominal_.v_min_v(); }
   const sim::PolynomialSensorModel& nominal() const { return nominal_; }
@@ -107,6 +115,13 @@ class TwinReplay {
   using CoilSamples = std::vector<sim::ChainSample>;
   std::shared_ptr<const CoilSamples> coil_samples(
       const std::vector<sim::EffectSettings>& coil_effects, std::uint64_t seed) const;
+  // The terms of an effect that adds voltages set by the time alone (sim::Effect::time_terms) at
+  // every sample, term k of sample i at k * size() + i: kept once the same settings are replayed
+  // a second time (a search holding mains pickup evaluates its tones at every step otherwise),
+  // null the first time (the effect is applied as it is).
+  using TimeTerms = std::vector<double>;
+  std::shared_ptr<const TimeTerms> time_terms(const sim::EffectSettings& settings,
+                                              std::uint64_t seed, const sim::Effect& effect) const;
   // One row from each block of consecutive rows, and the replay of those rows.
   struct Subset;
   static std::shared_ptr<const Subset> make_subset(const RecordingSeries& series,
@@ -124,6 +139,26 @@ class TwinReplay {
     std::vector<Entry> entries;  // most recently used last
   };
 
+  struct TimeTermCache {
+    struct Entry {
+      sim::EffectSettings settings;
+      std::uint64_t seed = 0;
+      std::shared_ptr<const TimeTerms> terms;  // null: seen once, not kept yet
+    };
+    std::mutex mutex;
+    std::vector<Entry> entries;  // most recently used last
+  };
+
+  struct HarmonicsCache {
+    struct Entry {
+      double angular_hz = 0.0;
+      int count = 0;
+      std::shared_ptr<const Harmonics> harmonics;
+    };
+    std::mutex mutex;
+    std::vector<Entry> entries;  // most recently made last
+  };
+
   const RecordingSeries& series_;
   sim::PolynomialSensorModel nominal_;
   double age_offset_s_;
@@ -132,6 +167,8 @@ class TwinReplay {
   std::vector<double> sensitivity_;
   std::vector<double> temperature_sensitivity_;
   std::shared_ptr<CoilCache> coil_cache_ = std::make_shared<CoilCache>();
+  std::shared_ptr<TimeTermCache> time_term_cache_ = std::make_shared<TimeTermCache>();
+  std::shared_ptr<HarmonicsCache> harmonics_cache_ = std::make_shared<HarmonicsCache>();
 };
 
 }  // namespace flange::diagnose

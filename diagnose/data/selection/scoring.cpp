@@ -2,6 +2,7 @@
 #include "scoring.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cmath>
 #include <limits>
 
@@ -112,13 +113,14 @@ double first_pick_least_gain(const std::vector<Candidate>& candidates, const Rou
     for (std::size_t i = 0; i < n; ++i) predicted[i] = gap[i] - c.heldout_error[i];
     double own = 0.0;  // the prediction's own sum of squares, the same at every lag
     for (std::size_t i = 0; i < n; ++i) own += std::pow(predicted[i], 2);
+    std::vector<std::size_t> lags(kShifts);
+    for (std::size_t k = 0; k < kShifts; ++k) {
+      lags[k] = n / 10 + k * (8 * n / 10) / (kShifts - 1);
+    }
+    const std::vector<double> dots = shifted_dots(gap, predicted, lags);
     std::vector<double> gains(kShifts);
     for (std::size_t k = 0; k < kShifts; ++k) {
-      const std::size_t lag = n / 10 + k * (8 * n / 10) / (kShifts - 1);
-      double dot = 0.0;  // summed in row order, the held-out gap wrapping round at its end
-      for (std::size_t i = 0; i + lag < n; ++i) dot += gap[i + lag] * predicted[i];
-      for (std::size_t i = n - lag; i < n; ++i) dot += gap[i + lag - n] * predicted[i];
-      gains[k] = (2.0 * dot - own) / static_cast<double>(n) - chance_gain(c, round.noise_v);
+      gains[k] = (2.0 * dots[k] - own) / static_cast<double>(n) - chance_gain(c, round.noise_v);
     }
     return gains;
   };
@@ -133,6 +135,47 @@ double first_pick_least_gain(const std::vector<Candidate>& candidates, const Rou
   const double chance = *std::max_element(best_at_lag.begin(), best_at_lag.end());
   return std::clamp(chance, criteria::kLeastLeastGainOfAFirstPick * variance,
                     criteria::kMostLeastGainOfAFirstPick * variance);
+}
+
+std::vector<double> shifted_dots(const std::vector<double>& gap,
+                                 const std::vector<double>& predicted,
+                                 const std::vector<std::size_t>& lags) {
+  const std::size_t n = gap.size();
+  std::vector<double> dots(lags.size(), 0.0);
+  if (n == 0) return dots;
+  // The gap twice over: row i + L of it is row (i + L) mod n of the gap, for L < n.
+  std::vector<double> twice(2 * n);
+  std::copy(gap.begin(), gap.end(), twice.begin());
+  std::copy(gap.begin(), gap.end(), twice.begin() + static_cast<std::ptrdiff_t>(n));
+  const auto shifted = [&](std::size_t k) { return twice.data() + lags[k] % n; };
+  std::size_t k = 0;
+  static_assert(kShiftsAtOnce == 8, "the block below sums eight lags");
+  for (; k + kShiftsAtOnce <= lags.size(); k += kShiftsAtOnce) {
+    const double *g0 = shifted(k), *g1 = shifted(k + 1), *g2 = shifted(k + 2),
+                 *g3 = shifted(k + 3), *g4 = shifted(k + 4), *g5 = shifted(k + 5),
+                 *g6 = shifted(k + 6), *g7 = shifted(k + 7);
+    double d0 = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0, d4 = 0.0, d5 = 0.0, d6 = 0.0, d7 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double p = predicted[i];
+      d0 += g0[i] * p;
+      d1 += g1[i] * p;
+      d2 += g2[i] * p;
+      d3 += g3[i] * p;
+      d4 += g4[i] * p;
+      d5 += g5[i] * p;
+      d6 += g6[i] * p;
+      d7 += g7[i] * p;
+    }
+    std::size_t at = k;
+    for (const double d : {d0, d1, d2, d3, d4, d5, d6, d7}) dots[at++] = d;
+  }
+  for (; k < lags.size(); ++k) {
+    const double* g = shifted(k);
+    double d = 0.0;
+    for (std::size_t i = 0; i < n; ++i) d += g[i] * predicted[i];
+    dots[k] = d;
+  }
+  return dots;
 }
 
 }  // namespace flange::diagnose

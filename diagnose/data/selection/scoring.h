@@ -73,4 +73,15 @@ Choice significant_choice(const std::vector<Candidate>& candidates, const RoundS
 // criteria::kMostLeastGainOfAFirstPick of sigma^2. A gap too short to shift keeps the larger.
 double first_pick_least_gain(const std::vector<Candidate>& candidates, const RoundScore& round);
 
+// Lags summed side by side in shifted_dots: each lag's sum is still one running sum in row order
+// (the same bits as summed alone), but a core overlaps eight independent sums where one waits on
+// each addition before the next (first_pick_least_gain's 64 lags over a 100 Hz part's rows).
+inline constexpr std::size_t kShiftsAtOnce = 8;
+
+// For each lag L: sum over the rows i, in row order, of gap[(i + L) mod n] * predicted[i] (the
+// held-out gap circularly shifted by L against a prediction).
+std::vector<double> shifted_dots(const std::vector<double>& gap,
+                                 const std::vector<double>& predicted,
+                                 const std::vector<std::size_t>& lags);
+
 }  // namespace flange::diagnose

@@ -25,10 +25,12 @@ class MainsPickup final : public Effect {
   }
 
   void apply(ChainSample& sample) override {
-    for (const Tone& tone : tones_) {
-      sample.voltage_v +=
-          tone.amplitude_v * std::sin(tone.angular_hz * sample.t_s + tone.phase_rad);
-    }
+    for (std::size_t k = 0; k < tones_.size(); ++k) sample.voltage_v += tone_at(tones_[k], sample.t_s);
+  }
+
+  int time_terms() const override { return static_cast<int>(tones_.size()); }
+  double time_term(int term, double t_s) const override {
+    return tone_at(tones_[static_cast<std::size_t>(term)], t_s);
   }
 
  private:
@@ -37,6 +39,10 @@ class MainsPickup final : public Effect {
     double angular_hz;
     double phase_rad;
   };
+  static double tone_at(const Tone& tone, double t_s) {
+    return tone.amplitude_v * std::sin(tone.angular_hz * t_s + tone.phase_rad);
+  }
+
   std::vector<Tone> tones_;
 };
 
