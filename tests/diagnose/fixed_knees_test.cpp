@@ -9,6 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <algorithm>
+#include <vector>
+#include <random>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -55,6 +59,61 @@ TEST(FixedKnees, ACompressionFamilyNamedANonlinearityNamesBothAtHalfConfidenceOr
                    criteria::kAloneClaimAccuracy);
 }
 
+// Voltages spread over 1-8 V (a clearance of 1-8 mm read through a slope of 1 V/mm), a
+// temperature of 20-80 degC, what a pick adds to the twin's voltage and what it leaves of the
+// held-out gap (white noise of kNoise: the pick explains it).
+constexpr double kNoise = 0.01;
+constexpr int kKnots = 25;
+
+struct TwoParts {
+  std::vector<double> cal_v, cal_curve, ho_v, ho_curve, ho_left;
+};
+
+// `curve` of the clearance d and temperature t; the voltage is d plus `per_c` V per degC off 50.
+template <typename Curve>
+TwoParts parts_with(Curve curve, double per_c) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> clearance(1.0, 8.0), temperature(20.0, 80.0);
+  std::normal_distribution<double> noise(0.0, kNoise);
+  TwoParts p;
+  for (int i = 0; i < 4000; ++i) {
+    for (const bool cal : {true, false}) {
+      const double d = clearance(rng), t = temperature(rng);
+      (cal ? p.cal_v : p.ho_v).push_back(d + per_c * (t - 50.0));
+      (cal ? p.cal_curve : p.ho_curve).push_back(curve(d));
+      if (!cal) p.ho_left.push_back(noise(rng));
+    }
+  }
+  return p;
+}
+
+bool over_the_top(const TwoParts& p) {
+  return is_a_curve_over_the_top(p.cal_v, p.cal_curve, p.ho_v, p.ho_curve, p.ho_left, kNoise,
+                                 kKnots);
+}
+
+TEST(FixedKnees, ACurveOfTheClearanceOverTheTopOfTheVoltagesNamesBoth) {
+  // A compression above a knee at 5 V (0.45 V at the top): where the voltage does not move with
+  // temperature a curve of the clearance is this curve of V, and 25 knots follow it within the
+  // margin; a knee at 6 V too.
+  EXPECT_TRUE(over_the_top(parts_with(
+      [](double d) { return -0.05 * std::pow(std::max(0.0, d - 5.0), 2); }, 0.0)));
+  EXPECT_TRUE(over_the_top(parts_with(
+      [](double d) { return -0.1 * std::pow(std::max(0.0, d - 6.0), 2); }, 0.0)));
+}
+
+TEST(FixedKnees, ACurveOverTheWholeRangeOrOfTheClearanceAloneNamesOneClass) {
+  // A bend over the whole range moves the lower half as much as the upper.
+  EXPECT_FALSE(over_the_top(parts_with([](double d) { return 0.05 * std::sin(d); }, 0.0)));
+  // A curve that raises the top is no compression.
+  EXPECT_FALSE(over_the_top(parts_with(
+      [](double d) { return 0.05 * std::pow(std::max(0.0, d - 5.0), 2); }, 0.0)));
+  // The compression's curve where the voltage moves by 0.02 V per degC at one clearance (1.2 V
+  // over the temperatures): a curve of the clearance, not of V; no curve of V follows it.
+  EXPECT_FALSE(over_the_top(parts_with(
+      [](double d) { return -0.05 * std::pow(std::max(0.0, d - 5.0), 2); }, 0.02)));
+}
+
 TEST(FixedKnees, AFixedKneeOnTheThirdRealityIsNamedAsEitherClass) {
   const auto dir = testing::fresh_test_dir("fixed_knee_pair");
   const testing::FlangeOutcome o = testing::run_flange_captured(
@@ -85,6 +144,25 @@ TEST(FixedKnees, AFixedKneeOnTheThirdRealityIsNamedAsEitherClass) {
                                                       "range_compression"),
             std::string::npos)
       << diagnosis["next_measurement"].dump();
+}
+
+
+TEST(FixedKnees, ACurveOfTheClearanceOnTheThirdRealityIsNamedAsEitherClass) {
+  // Seed 40 pair 23 (a seed that may set rules): a fixed-knee compression at 9 Hz, picked as a
+  // free curve of the clearance, was named a nonlinearity alone at 0.94.
+  const auto dir = testing::fresh_test_dir("fixed_knee_clearance_curve");
+  const testing::FlangeOutcome o = testing::run_flange_captured(
+      {"diagnose", "--selftest", "--reality", "third", "--pairs", "40", "--case", "23", "--seed",
+       "40", "--jobs", "2", "--out", dir.string()});
+  ASSERT_TRUE(o.status == 0 || o.status == 1) << o.err;
+  std::ifstream in(dir / "selftest.json");
+  const nlohmann::json pair = nlohmann::json::parse(in)["pairs"].at(0);
+  ASSERT_EQ(pair["truth"].at(0)["shape"], "fixed_knee");
+  ASSERT_EQ(pair["claims"].size(), 1u) << pair.dump();
+  EXPECT_EQ(pair["claims"].at(0)["class"], "static_nonlinearity");
+  EXPECT_LE(pair["claims"].at(0)["confidence"].get<double>(),
+            criteria::kMostConfidenceOfIndistinguishable);
+  EXPECT_TRUE(pair["top_among_indistinguishable"].get<bool>());
 }
 
 }  // namespace

@@ -148,6 +148,17 @@ inline constexpr double kLaterClaimAccuracy = 0.66;
 // FixedKnees.ACompressionFamilyNamedANonlinearityNamesBothAtHalfConfidenceOrLess,
 // FixedKnees.AFixedKneeOnTheThirdRealityIsNamedAsEitherClass.
 inline constexpr double kMostConfidenceOfIndistinguishable = 0.5;
+// A free curve of the clearance that a curve of the twin's voltage alone follows on both parts
+// (within kConfoundingMargin of sigma^2) is a compression with a fixed knee as much as a static
+// nonlinearity when it leaves the lower half of the recorded voltages as they are and lowers the
+// top: a compression acts above its knee only. "As they are": the curve's RMS over the lower half
+// at most this share of its RMS over the upper half (a nonlinearity over the whole range moves
+// both halves alike). On the third reality's rule-setting seeds 40 pair 23 and 60 pair 2, fixed-knee
+// compressions were named a nonlinearity of the clearance alone at 0.94; the curve of V the
+// library holds at zero at both ends of the range cannot carry such a bend.
+// Test: FixedKnees.ACurveOfTheClearanceOverTheTopOfTheVoltagesNamesBoth,
+// FixedKnees.ACurveOverTheWholeRangeOrOfTheClearanceAloneNamesOneClass.
+inline constexpr double kMostLowerHalfShareOfACompression = 0.25;
 // The most bias-type picks: three effects at once is as many as a bench pair's two sessions can
 // separate; more would fit the noise of one session.
 // Test: SelectionRules.AtMostThreePicks.

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "parts.h"
 #include "selection.h"
@@ -18,6 +19,24 @@ namespace flange::diagnose {
 // family's class in its indistinguishable_from (criteria::kMostConfidenceOfIndistinguishable then
 // bounds its confidence).
 void judge_fixed_knees(Selection& selection);
+
+// Whether `curve` (what a pick adds to the twin's voltage on each part, beside the twin's voltage
+// `v` of each part; `ho_left`, what the pick leaves of the held-out gap) is a curve of the
+// voltage alone that a fixed-knee compression makes: a piecewise-linear curve of v on `knots`
+// knots over the calibration part's voltages, fitted to the calibration curve, comes within
+// criteria::kConfoundingMargin of noise_v^2 of it (mean square) on the calibration part and
+// leaves at most that much more of the held-out gap than the pick (the held-out samples given),
+// moves the lower half of the calibration voltages by at most
+// criteria::kMostLowerHalfShareOfACompression of what it moves the upper half, and lowers the
+// upper half.
+bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector<double>& cal_curve,
+                             const std::vector<double>& ho_v, const std::vector<double>& ho_curve,
+                             const std::vector<double>& ho_left, double noise_v, int knots);
+
+// Each nonlinearity pick whose free shape is a curve of the clearance that is_a_curve_over_the_top
+// (on the twin's voltage, with as many knots as the curve has values, on the held-out samples
+// within the calibration part's ranges) names range_compression in its indistinguishable_from.
+void judge_curves_over_the_top(const Parts& parts, Selection& selection);
 
 // What would tell the pick's curve from a compression of the class `other`: a session that holds
 // the clearance where the voltage lies above the knee while the temperature goes beyond the
