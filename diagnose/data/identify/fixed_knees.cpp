@@ -161,6 +161,11 @@ void judge_fixed_knees(Selection& selection) {
   }
 }
 
+void judge_fixed_knees(const Parts& parts, Selection& selection) {
+  judge_fixed_knees(selection);
+  judge_curves_over_the_top(parts, selection);
+}
+
 std::string tell_fixed_knee_from_compression(const Parts& parts, const EffectFinding& pick,
                                              const std::string& other) {
   const TemperatureSpan span = recorded_span(parts);

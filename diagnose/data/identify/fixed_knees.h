@@ -38,6 +38,9 @@ bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector
 // within the calibration part's ranges) names range_compression in its indistinguishable_from.
 void judge_curves_over_the_top(const Parts& parts, Selection& selection);
 
+// Both of the above: the families' fixed knees, then the curves of the clearance over the top.
+void judge_fixed_knees(const Parts& parts, Selection& selection);
+
 // What would tell the pick's curve from a compression of the class `other`: a session that holds
 // the clearance where the voltage lies above the knee while the temperature goes beyond the
 // recorded range (a compression's knee may move there, a nonlinearity of V does not); or, where

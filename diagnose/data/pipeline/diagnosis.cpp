@@ -157,8 +157,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   measure_picks_in_final_fit(parts, selection);
   selection = resolve_parameters(parts, std::move(selection));
   judge_aliased_lines(parts, selection);
-  judge_fixed_knees(selection);
-  judge_curves_over_the_top(parts, selection);
+  judge_fixed_knees(parts, selection);
   const TwinNoise reported_noise = noise_after_selection(noise, selection);
   if (selection.reestimated_noise) so_far.noise_std_v = selection.noise_v;
   // Signatures: the noise-type classes; a converter that reproduces the codes joins the model.
