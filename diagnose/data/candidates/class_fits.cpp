@@ -18,7 +18,8 @@ namespace fs = free_shapes;
 // LSB / (dV/dd) in the clearance.
 std::vector<FreeShapeFamily> nonlinearity_families() {
   return {{"nonlinearity", "V", fs::make_voltage_curve},
-          {"nonlinearity", "d", fs::make_clearance_curve},
+          {"nonlinearity", "d", fs::make_clearance_curve, /*weighed_on_a_converter_grid=*/true,
+           /*over_the_top_also_of=*/"range_compression"},
           {"nonlinearity", "d, periodic", fs::make_clearance_ripple,
            /*weighed_on_a_converter_grid=*/false}};
 }

@@ -129,9 +129,12 @@ void judge_curves_over_the_top(const Parts& parts, Selection& selection) {
   for (Pick& pick : selection.picks) {
     if (pick.step.candidates.empty() || !pick.chosen().free_shape) continue;
     const FreeShapeFit& shape = *pick.chosen().free_shape;
-    if (pick.finding.name != "nonlinearity" || shape.family.variable != "d") continue;
+    const std::string& other = shape.family.over_the_top_also_of;
     std::vector<std::string>& alike = pick.finding.indistinguishable_from;
-    if (std::find(alike.begin(), alike.end(), "range_compression") != alike.end()) continue;
+    if (other.empty() || other == pick.finding.name ||
+        std::find(alike.begin(), alike.end(), other) != alike.end()) {
+      continue;
+    }
     // Beyond the calibration's ranges each curve is continued or held as its family does, which
     // no data decide: the two are compared where the held-out part is interpolated.
     std::vector<double> ho_v, ho_curve, ho_left;
@@ -143,7 +146,7 @@ void judge_curves_over_the_top(const Parts& parts, Selection& selection) {
     if (is_a_curve_over_the_top(parts.cal_replay.nominal_voltage(), shape.cal_voltage_v, ho_v,
                                 ho_curve, ho_left, selection.noise_v,
                                 std::max(shape.free_values, 2))) {
-      alike.push_back("range_compression");
+      alike.push_back(other);
     }
   }
 }

@@ -33,9 +33,11 @@ bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector
                              const std::vector<double>& ho_v, const std::vector<double>& ho_curve,
                              const std::vector<double>& ho_left, double noise_v, int knots);
 
-// Each nonlinearity pick whose free shape is a curve of the clearance that is_a_curve_over_the_top
-// (on the twin's voltage, with as many knots as the curve has values, on the held-out samples
-// within the calibration part's ranges) names range_compression in its indistinguishable_from.
+// Each pick whose free shape's family names a class it may equally be over the top of the
+// voltages (FreeShapeFamily::over_the_top_also_of: the nonlinearity's curve of the clearance, a
+// range compression) and is_a_curve_over_the_top (on the twin's voltage, with as many knots as the
+// curve has values, on the held-out samples within the calibration part's ranges) names that class
+// in its indistinguishable_from.
 void judge_curves_over_the_top(const Parts& parts, Selection& selection);
 
 // Both of the above: the families' fixed knees, then the curves of the clearance over the top.

@@ -60,6 +60,10 @@ struct FreeShapeFamily {
   // Whether it is weighed where the recorded voltages lie on a converter grid (the class table
   // says why not, where not).
   bool weighed_on_a_converter_grid = true;
+  // The class a curve of this family may equally be when a curve of the voltage alone follows it
+  // over the top of the recorded voltages (identify/fixed_knees.h, judge_curves_over_the_top);
+  // empty for none.
+  std::string over_the_top_also_of = {};
 };
 
 // Every family, in the order they are scored (the class table's, classes/effect_classes.h).
