@@ -11,20 +11,12 @@
 #include <thread>
 #include <vector>
 
+#include "worker_threads_guard.h"
+
 namespace flange::diagnose {
 namespace {
 
-// The process's worker threads set for one test and put back after it.
-class WorkerThreads {
- public:
-  explicit WorkerThreads(int threads) : before_(worker_threads()) { set_worker_threads(threads); }
-  ~WorkerThreads() { set_worker_threads(before_); }
-  WorkerThreads(const WorkerThreads&) = delete;
-  WorkerThreads& operator=(const WorkerThreads&) = delete;
-
- private:
-  int before_;
-};
+using testing::WorkerThreads;
 
 TEST(LongestFirst, KindsNeverTimedComeFirstInIndexOrderThenTheLongest) {
   note_piece_seconds("longest_first_test a", 0.1);

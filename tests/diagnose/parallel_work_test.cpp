@@ -15,6 +15,8 @@
 #include <thread>
 #include <vector>
 
+#include "worker_threads_guard.h"
+
 namespace flange::diagnose {
 namespace {
 
@@ -47,17 +49,7 @@ TEST(ParallelWork, AFailureIsRethrownOnceAllPiecesStop) {
   EXPECT_EQ(finished.load(), 7);
 }
 
-// The process's worker threads set for one test and put back after it.
-class WorkerThreads {
- public:
-  explicit WorkerThreads(int threads) : before_(worker_threads()) { set_worker_threads(threads); }
-  ~WorkerThreads() { set_worker_threads(before_); }
-  WorkerThreads(const WorkerThreads&) = delete;
-  WorkerThreads& operator=(const WorkerThreads&) = delete;
-
- private:
-  int before_;
-};
+using testing::WorkerThreads;
 
 // How many pieces run at once, at most, over a run.
 class InFlight {
