@@ -18,6 +18,7 @@
 // more so the fewer the stretches; it is not floored at the least-squares figure.
 #pragma once
 
+#include <functional>
 #include <optional>
 
 #include "wear_line_fit.h"
@@ -43,6 +44,20 @@ struct SerialSpread {
   int dof = 0;             // Student t's: blocks - 1, or fit.dof when no jackknife could be made
   int blocks = 0;          // stretches the refits left out (0: none)
 };
+
+struct JackknifeVariance {
+  double variance = 0.0;  // (B - 1) / B sum_b (t_(b) - mean t_(.))^2
+  int dof = 0;            // B - 1
+};
+
+// The delete-a-block jackknife of `statistic` (of a series): the history cut into `blocks`
+// stretches of equal calendar length, `statistic` taken on the series without each in turn
+// (segments renumbered, shared regressors kept row by row). None when the history spans no time,
+// or a stretch's leaving out leaves a series `statistic` cannot be taken on (it throws
+// std::invalid_argument).
+std::optional<JackknifeVariance> block_jackknife(
+    const WearSeries& series, int blocks,
+    const std::function<double(const WearSeries&)>& statistic);
 
 // B for a history spanning `span_days`: round(span / block_days) within [kMinBlocks,
 // kMaxBlocks].

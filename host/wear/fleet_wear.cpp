@@ -158,8 +158,9 @@ ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread,
   ForecastInput input;
   input.clearance_now_mm = wheel.clearance_now_mm;
   input.rate_mm_per_km = fit.rate_mm_per_km;
-  input.rate_low_mm_per_km = wheel.rate_low / 1000.0;
-  input.rate_high_mm_per_km = wheel.rate_high / 1000.0;
+  const double half_width = t95(spread.dof) * spread.rate_se;
+  input.rate_low_mm_per_km = fit.rate_mm_per_km - half_width;
+  input.rate_high_mm_per_km = fit.rate_mm_per_km + half_width;
   input.km_per_day = distance.km_per_day;
   input.last_day = runs.back().day;
   // The clearance now is a_current + r (km - km0): its variance and covariance with r.
@@ -203,18 +204,26 @@ void fit_wheel(WheelWear& wheel, std::optional<double> drift_onset,
   }
   wheel.own_spread = jackknife_rate(series, drift_onset, kDriftDegree, *wheel.fit,
                                     drift_onset ? kDriftBlockDays : kBlockDays);
+  if (!drift_onset) wheel.history_mean = history_mean_fit(series);
   wheel.acceleration_evidence = acceleration_evidence(series, *wheel.fit, kDriftDegree);
 }
 
-// The rate's interval and the forecasts from `spread` (the wheel's jackknife, moderated).
+// The rate and its interval from the history fit with `history_spread` (its jackknife,
+// moderated), or from the line with `spread` (the line's, moderated) without one; the forecasts
+// from the line.
 void finish_wheel(WheelWear& wheel, const FleetWear& fleet, const SerialSpread& spread,
-                  const WeeklyWearRate& duty) {
+                  const std::optional<SerialSpread>& history_spread, const WeeklyWearRate& duty) {
   const WearLineFit& fit = *wheel.fit;
   const std::vector<WearObservation>& runs = wheel.runs;
-  wheel.rate_mm_per_1000km = fit.rate_mm_per_km * 1000.0;
-  wheel.rate_se = spread.rate_se * 1000.0;
-  wheel.rate_dof = spread.dof;
+  const bool history = wheel.history_mean && history_spread;
+  wheel.rate_mm_per_1000km =
+      (history ? wheel.history_mean->rate_mm_per_km : fit.rate_mm_per_km) * 1000.0;
+  wheel.rate_se = (history ? history_spread->rate_se : spread.rate_se) * 1000.0;
+  wheel.rate_dof = history ? history_spread->dof : spread.dof;
   std::tie(wheel.rate_low, wheel.rate_high) = rate_interval(wheel, 0.95);
+  const double line_half_width = t95(spread.dof) * spread.rate_se * 1000.0;
+  wheel.line_rate_low = fit.rate_mm_per_km * 1000.0 - line_half_width;
+  wheel.line_rate_high = fit.rate_mm_per_km * 1000.0 + line_half_width;
   wheel.clearance_now_mm = wear_line_at(fit, wheel.segment.back(), runs.back().odometer_km);
   wheel.wear_now_mm = wheel.clearance_now_mm - fleet.thresholds.sensor_gap_mm;
   wheel.forecast_input = forecast_input(wheel, spread, fleet.acceleration, duty);
@@ -231,11 +240,14 @@ void finish_wheel(WheelWear& wheel, const FleetWear& fleet, const SerialSpread& 
 // flange a rate of its own, cannot tell it from a flange that does not wear. The fleet's median
 // and kNoWearSeenDays keep a short history out, whose interval reaches zero because it is wide
 // (a slow flange's, a few weeks in).
+// Both on the line's interval (the wear model the forecast runs on) and, below zero, on the
+// history's mean rate's as well.
 void mark_negative_rate(WheelWear& wheel, double fleet_median_rate) {
   if (wheel.status != "ok" || !wheel.fit) return;
-  const bool below_zero = wheel.rate_high < 0.0;
+  const bool below_zero = wheel.line_rate_high < 0.0 || wheel.rate_high < 0.0;
   const double history_days = wheel.runs.back().day - wheel.runs.front().day;
-  const bool no_wear_seen = wheel.rate_low <= 0.0 && wheel.rate_high < fleet_median_rate &&
+  const bool no_wear_seen = wheel.line_rate_low <= 0.0 &&
+                            wheel.line_rate_high < fleet_median_rate &&
                             history_days >= kNoWearSeenDays;
   if (!below_zero && !no_wear_seen) return;
   wheel.status = status_text(negative_rate_cause(series_of(wheel, clearances(wheel.runs))));
@@ -392,6 +404,25 @@ std::map<std::string, WeeklyWearRate> locomotive_duties(const std::vector<WheelW
   return duties;
 }
 
+// The history fits' jackknifes moderated by theirs over the fleet, as the lines' are.
+std::vector<std::optional<SerialSpread>> history_spreads(const std::vector<WheelWear>& wheels) {
+  std::vector<SerialSpread> own;
+  for (const WheelWear& wheel : wheels) {
+    if (wheel.history_mean) own.push_back(wheel.history_mean->own_spread);
+  }
+  const InflationPrior prior = inflation_prior(own);
+  std::vector<std::optional<SerialSpread>> spreads;
+  for (const WheelWear& wheel : wheels) {
+    if (!wheel.history_mean) {
+      spreads.emplace_back();
+      continue;
+    }
+    spreads.emplace_back(
+        moderated_spread(wheel.history_mean->own_spread, prior, wheel.history_mean->rate_se));
+  }
+  return spreads;
+}
+
 // Every wheel's interval and forecasts, its jackknife moderated by the fleet's
 // (moderated_spread.h): the prior from the wheels whose line is wear alone. A wheel with a drift
 // fitted out keeps its own jackknife: its drift terms lean on the late runs in a way the others'
@@ -420,10 +451,11 @@ void finish_wheels(FleetWear& fleet) {
   }
   fleet.acceleration = pool_acceleration(samples);
   const std::map<std::string, WeeklyWearRate> duties = locomotive_duties(fleet.wheels);
+  const std::vector<std::optional<SerialSpread>> history = history_spreads(fleet.wheels);
   for (std::size_t i = 0; i < fleet.wheels.size(); ++i) {
     WheelWear& wheel = fleet.wheels[i];
     if (!wheel.fit) continue;
-    finish_wheel(wheel, fleet, spreads[i], duties.at(wheel.wheel.locomotive));
+    finish_wheel(wheel, fleet, spreads[i], history[i], duties.at(wheel.wheel.locomotive));
   }
   const double fleet_median_rate = median_rate(fleet.wheels);
   for (WheelWear& wheel : fleet.wheels) mark_negative_rate(wheel, fleet_median_rate);

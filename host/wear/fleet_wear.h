@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "block_jackknife.h"
+#include "history_mean_rate.h"
 #include "limit_forecast.h"
 #include "sensor_drift.h"
 #include "sensor_flag_latch.h"
@@ -45,14 +46,19 @@ struct WheelWear {
   // "ok", "sensor fault", "missed reprofiling" (a rate wholly below zero that a step explains
   // better than a drift: negative_rate.h) or "too few runs"
   std::string status = "ok";
-  std::optional<WearLineFit> fit;
-  double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;  // 95 % interval
+  std::optional<WearLineFit> fit;  // the straight line (the forecast's)
+  // The history's mean wear per 1000 km (history_mean_rate.h; the line's slope when a drift is
+  // fitted out or the history's pieces cannot be fitted), with its 95 % interval.
+  double rate_mm_per_1000km = 0.0, rate_low = 0.0, rate_high = 0.0;
   // The rate's standard error (per 1000 km) allowing errors correlated from run to run, and
-  // Student t's degrees of freedom for it (the wheel's jackknife, block_jackknife.h, moderated by
-  // the fleet's, moderated_spread.h): an interval at any level.
+  // Student t's degrees of freedom for it (the jackknife, block_jackknife.h, moderated by the
+  // fleet's, moderated_spread.h): an interval at any level.
   double rate_se = 0.0;
   int rate_dof = 0;
-  SerialSpread own_spread;  // the wheel's own jackknife, before the moderation
+  // The straight line's slope's 95 % interval (the forecast's rate; per 1000 km).
+  double line_rate_low = 0.0, line_rate_high = 0.0;
+  SerialSpread own_spread;  // the line's own jackknife, before the moderation
+  std::optional<HistoryMeanFit> history_mean;  // the rate's fit, with its own jackknife
   // What its line says about wear speeding up as the flange thins (wear_acceleration.h).
   AccelerationEvidence acceleration_evidence;
   double clearance_now_mm = 0.0;    // the fitted line at the last run (drift fitted out)

@@ -53,6 +53,7 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
   }
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(x);
   const Eigen::VectorXd beta = qr.solve(y);
+  fit.full_rank = qr.rank() == params;
   const Eigen::VectorXd residuals = y - x * beta;
   fit.residuals.assign(residuals.data(), residuals.data() + n);
   fit.rss = residuals.squaredNorm();
@@ -69,6 +70,9 @@ WearLineFit fit_wear_line(const WearSeries& series, std::optional<double> drift_
   for (int s = 0; s < segments; ++s) fit.intercepts_mm.push_back(beta(s));
   fit.rate_mm_per_km = beta(segments);
   fit.rate_se = std::sqrt(cov(segments, segments));
+  for (std::size_t j = 0; j < series.shared.size(); ++j) {
+    fit.shared_coefficients.push_back(beta(first_shared + static_cast<Eigen::Index>(j)));
+  }
   fit.drift_onset_day = drift_onset_day;
   fit.drift_index = static_cast<std::size_t>(first_drift);
   for (int power = 1; drift_onset_day && power <= drift_degree; ++power) {

@@ -33,6 +33,7 @@ struct WearLineFit {
   double km0 = 0.0;
   double rate_mm_per_km = 0.0;
   double rate_se = 0.0;  // its standard error
+  std::vector<double> shared_coefficients;  // c_j of WearSeries::shared, in its order
   std::optional<double> drift_onset_day;
   std::vector<double> drift_coefficients;  // g, g2: per day and per day^2 (in mm / m_k)
   std::size_t drift_index = 0;             // where they sit among the parameters
@@ -40,6 +41,7 @@ struct WearLineFit {
   double rss = 0.0;                        // residual sum of squares
   int dof = 0;                             // points minus parameters
   double residual_sd = 0.0;                // sqrt(rss / dof)
+  bool full_rank = true;  // every parameter fixed by the data (a piece or segment without runs: not)
   // (X^T X)^-1 scaled by the residual variance, in the parameter order
   // [intercepts..., rate, shared..., drift]: the run-to-run scatter only (block_jackknife.h widens it for
   // errors correlated from run to run).

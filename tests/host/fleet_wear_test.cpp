@@ -252,7 +252,7 @@ TEST(FleetWear, ARateBelowZeroIsAMissedReprofilingWhenAStepExplainsIt) {
   truth.small_step_day = 45;
   const FleetWear fleet = estimate_fleet_wear(axle_history(truth, 5), {});
   for (const WheelWear& w : fleet.wheels) {
-    EXPECT_LT(w.rate_high, 0.0) << w.wheel.side;
+    EXPECT_LT(w.line_rate_high, 0.0) << w.wheel.side;
     EXPECT_EQ(w.status, "missed reprofiling") << w.wheel.side;
   }
 }
@@ -313,7 +313,8 @@ TEST(FleetWear, TheWarningForecastFollowsTheRate) {
   const WheelWear& w = side(fleet, "left");
   ASSERT_TRUE(w.warning.km.has_value());
   // 8 mm warning clearance: what is left of it at the fitted rate.
-  EXPECT_NEAR(*w.warning.km, (8.0 - w.clearance_now_mm) / (w.rate_mm_per_1000km / 1000.0), 1e-6);
+  // The line's rate: the forecast runs on the straight line (its bend and season modelled there).
+  EXPECT_NEAR(*w.warning.km, (8.0 - w.clearance_now_mm) / w.fit->rate_mm_per_km, 1e-6);
   EXPECT_LT(*w.warning.km_low, *w.warning.km);
   EXPECT_GT(*w.warning.km_high, *w.warning.km);
   EXPECT_FALSE(w.warning.date.empty());
