@@ -157,10 +157,14 @@ ForecastInput forecast_input(const WheelWear& wheel, const SerialSpread& spread,
   const DailyDistance distance = daily_distance(runs);
   ForecastInput input;
   input.clearance_now_mm = wheel.clearance_now_mm;
-  input.rate_mm_per_km = fit.rate_mm_per_km;
+  // The history's mean wear per km (history_mean_rate.h), where the line's slope weighs the
+  // history's middle most; its uncertainty the line's, whose stretches move with the duties as
+  // the months to come will.
+  input.rate_mm_per_km =
+      wheel.history_mean ? wheel.rate_mm_per_1000km / 1000.0 : fit.rate_mm_per_km;
   const double half_width = t95(spread.dof) * spread.rate_se;
-  input.rate_low_mm_per_km = fit.rate_mm_per_km - half_width;
-  input.rate_high_mm_per_km = fit.rate_mm_per_km + half_width;
+  input.rate_low_mm_per_km = input.rate_mm_per_km - half_width;
+  input.rate_high_mm_per_km = input.rate_mm_per_km + half_width;
   input.km_per_day = distance.km_per_day;
   input.last_day = runs.back().day;
   // The clearance now is a_current + r (km - km0): its variance and covariance with r.
@@ -210,7 +214,7 @@ void fit_wheel(WheelWear& wheel, std::optional<double> drift_onset,
 
 // The rate and its interval from the history fit with `history_spread` (its jackknife,
 // moderated), or from the line with `spread` (the line's, moderated) without one; the forecasts
-// from the line.
+// at that rate from the line's clearance now, with the line's uncertainty.
 void finish_wheel(WheelWear& wheel, const FleetWear& fleet, const SerialSpread& spread,
                   const std::optional<SerialSpread>& history_spread, const WeeklyWearRate& duty) {
   const WearLineFit& fit = *wheel.fit;

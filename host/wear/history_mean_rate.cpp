@@ -70,21 +70,20 @@ std::optional<HistoryMeanFit> history_mean_fit(const WearSeries& series) {
     history.series.shared.push_back(std::move(ramp));
   }
   try {
-    history.rate_mm_per_km = history_rise(history.series, starts, km_first, km_last,
-                                          &history.fit, &history.rate_se);
+    history.rate_mm_per_km =
+        history_rise(history.series, starts, km_first, km_last, &history.fit, &history.rate_se);
   } catch (const std::invalid_argument&) {
     return std::nullopt;
   }
   history.own_spread = {history.rate_se, 1.0, history.fit.dof, 0};
   const int blocks = kBlocksPerPiece * history.pieces;
-  const std::optional<JackknifeVariance> jackknife =
-      block_jackknife(history.series, blocks, [&](const WearSeries& kept) {
-        return history_rise(kept, starts, km_first, km_last);
-      });
+  const std::optional<JackknifeVariance> jackknife = block_jackknife(
+      history.series, blocks,
+      [&](const WearSeries& kept) { return history_rise(kept, starts, km_first, km_last); });
   if (jackknife && history.rate_se > 0.0) {
     history.own_spread = {std::sqrt(jackknife->variance),
-                          jackknife->variance / (history.rate_se * history.rate_se),
-                          jackknife->dof, blocks};
+                          jackknife->variance / (history.rate_se * history.rate_se), jackknife->dof,
+                          blocks};
   }
   return history;
 }

@@ -19,8 +19,9 @@
 // errors correlated from run to run are allowed by a delete-a-block jackknife of the rate
 // (block_jackknife.h) over stretches kBlocksPerPiece to a piece, so that no stretch left out
 // empties a piece (its slope would be free) and the refit keeps the same breaks, moderated by the
-// fleet's wheels as the line's (moderated_spread.h). The straight line stays for the forecast,
-// whose bend and season are modelled there (limit_forecast.h).
+// fleet's wheels as the line's (moderated_spread.h). The forecast runs on at this rate from the
+// straight line's clearance at the last run, with the line's uncertainty and its bend and season
+// (fleet_wear.cpp, limit_forecast.h).
 #pragma once
 
 #include <optional>
@@ -41,11 +42,11 @@ inline constexpr double kRatePieceDays = 42.0;
 inline constexpr int kBlocksPerPiece = 3;
 
 struct HistoryMeanFit {
-  WearSeries series;             // the wheel's series with the pieces' ramps in `shared`
-  WearLineFit fit;               // its least-squares fit
-  double rate_mm_per_km = 0.0;   // the fitted line's rise over the history's km
-  double rate_se = 0.0;          // its least-squares standard error (the runs' own scatter)
-  SerialSpread own_spread;       // its jackknife (inflation over rate_se^2)
+  WearSeries series;            // the wheel's series with the pieces' ramps in `shared`
+  WearLineFit fit;              // its least-squares fit
+  double rate_mm_per_km = 0.0;  // the fitted line's rise over the history's km
+  double rate_se = 0.0;         // its least-squares standard error (the runs' own scatter)
+  SerialSpread own_spread;      // its jackknife (inflation over rate_se^2)
   int pieces = 0;
 };
 

@@ -312,9 +312,9 @@ TEST(FleetWear, TheWarningForecastFollowsTheRate) {
   const FleetWear fleet = estimate_fleet_wear(axle_history({}, 4), {});
   const WheelWear& w = side(fleet, "left");
   ASSERT_TRUE(w.warning.km.has_value());
-  // 8 mm warning clearance: what is left of it at the fitted rate.
-  // The line's rate: the forecast runs on the straight line (its bend and season modelled there).
-  EXPECT_NEAR(*w.warning.km, (8.0 - w.clearance_now_mm) / w.fit->rate_mm_per_km, 1e-6);
+  // 8 mm warning clearance: what is left of it from the line's clearance now at the history's mean
+  // rate.
+  EXPECT_NEAR(*w.warning.km, (8.0 - w.clearance_now_mm) / (w.rate_mm_per_1000km / 1000.0), 1e-6);
   EXPECT_LT(*w.warning.km_low, *w.warning.km);
   EXPECT_GT(*w.warning.km_high, *w.warning.km);
   EXPECT_FALSE(w.warning.date.empty());

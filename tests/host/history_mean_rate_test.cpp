@@ -3,13 +3,14 @@
 // last over the km between, where the straight line's slope weighs the middle of the history most.
 // Synthetic series over 120 days whose wear per km moves with the locomotive's duties (a rate
 // factor held for one to four weeks at a time), with white scatter and a slow AR(1) part.
+#include "history_mean_rate.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 #include <vector>
 
-#include "history_mean_rate.h"
 #include "moderated_spread.h"
 #include "wear_line_fit.h"
 
@@ -139,17 +140,14 @@ Held coverage(bool reprofiled, double level, int fleets, std::uint32_t seed) {
     const InflationPrior history_prior = inflation_prior(history_own);
     const InflationPrior line_prior = inflation_prior(line_own);
     for (std::size_t w = 0; w < series.size(); ++w, ++n) {
-      const SerialSpread h =
-          moderated_spread(history_own[w], history_prior, histories[w].rate_se);
+      const SerialSpread h = moderated_spread(history_own[w], history_prior, histories[w].rate_se);
       const SerialSpread l = moderated_spread(line_own[w], line_prior, lines[w].rate_se);
       const double truth = series[w].true_rate;
-      history_held += std::abs(histories[w].rate_mm_per_km - truth) <=
-                              t_quantile(level, h.dof) * h.rate_se
-                          ? 1
-                          : 0;
+      history_held +=
+          std::abs(histories[w].rate_mm_per_km - truth) <= t_quantile(level, h.dof) * h.rate_se ? 1
+                                                                                                : 0;
       line_held +=
-          std::abs(lines[w].rate_mm_per_km - truth) <= t_quantile(level, l.dof) * l.rate_se ? 1
-                                                                                               : 0;
+          std::abs(lines[w].rate_mm_per_km - truth) <= t_quantile(level, l.dof) * l.rate_se ? 1 : 0;
     }
   }
   return {static_cast<double>(history_held) / n, static_cast<double>(line_held) / n};
