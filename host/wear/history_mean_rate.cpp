@@ -88,4 +88,15 @@ std::optional<HistoryMeanFit> history_mean_fit(const WearSeries& series) {
   return history;
 }
 
+double history_fit_at(const HistoryMeanFit& history, std::size_t k) {
+  const WearSeries& series = history.series;
+  const WearLineFit& fit = history.fit;
+  double value = fit.intercepts_mm.at(static_cast<std::size_t>(series.segment.at(k))) +
+                 fit.rate_mm_per_km * (series.km.at(k) - fit.km0);
+  for (std::size_t j = 0; j < series.shared.size(); ++j) {
+    value += fit.shared_coefficients[j] * series.shared[j][k];
+  }
+  return value;
+}
+
 }  // namespace flange::host

@@ -54,4 +54,7 @@ struct HistoryMeanFit {
 // when a piece or a flange's segment has too few runs to fix its parameters.
 std::optional<HistoryMeanFit> history_mean_fit(const WearSeries& series);
 
+// The fitted broken line at the series' run `k` (without the runs' scatter): the page draws it.
+double history_fit_at(const HistoryMeanFit& history, std::size_t k);
+
 }  // namespace flange::host

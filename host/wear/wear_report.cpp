@@ -19,7 +19,8 @@ namespace {
 
 using Panels = std::map<std::pair<int, std::string>, const WheelWear*>;
 
-// Each run's wear and, per flange, the fitted line's two ends (NaN between flanges).
+// Each run's wear and, per flange, the fitted wear: the history fit's broken line at every run
+// (history_mean_rate.h), or the straight line's two ends; NaN between flanges.
 std::string panel_data(const WheelWear& w, const std::string& block, double gap_mm) {
   std::vector<std::vector<double>> points(2);
   for (const WearObservation& run : w.runs) {
@@ -31,13 +32,15 @@ std::string panel_data(const WheelWear& w, const std::string& block, double gap_
   for (std::size_t k = 0; w.fit && k < w.runs.size(); ++k) {
     const bool first = k == 0 || w.segment[k] != w.segment[k - 1];
     const bool last = k + 1 == w.runs.size() || w.segment[k + 1] != w.segment[k];
-    if (!first && !last) continue;
+    if (!first && !last && !w.history_mean) continue;
     if (first && k > 0) {
       line[0].push_back(w.runs[k].odometer_km);
       line[1].push_back(std::numeric_limits<double>::quiet_NaN());
     }
     line[0].push_back(w.runs[k].odometer_km);
-    line[1].push_back(wear_line_at(*w.fit, w.segment[k], w.runs[k].odometer_km) - gap_mm);
+    line[1].push_back((w.history_mean ? history_fit_at(*w.history_mean, k)
+                                      : wear_line_at(*w.fit, w.segment[k], w.runs[k].odometer_km)) -
+                      gap_mm);
   }
   return script + coeffs::gnuplot_data_block(block + "_fit", line);
 }
@@ -73,7 +76,7 @@ void plot_locomotive(const std::filesystem::path& svg, const std::string& locomo
   }
   script += fmt::format(
       "set multiplot layout {},2 title '{}: flange wear (mm) against odometer (km), axles down, "
-      "left and right across: each run (dots), fitted line per flange, warning and critical "
+      "left and right across: each run (dots), fitted wear per flange, warning and critical "
       "(dashed)'\nset yrange [-0.5:{}]\nunset key\nset ylabel 'wear (mm)'\n",
       axles, name, fleet.critical_clearance_mm - fleet.thresholds.sensor_gap_mm + 0.5);
   int index = 0;
