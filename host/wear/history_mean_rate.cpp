@@ -29,16 +29,17 @@ double history_rise(const WearSeries& series, const std::vector<double>& starts,
                     double km_last, WearLineFit* fit_out = nullptr, double* se_out = nullptr) {
   const WearLineFit fit = fit_wear_line(series, std::nullopt);
   if (!fit.full_rank) throw std::invalid_argument("history_rise: a piece without runs");
+  // The parameters in fit_wear_line's order: the intercepts, the rate, the shared regressors
+  // (the ramps' slope changes last).
   const std::size_t rate = fit.intercepts_mm.size();
+  const std::size_t first_ramp = fit.shared_coefficients.size() - starts.size();
   std::vector<double> contrast(fit.covariance.size(), 0.0);
   contrast[rate] = 1.0;
-  for (std::size_t j = 0; j < starts.size(); ++j) {
-    contrast[rate + 1 + j] = (km_last - starts[j]) / (km_last - km_first);
-  }
-  // The parameters in fit_wear_line's order: the intercepts, the rate, the ramps' slope changes.
   double rise = fit.rate_mm_per_km;
   for (std::size_t j = 0; j < starts.size(); ++j) {
-    rise += fit.shared_coefficients.at(j) * contrast[rate + 1 + j];
+    const double weight = (km_last - starts[j]) / (km_last - km_first);
+    contrast[rate + 1 + first_ramp + j] = weight;
+    rise += fit.shared_coefficients[first_ramp + j] * weight;
   }
   const auto& cov = fit.covariance;
   if (se_out != nullptr) {
