@@ -20,6 +20,8 @@ def cut_dates(truth):
     cut = min(starts) if starts else first + 14 * DAY
     while cut - 7 * DAY >= first + 14 * DAY:
         cut -= 7 * DAY
+    while cut < first + 14 * DAY:  # a drift from the first days: the first cut two weeks in
+        cut += 7 * DAY
     cuts = []
     while cut <= last:
         cuts.append(cut)
