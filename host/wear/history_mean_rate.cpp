@@ -76,16 +76,16 @@ std::optional<HistoryMeanFit> history_mean_fit(const WearSeries& series) {
   } catch (const std::invalid_argument&) {
     return std::nullopt;
   }
-  history.own_spread = {history.rate_se, 1.0, history.fit.dof, 0};
   const int blocks = kBlocksPerPiece * history.pieces;
   const std::optional<JackknifeVariance> jackknife = block_jackknife(
       history.series, blocks,
       [&](const WearSeries& kept) { return history_rise(kept, starts, km_first, km_last); });
-  if (jackknife && history.rate_se > 0.0) {
-    history.own_spread = {std::sqrt(jackknife->variance),
-                          jackknife->variance / (history.rate_se * history.rate_se), jackknife->dof,
-                          blocks};
-  }
+  // Without its jackknife the rise would carry the runs' own scatter alone: the line, whose
+  // slope falls back the same way, is no narrower for it.
+  if (!jackknife || !(history.rate_se > 0.0)) return std::nullopt;
+  history.own_spread = {std::sqrt(jackknife->variance),
+                        jackknife->variance / (history.rate_se * history.rate_se), jackknife->dof,
+                        blocks};
   return history;
 }
 

@@ -51,7 +51,8 @@ struct HistoryMeanFit {
 };
 
 // The history fit of a series without a drift fitted out (at least two runs a day apart); none
-// when a piece or a flange's segment has too few runs to fix its parameters.
+// when a piece or a flange's segment has too few runs to fix its parameters, or a stretch left
+// out leaves too few for the refit (the wheel keeps the line's slope).
 std::optional<HistoryMeanFit> history_mean_fit(const WearSeries& series);
 
 // The fitted broken line at the series' run `k` (without the runs' scatter): the page draws it.

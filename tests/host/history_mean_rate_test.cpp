@@ -112,6 +112,25 @@ TEST(HistoryMeanRate, FollowsDutiesTheLinesSlopeReadsLow) {
   EXPECT_LT(history_error, 0.5 * line_error);
 }
 
+// Four runs, two at each end of two months: one stretch left out leaves two runs for two
+// parameters, so there is no jackknife, and no history fit that would claim the runs' scatter
+// alone.
+TEST(HistoryMeanRate, NoneWithoutAJackknife) {
+  WearSeries series;
+  for (const double day : {0.0, 1.0, 58.0, 60.0}) {
+    series.day.push_back(20454.0 + day);
+    series.km.push_back(400.0 * day);
+    series.y.push_back(2.0 + 0.00005 * 400.0 * day + (day == 1.0 ? 0.001 : 0.0));
+    series.segment.push_back(0);
+  }
+  EXPECT_FALSE(history_mean_fit(series).has_value());
+  series.day.insert(series.day.begin() + 2, {20454.0 + 25.0, 20454.0 + 30.0});
+  series.km.insert(series.km.begin() + 2, {10000.0, 12000.0});
+  series.y.insert(series.y.begin() + 2, {2.5, 2.6});
+  series.segment.insert(series.segment.begin() + 2, {0, 0});
+  EXPECT_TRUE(history_mean_fit(series).has_value());
+}
+
 struct Held {
   double history = 0.0, line = 0.0;
 };
