@@ -55,8 +55,9 @@ TEST(FixedKnees, ACompressionFamilyNamedANonlinearityNamesBothAtHalfConfidenceOr
   EXPECT_TRUE(selection.picks[2].finding.indistinguishable_from.empty());
   EXPECT_LE(confidence_of(selection.picks[0].finding, ClaimPlace::first_of_several),
             criteria::kMostConfidenceOfIndistinguishable);
+  // Its own curve keeps its class's base rate alone, unshared.
   EXPECT_DOUBLE_EQ(confidence_of(selection.picks[1].finding, ClaimPlace::alone),
-                   criteria::kAloneClaimAccuracy);
+                   criteria::kAloneCurveOfClearanceClaimAccuracy);
 }
 
 // Voltages spread over 1-8 V (a clearance of 1-8 mm read through a slope of 1 V/mm), a

@@ -232,6 +232,24 @@ TEST(Identifiability, ConfidenceIsTheBaseRateOfItsPlaceSharedAmongAlikeClasses) 
   EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone), criteria::kAloneClaimAccuracy * 0.5 / 2.0);
 }
 
+// A curve of the clearance named alone takes a base rate of its own: its free curve takes up
+// whatever static shape the data hold (a compression whose knee does not move with temperature, a
+// hysteresis reached from one side), so it is right less often than a class of another kind.
+TEST(Identifiability, ACurveOfTheClearanceNamedAloneHasABaseRateOfItsOwn) {
+  EffectFinding f;
+  f.name = "nonlinearity";
+  f.inclusion = 1.0;
+  ASSERT_TRUE(effect_class(f.name).function_of_clearance_alone);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone),
+                   criteria::kAloneCurveOfClearanceClaimAccuracy);
+  EXPECT_LT(criteria::kAloneCurveOfClearanceClaimAccuracy, criteria::kAloneClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::first_of_several),
+                   criteria::kFirstOfSeveralClaimAccuracy);
+  f.name = "temp_gain_drift";
+  ASSERT_FALSE(effect_class(f.name).function_of_clearance_alone);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone), criteria::kAloneClaimAccuracy);
+}
+
 // A class named alone is trusted more than the first of several, which shapes outside the library
 // split between, and a later one least.
 TEST(Identifiability, AVerdictsPlacesGiveItsClassesTheirBaseRates) {

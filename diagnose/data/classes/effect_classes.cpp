@@ -200,11 +200,17 @@ const std::vector<EffectClass>& effect_classes() {
   return classes;
 }
 
-const EffectClass& effect_class(const std::string& name) {
+const EffectClass* find_effect_class(const std::string& name) {
   for (const EffectClass& c : effect_classes()) {
-    if (c.name == name) return c;
+    if (c.name == name) return &c;
   }
-  throw std::out_of_range("no effect class " + name);
+  return nullptr;
+}
+
+const EffectClass& effect_class(const std::string& name) {
+  const EffectClass* found = find_effect_class(name);
+  if (found == nullptr) throw std::out_of_range("no effect class " + name);
+  return *found;
 }
 
 std::vector<std::string> bias_classes_in_catalogue_order() {

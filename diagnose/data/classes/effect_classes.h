@@ -102,6 +102,9 @@ const std::vector<EffectClass>& effect_classes();
 // The class of library effect `name`. Throws std::out_of_range for a name not in the table.
 const EffectClass& effect_class(const std::string& name);
 
+// The same, or none for a name not in the table.
+const EffectClass* find_effect_class(const std::string& name);
+
 // The classes fitted by their bias, in the twin's catalogue order (the order library candidates
 // are fitted and weighed in).
 std::vector<std::string> bias_classes_in_catalogue_order();

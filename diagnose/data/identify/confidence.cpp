@@ -4,14 +4,21 @@
 #include <algorithm>
 
 #include "criteria.h"
+#include "effect_classes.h"
 
 namespace flange::diagnose {
 
 namespace {
 
-double base_rate(ClaimPlace place) {
+// A class that is a function of the clearance alone, named alone, has a base rate of its own
+// (criteria::kAloneCurveOfClearanceClaimAccuracy).
+double base_rate(const EffectFinding& finding, ClaimPlace place) {
+  const EffectClass* effect = find_effect_class(finding.name);
+  const bool curve_of_clearance = effect != nullptr && effect->function_of_clearance_alone;
   switch (place) {
-    case ClaimPlace::alone: return criteria::kAloneClaimAccuracy;
+    case ClaimPlace::alone:
+      return curve_of_clearance ? criteria::kAloneCurveOfClearanceClaimAccuracy
+                                : criteria::kAloneClaimAccuracy;
     case ClaimPlace::first_of_several: return criteria::kFirstOfSeveralClaimAccuracy;
     case ClaimPlace::later: return criteria::kLaterClaimAccuracy;
   }
@@ -21,7 +28,7 @@ double base_rate(ClaimPlace place) {
 }  // namespace
 
 double confidence_of(const EffectFinding& finding, ClaimPlace place) {
-  const double base = base_rate(place);
+  const double base = base_rate(finding, place);
   const double alike = 1.0 + static_cast<double>(finding.indistinguishable_from.size());
   const double shared = base * std::clamp(finding.inclusion, 0.0, 1.0) / alike;
   if (finding.indistinguishable_from.empty()) return shared;

@@ -13,7 +13,8 @@ namespace flange::diagnose {
 // Where a class stands in its verdict: the base rate of a claim depends on it.
 enum class ClaimPlace { alone, first_of_several, later };
 
-// The base rate of `place` (criteria::kAloneClaimAccuracy, kFirstOfSeveralClaimAccuracy or
+// The base rate of `place` (criteria::kAloneClaimAccuracy, or kAloneCurveOfClearanceClaimAccuracy
+// for a class that is a function of the clearance alone; kFirstOfSeveralClaimAccuracy or
 // kLaterClaimAccuracy) x inclusion / (1 + the classes the data cannot tell from it):
 // how often a class named there is present, lowered where resamples of the held-out data do not
 // confirm the pick, and shared among the classes the data cannot tell apart (each as likely), then
