@@ -53,10 +53,11 @@ TEST(FixedKnees, ACompressionFamilyNamedANonlinearityNamesBothAtHalfConfidenceOr
             std::vector<std::string>{"range_compression"});
   EXPECT_TRUE(selection.picks[1].finding.indistinguishable_from.empty());
   EXPECT_TRUE(selection.picks[2].finding.indistinguishable_from.empty());
-  EXPECT_LE(confidence_of(selection.picks[0].finding, ClaimPlace::first_of_several),
+  EXPECT_LE(confidence_of(selection.picks[0].finding, ClaimPlace::first_of_several,
+                          Status::kExplained),
             criteria::kMostConfidenceOfIndistinguishable);
   // Its own curve keeps its class's base rate alone, unshared.
-  EXPECT_DOUBLE_EQ(confidence_of(selection.picks[1].finding, ClaimPlace::alone),
+  EXPECT_DOUBLE_EQ(confidence_of(selection.picks[1].finding, ClaimPlace::alone, Status::kExplained),
                    criteria::kAloneCurveOfClearanceClaimAccuracy);
 }
 

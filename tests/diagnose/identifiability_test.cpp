@@ -223,13 +223,16 @@ TEST(Identifiability, AConstantRecordingNamesEveryClassThatShiftsItsOnePoint) {
 TEST(Identifiability, ConfidenceIsTheBaseRateOfItsPlaceSharedAmongAlikeClasses) {
   EffectFinding f;
   f.inclusion = 1.0;
-  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone), criteria::kAloneClaimAccuracy);
-  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::first_of_several),
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone, Status::kExplained),
+                   criteria::kAloneClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::first_of_several, Status::kExplained),
                    criteria::kFirstOfSeveralClaimAccuracy);
-  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::later), criteria::kLaterClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::later, Status::kExplained),
+                   criteria::kLaterClaimAccuracy);
   f.inclusion = 0.5;
   f.indistinguishable_from = {"ageing_drift"};
-  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone), criteria::kAloneClaimAccuracy * 0.5 / 2.0);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone, Status::kExplained),
+                   criteria::kAloneClaimAccuracy * 0.5 / 2.0);
 }
 
 // A curve of the clearance named alone takes a base rate of its own: its free curve takes up
@@ -240,14 +243,15 @@ TEST(Identifiability, ACurveOfTheClearanceNamedAloneHasABaseRateOfItsOwn) {
   f.name = "nonlinearity";
   f.inclusion = 1.0;
   ASSERT_TRUE(effect_class(f.name).function_of_clearance_alone);
-  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone),
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone, Status::kExplained),
                    criteria::kAloneCurveOfClearanceClaimAccuracy);
   EXPECT_LT(criteria::kAloneCurveOfClearanceClaimAccuracy, criteria::kAloneClaimAccuracy);
-  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::first_of_several),
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::first_of_several, Status::kExplained),
                    criteria::kFirstOfSeveralClaimAccuracy);
   f.name = "temp_gain_drift";
   ASSERT_FALSE(effect_class(f.name).function_of_clearance_alone);
-  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone), criteria::kAloneClaimAccuracy);
+  EXPECT_DOUBLE_EQ(confidence_of(f, ClaimPlace::alone, Status::kExplained),
+                   criteria::kAloneClaimAccuracy);
 }
 
 // A class named alone is trusted more than the first of several, which shapes outside the library
@@ -258,12 +262,31 @@ TEST(Identifiability, AVerdictsPlacesGiveItsClassesTheirBaseRates) {
   a.inclusion = 1.0;
   EffectFinding b = a;
   b.name = "nonlinearity";
-  const std::vector<EffectFinding> one = with_confidences({a});
+  const std::vector<EffectFinding> one = with_confidences({a}, Status::kExplained);
   EXPECT_DOUBLE_EQ(one[0].confidence, criteria::kAloneClaimAccuracy);
-  const std::vector<EffectFinding> two = with_confidences({a, b});
+  const std::vector<EffectFinding> two = with_confidences({a, b}, Status::kExplained);
   EXPECT_DOUBLE_EQ(two[0].confidence, criteria::kFirstOfSeveralClaimAccuracy);
   EXPECT_DOUBLE_EQ(two[1].confidence, criteria::kLaterClaimAccuracy);
   EXPECT_GT(criteria::kAloneClaimAccuracy, criteria::kFirstOfSeveralClaimAccuracy);
+}
+
+// The classes of a partly explained verdict take its own base rates, the first (or only) one and
+// the later ones: what is left of the gap is something none of them models, which may have lent
+// them part of its shape.
+TEST(Identifiability, APartlyExplainedVerdictsClassesTakeItsOwnBaseRates) {
+  EffectFinding a;
+  a.name = "temp_gain_drift";
+  a.inclusion = 1.0;
+  EffectFinding b = a;
+  b.name = "nonlinearity";
+  const std::vector<EffectFinding> one = with_confidences({b}, Status::kPartlyExplained);
+  EXPECT_DOUBLE_EQ(one[0].confidence, criteria::kPartlyExplainedFirstClaimAccuracy);
+  const std::vector<EffectFinding> two = with_confidences({a, b}, Status::kPartlyExplained);
+  EXPECT_DOUBLE_EQ(two[0].confidence, criteria::kPartlyExplainedFirstClaimAccuracy);
+  EXPECT_DOUBLE_EQ(two[1].confidence, criteria::kPartlyExplainedLaterClaimAccuracy);
+  b.indistinguishable_from = {"range_compression"};
+  EXPECT_LE(with_confidences({b}, Status::kPartlyExplained)[0].confidence,
+            criteria::kMostConfidenceOfIndistinguishable);
 }
 
 TEST(CompensatedSensitivity, ACopyOfAnotherColumnHasNone) {

@@ -146,6 +146,15 @@ inline constexpr double kLaterClaimAccuracy = 0.66;
 // Test: Identifiability.ACurveOfTheClearanceNamedAloneHasABaseRateOfItsOwn; the reliability table
 // of docs/diagnose.md ("Confidence") on fresh seeds.
 inline constexpr double kAloneCurveOfClearanceClaimAccuracy = 0.52;
+// The base rates of a partly explained verdict's classes (identify/confidence.h): what is left
+// is something none of the picks models, which may have lent them part of its shape. On the
+// rule-setting seeds of kPartlyExplainedShare, rescored with it: the first (or only) class of such
+// a verdict right 22 of 25 times, a later one 23 of 32; each rate the lower end of its 95 % Wilson
+// interval (0.700, 0.546), rounded down.
+// Test: Identifiability.APartlyExplainedVerdictsClassesTakeItsOwnBaseRates; the reliability table
+// of docs/diagnose.md ("Confidence") on fresh seeds.
+inline constexpr double kPartlyExplainedFirstClaimAccuracy = 0.70;
+inline constexpr double kPartlyExplainedLaterClaimAccuracy = 0.54;
 // A class the data cannot tell from another (indistinguishable_from): with nothing in the data to
 // weigh one against the other each is as likely, so a claim of either is right at most half the
 // time, whatever the base rate and inclusion say (mains pickup and mount motion folded onto one
@@ -202,15 +211,29 @@ static_assert((kMostChangeOutsideTheRecording * kMostChangeOutsideTheRecording -
 // Test: Verdict.PicksOfAResidueWithoutAGapAreNotFindings.
 inline constexpr double kLeastShareOfNoGapTaken = 0.5;
 // Partly explained: picks that leave more still take at least this share of the held-out gap's
-// RMS above the noise; below it several classes together can take most of an effect that none of
-// them models, which would be a false claim. On the rule-setting seeds the twin's gain steps in
-// time (outside the library) are taken 65-85 % by a temperature gain's curve (twin 30-31), while
-// the third and alternative realities' outside shapes reach 66 % at most and their pairs of two or
-// three effects left "unexplained" often 70-82 % (third 480-494 and 504-507, alternative 479-485:
-// at 70 % a true class would come first on 198 rather than 162 of 256 such pairs); a share alone
-// cannot part those, so it stays above the gain steps.
-// Test: Verdict.PicksThatTakeMostButLeaveMoreArePartlyExplained.
-inline constexpr double kPartlyExplainedShare = 0.90;
+// RMS above the noise, and at least kPartlyExplainedShareInEachHalf of it in each half of the
+// held-out session by time. Below the share, library classes together can take much of an effect
+// none of them models (the third and alternative realities' outside shapes: supply sags, a mount's
+// backlash, a wandering baseline); above it, the picks of two or three effects whose shapes the
+// families follow only in part are named, with what they leave, rather than "unexplained". On the
+// rule-setting seeds (third reality 480-494 and 504-507, alternative 479-485, twin 30-31; their
+// recorded picks rescored), the 104 outside pairs of the third and alternative realities' took at
+// most 66 % of the gap above the noise (7 of them over 57 %), and the alternative's seed 443 pair
+// 19, a magnetic hysteresis on a protocol that reaches each clearance from one side, 73.6 % (a
+// nonlinearity and a skew; in both halves, 70.4 % in the worse): the share stays above it.
+// Tests: Verdict.PicksThatTakeMostButLeaveMoreArePartlyExplained,
+// AltSelftest.ABiasThatChangesWithTheMovesDoesNotPassForMotion (that pair).
+inline constexpr double kPartlyExplainedShare = 0.75;
+// ... in each half: a library class acts over the whole session, while a change outside the library
+// that sits in part of it (the twin's gain step in time) is taken by a curve of another variable
+// only there: the twin's gain steps of those seeds (14 of its 20 outside cases), taken 65-85 % over
+// the session by a temperature gain's curve, had 0.41 or less taken in one half (a half with no gap
+// counts 0), the third and alternative realities' pairs of two or three effects at 70 % or more
+// 0.47 and more (one under 0.5). With both, the pairs of two or three effects that name a true
+// class first go from 162 to 181 of 256 and the singles from 423 to 426 of 472, with no claim on
+// the 312 null and outside pairs nor the twin's 20 outside cases.
+// Test: Verdict.PicksThatTakeOneHalfOfTheGapOnlyAreNotPartlyExplained.
+inline constexpr double kPartlyExplainedShareInEachHalf = 0.5;
 // Explained also asks the noise level of what is left in every window of the held-out samples
 // within the calibration's ranges: a 64th of them, at least 100 samples (a window's RMS then
 // varies by about 7 % by chance), at most twice the noise in each; twice the noise in one window

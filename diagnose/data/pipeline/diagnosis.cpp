@@ -190,7 +190,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   if (result.diagnosis.status != Status::kNone) {
     result.diagnosis.next_measurement = next_measurements(parts, selection);
   }
-  result.diagnosis.effects = with_confidences(std::move(result.diagnosis.effects));
+  result.diagnosis.effects = with_confidences(result.diagnosis.effects, result.diagnosis.status);
   // The improved twin: the one given, with what the diagnosis found.
   result.improved_twin = improved_twin(parts, selection, signatures, result.diagnosis,
                                        reported_noise.white_noise, given.twin);

@@ -116,11 +116,14 @@ std::string picks_beyond_twin_fits(const std::vector<EffectFinding>& picks) {
       fmt::join(names, " and "), names.size() == 1 ? "it is" : "they are");
 }
 
-std::string partly_explained(double share, const std::string& what_is_left) {
+std::string partly_explained(double share, double least_half_share,
+                             const std::string& what_is_left) {
   return fmt::format(
       "the selected effects take {:.1f} % of the held-out gap above the noise (at least {:.0f} "
-      "% is asked), but {}: the rest is outside the library or of a shape its families miss",
-      100.0 * share, 100.0 * criteria::kPartlyExplainedShare, what_is_left);
+      "% is asked) and {:.1f} % in the half of the session where they take less (at least {:.0f} "
+      "%), but {}: the rest is outside the library or of a shape its families miss",
+      100.0 * share, 100.0 * criteria::kPartlyExplainedShare, 100.0 * least_half_share,
+      100.0 * criteria::kPartlyExplainedShareInEachHalf, what_is_left);
 }
 
 std::string what_is_left(double left_v, double allowed_v, double worst_v, double from_s,

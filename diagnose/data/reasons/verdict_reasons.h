@@ -50,7 +50,9 @@ std::string none_within_twin_fits(const BeyondReach& b, const std::vector<std::s
 // Picks beside such a verdict: they change only how the twin continues beyond its fits.
 std::string picks_beyond_twin_fits(const std::vector<EffectFinding>& picks);
 
-std::string partly_explained(double share, const std::string& what_is_left);
+// The share of the gap above the noise the picks take over the session and in its worse half.
+std::string partly_explained(double share, double least_half_share,
+                             const std::string& what_is_left);
 
 // What the picks leave against what the noise allows: over the session, or in its worst window.
 std::string what_is_left(double left_v, double allowed_v, double worst_v, double from_s,

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <numbers>
+#include <numeric>
+#include <utility>
 
 #include "criteria.h"
 #include "effect_classes.h"
@@ -36,6 +38,22 @@ bool left_within_noise_locally(const VerdictFigures& f) {
 
 double partly_share(const VerdictFigures& f) {
   return above_noise_share_taken(f.rms_before, f.rms_after, f.noise_v);
+}
+
+// The share of the gap above the noise the picks take in the first and in the second half of the
+// held-out session, the smaller of the two; a half with no gap above the noise counts 0 (an
+// explanation of a gap that lies in one half only is not confirmed over the session).
+double least_half_share_taken(const std::vector<double>& before, const std::vector<double>& after,
+                              double noise_v) {
+  const std::size_t n = after.size();
+  double least = 1.0;
+  for (const auto& [from, to] : {std::pair<std::size_t, std::size_t>{0, n / 2}, {n / 2, n}}) {
+    std::vector<std::size_t> half(to - from);
+    std::iota(half.begin(), half.end(), from);
+    least = std::min(least, above_noise_share_taken(rms_at(before, half), rms_at(after, half),
+                                                    noise_v));
+  }
+  return least;
 }
 
 // Picks on a held-out gap that was no gap, none of them found by its signature, taking less than
@@ -178,6 +196,8 @@ VerdictFigures verdict_figures(const Parts& parts, const Selection& selection,
                    static_cast<double>(selection.current_error.size());
   f.within_before_v = how.within_calibration_rms_before;
   f.within_after_v = how.within_calibration_rms_after;
+  f.least_half_share_taken =
+      least_half_share_taken(selection.raw_ho_gap, selection.current_error, verdict_noise);
   f.beyond_share_taken =
       above_noise_share_taken(rms_at(selection.raw_ho_gap, reach.heldout_beyond),
                               rms_at(selection.current_error, reach.heldout_beyond), verdict_noise);
@@ -197,7 +217,8 @@ Decision decide(const VerdictFigures& f) {
   if (f.gap_before_picks && none_within_twin_fits(f)) return Decision::kNoneWithinTwinFits;
   if (f.any_findings && overall && locally) return Decision::kExplained;
   if (f.any_findings && within_reach) return Decision::kExplainedWithinReach;
-  if (f.any_findings && partly_share(f) >= criteria::kPartlyExplainedShare) {
+  if (f.any_findings && partly_share(f) >= criteria::kPartlyExplainedShare &&
+      f.least_half_share_taken >= criteria::kPartlyExplainedShareInEachHalf) {
     return Decision::kPartlyExplained;
   }
   return f.gap_exists ? Decision::kUnexplained : Decision::kNone;
@@ -257,7 +278,8 @@ VerdictOutcome verdict(const Parts& parts, const Selection& selection,
       break;
     case Decision::kPartlyExplained:
       reasons.push_back(reasons::partly_explained(
-          partly_share(f), what_is_left(selection, signatures, noise.rms_v, how.worst_window)));
+          partly_share(f), f.least_half_share_taken,
+          what_is_left(selection, signatures, noise.rms_v, how.worst_window)));
       break;
     case Decision::kUnexplained:
       result.partial = findings;

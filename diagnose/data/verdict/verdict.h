@@ -38,6 +38,10 @@ struct VerdictFigures {
   // Every held-out sample beyond the calibration's ranges lies beyond the ranges an effect of the
   // twin was fitted on (sim::FittedRanges), and there are some.
   bool beyond_past_twin_fits = false;
+  // Of the gap above the noise, the share the picks take in the half of the held-out session
+  // (by time, first or second) where they take less; a half without a gap above the noise counts
+  // 0 (criteria::kPartlyExplainedShareInEachHalf).
+  double least_half_share_taken = 1.0;
 };
 
 enum class Decision {
@@ -58,7 +62,8 @@ enum class Decision {
 //   continued curves take at least the larger of criteria::kLeastShareTakenBeyondReach and the
 //   share of samples beyond of the gap above the noise there;
 // - partly explained: the picks take at least criteria::kPartlyExplainedShare of the gap above the
-//   noise;
+//   noise, and at least criteria::kPartlyExplainedShareInEachHalf of it in each half of the
+//   held-out session by time;
 // - unexplained: a gap exists; none: none does;
 // - none, too, where there was no gap before the picks and the picks, none of them found by a
 //   signature, take less than criteria::kLeastShareOfNoGapTaken of the gap above the noise: a fit
