@@ -255,7 +255,7 @@ TEST(Identifiability, ACurveOfTheClearanceNamedAloneHasABaseRateOfItsOwn) {
 }
 
 // A class named alone is trusted more than the first of several, which shapes outside the library
-// split between, and a later one least.
+// split between, and a later one least; a partly explained verdict's classes have rates of their own.
 TEST(Identifiability, AVerdictsPlacesGiveItsClassesTheirBaseRates) {
   EffectFinding a;
   a.name = "temp_gain_drift";
@@ -268,22 +268,14 @@ TEST(Identifiability, AVerdictsPlacesGiveItsClassesTheirBaseRates) {
   EXPECT_DOUBLE_EQ(two[0].confidence, criteria::kFirstOfSeveralClaimAccuracy);
   EXPECT_DOUBLE_EQ(two[1].confidence, criteria::kLaterClaimAccuracy);
   EXPECT_GT(criteria::kAloneClaimAccuracy, criteria::kFirstOfSeveralClaimAccuracy);
-}
-
-// The classes of a partly explained verdict take its own base rates, the first (or only) one and
-// the later ones: what is left of the gap is something none of them models, which may have lent
-// them part of its shape.
-TEST(Identifiability, APartlyExplainedVerdictsClassesTakeItsOwnBaseRates) {
-  EffectFinding a;
-  a.name = "temp_gain_drift";
-  a.inclusion = 1.0;
-  EffectFinding b = a;
-  b.name = "nonlinearity";
-  const std::vector<EffectFinding> one = with_confidences({b}, Status::kPartlyExplained);
-  EXPECT_DOUBLE_EQ(one[0].confidence, criteria::kPartlyExplainedFirstClaimAccuracy);
-  const std::vector<EffectFinding> two = with_confidences({a, b}, Status::kPartlyExplained);
-  EXPECT_DOUBLE_EQ(two[0].confidence, criteria::kPartlyExplainedFirstClaimAccuracy);
-  EXPECT_DOUBLE_EQ(two[1].confidence, criteria::kPartlyExplainedLaterClaimAccuracy);
+  // A partly explained verdict's classes take its own base rates, the first (or only) one and the
+  // later ones: what is left of the gap is something none of them models, which may have lent
+  // them part of its shape; a class the data cannot tell from another still shares it.
+  EXPECT_DOUBLE_EQ(with_confidences({b}, Status::kPartlyExplained)[0].confidence,
+                   criteria::kPartlyExplainedFirstClaimAccuracy);
+  const std::vector<EffectFinding> partly = with_confidences({a, b}, Status::kPartlyExplained);
+  EXPECT_DOUBLE_EQ(partly[0].confidence, criteria::kPartlyExplainedFirstClaimAccuracy);
+  EXPECT_DOUBLE_EQ(partly[1].confidence, criteria::kPartlyExplainedLaterClaimAccuracy);
   b.indistinguishable_from = {"range_compression"};
   EXPECT_LE(with_confidences({b}, Status::kPartlyExplained)[0].confidence,
             criteria::kMostConfidenceOfIndistinguishable);

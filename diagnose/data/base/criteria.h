@@ -151,7 +151,7 @@ inline constexpr double kAloneCurveOfClearanceClaimAccuracy = 0.52;
 // rule-setting seeds of kPartlyExplainedShare, rescored with it: the first (or only) class of such
 // a verdict right 22 of 25 times, a later one 23 of 32; each rate the lower end of its 95 % Wilson
 // interval (0.700, 0.546), rounded down.
-// Test: Identifiability.APartlyExplainedVerdictsClassesTakeItsOwnBaseRates; the reliability table
+// Test: Identifiability.AVerdictsPlacesGiveItsClassesTheirBaseRates; the reliability table
 // of docs/diagnose.md ("Confidence") on fresh seeds.
 inline constexpr double kPartlyExplainedFirstClaimAccuracy = 0.70;
 inline constexpr double kPartlyExplainedLaterClaimAccuracy = 0.54;

@@ -56,6 +56,11 @@ double least_half_share_taken(const std::vector<double>& before, const std::vect
   return least;
 }
 
+// The partly explained verdict's reason: the share taken over the session and in its worse half.
+std::string partly_explained_reason(const VerdictFigures& f, const std::string& left) {
+  return reasons::partly_explained(partly_share(f), f.least_half_share_taken, left);
+}
+
 // Picks on a held-out gap that was no gap, none of them found by its signature, taking less than
 // criteria::kLeastShareOfNoGapTaken of what little stood above the noise (nothing, from below
 // it): nothing in the held-out data asks for them, so they are a fit of the noise's residue.
@@ -277,9 +282,8 @@ VerdictOutcome verdict(const Parts& parts, const Selection& selection,
       reasons.push_back(reasons::explained_within_reach(left));
       break;
     case Decision::kPartlyExplained:
-      reasons.push_back(reasons::partly_explained(
-          partly_share(f), f.least_half_share_taken,
-          what_is_left(selection, signatures, noise.rms_v, how.worst_window)));
+      reasons.push_back(partly_explained_reason(
+          f, what_is_left(selection, signatures, noise.rms_v, how.worst_window)));
       break;
     case Decision::kUnexplained:
       result.partial = findings;
