@@ -204,8 +204,10 @@ TEST(MovingKneeSearch, AKneeThatDoesNotMoveIsAFunctionOfClearanceAlone) {
 }
 
 // The same two compressions through the class table's surface family: the one that does not
-// change with temperature names the class of a function of the clearance alone.
-TEST(CompressionSurfaceSearch, ASurfaceThatDoesNotChangeWithTemperatureNamesANonlinearity) {
+// change with temperature keeps the compression's name and names the class of a function of the
+// clearance alone alike; the same surface raising the top (no compression does) is named that
+// class, alike a compression.
+TEST(CompressionSurfaceSearch, ASurfaceThatDoesNotChangeWithTemperatureIsAlikeANonlinearity) {
   const SyntheticBench bench;
   const auto surface =
       std::find_if(free_shape_families().begin(), free_shape_families().end(),
@@ -215,8 +217,15 @@ TEST(CompressionSurfaceSearch, ASurfaceThatDoesNotChangeWithTemperatureNamesANon
     const std::vector<double> gap = compressed(bench, moving ? falling_knee : fixed_knee);
     const FreeShapeFit fit =
         fit_free_shape(*surface, {bench.part(), bench.part(), gap, gap, false});
-    EXPECT_EQ(fit.family.effect, moving ? "range_compression" : "nonlinearity") << fit.description;
+    EXPECT_EQ(fit.family.effect, "range_compression") << fit.description;
+    EXPECT_EQ(fit.also_of_class, moving ? "" : "nonlinearity") << fit.description;
   }
+  std::vector<double> raised = compressed(bench, fixed_knee);
+  for (double& v : raised) v = -v;
+  const FreeShapeFit fit =
+      fit_free_shape(*surface, {bench.part(), bench.part(), raised, raised, false});
+  EXPECT_EQ(fit.family.effect, "nonlinearity") << fit.description;
+  EXPECT_EQ(fit.also_of_class, "range_compression") << fit.description;
 }
 
 // An ageing that settles as 0.04 ln(1 + age / tau), tau one of the settlings searched (22 min),

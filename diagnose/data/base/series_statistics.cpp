@@ -11,11 +11,22 @@
 #include <stdexcept>
 #include <unsupported/Eigen/FFT>
 
+#include "series_arithmetic.h"
 #include "welch_spectrum.h"
 
 namespace flange::diagnose {
 
 using host::WelchSpectrum;
+
+bool lowers_the_upper_half(const std::vector<double>& v, const std::vector<double>& curve) {
+  if (v.empty() || v.size() != curve.size()) return false;
+  const double middle = median_of(v);
+  double upper_sum = 0.0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (v[i] >= middle) upper_sum += curve[i];
+  }
+  return upper_sum < 0.0;
+}
 
 LineFit line_fit(const std::vector<double>& x, const std::vector<double>& y) {
   LineFit fit;

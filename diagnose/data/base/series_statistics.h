@@ -16,6 +16,11 @@ double max_abs_of(const std::vector<double>& x);
 // The part of a gap's RMS above white noise of RMS `noise`: sqrt(rms^2 - noise^2), 0 below it.
 double rms_above_noise(double rms, double noise);
 
+// Whether `curve` sums below zero over the samples whose `v` lies at or above v's median: a
+// curve that lowers the upper half of the voltages, as a compression of the range's top does.
+// False for no samples or sizes that differ.
+bool lowers_the_upper_half(const std::vector<double>& v, const std::vector<double>& curve);
+
 // y = intercept + slope x by least squares, with the t statistic of the slope. `fitted` is false
 // (and the rest 0) for fewer than 3 points or an x that does not vary.
 struct LineFit {

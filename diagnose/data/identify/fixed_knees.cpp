@@ -10,8 +10,10 @@
 
 #include "calibration_reach.h"
 #include "criteria.h"
+#include "effect_classes.h"
 #include "hats.h"
 #include "series_arithmetic.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {
@@ -107,7 +109,7 @@ bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector
     return false;  // not a curve of the voltage alone
   }
   const double middle = median_of(cal_v);
-  double lower_ss = 0.0, upper_ss = 0.0, upper_sum = 0.0;
+  double lower_ss = 0.0, upper_ss = 0.0;
   std::size_t lower_n = 0, upper_n = 0;
   for (std::size_t i = 0; i < cal_v.size(); ++i) {
     if (cal_v[i] < middle) {
@@ -115,11 +117,10 @@ bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector
       ++lower_n;
     } else {
       upper_ss += on_cal[i] * on_cal[i];
-      upper_sum += on_cal[i];
       ++upper_n;
     }
   }
-  if (lower_n == 0 || upper_n == 0 || upper_sum >= 0.0) return false;  // it must lower the top
+  if (lower_n == 0 || upper_n == 0 || !lowers_the_upper_half(cal_v, on_cal)) return false;
   const double lower_rms = std::sqrt(lower_ss / static_cast<double>(lower_n));
   const double upper_rms = std::sqrt(upper_ss / static_cast<double>(upper_n));
   return lower_rms <= criteria::kMostLowerHalfShareOfACompression * upper_rms;
@@ -183,11 +184,13 @@ std::string tell_fixed_knee_from_compression(const Parts& parts, const EffectFin
            "; the recordings span the bench's operating range, so no session on it tells "
            "them apart";
   }
+  const std::string& compression =
+      effect_class(pick.name).function_of_clearance_alone ? other : pick.name;
   return fmt::format(
       "{}; a session that holds the clearance where the voltage lies over the top of the range "
       "while the temperature sweeps {:g} to {:g} degC would: a compression's knee that moves "
       "there is {}, a curve that stays put is either",
-      what, criteria::kOperatingRangeLowestC, criteria::kOperatingRangeHighestC, other);
+      what, criteria::kOperatingRangeLowestC, criteria::kOperatingRangeHighestC, compression);
 }
 
 }  // namespace flange::diagnose

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // A compression whose knee does not move and a static nonlinearity of V (docs/diagnose.md,
 // "Confidence"): above a knee that stays put over the recorded temperatures, a range
-// compression's family fits a curve of the voltage alone, which the selection names a
-// nonlinearity; a range compression whose knee is fixed is that same curve, so no data of these
-// temperatures can tell the two apart, and the pick names both.
+// compression's family fits a curve of the voltage alone, which a static nonlinearity of V makes
+// as well; no data of these temperatures can tell the two apart, and the pick names both (the
+// compression first where the curve lowers the top, as a compression does: fit_free_shape).
 #pragma once
 
 #include <string>
@@ -14,9 +14,9 @@
 
 namespace flange::diagnose {
 
-// Each pick whose free shape a range compression's family made, but which names another class
-// (FreeShapeFit::also_of_class: its knee or surface did not move with temperature), names that
-// family's class in its indistinguishable_from (criteria::kMostConfidenceOfIndistinguishable then
+// Each pick whose free shape a range compression's family made with a knee or surface that did
+// not move with temperature (FreeShapeFit::also_of_class: the class the pick does not name, the
+// compression's or the nonlinearity's) names that class in its indistinguishable_from (criteria::kMostConfidenceOfIndistinguishable then
 // bounds its confidence).
 void judge_fixed_knees(Selection& selection);
 

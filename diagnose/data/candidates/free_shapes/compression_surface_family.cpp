@@ -77,7 +77,7 @@ std::string CompressionSurfaceFamily::describe(const Eigen::VectorXd& beta) cons
       "a free surface over the top of the range (above {:.3g} V{}):", volt_.knots.front(),
       temperature_matters_ ? ""
                            : "; it does not change with temperature by more than the noise can "
-                             "tell: a static nonlinearity of V");
+                             "tell: alike a static nonlinearity of V");
   for (std::size_t k = 0; k < nt; ++k) {
     text += fmt::format("{} at {:.3g} degC {:.3g} V at the top", k == 0 ? "" : ";", temp_.knots[k],
                         beta(static_cast<Eigen::Index>((volt_.knots.size() - 2) * nt + k)));

@@ -6,6 +6,7 @@
 #include "class_fits.h"
 #include "effect_classes.h"
 #include "family.h"
+#include "series_statistics.h"
 
 namespace flange::diagnose {
 namespace {
@@ -39,8 +40,16 @@ FreeShapeFit fit_free_shape(const FreeShapeFamily& family, const FreeShapeInputs
   fit.family = family;
   if (shape->shape_is_function_of_clearance_alone() &&
       family.effect != class_of_a_function_of_clearance_alone()) {
-    fit.also_of_class = family.effect;
-    fit.family.effect = class_of_a_function_of_clearance_alone();
+    // A curve of V alone over the top: a compression whose knee stays put and a static
+    // nonlinearity of V make it alike. Lowering the top is what a compression does, so such a
+    // curve keeps the compression's name and names the nonlinearity alike; one that raises the
+    // top is named the nonlinearity (identify/fixed_knees.h names the other class either way).
+    if (lowers_the_upper_half(in.calibration.replay.nominal_voltage(), fit.cal_voltage_v)) {
+      fit.also_of_class = class_of_a_function_of_clearance_alone();
+    } else {
+      fit.also_of_class = family.effect;
+      fit.family.effect = class_of_a_function_of_clearance_alone();
+    }
   }
   return fit;
 }

@@ -12,8 +12,9 @@
 //                      alone, fine enough for a ripple of a few mm); or a periodic curve of the
 //                      clearance, its period searched, repeated beyond the calibration's range
 //   range_compression  over the top of the range: a surface in V and T; or h(V - k(T)) above a
-//                      knee k(T) that falls as the coil heats (searched), h any curve; either is
-//                      named a nonlinearity when its change with T does not earn its place
+//                      knee k(T) that falls as the coil heats (searched), h any curve; when its
+//                      change with T does not earn its place either names a nonlinearity alike,
+//                      and is named the nonlinearity if it raises the top (no compression does)
 //   thermal_lag        dV/dT (S T - T): the coil at a temperature S T other than the recorded T,
 //                      S any mix of first-order lags (the sensor lags: a mean delay tau_s > 0) and
 //                      of advances of the recorded temperature (the reading lags: tau_s < 0)
@@ -93,10 +94,11 @@ struct FreeShapeFit {
   // Summary parameters whose search ended on an edge of its range: key -> "<= x" or ">= x"
   // (LinearFamily::search_edges).
   std::map<std::string, std::string> search_edges;
-  // The class whose family made the shape when the shape names another: a range compression's
-  // family whose knee (or surface) does not move with temperature is a curve of V alone above a
-  // fixed voltage, named a nonlinearity, and no data tell it from a compression whose knee stays
-  // put (identify/fixed_knees.h). Empty when the family's class is the one named.
+  // The other class a shape is alike: a range compression's family whose knee (or surface) does
+  // not move with temperature is a curve of V alone above a fixed voltage, which no data tell
+  // from a static nonlinearity of V (identify/fixed_knees.h). Lowering the top, it keeps the
+  // compression's name and this is the nonlinearity; raising it, it is named the nonlinearity
+  // and this is the compression. Empty for every other shape.
   std::string also_of_class;
 };
 

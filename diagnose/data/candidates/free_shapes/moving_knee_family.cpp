@@ -176,7 +176,7 @@ std::string MovingKneeFamily::describe(const Eigen::VectorXd& beta) const {
   }
   text += knee_moves_ ? "; above it"
                       : " (it does not move with temperature by more than the noise can tell: a "
-                        "static nonlinearity of V above it); above it";
+                        "fixed knee, alike a static nonlinearity of V above it); above it";
   for (std::size_t j = 1; j < kKneeHeightKnots; ++j) {
     text += fmt::format("{} {:.3g} V at {:.3g} V over", j == 1 ? "" : ",",
                         beta(static_cast<Eigen::Index>(j - 1)), height_knot(j));
