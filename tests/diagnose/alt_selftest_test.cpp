@@ -203,10 +203,17 @@ TEST(AltSelftest, APickThatTheLaterPicksMakeUnneededIsTakenOut) {
 // 447, pair 13, a temperature gain about a mid-range pivot (the library's nonlinearity, then its
 // temperature gain), and seed 448, pair 32, a nonlinearity exponential in the voltage (a
 // temperature gain, then the nonlinearity and an ageing). One free-shape class leaves as little,
-// so it is named alone.
+// so it is named alone. The second lowers the top of the range and stays put with temperature,
+// as a compression with a fixed knee does: one curve named as a compression, alike the
+// nonlinearity (identify/fixed_knees.h).
 TEST(AltSelftest, OneClassOfAnotherShapeIsPreferredToTwoLibraryClasses) {
   expect_explained_by_one_effect(447, 13, "temp_gain_drift");
-  expect_explained_by_one_effect(448, 32, "nonlinearity");
+  const AltPairResult r = development_pair(448, 32);
+  ASSERT_EQ(r.diagnosis.status, Status::kExplained);
+  ASSERT_EQ(r.diagnosis.effects.size(), 1u);
+  EXPECT_EQ(r.diagnosis.effects[0].name, "range_compression");
+  EXPECT_EQ(r.diagnosis.effects[0].indistinguishable_from, std::vector<std::string>{"nonlinearity"});
+  EXPECT_TRUE(r.score.top_among_indistinguishable);
 }
 
 // Pairs with a late thermocouple beside a class of the temperature: seed 444, pair 7, a sheathed
