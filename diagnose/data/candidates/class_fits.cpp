@@ -63,8 +63,12 @@ std::optional<ShapeMember> lag_member(const FreeShapeFit& shape) {
 const std::vector<ClassFit>& class_fits() {
   static const std::vector<ClassFit> fits = {
       {"temp_gain_drift", fit_by_search,
-       {{"temp_gain_drift", "(V - v_min) T", fs::make_temperature_gain_curve},
-        {"temp_gain_drift", "(V - pivot) T", fs::make_pivot_gain}}},
+       {{"temp_gain_drift", "(V - v_min) T", fs::make_temperature_gain_curve,
+         /*weighed_on_a_converter_grid=*/true, /*over_the_top_also_of=*/"",
+         /*temperature_alone_also_of=*/"temp_offset_drift"},
+        {"temp_gain_drift", "(V - pivot) T", fs::make_pivot_gain,
+         /*weighed_on_a_converter_grid=*/true, /*over_the_top_also_of=*/"",
+         /*temperature_alone_also_of=*/"temp_offset_drift"}}},
       {"temp_offset_drift", fit_by_search,
        {{"temp_offset_drift", "T", fs::make_temperature_offset_curve}}},
       {"nonlinearity", fit_by_search, nonlinearity_families()},

@@ -3,15 +3,14 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "calibration_reach.h"
 #include "criteria.h"
+#include "curve_alike.h"
 #include "effect_classes.h"
-#include "hats.h"
 #include "series_arithmetic.h"
 #include "series_statistics.h"
 
@@ -35,79 +34,15 @@ TemperatureSpan recorded_span(const Parts& parts) {
   return span;
 }
 
-// Knots evenly over [lo, hi], the curve held beyond them.
-free_shapes::Hats hats_over(double lo, double hi, int knots) {
-  free_shapes::Hats hats;
-  for (int k = 0; k < knots; ++k) {
-    hats.knots.push_back(lo + (hi - lo) * k / static_cast<double>(knots - 1));
-  }
-  return hats;
-}
-
-// The values at the knots of the least-squares curve of v through `curve` (a light ridge keeps
-// knots no sample reaches at 0).
-Eigen::VectorXd curve_of_v(const free_shapes::Hats& hats, const std::vector<double>& v,
-                           const std::vector<double>& curve) {
-  const auto count = static_cast<Eigen::Index>(hats.knots.size());
-  Eigen::MatrixXd normal = Eigen::MatrixXd::Identity(count, count) * 1e-9;
-  Eigen::VectorXd right = Eigen::VectorXd::Zero(count);
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const auto [first, last] = hats.support(v[i]);
-    for (std::size_t a = first; a <= last; ++a) {
-      const double wa = hats.weight(a, v[i]);
-      right(static_cast<Eigen::Index>(a)) += wa * curve[i];
-      for (std::size_t b = first; b <= last; ++b) {
-        normal(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) +=
-            wa * hats.weight(b, v[i]);
-      }
-    }
-  }
-  return normal.ldlt().solve(right);
-}
-
-std::vector<double> evaluate(const free_shapes::Hats& hats, const Eigen::VectorXd& values,
-                             const std::vector<double>& v) {
-  std::vector<double> out(v.size(), 0.0);
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const auto [first, last] = hats.support(v[i]);
-    for (std::size_t k = first; k <= last; ++k) {
-      out[i] += hats.weight(k, v[i]) * values(static_cast<Eigen::Index>(k));
-    }
-  }
-  return out;
-}
-
-double mean_square_apart(const std::vector<double>& a, const std::vector<double>& b) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
-  return a.empty() ? 0.0 : sum / static_cast<double>(a.size());
-}
-
 }  // namespace
 
 bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector<double>& cal_curve,
                              const std::vector<double>& ho_v, const std::vector<double>& ho_curve,
                              const std::vector<double>& ho_left, double noise_v, int knots) {
-  if (cal_v.size() < 2 || cal_v.size() != cal_curve.size() || ho_v.size() != ho_curve.size() ||
-      ho_left.size() != ho_v.size() || knots < 2) {
-    return false;
-  }
-  const auto [lowest, highest] = std::minmax_element(cal_v.begin(), cal_v.end());
-  if (!(*highest > *lowest)) return false;
-  const free_shapes::Hats hats = hats_over(*lowest, *highest, knots);
-  const Eigen::VectorXd values = curve_of_v(hats, cal_v, cal_curve);
-  const std::vector<double> on_cal = evaluate(hats, values, cal_v);
-  const double margin = criteria::kConfoundingMargin * noise_v * noise_v;
-  // On the held-out part the curve of v must leave at most the margin more than the pick leaves
-  // (the gap before the pick is what it leaves plus what it adds).
-  const std::vector<double> on_ho = evaluate(hats, values, ho_v);
-  std::vector<double> before(ho_left.size());
-  for (std::size_t i = 0; i < before.size(); ++i) before[i] = ho_left[i] + ho_curve[i];
-  const std::vector<double> none(ho_left.size(), 0.0);
-  const double more_left = mean_square_apart(before, on_ho) - mean_square_apart(ho_left, none);
-  if (mean_square_apart(on_cal, cal_curve) > margin || more_left > margin) {
-    return false;  // not a curve of the voltage alone
-  }
+  const std::optional<std::vector<double>> of_v =
+      curve_of_one_variable_alike(cal_v, cal_curve, ho_v, ho_curve, ho_left, noise_v, knots);
+  if (!of_v) return false;  // not a curve of the voltage alone
+  const std::vector<double>& on_cal = *of_v;
   const double middle = median_of(cal_v);
   double lower_ss = 0.0, upper_ss = 0.0;
   std::size_t lower_n = 0, upper_n = 0;

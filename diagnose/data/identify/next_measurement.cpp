@@ -11,6 +11,7 @@
 #include "criteria.h"
 #include "effect_classes.h"
 #include "fixed_knees.h"
+#include "gains_alike_offsets.h"
 #include "hypothetical_session.h"
 #include "parameter_resolution.h"
 #include "series_statistics.h"
@@ -67,6 +68,10 @@ std::string tell_apart(const Parts& parts, const Pick& pick, const std::string& 
                   b.name, a.follows, a.follows == b.follows ? "the other's shape" : b.follows);
   if (pick.chosen().free_shape && pick.chosen().free_shape->also_of_class == other) {
     return tell_fixed_knee_from_compression(parts, pick.finding, other);
+  }
+  if (pick.chosen().free_shape &&
+      pick.chosen().free_shape->family.temperature_alone_also_of == other) {
+    return tell_gain_from_offset(pick.finding, other);
   }
   const Candidate* rival = library_candidate(pick.step, other);
   if (pick.chosen().free_shape || rival == nullptr) return fallback;

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "alarm_timing.h"
-#include "aliased_lines.h"
+#include "alike_classes.h"
 #include "backward.h"
 #include "confidence.h"
 #include "criteria.h"
@@ -15,7 +15,6 @@
 #include "diagnosis_detail.h"
 #include "effect_classes.h"
 #include "final_fit.h"
-#include "fixed_knees.h"
 #include "how_far.h"
 #include "improved_twin.h"
 #include "inclusion.h"
@@ -156,8 +155,7 @@ DiagnosisResult diagnose_in_detail(const RecordingSeries& calibration,
   drop_unneeded_picks(parts, selection);
   measure_picks_in_final_fit(parts, selection);
   selection = resolve_parameters(parts, std::move(selection));
-  judge_aliased_lines(parts, selection);
-  judge_fixed_knees(parts, selection);
+  judge_alike_classes(parts, selection);
   const TwinNoise reported_noise = noise_after_selection(noise, selection);
   if (selection.reestimated_noise) so_far.noise_std_v = selection.noise_v;
   // Signatures: the noise-type classes; a converter that reproduces the codes joins the model.

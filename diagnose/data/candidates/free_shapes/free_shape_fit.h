@@ -65,6 +65,10 @@ struct FreeShapeFamily {
   // over the top of the recorded voltages (identify/fixed_knees.h, judge_curves_over_the_top);
   // empty for none.
   std::string over_the_top_also_of = {};
+  // The class a curve of this family may equally be when a curve of the recorded temperature
+  // alone follows it (identify/gains_alike_offsets.h: a gain about a pivot far off the recorded
+  // voltages); empty for none.
+  std::string temperature_alone_also_of = {};
 };
 
 // Every family, in the order they are scored (the class table's, classes/effect_classes.h).
