@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 
+#include "calibration_reach.h"
 #include "criteria.h"
 #include "hats.h"
 
@@ -75,6 +76,30 @@ std::optional<std::vector<double>> curve_of_one_variable_alike(
   const double more_left = mean_square_apart(before, on_ho) - mean_square_apart(ho_left, none);
   if (mean_square_apart(on_cal, cal_curve) > margin || more_left > margin) return std::nullopt;
   return on_cal;
+}
+
+void name_classes_alike(const Parts& parts, Selection& selection,
+                        std::string FreeShapeFamily::*other_of,
+                        const std::vector<double>& heldout_x, const CurveIsAlike& is_alike) {
+  const std::vector<std::size_t> within =
+      calibration_reach(parts.calibration, parts.heldout).heldout_within;
+  for (Pick& pick : selection.picks) {
+    if (pick.step.candidates.empty() || !pick.chosen().free_shape) continue;
+    const FreeShapeFit& shape = *pick.chosen().free_shape;
+    const std::string& other = shape.family.*other_of;
+    std::vector<std::string>& alike = pick.finding.indistinguishable_from;
+    if (other.empty() || other == pick.finding.name ||
+        std::find(alike.begin(), alike.end(), other) != alike.end()) {
+      continue;
+    }
+    HeldoutCurve heldout;
+    for (const std::size_t i : within) {
+      heldout.x.push_back(heldout_x[i]);
+      heldout.curve.push_back(shape.heldout_voltage_v[i]);
+      heldout.left.push_back(pick.chosen().heldout_error[i]);
+    }
+    if (is_alike(shape, heldout)) alike.push_back(other);
+  }
 }
 
 }  // namespace flange::diagnose

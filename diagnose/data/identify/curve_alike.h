@@ -5,8 +5,13 @@
 // temperature (gains_alike_offsets.h).
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <string>
 #include <vector>
+
+#include "parts.h"
+#include "selection.h"
 
 namespace flange::diagnose {
 
@@ -21,5 +26,23 @@ std::optional<std::vector<double>> curve_of_one_variable_alike(
     const std::vector<double>& cal_x, const std::vector<double>& cal_curve,
     const std::vector<double>& ho_x, const std::vector<double>& ho_curve,
     const std::vector<double>& ho_left, double noise_v, int knots);
+
+// A pick's curve on the held-out samples within the calibration part's ranges (beyond them each
+// curve is continued or held as its family does, which no data decide), beside the variable `x`
+// there and what the pick leaves of the held-out gap.
+struct HeldoutCurve {
+  std::vector<double> x, curve, left;
+};
+
+// Whether a pick's free shape (its curve on the calibration part: FreeShapeFit::cal_voltage_v),
+// with its HeldoutCurve, is alike the other class.
+using CurveIsAlike = std::function<bool(const FreeShapeFit& shape, const HeldoutCurve& heldout)>;
+
+// Each pick with a free shape whose family names, in `other_of`, a class the pick does not name
+// yet, and whose curve `is_alike` (on the held-out part's variable `heldout_x`), names that class
+// in its indistinguishable_from.
+void name_classes_alike(const Parts& parts, Selection& selection,
+                        std::string FreeShapeFamily::*other_of,
+                        const std::vector<double>& heldout_x, const CurveIsAlike& is_alike);
 
 }  // namespace flange::diagnose

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <vector>
 
-#include "calibration_reach.h"
 #include "criteria.h"
 #include "curve_alike.h"
 #include "effect_classes.h"
@@ -62,29 +61,14 @@ bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector
 }
 
 void judge_curves_over_the_top(const Parts& parts, Selection& selection) {
-  for (Pick& pick : selection.picks) {
-    if (pick.step.candidates.empty() || !pick.chosen().free_shape) continue;
-    const FreeShapeFit& shape = *pick.chosen().free_shape;
-    const std::string& other = shape.family.over_the_top_also_of;
-    std::vector<std::string>& alike = pick.finding.indistinguishable_from;
-    if (other.empty() || other == pick.finding.name ||
-        std::find(alike.begin(), alike.end(), other) != alike.end()) {
-      continue;
-    }
-    // Beyond the calibration's ranges each curve is continued or held as its family does, which
-    // no data decide: the two are compared where the held-out part is interpolated.
-    std::vector<double> ho_v, ho_curve, ho_left;
-    for (const std::size_t i : calibration_reach(parts.calibration, parts.heldout).heldout_within) {
-      ho_v.push_back(parts.ho_replay.nominal_voltage()[i]);
-      ho_curve.push_back(shape.heldout_voltage_v[i]);
-      ho_left.push_back(pick.chosen().heldout_error[i]);
-    }
-    if (is_a_curve_over_the_top(parts.cal_replay.nominal_voltage(), shape.cal_voltage_v, ho_v,
-                                ho_curve, ho_left, selection.noise_v,
-                                std::max(shape.free_values, 2))) {
-      alike.push_back(other);
-    }
-  }
+  name_classes_alike(parts, selection, &FreeShapeFamily::over_the_top_also_of,
+                     parts.ho_replay.nominal_voltage(),
+                     [&](const FreeShapeFit& shape, const HeldoutCurve& heldout) {
+                       return is_a_curve_over_the_top(
+                           parts.cal_replay.nominal_voltage(), shape.cal_voltage_v, heldout.x,
+                           heldout.curve, heldout.left, selection.noise_v,
+                           std::max(shape.free_values, 2));
+                     });
 }
 
 void judge_fixed_knees(Selection& selection) {
