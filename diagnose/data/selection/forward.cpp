@@ -8,6 +8,7 @@
 #include "criteria.h"
 #include "effect_classes.h"
 #include "evidence.h"
+#include "free_refit.h"
 #include "free_shape_candidates.h"
 #include "library_candidates.h"
 #include "series_statistics.h"
@@ -195,6 +196,7 @@ void select_bias_effects(const Parts& parts, LibraryRounds& rounds, const Diagno
     note_confounding(candidates, choice, alike, selection);
     take_pick(std::move(candidates), choice, selection);
     selection.picks.back().finding.indistinguishable_from = std::move(alike);
+    if (selection.free_shapes) refit_earlier_free_picks(parts, selection);
     if (options.estimate_noise) reestimate_noise(parts, cal_grid, selection);
   }
 }

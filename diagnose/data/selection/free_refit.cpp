@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: MIT
+#include "free_refit.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coil_parts.h"
+#include "effect_classes.h"
+#include "free_shape_candidates.h"
+#include "library_candidates.h"
+#include "series_arithmetic.h"
+#include "series_statistics.h"
+
+namespace flange::diagnose {
+namespace {
+
+// The held-out mean square a candidate leaves, with what fitting its held-out values takes from
+// white noise of variance `variance`.
+double penalised_mean_square(const Candidate& c, double variance) {
+  const double after = rms_of(c.heldout_error);
+  const int values = c.free_shape ? c.free_shape->heldout_values : 0;
+  return after * after +
+         variance * values / static_cast<double>(c.heldout_error.size());
+}
+
+// Whether no pick but pick `j` carries a level between the sessions (forward.h's
+// no_level_carried, without the pick refitted).
+bool no_level_carried_without(const Selection& selection, std::size_t j) {
+  for (std::size_t k = 0; k < selection.picks.size(); ++k) {
+    if (k != j && !effect_class(selection.picks[k].finding.name).carries_no_level) return false;
+  }
+  return true;
+}
+
+// Pick `j`'s family fitted again on what the others leave; its curve replaced where the held-out
+// mean square falls.
+bool refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
+  Pick& pick = selection.picks[j];
+  if (pick.modelled_index >= 0 || !pick.chosen().free_shape) return false;
+  const FreeShapeFit old_shape = *pick.chosen().free_shape;
+  const double variance = selection.noise_v * selection.noise_v;
+  const double now = rms_of(selection.current_error);
+  const double now_ms = now * now + variance * old_shape.heldout_values /
+                                        static_cast<double>(selection.current_error.size());
+  add_free_shape(selection, old_shape, -1.0);
+  const std::vector<double> cal_gap =
+      minus(cal_target(parts, selection), parts.cal_replay.voltage(selection.modelled));
+  const std::vector<double> ho_gap =
+      minus(ho_target(parts, selection), parts.ho_replay.voltage(selection.modelled));
+  const CoilParts coil(parts, selection.modelled);
+  const FreeShapeRound round{coil.calibration(),        coil.heldout(),
+                             cal_gap,                   ho_gap,
+                             selection.modelled,        parts.heldout_age_unknown,
+                             no_level_carried_without(selection, j)};
+  std::optional<Candidate> best;
+  double best_ms = now_ms;
+  for (Candidate& c : free_shape_candidates({old_shape.family}, round)) {
+    if (c.fit.settings.name != pick.finding.name) continue;  // the refit names another class
+    const double ms = penalised_mean_square(c, variance);
+    if (ms < best_ms) {
+      best_ms = ms;
+      best = std::move(c);
+    }
+  }
+  if (!best) {
+    add_free_shape(selection, old_shape, 1.0);
+    return false;
+  }
+  add_free_shape(selection, *best->free_shape, 1.0);
+  backfit(selection.modelled, selection.first_selected, parts.cal_replay,
+          cal_target(parts, selection));
+  selection.current_error =
+      minus(ho_target(parts, selection), parts.ho_replay.voltage(selection.modelled));
+  pick.finding.params = best->free_shape->params;
+  refresh_library_params(selection);
+  pick.step.candidates[pick.step.chosen].free_shape = best->free_shape;
+  return true;
+}
+
+}  // namespace
+
+bool refit_earlier_free_picks(const Parts& parts, Selection& selection) {
+  bool changed = false;
+  for (std::size_t j = 0; j + 1 < selection.picks.size(); ++j) {
+    changed = refit_free_pick(parts, selection, j) || changed;
+  }
+  return changed;
+}
+
+}  // namespace flange::diagnose
