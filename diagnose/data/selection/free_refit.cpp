@@ -9,6 +9,7 @@
 #include "effect_classes.h"
 #include "free_shape_candidates.h"
 #include "library_candidates.h"
+#include "scoring.h"
 #include "series_arithmetic.h"
 #include "series_statistics.h"
 
@@ -16,15 +17,13 @@ namespace flange::diagnose {
 namespace {
 
 // The held-out mean square a candidate leaves, with what fitting its held-out values takes from
-// white noise of variance `variance`.
-double penalised_mean_square(const Candidate& c, double variance) {
+// white noise of level `noise_v` (scoring.h's chance gain).
+double charged_mean_square(const Candidate& c, double noise_v) {
   const double after = rms_of(c.heldout_error);
-  const int values = c.free_shape ? c.free_shape->heldout_values : 0;
-  return after * after +
-         variance * values / static_cast<double>(c.heldout_error.size());
+  return after * after + chance_gain(c, noise_v);
 }
 
-// Whether no pick but pick `j` carries a level between the sessions (forward.h's
+// Whether none of the picks other than pick `j` carries a level between the sessions (forward.h's
 // no_level_carried, without the pick refitted).
 bool no_level_carried_without(const Selection& selection, std::size_t j) {
   for (std::size_t k = 0; k < selection.picks.size(); ++k) {
@@ -39,10 +38,8 @@ bool refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
   Pick& pick = selection.picks[j];
   if (pick.modelled_index >= 0 || !pick.chosen().free_shape) return false;
   const FreeShapeFit old_shape = *pick.chosen().free_shape;
-  const double variance = selection.noise_v * selection.noise_v;
   const double now = rms_of(selection.current_error);
-  const double now_ms = now * now + variance * old_shape.heldout_values /
-                                        static_cast<double>(selection.current_error.size());
+  const double now_ms = now * now + chance_gain(pick.chosen(), selection.noise_v);
   add_free_shape(selection, old_shape, -1.0);
   const std::vector<double> cal_gap =
       minus(cal_target(parts, selection), parts.cal_replay.voltage(selection.modelled));
@@ -57,7 +54,7 @@ bool refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
   double best_ms = now_ms;
   for (Candidate& c : free_shape_candidates({old_shape.family}, round)) {
     if (c.fit.settings.name != pick.finding.name) continue;  // the refit names another class
-    const double ms = penalised_mean_square(c, variance);
+    const double ms = charged_mean_square(c, selection.noise_v);
     if (ms < best_ms) {
       best_ms = ms;
       best = std::move(c);

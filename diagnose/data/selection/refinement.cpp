@@ -11,6 +11,7 @@
 #include "evidence.h"
 #include "free_shape_candidates.h"
 #include "library_candidates.h"
+#include "scoring.h"
 #include "series_statistics.h"
 #include "series_arithmetic.h"
 #include "twin_replay.h"
@@ -19,16 +20,15 @@ namespace flange::diagnose {
 namespace {
 
 // The best of `candidates` of class `name` by held-out mean square (with what fitting its held-out
-// values takes from white noise), when it is below `below_ms`.
+// values takes from white noise of level `noise_v`), when it is below `below_ms`.
 std::optional<Candidate> best_of_class(std::vector<Candidate> candidates, const std::string& name,
-                                       double variance, double below_ms) {
+                                       double noise_v, double below_ms) {
   std::optional<Candidate> best;
   double best_ms = below_ms;
   for (Candidate& c : candidates) {
     if (c.free_shape->family.effect != name) continue;  // it names another class
     const double after = rms_of(c.heldout_error);
-    const double ms = after * after + variance * c.free_shape->heldout_values /
-                                          static_cast<double>(c.heldout_error.size());
+    const double ms = after * after + chance_gain(c, noise_v);
     if (ms < best_ms) {
       best_ms = ms;
       best = std::move(c);
@@ -62,7 +62,7 @@ void give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_
                              ho_gap,             others,         parts.heldout_age_unknown,
                              selection.picks.size() == 1};
   std::optional<Candidate> best =
-      best_of_class(free_shape_candidates(families, round), name, variance,
+      best_of_class(free_shape_candidates(families, round), name, selection.noise_v,
                     now * now - criteria::kRefinementAcceptance * variance);
   if (!best) return;
   const FreeShapeFit& shape = *best->free_shape;
