@@ -20,6 +20,7 @@
 #include "criteria.h"
 #include "flange_in_process.h"
 #include "test_files.h"
+#include "third_pair.h"
 
 namespace flange::diagnose {
 namespace {
@@ -118,10 +119,7 @@ TEST(FixedKnees, ACurveOverTheWholeRangeOrOfTheClearanceAloneNamesOneClass) {
 
 TEST(FixedKnees, AFixedKneeOnTheThirdRealityIsNamedAsEitherClass) {
   const auto dir = testing::fresh_test_dir("fixed_knee_pair");
-  const testing::FlangeOutcome o = testing::run_flange_captured(
-      {"diagnose", "--selftest", "--reality", "third", "--pairs", "40", "--case", "24", "--seed",
-       "501", "--jobs", "2", "--out", dir.string()});
-  ASSERT_TRUE(o.status == 0 || o.status == 1) << o.err;  // 1: an aim missed, not an error
+  testing::write_third_pair(501, 24, dir);
   std::ifstream in(dir / "selftest.json");
   const nlohmann::json pair = nlohmann::json::parse(in)["pairs"].at(0);
   ASSERT_EQ(pair["truth"].at(0)["class"], "range_compression");
@@ -132,12 +130,8 @@ TEST(FixedKnees, AFixedKneeOnTheThirdRealityIsNamedAsEitherClass) {
         << pair.dump();
   }
   // The pair's sessions diagnosed as a user would: both classes named, and what would tell them.
-  const testing::FlangeOutcome d = testing::run_flange_captured(
-      {"diagnose", "--real", (dir / "pair_24_fit.csv").string(), "--holdout",
-       (dir / "pair_24_heldout.csv").string(), "--out", (dir / "diagnosis").string()});
-  ASSERT_EQ(d.status, 0) << d.err;
-  std::ifstream diagnosis_in(dir / "diagnosis" / "diagnosis.json");
-  const nlohmann::json diagnosis = nlohmann::json::parse(diagnosis_in);
+  const nlohmann::json diagnosis = testing::diagnose_third_pair(dir, 24);
+  ASSERT_FALSE(diagnosis.is_null());
   ASSERT_FALSE(diagnosis["effects"].empty()) << diagnosis.dump();
   const nlohmann::json& first = diagnosis["effects"].at(0);
   EXPECT_EQ(first["name"], "range_compression");

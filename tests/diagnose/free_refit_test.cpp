@@ -6,12 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
-#include "flange_in_process.h"
 #include "test_files.h"
+#include "third_pair.h"
 
 namespace flange::diagnose {
 namespace {
@@ -29,23 +29,16 @@ bool names_effect(const nlohmann::json& diagnosis, const std::string& name) {
 // Refitted once the lag is in, they explain the pair, each class named.
 TEST(FreeRefit, TwoFreeCurvesRefittedAroundEachOtherExplainAPairOfTwoShapes) {
   const auto dir = testing::fresh_test_dir("free_refit_pair");
-  const testing::FlangeOutcome o = testing::run_flange_captured(
-      {"diagnose", "--selftest", "--reality", "third", "--pairs", "40", "--case", "16", "--seed",
-       "480", "--jobs", "2", "--out", dir.string()});
-  ASSERT_TRUE(o.status == 0 || o.status == 1) << o.err;  // 1: an aim missed, not an error
+  const testing::FlangeOutcome o = testing::write_third_pair(480, 16, dir);
   // The diagnosis of that pair again, as the self-test prints it ("the same diagnosis: ...").
-  ASSERT_NE(o.out.find("--real-start 2026-03-01T01:28:54.606Z --holdout-start "
-                       "2026-03-02T04:52:59.609Z --seed 496 --bootstrap 100"),
-            std::string::npos)
-      << o.out;
-  const testing::FlangeOutcome d = testing::run_flange_captured(
-      {"diagnose", "--real", (dir / "pair_16_fit.csv").string(), "--holdout",
-       (dir / "pair_16_heldout.csv").string(), "--real-start", "2026-03-01T01:28:54.606Z",
-       "--holdout-start", "2026-03-02T04:52:59.609Z", "--seed", "496", "--bootstrap", "100",
-       "--out", (dir / "diagnosis").string()});
-  ASSERT_EQ(d.status, 0) << d.err;
-  std::ifstream in(dir / "diagnosis" / "diagnosis.json");
-  const nlohmann::json diagnosis = nlohmann::json::parse(in);
+  const std::vector<std::string> as_printed = {
+      "--real-start", "2026-03-01T01:28:54.606Z", "--holdout-start", "2026-03-02T04:52:59.609Z",
+      "--seed",       "496",                      "--bootstrap",     "100"};
+  std::string printed;
+  for (const std::string& arg : as_printed) printed += (printed.empty() ? "" : " ") + arg;
+  ASSERT_NE(o.out.find(printed), std::string::npos) << o.out;
+  const nlohmann::json diagnosis = testing::diagnose_third_pair(dir, 16, as_printed);
+  ASSERT_FALSE(diagnosis.is_null());
   EXPECT_EQ(diagnosis["verdict"]["status"], "explained") << diagnosis.dump();
   EXPECT_TRUE(names_effect(diagnosis, "thermal_lag")) << diagnosis["effects"].dump();
   EXPECT_TRUE(names_effect(diagnosis, "temp_gain_drift")) << diagnosis["effects"].dump();

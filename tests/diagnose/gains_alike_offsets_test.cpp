@@ -19,6 +19,7 @@
 #include "curve_alike.h"
 #include "flange_in_process.h"
 #include "test_files.h"
+#include "third_pair.h"
 
 namespace flange::diagnose {
 namespace {
@@ -95,16 +96,9 @@ TEST(GainsAlikeOffsets, TheNextMeasurementNamesThePivot) {
 // voltage is below the noise, so the diagnosis names it alike an offset, with what would tell.
 TEST(GainsAlikeOffsets, ASmallGainOnTheThirdRealityIsNamedAlikeAnOffset) {
   const auto dir = testing::fresh_test_dir("gain_alike_offset_pair");
-  const testing::FlangeOutcome o = testing::run_flange_captured(
-      {"diagnose", "--selftest", "--reality", "third", "--pairs", "40", "--case", "12", "--seed",
-       "485", "--jobs", "2", "--out", dir.string()});
-  ASSERT_TRUE(o.status == 0 || o.status == 1) << o.err;  // 1: an aim missed, not an error
-  const testing::FlangeOutcome d = testing::run_flange_captured(
-      {"diagnose", "--real", (dir / "pair_12_fit.csv").string(), "--holdout",
-       (dir / "pair_12_heldout.csv").string(), "--out", (dir / "diagnosis").string()});
-  ASSERT_EQ(d.status, 0) << d.err;
-  std::ifstream in(dir / "diagnosis" / "diagnosis.json");
-  const nlohmann::json diagnosis = nlohmann::json::parse(in);
+  testing::write_third_pair(485, 12, dir);
+  const nlohmann::json diagnosis = testing::diagnose_third_pair(dir, 12);
+  ASSERT_FALSE(diagnosis.is_null());
   const auto& effects = diagnosis["effects"];
   const auto gain = std::find_if(effects.begin(), effects.end(),
                                  [](const nlohmann::json& e) { return e["name"] == "temp_gain_drift"; });
