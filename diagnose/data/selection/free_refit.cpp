@@ -34,9 +34,9 @@ bool no_level_carried_without(const Selection& selection, std::size_t j) {
 
 // Pick `j`'s family fitted again on what the others leave; its curve replaced where the held-out
 // mean square falls.
-bool refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
+void refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
   Pick& pick = selection.picks[j];
-  if (pick.modelled_index >= 0 || !pick.chosen().free_shape) return false;
+  if (pick.modelled_index >= 0 || !pick.chosen().free_shape) return;
   const FreeShapeFit old_shape = *pick.chosen().free_shape;
   const double now = rms_of(selection.current_error);
   const double now_ms = now * now + chance_gain(pick.chosen(), selection.noise_v);
@@ -62,7 +62,7 @@ bool refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
   }
   if (!best) {
     add_free_shape(selection, old_shape, 1.0);
-    return false;
+    return;
   }
   add_free_shape(selection, *best->free_shape, 1.0);
   backfit(selection.modelled, selection.first_selected, parts.cal_replay,
@@ -72,17 +72,12 @@ bool refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
   pick.finding.params = best->free_shape->params;
   refresh_library_params(selection);
   pick.step.candidates[pick.step.chosen].free_shape = best->free_shape;
-  return true;
 }
 
 }  // namespace
 
-bool refit_earlier_free_picks(const Parts& parts, Selection& selection) {
-  bool changed = false;
-  for (std::size_t j = 0; j + 1 < selection.picks.size(); ++j) {
-    changed = refit_free_pick(parts, selection, j) || changed;
-  }
-  return changed;
+void refit_earlier_free_picks(const Parts& parts, Selection& selection) {
+  for (std::size_t j = 0; j + 1 < selection.picks.size(); ++j) refit_free_pick(parts, selection, j);
 }
 
 }  // namespace flange::diagnose

@@ -14,7 +14,7 @@ namespace flange::diagnose {
 // Each free-shape pick but the last, in selection order, fitted again by its own family on what
 // the other picks leave, where that lowers the held-out mean square (with what fitting its
 // held-out values would take from white noise); the library picks are refitted around each
-// accepted curve. Whether any curve changed.
-bool refit_earlier_free_picks(const Parts& parts, Selection& selection);
+// accepted curve.
+void refit_earlier_free_picks(const Parts& parts, Selection& selection);
 
 }  // namespace flange::diagnose
