@@ -22,6 +22,7 @@
 #include "effect_catalogue.h"
 #include "effect_classes.h"
 #include "forward.h"
+#include "inclusion.h"
 #include "library_candidates.h"
 #include "parts.h"
 #include "series_statistics.h"
@@ -665,6 +666,27 @@ TEST(SelectionRules, AScreenedRoundChoosesAsTheFullyRefittedRoundDoes) {
   std::vector<double> calibration_ms;
   for (const Candidate& c : screened) calibration_ms.push_back(c.fit.rms_v * c.fit.rms_v);
   EXPECT_LT(candidates_to_refit(screened_ms, calibration_ms, kSigma).size(), names.size());
+}
+
+// Inclusion counts the class, not the member: a round whose chosen candidate is its class's
+// coarse curve (taken over a finer one that gains alike, the tie) names the class again on every
+// resample where the finer curve of the same class wins; a resample won by another class does
+// not.
+TEST(SelectionRules, InclusionCountsAWinOfAnotherMemberOfTheChosenClass) {
+  // Constant series: every resample's mean square is the series' own, so each candidate's
+  // standing is the same on every resample.
+  const std::size_t n = 1000;
+  const BlockResamples resamples(n, kRounds, 3);
+  Step step;
+  step.noise_v = kSigma;
+  step.candidates = {free_candidate("temp_offset_drift", 7, leaving(n, 0.25)),
+                     free_candidate("temp_offset_drift", 19, leaving(n, 0.01)),
+                     free_candidate("thermal_lag", 6, leaving(n, 0.64))};
+  step.chosen = 0;
+  EXPECT_DOUBLE_EQ(share_of_wins(step, leaving(n, 4.0), resamples), 1.0);
+  // The same round with the finer curve of another class: the chosen one wins no resample.
+  step.candidates[1].fit.settings.name = "nonlinearity";
+  EXPECT_DOUBLE_EQ(share_of_wins(step, leaving(n, 4.0), resamples), 0.0);
 }
 
 }  // namespace

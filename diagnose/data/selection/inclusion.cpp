@@ -48,7 +48,10 @@ double share_of_wins(const Step& step, const std::vector<double>& before,
         arg = c;
       }
     }
-    if (arg == step.chosen && best > 0.0) ++wins;
+    // The claim is the class: a win of another member of the chosen one's class (its library
+    // formula, another free family) would name it again.
+    const std::string& won = step.candidates[arg].fit.settings.name;
+    if (best > 0.0 && won == step.candidates[step.chosen].fit.settings.name) ++wins;
   }
   return static_cast<double>(wins) / static_cast<double>(resamples.size());
 }

@@ -11,7 +11,8 @@
 
 namespace flange::diagnose {
 
-// The share of `resamples` on which `step`'s choice still wins and gains over `before`.
+// The share of `resamples` on which `step`'s choice, or another candidate of its class, still
+// wins and gains over `before`.
 double share_of_wins(const Step& step, const std::vector<double>& before,
                      const BlockResamples& resamples);
 

@@ -40,7 +40,7 @@ struct EffectFinding {
   double heldout_rms_before = 0.0;       // voltage gap RMS on held-out data, V
   double heldout_rms_after = 0.0;        // ... once this and the effects before it are added
   double shrink_pct = 0.0;               // 100 * (before - after) / before
-  double inclusion = 0.0;                // share of bootstrap rounds that selected it, 0..1
+  double inclusion = 0.0;                // share of bootstrap rounds that selected its class, 0..1
   bool noise_type = false;               // identified from its signature, not by a bias it removes
   std::string evidence;                  // one sentence: why it was selected
   // A bias-type pick: the held-out gap RMS with every selected effect but this one, V (what the
