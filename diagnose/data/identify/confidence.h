@@ -18,7 +18,7 @@ enum class ClaimPlace { alone, first_of_several, later };
 // kLaterClaimAccuracy; in a partly explained verdict kPartlyExplainedFirstClaimAccuracy for the
 // first or only class, kPartlyExplainedLaterClaimAccuracy for a later one) x inclusion / (1 + the
 // classes the data cannot tell from it): how often a class named there is present, lowered where
-// resamples of the held-out data do not confirm the pick, and shared among the classes the data
+// resamples of the held-out data do not confirm the class, and shared among the classes the data
 // cannot tell apart (each as likely), then at most criteria::kMostConfidenceOfIndistinguishable
 // when there are any.
 double confidence_of(const EffectFinding& finding, ClaimPlace place, Status status);
