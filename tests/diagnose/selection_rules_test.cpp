@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The selection's rules (criteria.h) on small synthetic inputs with known answers: significance
 // and its bootstrap bound, the tie, the preference for the library's formula, the first pick's
-// chance gain, confounding, the backward step, the pass comparison and the most picks.
+// chance gain, confounding, the backward step, the pass comparison, the most picks and the
+// inclusion, which counts the class.
 #include <gtest/gtest.h>
 
 #include <cmath>
