@@ -16,13 +16,6 @@
 namespace flange::diagnose {
 namespace {
 
-// The held-out mean square a candidate leaves, with what fitting its held-out values takes from
-// white noise of level `noise_v` (scoring.h's chance gain).
-double charged_mean_square(const Candidate& c, double noise_v) {
-  const double after = rms_of(c.heldout_error);
-  return after * after + chance_gain(c, noise_v);
-}
-
 // Whether none of the picks other than pick `j` carries a level between the sessions (forward.h's
 // no_level_carried, without the pick refitted).
 bool no_level_carried_without(const Selection& selection, std::size_t j) {
@@ -50,16 +43,8 @@ void refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
                              cal_gap,                   ho_gap,
                              selection.modelled,        parts.heldout_age_unknown,
                              no_level_carried_without(selection, j)};
-  std::optional<Candidate> best;
-  double best_ms = now_ms;
-  for (Candidate& c : free_shape_candidates({old_shape.family}, round)) {
-    if (c.fit.settings.name != pick.finding.name) continue;  // the refit names another class
-    const double ms = charged_mean_square(c, selection.noise_v);
-    if (ms < best_ms) {
-      best_ms = ms;
-      best = std::move(c);
-    }
-  }
+  std::optional<Candidate> best = best_of_class(free_shape_candidates({old_shape.family}, round),
+                                                pick.finding.name, selection.noise_v, now_ms);
   if (!best) {
     add_free_shape(selection, old_shape, 1.0);
     return;

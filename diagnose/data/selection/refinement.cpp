@@ -17,27 +17,6 @@
 #include "twin_replay.h"
 
 namespace flange::diagnose {
-namespace {
-
-// The best of `candidates` of class `name` by held-out mean square (with what fitting its held-out
-// values takes from white noise of level `noise_v`), when it is below `below_ms`.
-std::optional<Candidate> best_of_class(std::vector<Candidate> candidates, const std::string& name,
-                                       double noise_v, double below_ms) {
-  std::optional<Candidate> best;
-  double best_ms = below_ms;
-  for (Candidate& c : candidates) {
-    if (c.free_shape->family.effect != name) continue;  // it names another class
-    const double after = rms_of(c.heldout_error);
-    const double ms = after * after + chance_gain(c, noise_v);
-    if (ms < best_ms) {
-      best_ms = ms;
-      best = std::move(c);
-    }
-  }
-  return best;
-}
-
-}  // namespace
 
 void give_pick_a_free_shape(const Parts& parts, Selection& selection, std::size_t j) {
   const int index = selection.picks[j].modelled_index;

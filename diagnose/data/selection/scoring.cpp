@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "criteria.h"
 #include "parallel_work.h"
@@ -17,6 +18,26 @@ double chance_gain(const Candidate& c, double noise_v) {
   if (!c.free_shape || c.free_shape->heldout_values == 0) return 0.0;
   return noise_v * noise_v * c.free_shape->heldout_values /
          static_cast<double>(std::max<std::size_t>(c.heldout_error.size(), 1));
+}
+
+double charged_mean_square(const Candidate& c, double noise_v) {
+  const double after = rms_of(c.heldout_error);
+  return after * after + chance_gain(c, noise_v);
+}
+
+std::optional<Candidate> best_of_class(std::vector<Candidate> candidates, const std::string& name,
+                                       double noise_v, double below_ms) {
+  std::optional<Candidate> best;
+  double best_ms = below_ms;
+  for (Candidate& c : candidates) {
+    if (c.fit.settings.name != name) continue;
+    const double ms = charged_mean_square(c, noise_v);
+    if (ms < best_ms) {
+      best_ms = ms;
+      best = std::move(c);
+    }
+  }
+  return best;
 }
 
 double gain_of(const Candidate& c, const RoundScore& round) {

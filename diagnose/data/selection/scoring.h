@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "block_resamples.h"
@@ -31,6 +33,14 @@ struct Choice {
 // What fitting a candidate's held-out values (the mains' windows, a session's constant) would
 // take from white noise alone: heldout_values / n of its variance, charged against every gain.
 double chance_gain(const Candidate& c, double noise_v);
+
+// The held-out mean square candidate `c` leaves, charged with its chance_gain.
+double charged_mean_square(const Candidate& c, double noise_v);
+
+// Of `candidates`, the one of class `name` with the least charged_mean_square, when that is below
+// `below_ms`; none otherwise (a free family's refit may name another class).
+std::optional<Candidate> best_of_class(std::vector<Candidate> candidates, const std::string& name,
+                                       double noise_v, double below_ms);
 
 // The held-out mean-square gain of candidate `c` over what the picks leave now.
 double gain_of(const Candidate& c, const RoundScore& round);
