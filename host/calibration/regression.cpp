@@ -345,7 +345,7 @@ struct OrderChoice {
 };
 
 // The thesis's rule first (lowest order with r >= min_r), then one more order at a time while
-// the held-out error improves by at least min_heldout_gain: over-fitting stops it.
+// the held-out MAE falls by more than min_heldout_gain_mm: over-fitting stops it.
 OrderChoice choose_order(const std::vector<OrderCandidate>& candidates,
                          const RegressionOptions& options) {
   OrderChoice choice;
@@ -365,8 +365,7 @@ OrderChoice choose_order(const std::vector<OrderCandidate>& candidates,
   } else {
     auto worth_it = [&](const OrderCandidate& now, const OrderCandidate& next) {
       const double gain = now.stats.heldout_mae_mm - next.stats.heldout_mae_mm;
-      return gain > options.min_heldout_gain * now.stats.heldout_mae_mm &&
-             gain > options.min_heldout_gain_mm;
+      return gain > options.min_heldout_gain_mm;
     };
     while (chosen + 1 < candidates.size() && worth_it(candidates[chosen], candidates[chosen + 1])) {
       ++chosen;
@@ -387,13 +386,14 @@ std::string selection_reason(const std::vector<OrderCandidate>& candidates,
   if (choice.chosen == choice.thesis_choice) {
     return fmt::format(
         "order {} is the lowest with r >= {} (r = {:.4f}); order {} would not cut the held-out "
-        "MAE by {:.0f} %",
-        best.order, options.min_r, best.stats.r, best.order + 1, options.min_heldout_gain * 100);
+        "MAE by more than {:g} um",
+        best.order, options.min_r, best.stats.r, best.order + 1,
+        options.min_heldout_gain_mm * 1000);
   }
   return fmt::format(
-      "order {} reaches r >= {}; held-out MAE kept falling by more than {:.0f} % per order up "
-      "to order {}",
-      candidates[choice.thesis_choice].order, options.min_r, options.min_heldout_gain * 100,
+      "order {} reaches r >= {}; held-out MAE kept falling by more than {:g} um per order up to "
+      "order {}",
+      candidates[choice.thesis_choice].order, options.min_r, options.min_heldout_gain_mm * 1000,
       best.order);
 }
 
