@@ -75,14 +75,13 @@ TEST(Regression, NoiseDoesNotPushTheOrderUp) {
 TEST(Regression, AMisfitUnderTheNoiseStillRaisesTheOrder) {
   std::mt19937_64 rng(12);
   std::normal_distribution<double> noise(0.0, 0.06);
+  const auto volts_at = [](double d) { return 13.0 * (1.0 - std::exp(-d / 9.0)); };
   CalibrationData data;
-  const auto clearance_of = [](double v) { return -9.0 * std::log(1.0 - v / 13.0); };
   for (std::size_t k = 0; k < 20000; ++k) {
     const double d = 1.0 + 10.0 * static_cast<double>(k % 89) / 88.0;
-    const double v = 13.0 * (1.0 - std::exp(-d / 9.0));
-    data.voltage_v.push_back(v);
+    data.voltage_v.push_back(volts_at(d));
     data.temp_c.push_back(5.0 + 57.0 * static_cast<double>((k * 7) % 101) / 100.0);
-    data.clearance_mm.push_back(clearance_of(v) + noise(rng));
+    data.clearance_mm.push_back(d + noise(rng));
   }
   const RegressionFit fit = fit_regression(data, RegressionOptions{});
   ASSERT_GE(fit.candidates.size(), 4u);
@@ -91,10 +90,8 @@ TEST(Regression, AMisfitUnderTheNoiseStillRaisesTheOrder) {
   EXPECT_LT(mae3 - mae4, 0.05 * mae3) << "the misfit should hide under the noise";
   EXPECT_EQ(fit.model.order(), 4) << fit.selection;
   // The chosen curve reads a change of clearance within 1 % of the truth over the range.
+  const auto read = [&](double at) { return fit.model.clearance_mm(volts_at(at), 30.0); };
   for (double d = 2.5; d <= 8.5; d += 1.0) {
-    const auto read = [&](double at) {
-      return fit.model.clearance_mm(13.0 * (1.0 - std::exp(-at / 9.0)), 30.0);
-    };
     EXPECT_NEAR((read(d + 0.25) - read(d - 0.25)) / 0.5, 1.0, 0.01) << "at " << d << " mm";
   }
 }
