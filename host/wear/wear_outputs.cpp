@@ -89,6 +89,20 @@ ordered_json wheel_json(const WheelWear& wheel) {
           {"runs", runs_json(wheel)}};
 }
 
+// The fleet's bend and calendar trend (wear_acceleration.h) the dates were made with; null when
+// the fleet could not estimate them.
+ordered_json acceleration_json(const FleetAcceleration& bend) {
+  if (bend.dof == 0) return nullptr;
+  return {{"per_mm", bend.estimate},
+          {"per_mm_se", bend.se},
+          {"per_mm_in_dates", acceleration_in_dates(bend)},
+          {"trend_per_day", bend.trend},
+          {"trend_per_day_se", bend.trend_se},
+          {"covariance", bend.covariance},
+          {"dof", bend.dof},
+          {"differs_from_zero", bend.significant}};
+}
+
 }  // namespace
 
 std::string interval_text(const std::optional<double>& value, const std::optional<double>& low,
@@ -108,6 +122,7 @@ void write_wear_json(const std::filesystem::path& path, const FleetWear& fleet,
                              {"critical_clearance_mm", fleet.critical_clearance_mm},
                              {"sensor_gap_mm", fleet.thresholds.sensor_gap_mm},
                              {"max_step_mm", fleet.thresholds.max_step_mm},
+                             {"fleet_acceleration", acceleration_json(fleet.acceleration)},
                              {"wheels", wheels}};
   std::ofstream file(path, std::ios::binary);
   file << json.dump(1) << "\n";

@@ -5,6 +5,7 @@
 // can show found, every drifting sensor flagged and no healthy one. And the bad arguments.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -52,6 +53,17 @@ TEST(FleetWearCommand, ASmallFleetMatchesItsTruth) {
   EXPECT_GT(check.at("drifting").get<int>(), 0);
   EXPECT_EQ(check.at("drifting_flagged"), check.at("drifting")) << estimated.out;
   EXPECT_EQ(check.at("healthy_flagged").get<int>(), 0) << estimated.out;
+  // The fleet's bend and trend the dates were made with, as printed, and the b they used.
+  const nlohmann::json bend =
+      nlohmann::json::parse(std::ifstream(dir / "wear" / "wear.json")).at("fleet_acceleration");
+  ASSERT_TRUE(bend.is_object()) << estimated.out;
+  const double b = bend.at("per_mm").get<double>(), se = bend.at("per_mm_se").get<double>();
+  EXPECT_NE(estimated.out.find(fmt::format("b = {:.4f} per mm (se {:.4f})", b, se)),
+            std::string::npos)
+      << estimated.out;
+  EXPECT_NEAR(bend.at("per_mm_in_dates").get<double>(), b * b * b / (b * b + se * se), 1e-12);
+  EXPECT_GT(bend.at("trend_per_day_se").get<double>(), 0.0);
+  EXPECT_GT(bend.at("dof").get<int>(), 0);
 }
 
 TEST(FleetWearCommand, BadArgumentsNameTheOptionAndItsRange) {
