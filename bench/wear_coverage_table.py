@@ -10,7 +10,10 @@ share its km per day (the dates) and its route, season and sensors' installation
 their checks are not independent draws. The locomotives of all fleets are resampled whole, with
 replacement, kBootstrapDraws times (from a fixed seed), and the 5th and 95th percentiles of the
 share that holds are printed in brackets: a share whose range covers the level is within what the
-fleets' own scatter gives.
+locomotives' own scatter gives. The wheels of a fleet also share what is pooled over it (the
+fleet's bend and calendar trend, its calibration, its weather), so a second table gives the same
+ranges with the fleets resampled whole: the wider of the two is the honest one when the misses
+come a fleet at a time.
 Used by bench/wear_coverage.sh and bench/wear_coverage_alt.sh."""
 import datetime
 import json
@@ -37,6 +40,7 @@ for f, check in enumerate(checks):
     for w in check["wheels"]:
         locomotives.setdefault((f, w["locomotive"]), []).append(w)
 clusters = list(locomotives.values())
+fleets = [check["wheels"] for check in checks]
 cells = [(kind, name, field) for kind in kinds for name, field in quantities]
 
 
@@ -47,19 +51,25 @@ def cell_counts(wheel_list, kind, field):
     return (len(known), sum(1 for c in known if c["95"]), sum(1 for c in known if c["80"]))
 
 
-# Per cell, per locomotive: its counts; then the share over each bootstrap draw of locomotives.
-per_cluster = {cell: [cell_counts(c, cell[0], cell[2]) for c in clusters] for cell in cells}
-draws = random.Random(20470).choices
-shares = {cell: ([], []) for cell in cells}
-for _ in range(kBootstrapDraws):
-    chosen = draws(range(len(clusters)), k=len(clusters))
-    for cell in cells:
-        counts = per_cluster[cell]
-        checked = sum(counts[i][0] for i in chosen)
-        if checked == 0:
-            continue
-        for level in (0, 1):
-            shares[cell][level].append(sum(counts[i][1 + level] for i in chosen) / checked)
+def bootstrap_shares(groups):
+    """Per cell, the share that holds at 95 % and at 80 % over each draw of `groups` (lists of
+    wheel checks) resampled whole with replacement."""
+    per_group = {cell: [cell_counts(g, cell[0], cell[2]) for g in groups] for cell in cells}
+    draws = random.Random(20470).choices
+    shares = {cell: ([], []) for cell in cells}
+    for _ in range(kBootstrapDraws):
+        chosen = draws(range(len(groups)), k=len(groups))
+        for cell in cells:
+            counts = per_group[cell]
+            checked = sum(counts[i][0] for i in chosen)
+            if checked == 0:
+                continue
+            for level in (0, 1):
+                shares[cell][level].append(sum(counts[i][1 + level] for i in chosen) / checked)
+    return shares
+
+
+shares = bootstrap_shares(clusters)
 
 
 def share_range(values):
@@ -84,6 +94,16 @@ for cell in cells:
     print(f"| {kind} | {name} | {checked} | {text[0]} | {text[1]} |")
 print(f"\n[low, high]: the 5th and 95th percentiles of the share over {kBootstrapDraws} draws of "
       f"the {len(clusters)} locomotives, resampled whole")
+if len(fleets) >= 2:
+    fleet_shares = bootstrap_shares(fleets)
+    print(f"\nThe same ranges over {kBootstrapDraws} draws of the {len(fleets)} fleets, resampled "
+          f"whole:\n")
+    print("| wheels | interval of | at 95 % | at 80 % |")
+    print("|---|---|---|---|")
+    for cell in cells:
+        if cell_counts(wheels, cell[0], cell[2])[0]:
+            print(f"| {cell[0]} | {cell[1]} |{share_range(fleet_shares[cell][0])} |"
+                  f"{share_range(fleet_shares[cell][1])} |")
 total = lambda key: sum(c[key] for c in checks)
 errors = [abs(w["relative_error"]) for w in wheels if w["relative_error"] is not None]
 print(f"\nrates within 10 % or inside the interval: {total('rates_ok')} of {len(wheels)} "
