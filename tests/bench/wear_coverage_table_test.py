@@ -3,7 +3,7 @@
 """bench/wear_coverage_table.py brackets each share over whole locomotives and over whole fleets:
 two made-up fleets of four locomotives, every healthy wheel's warning date held in the first and
 missed in the second. Over the eight locomotives the share's range stays well inside 0-100 %;
-over the two fleets a draw is one fleet twice as often as not, so the range is all of 0-100 %."""
+over the two fleets half the draws are one fleet twice, so the range is all of 0-100 %."""
 import json
 import subprocess
 import sys
