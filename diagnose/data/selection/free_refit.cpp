@@ -7,6 +7,7 @@
 
 #include "coil_parts.h"
 #include "effect_classes.h"
+#include "family_makers.h"
 #include "free_shape_candidates.h"
 #include "library_candidates.h"
 #include "scoring.h"
@@ -27,7 +28,9 @@ bool no_level_carried_without(const Selection& selection, std::size_t j) {
 
 // Pick `j`'s family fitted again on what the others leave; its curve replaced where the held-out
 // mean square falls.
-void refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
+// `as`: the family to fit it by in place of its own (nullptr: its own).
+void refit_free_pick(const Parts& parts, Selection& selection, std::size_t j,
+                     const FreeShapeFamily* as = nullptr) {
   Pick& pick = selection.picks[j];
   if (pick.modelled_index >= 0 || !pick.chosen().free_shape) return;
   const FreeShapeFit old_shape = *pick.chosen().free_shape;
@@ -43,8 +46,9 @@ void refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
                              cal_gap,                   ho_gap,
                              selection.modelled,        parts.heldout_age_unknown,
                              no_level_carried_without(selection, j)};
-  std::optional<Candidate> best = best_of_class(free_shape_candidates({old_shape.family}, round),
-                                                pick.finding.name, selection.noise_v, now_ms);
+  std::optional<Candidate> best =
+      best_of_class(free_shape_candidates({as ? *as : old_shape.family}, round), pick.finding.name,
+                    selection.noise_v, now_ms);
   if (!best) {
     add_free_shape(selection, old_shape, 1.0);
     return;
@@ -63,6 +67,22 @@ void refit_free_pick(const Parts& parts, Selection& selection, std::size_t j) {
 
 void refit_earlier_free_picks(const Parts& parts, Selection& selection) {
   for (std::size_t j = 0; j + 1 < selection.picks.size(); ++j) refit_free_pick(parts, selection, j);
+}
+
+void refine_temperature_curves(const Parts& parts, Selection& selection) {
+  for (std::size_t j = 0; j < selection.picks.size(); ++j) {
+    const Pick& pick = selection.picks[j];
+    if (pick.modelled_index >= 0 || !pick.chosen().free_shape) continue;
+    FreeShapeFamily fine = pick.chosen().free_shape->family;
+    if (fine.make == free_shapes::make_temperature_offset_curve) {
+      fine.make = free_shapes::make_fine_temperature_offset_curve;
+    } else if (fine.make == free_shapes::make_temperature_gain_curve) {
+      fine.make = free_shapes::make_fine_temperature_gain_curve;
+    } else {
+      continue;
+    }
+    refit_free_pick(parts, selection, j, &fine);
+  }
 }
 
 }  // namespace flange::diagnose

@@ -5,6 +5,7 @@
 
 #include "criteria.h"
 #include "forward.h"
+#include "free_refit.h"
 #include "parallel_work.h"
 #include "refinement.h"
 #include "series_statistics.h"
@@ -54,16 +55,22 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
     return rms_of(selection.current_error) <= criteria::kExplainedRatio * selection.noise_v &&
            !several_classes;
   };
-  if (explained_by_one_class(library))
-    return with_shapes_where_they_gain(parts, std::move(library));
+  if (explained_by_one_class(library)) {
+    Selection refined = with_shapes_where_they_gain(parts, std::move(library));
+    refine_temperature_curves(parts, refined);
+    return refined;
+  }
   // The refinement and the free pass do not depend on each other: they run at once, and the
   // refined selection is taken alone when it explains with one class (the free pass then unused).
   Selection free = start;
   free.free_shapes = true;
   run_both([&] { library = with_shapes_where_they_gain(parts, library); },
            [&] { select_bias_effects(parts, rounds, options, cal_grid, free); });
-  if (explained_by_one_class(library)) return library;
-  return free_pass_wins(library, free, several_classes) ? free : library;
+  Selection& chosen =
+      explained_by_one_class(library) || !free_pass_wins(library, free, several_classes) ? library
+                                                                                         : free;
+  refine_temperature_curves(parts, chosen);
+  return std::move(chosen);
 }
 
 }  // namespace flange::diagnose

@@ -28,7 +28,7 @@ constexpr int kAgeKnots = 9;
 
 }  // namespace
 
-CurveFamily::CurveFamily(CurveOf of, const RecordedPart& calibration) : of_(of) {
+CurveFamily::CurveFamily(CurveOf of, const RecordedPart& calibration, int knots) : of_(of) {
   switch (of_) {
     case CurveOf::kVoltage:
       hats_ = hats_over(calibration.replay.nominal_voltage(), kKnots);
@@ -44,9 +44,9 @@ CurveFamily::CurveFamily(CurveOf of, const RecordedPart& calibration) : of_(of) 
       break;
     case CurveOf::kTemperature:
     case CurveOf::kGainOfTemperature:
-      hats_ = hats_over(calibration.series.temp_c, kKnots);
-      hats_.reach_both(kTemperatureReach);
-      for (std::size_t k = 0; k < kKnots; ++k) used_.push_back(k);
+      hats_ = hats_over(calibration.series.temp_c, knots);
+      hats_.reach_both(kTemperatureReach * (knots - 1) / (kKnots - 1));  // the same degC
+      for (std::size_t k = 0; k < static_cast<std::size_t>(knots); ++k) used_.push_back(k);
       break;
   }
 }
@@ -141,6 +141,12 @@ std::unique_ptr<Family> make_temperature_offset_curve(const RecordedPart& calibr
 }
 std::unique_ptr<Family> make_temperature_gain_curve(const RecordedPart& calibration) {
   return std::make_unique<CurveFamily>(CurveOf::kGainOfTemperature, calibration);
+}
+std::unique_ptr<Family> make_fine_temperature_offset_curve(const RecordedPart& calibration) {
+  return std::make_unique<CurveFamily>(CurveOf::kTemperature, calibration, kFineKnots);
+}
+std::unique_ptr<Family> make_fine_temperature_gain_curve(const RecordedPart& calibration) {
+  return std::make_unique<CurveFamily>(CurveOf::kGainOfTemperature, calibration, kFineKnots);
 }
 std::unique_ptr<Family> make_voltage_curve(const RecordedPart& calibration) {
   return std::make_unique<CurveFamily>(CurveOf::kVoltage, calibration);

@@ -25,7 +25,8 @@ enum class CurveOf {
 
 class CurveFamily : public LinearFamily {
  public:
-  CurveFamily(CurveOf of, const RecordedPart& calibration);
+  // `knots`: a curve of temperature's (kKnots, or kFineKnots refitted finer).
+  CurveFamily(CurveOf of, const RecordedPart& calibration, int knots = kKnots);
 
   // Curves of clearance and of temperature go on past an end as far as the calibration part says
   // (choose_reach): a curve of clearance held or going on kClearanceReachMm, a curve of

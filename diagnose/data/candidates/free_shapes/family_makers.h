@@ -13,6 +13,9 @@ namespace flange::diagnose::free_shapes {
 // Curves of one variable (curve_family.h).
 std::unique_ptr<Family> make_temperature_offset_curve(const RecordedPart& calibration);
 std::unique_ptr<Family> make_temperature_gain_curve(const RecordedPart& calibration);
+// The same curves on kFineKnots, for a pick refitted finer (selection/free_refit.h).
+std::unique_ptr<Family> make_fine_temperature_offset_curve(const RecordedPart& calibration);
+std::unique_ptr<Family> make_fine_temperature_gain_curve(const RecordedPart& calibration);
 std::unique_ptr<Family> make_voltage_curve(const RecordedPart& calibration);
 std::unique_ptr<Family> make_clearance_curve(const RecordedPart& calibration);
 std::unique_ptr<Family> make_settled_age_curve(const RecordedPart& calibration);

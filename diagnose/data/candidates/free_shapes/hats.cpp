@@ -87,7 +87,9 @@ void choose_reach(Hats& hats, const std::vector<double>& x, const std::vector<do
 
 void choose_temperature_reach(Hats& hats, const RecordedPart& calibration,
                               const std::vector<double>& gap_v, const ColumnsWith& columns_with) {
-  const double spacing = knot_spacing(hats);
+  // In the spacing of kKnots, whatever the curve's own: the reach is a distance in degC.
+  const double spacing = knot_spacing(hats) * static_cast<double>(hats.knots.size() - 1) /
+                         static_cast<double>(kKnots - 1);
   choose_reach(hats, calibration.series.temp_c, gap_v, kTemperatureBand * spacing,
                kTemperatureReach * spacing, kTemperatureFarReach * spacing, columns_with);
 }
