@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -53,8 +52,7 @@ TEST(FreeRefit, TwoFreeCurvesRefittedAroundEachOtherExplainAPairOfTwoShapes) {
 TEST(FreeRefit, APickedCurveOfTemperatureRefittedFinerExplainsAWavyGain) {
   const auto dir = testing::fresh_test_dir("fine_temperature_curve_pair");
   testing::write_third_pair(301, 1, dir);
-  std::ifstream in(dir / "selftest.json");
-  const nlohmann::json pair = nlohmann::json::parse(in)["pairs"].at(0);
+  const nlohmann::json pair = testing::third_pair_row(dir);
   ASSERT_EQ(pair["truth"].at(0)["class"], "temperature_gain");
   ASSERT_EQ(pair["truth"].at(0)["shape"], "wavy");
   EXPECT_EQ(pair["verdict"], "explained") << pair.dump();

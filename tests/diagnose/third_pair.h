@@ -27,6 +27,13 @@ inline FlangeOutcome write_third_pair(int seed, int pair, const std::filesystem:
   return o;
 }
 
+// The pair's row of the blind check that write_third_pair wrote to `dir` (its selftest.json):
+// its truth, claims, verdict and fitted values.
+inline nlohmann::json third_pair_row(const std::filesystem::path& dir) {
+  std::ifstream in(dir / "selftest.json");
+  return nlohmann::json::parse(in)["pairs"].at(0);
+}
+
 // `flange diagnose --real` on pair `pair`'s two sessions in `dir` (with `options` after them),
 // written to dir/diagnosis; its diagnosis.json, or null when the command failed (its error
 // reported).

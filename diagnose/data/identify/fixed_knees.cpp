@@ -69,6 +69,19 @@ void judge_curves_over_the_top(const Parts& parts, Selection& selection) {
                            heldout.curve, heldout.left, selection.noise_v,
                            std::max(shape.free_values, 2));
                      });
+  name_the_compression_first(selection);
+}
+
+void name_the_compression_first(Selection& selection) {
+  for (Pick& pick : selection.picks) {
+    if (pick.step.candidates.empty() || !pick.chosen().free_shape) continue;
+    const std::string& compression = pick.chosen().free_shape->family.over_the_top_also_of;
+    std::vector<std::string>& alike = pick.finding.indistinguishable_from;
+    const auto named = std::find(alike.begin(), alike.end(), compression);
+    if (compression.empty() || named == alike.end()) continue;
+    *named = pick.finding.name;
+    pick.finding.name = compression;
+  }
 }
 
 void judge_fixed_knees(Selection& selection) {

@@ -44,8 +44,11 @@ bool free_pass_wins(const Selection& library, const Selection& free, bool severa
   return leaves_less || (several_classes && fewer_classes);
 }
 
-Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& options,
-                               const std::optional<AdcGrid>& cal_grid, const Selection& start) {
+namespace {
+
+// The library pass, or the free pass where it wins (free_pass_wins).
+Selection pass_taken(const Parts& parts, const DiagnoseOptions& options,
+                     const std::optional<AdcGrid>& cal_grid, const Selection& start) {
   // The library candidates of a round the free pass weighs as the library pass did.
   LibraryRounds rounds;
   Selection library = start;
@@ -56,9 +59,7 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
            !several_classes;
   };
   if (explained_by_one_class(library)) {
-    Selection refined = with_shapes_where_they_gain(parts, std::move(library));
-    refine_temperature_curves(parts, refined);
-    return refined;
+    return with_shapes_where_they_gain(parts, std::move(library));
   }
   // The refinement and the free pass do not depend on each other: they run at once, and the
   // refined selection is taken alone when it explains with one class (the free pass then unused).
@@ -66,11 +67,19 @@ Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& option
   free.free_shapes = true;
   run_both([&] { library = with_shapes_where_they_gain(parts, library); },
            [&] { select_bias_effects(parts, rounds, options, cal_grid, free); });
-  Selection& chosen =
-      explained_by_one_class(library) || !free_pass_wins(library, free, several_classes) ? library
-                                                                                         : free;
+  return explained_by_one_class(library) || !free_pass_wins(library, free, several_classes)
+             ? std::move(library)
+             : std::move(free);
+}
+
+}  // namespace
+
+Selection select_in_two_passes(const Parts& parts, const DiagnoseOptions& options,
+                               const std::optional<AdcGrid>& cal_grid, const Selection& start) {
+  Selection chosen = pass_taken(parts, options, cal_grid, start);
+  // With the classes chosen, each picked curve of temperature on finer knots (free_refit.h).
   refine_temperature_curves(parts, chosen);
-  return std::move(chosen);
+  return chosen;
 }
 
 }  // namespace flange::diagnose
