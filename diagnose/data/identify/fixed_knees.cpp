@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "criteria.h"
@@ -61,6 +62,10 @@ bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector
 }
 
 void judge_curves_over_the_top(const Parts& parts, Selection& selection) {
+  std::vector<std::size_t> alike_before;
+  for (const Pick& pick : selection.picks) {
+    alike_before.push_back(pick.finding.indistinguishable_from.size());
+  }
   name_classes_alike(parts, selection, &FreeShapeFamily::over_the_top_also_of,
                      parts.ho_replay.nominal_voltage(),
                      [&](const FreeShapeFit& shape, const HeldoutCurve& heldout) {
@@ -69,19 +74,16 @@ void judge_curves_over_the_top(const Parts& parts, Selection& selection) {
                            heldout.curve, heldout.left, selection.noise_v,
                            std::max(shape.free_values, 2));
                      });
-  name_the_compression_first(selection);
+  for (std::size_t k = 0; k < selection.picks.size(); ++k) {
+    // name_classes_alike names at most one class more: the one over the top.
+    if (selection.picks[k].finding.indistinguishable_from.size() > alike_before[k]) {
+      name_the_compression_first(selection.picks[k]);
+    }
+  }
 }
 
-void name_the_compression_first(Selection& selection) {
-  for (Pick& pick : selection.picks) {
-    if (pick.step.candidates.empty() || !pick.chosen().free_shape) continue;
-    const std::string& compression = pick.chosen().free_shape->family.over_the_top_also_of;
-    std::vector<std::string>& alike = pick.finding.indistinguishable_from;
-    const auto named = std::find(alike.begin(), alike.end(), compression);
-    if (compression.empty() || named == alike.end()) continue;
-    *named = pick.finding.name;
-    pick.finding.name = compression;
-  }
+void name_the_compression_first(Pick& pick) {
+  std::swap(pick.finding.name, pick.finding.indistinguishable_from.back());
 }
 
 void judge_fixed_knees(Selection& selection) {

@@ -37,15 +37,16 @@ bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector
 // voltages (FreeShapeFamily::over_the_top_also_of: the nonlinearity's curve of the clearance, a
 // range compression) and is_a_curve_over_the_top (on the twin's voltage, with as many knots as the
 // curve has values, on the held-out samples within the calibration part's ranges) names that class
-// in its indistinguishable_from, then name_the_compression_first.
+// in its indistinguishable_from and names it first (name_the_compression_first).
 void judge_curves_over_the_top(const Parts& parts, Selection& selection);
 
-// Each pick whose curve judge_curves_over_the_top found over the top of the voltages is named
-// the class its family names there (the compression) first, with its own class as the one alike:
-// such a curve leaves the lower half of the voltages and lowers the top, what a compression does,
-// as a compression family's curve of the voltage alone that lowers the top keeps the
-// compression's name (free_shape_fit.cpp). criteria::kMostLowerHalfShareOfACompression says why.
-void name_the_compression_first(Selection& selection);
+// A pick whose curve judge_curves_over_the_top found over the top of the voltages (the class
+// its family names there, the compression, last in its indistinguishable_from) is named that
+// class first, with its own class as the one alike: such a curve leaves the lower half of the
+// voltages and lowers the top, what a compression does, as a compression family's curve of the
+// voltage alone that lowers the top keeps the compression's name (free_shape_fit.cpp).
+// criteria::kMostLowerHalfShareOfACompression says why.
+void name_the_compression_first(Pick& pick);
 
 // Both of the above: the families' fixed knees, then the curves of the clearance over the top.
 void judge_fixed_knees(const Parts& parts, Selection& selection);
