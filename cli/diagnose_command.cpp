@@ -3,14 +3,13 @@
 
 #include <fmt/format.h>
 
-#include <malloc.h>
-
 #include <exception>
 #include <fstream>
 #include <ostream>
 #include <stdexcept>
 
 #include "cli.h"
+#include "diagnose_memory.h"
 #include "diagnose_report.h"
 #include "improved_twin_report.h"
 #include "input_error.h"
@@ -61,11 +60,7 @@ int run_diagnose_command(const DiagnoseCommandOptions& options, std::ostream& ou
   if (!options.holdout && !options.holdout_fraction) {
     throw host::InputError("give --holdout B.csv or --holdout-fraction F (0.05 to 0.5)");
   }
-  // One malloc arena for the diagnosis's threads: with one per thread, the columns a free family
-  // frees on one core are not reused by the next family on the other, and the peak of a 45-minute
-  // 100 Hz pair grows by about a tenth (bench/diagnose_45min.sh); its allocations are few and
-  // large, so the threads rarely wait on the one arena.
-  mallopt(M_ARENA_MAX, 1);
+  keep_freed_memory_for_reuse();
   diagnose::DiagnoseOptions diagnose_options;
   if (options.twin) diagnose_options.twin = sim::load_twin(*options.twin);
   diagnose_options.seed = options.seed;

@@ -12,6 +12,7 @@
 #include "bench_scenario.h"
 #include "cli.h"
 #include "diagnose_alt_selftest_command.h"
+#include "diagnose_memory.h"
 #include "diagnose_third_selftest_command.h"
 #include "input_error.h"
 #include "selftest_report.h"
@@ -81,6 +82,7 @@ void add_selftest_options(CLI::App& diagnose, SelftestCommandOptions& options) {
 }
 
 int run_selftest_command(const SelftestCommandOptions& options, std::ostream& out) {
+  keep_freed_memory_for_reuse();
   if (options.reality == "alt") return run_alt_selftest_command(options, out);
   if (options.reality == "third") return run_third_selftest_command(options, out);
   const auto start = std::chrono::steady_clock::now();
