@@ -78,12 +78,15 @@ std::optional<std::vector<double>> curve_of_one_variable_alike(
   return on_cal;
 }
 
-void name_classes_alike(const Parts& parts, Selection& selection,
-                        std::string FreeShapeFamily::*other_of,
-                        const std::vector<double>& heldout_x, const CurveIsAlike& is_alike) {
+std::vector<std::size_t> name_classes_alike(const Parts& parts, Selection& selection,
+                                            std::string FreeShapeFamily::*other_of,
+                                            const std::vector<double>& heldout_x,
+                                            const CurveIsAlike& is_alike) {
   const std::vector<std::size_t> within =
       calibration_reach(parts.calibration, parts.heldout).heldout_within;
-  for (Pick& pick : selection.picks) {
+  std::vector<std::size_t> named;
+  for (std::size_t k = 0; k < selection.picks.size(); ++k) {
+    Pick& pick = selection.picks[k];
     if (pick.step.candidates.empty() || !pick.chosen().free_shape) continue;
     const FreeShapeFit& shape = *pick.chosen().free_shape;
     const std::string& other = shape.family.*other_of;
@@ -98,8 +101,12 @@ void name_classes_alike(const Parts& parts, Selection& selection,
       heldout.curve.push_back(shape.heldout_voltage_v[i]);
       heldout.left.push_back(pick.chosen().heldout_error[i]);
     }
-    if (is_alike(shape, heldout)) alike.push_back(other);
+    if (is_alike(shape, heldout)) {
+      alike.push_back(other);
+      named.push_back(k);
+    }
   }
+  return named;
 }
 
 }  // namespace flange::diagnose

@@ -40,9 +40,10 @@ using CurveIsAlike = std::function<bool(const FreeShapeFit& shape, const Heldout
 
 // Each pick with a free shape whose family names, in `other_of`, a class the pick does not name
 // yet, and whose curve `is_alike` (on the held-out part's variable `heldout_x`), names that class
-// in its indistinguishable_from.
-void name_classes_alike(const Parts& parts, Selection& selection,
-                        std::string FreeShapeFamily::*other_of,
-                        const std::vector<double>& heldout_x, const CurveIsAlike& is_alike);
+// in its indistinguishable_from (last). Returns the indices of the picks it named it in.
+std::vector<std::size_t> name_classes_alike(const Parts& parts, Selection& selection,
+                                            std::string FreeShapeFamily::*other_of,
+                                            const std::vector<double>& heldout_x,
+                                            const CurveIsAlike& is_alike);
 
 }  // namespace flange::diagnose

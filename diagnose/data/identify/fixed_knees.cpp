@@ -62,24 +62,14 @@ bool is_a_curve_over_the_top(const std::vector<double>& cal_v, const std::vector
 }
 
 void judge_curves_over_the_top(const Parts& parts, Selection& selection) {
-  std::vector<std::size_t> alike_before;
-  for (const Pick& pick : selection.picks) {
-    alike_before.push_back(pick.finding.indistinguishable_from.size());
-  }
-  name_classes_alike(parts, selection, &FreeShapeFamily::over_the_top_also_of,
-                     parts.ho_replay.nominal_voltage(),
-                     [&](const FreeShapeFit& shape, const HeldoutCurve& heldout) {
-                       return is_a_curve_over_the_top(
-                           parts.cal_replay.nominal_voltage(), shape.cal_voltage_v, heldout.x,
-                           heldout.curve, heldout.left, selection.noise_v,
-                           std::max(shape.free_values, 2));
-                     });
-  for (std::size_t k = 0; k < selection.picks.size(); ++k) {
-    // name_classes_alike names at most one class more: the one over the top.
-    if (selection.picks[k].finding.indistinguishable_from.size() > alike_before[k]) {
-      name_the_compression_first(selection.picks[k]);
-    }
-  }
+  const std::vector<std::size_t> named = name_classes_alike(
+      parts, selection, &FreeShapeFamily::over_the_top_also_of, parts.ho_replay.nominal_voltage(),
+      [&](const FreeShapeFit& shape, const HeldoutCurve& heldout) {
+        return is_a_curve_over_the_top(parts.cal_replay.nominal_voltage(), shape.cal_voltage_v,
+                                       heldout.x, heldout.curve, heldout.left, selection.noise_v,
+                                       std::max(shape.free_values, 2));
+      });
+  for (const std::size_t k : named) name_the_compression_first(selection.picks[k]);
 }
 
 void name_the_compression_first(Pick& pick) {

@@ -11,21 +11,6 @@
 #include "series_statistics.h"
 
 namespace flange::diagnose {
-namespace {
-
-// The library's classes with shapes of their own, when they leave less by
-// criteria::kRefinementAcceptance of sigma^2: whether or not the library's formulas explained
-// the pair, a shape that departs from them is reported.
-Selection with_shapes_where_they_gain(const Parts& parts, Selection selection) {
-  if (selection.picks.empty()) return selection;
-  Selection refined = with_free_shapes_of_its_classes(parts, selection);
-  const double before = rms_of(selection.current_error), after = rms_of(refined.current_error);
-  const double margin = criteria::kRefinementAcceptance * selection.noise_v * selection.noise_v;
-  return before * before - after * after >= margin ? refined : selection;
-}
-
-}  // namespace
-
 // Whether the free pass replaces the library pass: it leaves less by
 // criteria::kPassComparisonMargin of sigma^2, or it names fewer classes where the library pass
 // named several, leaving no more than that margin more, or where both leave the noise (the
@@ -45,6 +30,17 @@ bool free_pass_wins(const Selection& library, const Selection& free, bool severa
 }
 
 namespace {
+
+// The library's classes with shapes of their own, when they leave less by
+// criteria::kRefinementAcceptance of sigma^2: whether or not the library's formulas explained
+// the pair, a shape that departs from them is reported.
+Selection with_shapes_where_they_gain(const Parts& parts, Selection selection) {
+  if (selection.picks.empty()) return selection;
+  Selection refined = with_free_shapes_of_its_classes(parts, selection);
+  const double before = rms_of(selection.current_error), after = rms_of(refined.current_error);
+  const double margin = criteria::kRefinementAcceptance * selection.noise_v * selection.noise_v;
+  return before * before - after * after >= margin ? refined : selection;
+}
 
 // The library pass, or the free pass where it wins (free_pass_wins).
 Selection pass_taken(const Parts& parts, const DiagnoseOptions& options,
