@@ -51,18 +51,22 @@ void choose_reach(Hats& hats, const std::vector<double>& x, const std::vector<do
   const double inner_lo = lo + band, inner_hi = hi - band;
   if (inner_hi - inner_lo < band) return;
   const Hats inner = hats_between(inner_lo, inner_hi, hats.knots.size());
-  const Eigen::MatrixXd all = columns_with(inner);
-  std::vector<Eigen::Index> rows;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (x[i] >= inner_lo && x[i] <= inner_hi) rows.push_back(static_cast<Eigen::Index>(i));
-  }
-  Eigen::MatrixXd a(static_cast<Eigen::Index>(rows.size()), all.cols());
-  Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    a.row(static_cast<Eigen::Index>(r)) = all.row(rows[r]);
-    y(static_cast<Eigen::Index>(r)) = gap_v[static_cast<std::size_t>(rows[r])];
-  }
-  const Eigen::VectorXd beta = ridge_solve(a, y);
+  // The inner fit's columns are let go before the ends' are made: at 100 Hz each is tens of MB,
+  // and two curve families search at once.
+  const Eigen::VectorXd beta = [&] {
+    const Eigen::MatrixXd all = columns_with(inner);
+    std::vector<Eigen::Index> rows;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (x[i] >= inner_lo && x[i] <= inner_hi) rows.push_back(static_cast<Eigen::Index>(i));
+    }
+    Eigen::MatrixXd a(static_cast<Eigen::Index>(rows.size()), all.cols());
+    Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      a.row(static_cast<Eigen::Index>(r)) = all.row(rows[r]);
+      y(static_cast<Eigen::Index>(r)) = gap_v[static_cast<std::size_t>(rows[r])];
+    }
+    return Eigen::VectorXd(ridge_solve(a, y));
+  }();
   // What the inner fit, going on `reach` past one end, leaves on the samples in that end's band.
   const auto left_in_band = [&](bool below, double reach) {
     Hats way = inner;
